@@ -1,0 +1,27 @@
+#pragma once
+// A CPU image: interleaved float channels, row 0 at the top (as image files store it).
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace rmfx {
+
+struct Image {
+    int width = 0;
+    int height = 0;
+    int channels = 0;           // 1..4
+    bool highDynamicRange = false;  // file held float/half data; false: 8/16-bit integer data
+    int bitsPerChannel = 32;    // of the source file: 8, 16, 32 (half reads as 16)
+    std::vector<float> pixels;  // width * height * channels; integer files as value / max (no colour conversion)
+
+    float& at(int x, int y, int c) { return pixels[(static_cast<size_t>(y) * width + x) * channels + c]; }
+    float at(int x, int y, int c) const { return pixels[(static_cast<size_t>(y) * width + x) * channels + c]; }
+    bool empty() const { return pixels.empty(); }
+};
+
+// The six faces of a cube map in OpenGL order: +X, -X, +Y, -Y, +Z, -Z, each seen as OpenGL's
+// cube-map face convention expects (row 0 at the top of the face as sampled with that convention).
+using CubeFaces = std::array<Image, 6>;
+
+}  // namespace rmfx

@@ -1,0 +1,29 @@
+#pragma once
+// Paths and scratch folders shared by the tests.
+
+#include <filesystem>
+#include <string>
+
+namespace rmfx::test {
+
+std::filesystem::path sourceDir();  // the repository root
+std::filesystem::path binaryDir();  // the build folder
+
+// A fresh, empty folder under the build tree, named after the running test; removed on destruction.
+class ScratchDir {
+public:
+    ScratchDir();
+    ~ScratchDir();
+    ScratchDir(const ScratchDir&) = delete;
+    ScratchDir& operator=(const ScratchDir&) = delete;
+
+    const std::filesystem::path& path() const { return path_; }
+    std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+    // Writes text to a file inside the folder and returns its path.
+    std::filesystem::path write(const std::string& name, const std::string& text) const;
+
+private:
+    std::filesystem::path path_;
+};
+
+}  // namespace rmfx::test
