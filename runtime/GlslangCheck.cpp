@@ -1,0 +1,93 @@
+#include "runtime/GlslangCheck.h"
+
+#include <memory>
+#include <mutex>
+#include <regex>
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+
+namespace rmfx {
+namespace {
+
+void initializeGlslangOnce() {
+    static std::once_flag flag;
+    std::call_once(flag, [] { glslang::InitializeProcess(); });
+}
+
+EShLanguage language(ShaderStage stage) {
+    return stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
+}
+
+}  // namespace
+
+std::optional<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSource& program,
+                                                           const std::string& element, Diagnostics& diagnostics) {
+    initializeGlslangOnce();
+    auto messages = static_cast<EShMessages>(EShMsgDefault);
+    std::vector<std::unique_ptr<glslang::TShader>> shaders;
+    glslang::TProgram linked;
+    bool ok = true;
+    for (const PassStage& stage : program.stages) {
+        auto shader = std::make_unique<glslang::TShader>(language(stage.stage));
+        const char* text = stage.shader.code.c_str();
+        shader->setStrings(&text, 1);
+        shader->setEnvInput(glslang::EShSourceGlsl, language(stage.stage), glslang::EShClientOpenGL, 100);
+        shader->setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
+        shader->setEnvTarget(glslang::EShTargetNone, glslang::EShTargetSpv_1_0);
+        if (!shader->parse(GetDefaultResources(), 450, ECoreProfile, false, false, messages)) {
+            SourceLocation fallback = stage.shader.origin(1);
+            for (Diagnostic d : mapCompilerLog(shader->getInfoLog(), stage.shader, fallback, element)) {
+                diagnostics.push_back(std::move(d));
+            }
+            ok = false;
+            continue;
+        }
+        linked.addShader(shader.get());
+        shaders.push_back(std::move(shader));
+    }
+    if (!ok) return std::nullopt;
+    if (!linked.link(messages)) {
+        std::string log = linked.getInfoLog();
+        SourceLocation where = program.stages.back().where;
+        for (Diagnostic d : mapCompilerLog(log, program.stages.back().shader, where, element)) {
+            d.where = where;  // link messages carry no line of their own
+            d.message = "link: " + d.message;
+            diagnostics.push_back(std::move(d));
+        }
+        return std::nullopt;
+    }
+    linked.buildReflection(EShReflectionDefault);
+    std::vector<ActiveUniform> uniforms;
+    for (int i = 0; i < linked.getNumUniformVariables(); ++i) {
+        const glslang::TObjectReflection& u = linked.getUniform(i);
+        ActiveUniform a;
+        a.name = u.name;
+        a.glType = u.glDefineType;
+        a.type = uniformTypeFromGl(u.glDefineType);
+        a.arraySize = u.size > 0 ? u.size : 1;
+        if (a.name.size() > 3 && a.name.compare(a.name.size() - 3, 3, "[0]") == 0) a.name.resize(a.name.size() - 3);
+        uniforms.push_back(std::move(a));
+    }
+    return uniforms;
+}
+
+std::optional<SourceLocation> findUniformDeclaration(const PassProgramSource& program, const std::string& name) {
+    const std::regex pattern("\\buniform\\b[^;]*\\b" + name + "\\b");
+    for (const PassStage& stage : program.stages) {
+        int line = 1;
+        size_t start = 0;
+        const std::string& code = stage.shader.code;
+        while (start < code.size()) {
+            size_t end = code.find('\n', start);
+            if (end == std::string::npos) end = code.size();
+            if (std::regex_search(code.begin() + static_cast<long>(start), code.begin() + static_cast<long>(end), pattern))
+                return stage.shader.origin(line);
+            start = end + 1;
+            ++line;
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace rmfx

@@ -1,0 +1,29 @@
+#pragma once
+// Compiles and links a pass's GLSL with glslang, without any GL context, to report errors with
+// portable messages and to list the active uniforms with their types.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "runtime/Diagnostic.h"
+#include "runtime/PassProgram.h"
+#include "runtime/UniformType.h"
+
+namespace rmfx {
+
+struct ActiveUniform {
+    std::string name;
+    UniformType type = UniformType::Other;
+    int arraySize = 1;
+    int glType = 0;
+};
+
+// Returns the active uniforms, or nullopt (with diagnostics) when a stage fails to compile or link.
+std::optional<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSource& program,
+                                                           const std::string& element, Diagnostics& diagnostics);
+
+// Where a uniform is declared, found by scanning the stage texts: the first `uniform TYPE NAME`.
+std::optional<SourceLocation> findUniformDeclaration(const PassProgramSource& program, const std::string& name);
+
+}  // namespace rmfx

@@ -1,0 +1,198 @@
+#include "runtime/ShaderPreprocessor.h"
+
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+namespace rmfx {
+namespace {
+
+std::vector<std::string> splitLines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::string line;
+    std::istringstream in(text);
+    while (std::getline(in, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        lines.push_back(line);
+    }
+    return lines;
+}
+
+std::string_view trimLeft(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    return s;
+}
+
+// "#  include" → "include"; empty when the line is no directive.
+std::string directiveName(std::string_view line) {
+    line = trimLeft(line);
+    if (line.empty() || line.front() != '#') return {};
+    line = trimLeft(line.substr(1));
+    size_t n = 0;
+    while (n < line.size() && std::isalpha(static_cast<unsigned char>(line[n]))) ++n;
+    return std::string(line.substr(0, n));
+}
+
+bool isInside(const std::filesystem::path& file, const std::filesystem::path& folder) {
+    auto f = std::filesystem::weakly_canonical(file), d = std::filesystem::weakly_canonical(folder);
+    auto [end, _] = std::mismatch(d.begin(), d.end(), f.begin(), f.end());
+    return end == d.end();
+}
+
+class Expander {
+public:
+    Expander(const ShaderInput& input, Diagnostics& diagnostics, PreprocessedShader& out)
+        : input_(input), diagnostics_(diagnostics), out_(out) {}
+
+    void expand(const std::string& text, const std::string& file, int firstLine, const std::filesystem::path& folder,
+                int depth) {
+        auto lines = splitLines(text);
+        for (size_t i = 0; i < lines.size(); ++i) {
+            SourceLocation where{file, firstLine + static_cast<int>(i)};
+            std::string directive = directiveName(lines[i]);
+            if (directive == "include") {
+                include(lines[i], where, folder, depth);
+            } else if (directive == "pragma" && lines[i].find("once") != std::string::npos) {
+                out_.code += "\n";  // keeps line numbers aligned
+                out_.lineOrigins.push_back(where);
+            } else {
+                out_.code += lines[i] + "\n";
+                out_.lineOrigins.push_back(where);
+            }
+        }
+    }
+
+private:
+    void include(const std::string& line, const SourceLocation& where, const std::filesystem::path& folder, int depth) {
+        static const std::regex pattern(R"(^\s*#\s*include\s*"([^"]+)\"\s*(//.*)?$)");
+        std::smatch m;
+        auto fail = [&](const std::string& message) {
+            diagnostics_.push_back({Diagnostic::Severity::Error, where, "#include", message});
+            out_.code += "\n";
+            out_.lineOrigins.push_back(where);
+        };
+        if (!std::regex_match(line, m, pattern)) return fail("expected #include \"file\"");
+        std::string name = m[1];
+        if (depth >= 32) return fail("includes nested more than 32 deep (a cycle?) at \"" + name + "\"");
+        std::filesystem::path candidate = folder / name;
+        if (!std::filesystem::is_regular_file(candidate)) candidate = input_.root / name;
+        if (!std::filesystem::is_regular_file(candidate))
+            return fail("cannot find \"" + name + "\" (looked in " + folder.string() +
+                        (folder == input_.root ? "" : " and " + input_.root.string()) + ")");
+        if (!isInside(candidate, input_.root))
+            return fail("\"" + name + "\" lies outside the workspace folder " + input_.root.string());
+        auto key = std::filesystem::weakly_canonical(candidate);
+        for (const auto& open : stack_)
+            if (open == key) return fail("\"" + name + "\" includes itself (include cycle)");
+        if (onceFiles_.count(key)) {
+            out_.code += "\n";
+            out_.lineOrigins.push_back(where);
+            return;
+        }
+        std::ifstream in(candidate, std::ios::binary);
+        std::stringstream buffer;
+        buffer << in.rdbuf();
+        std::string text = buffer.str();
+        out_.files.push_back(candidate);
+        for (const auto& l : splitLines(text))
+            if (directiveName(l) == "pragma" && l.find("once") != std::string::npos) onceFiles_.insert(key);
+        stack_.push_back(key);
+        expand(text, candidate.lexically_normal().string(), 1, candidate.parent_path(), depth + 1);
+        stack_.pop_back();
+    }
+
+    const ShaderInput& input_;
+    Diagnostics& diagnostics_;
+    PreprocessedShader& out_;
+    std::vector<std::filesystem::path> stack_;
+    std::set<std::filesystem::path> onceFiles_;
+};
+
+}  // namespace
+
+SourceLocation PreprocessedShader::origin(int line) const {
+    if (lineOrigins.empty()) return {};
+    if (line < 1) return lineOrigins.front();
+    if (static_cast<size_t>(line) > lineOrigins.size()) return lineOrigins.back();
+    return lineOrigins[line - 1];
+}
+
+PreprocessedShader preprocessShader(const ShaderInput& input, Diagnostics& diagnostics) {
+    PreprocessedShader body;
+    Expander(input, diagnostics, body).expand(input.code, input.start.file, input.start.line, input.folder, 0);
+
+    // #version must come first; defines go right after it, mapped to the #version line.
+    PreprocessedShader out;
+    out.files = std::move(body.files);
+    auto lines = splitLines(body.code);
+    size_t versionLine = lines.size();
+    for (size_t i = 0; i < lines.size(); ++i) {
+        std::string d = directiveName(lines[i]);
+        if (d == "version") {
+            versionLine = i;
+            break;
+        }
+        std::string_view t = trimLeft(lines[i]);
+        if (!t.empty() && t.substr(0, 2) != "//") break;  // code before any #version
+    }
+    SourceLocation versionWhere = versionLine < lines.size() ? body.lineOrigins[versionLine] : input.start;
+    if (versionLine < lines.size()) {
+        out.code += lines[versionLine] + "\n";
+    } else {
+        out.code += "#version 450 core\n";
+    }
+    out.lineOrigins.push_back(versionWhere);
+    for (const std::string& define : input.defines) {
+        out.code += "#define " + define + "\n";
+        out.lineOrigins.push_back(versionWhere);
+    }
+    for (size_t i = 0; i < lines.size(); ++i) {
+        if (i == versionLine) {
+            out.code += "\n";  // the #version already went first
+        } else {
+            out.code += lines[i] + "\n";
+        }
+        out.lineOrigins.push_back(body.lineOrigins[i]);
+    }
+    return out;
+}
+
+Diagnostics mapCompilerLog(const std::string& log, const PreprocessedShader& shader, const SourceLocation& fallback,
+                           const std::string& element) {
+    // glslang: "ERROR: 0:12: 'x' : undeclared identifier"
+    // Mesa:    "0:12(5): error: `x' undeclared"
+    // NVIDIA:  "0(12) : error C1008: undefined variable "x""
+    static const std::regex glslang(R"(^(ERROR|WARNING):\s*\d+:(\d+):\s*(.*)$)");
+    static const std::regex mesa(R"(^\d+:(\d+)\(\d+\):\s*(error|warning):\s*(.*)$)");
+    static const std::regex nvidia(R"(^\d+\((\d+)\)\s*:\s*(error|warning)\s*(.*)$)");
+    Diagnostics out;
+    std::istringstream in(log);
+    for (std::string line; std::getline(in, line);) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.find_first_not_of(" \t") == std::string::npos) continue;
+        std::smatch m;
+        Diagnostic d;
+        d.element = element;
+        if (std::regex_match(line, m, glslang)) {
+            d.severity = m[1] == "ERROR" ? Diagnostic::Severity::Error : Diagnostic::Severity::Warning;
+            d.where = shader.origin(std::stoi(m[2]));
+            d.message = m[3];
+        } else if (std::regex_match(line, m, mesa) || std::regex_match(line, m, nvidia)) {
+            d.severity = m[2] == "error" ? Diagnostic::Severity::Error : Diagnostic::Severity::Warning;
+            d.where = shader.origin(std::stoi(m[1]));
+            d.message = m[3];
+        } else {
+            // glslang's summary lines ("ERROR: 1 compilation errors.  No code generated.") add nothing.
+            if (line.find("compilation errors") != std::string::npos || line.find("No code generated") != std::string::npos)
+                continue;
+            d.where = fallback;
+            d.message = line.rfind("ERROR: ", 0) == 0 ? line.substr(7) : line;
+            d.severity = line.find("WARNING") == 0 ? Diagnostic::Severity::Warning : Diagnostic::Severity::Error;
+        }
+        out.push_back(std::move(d));
+    }
+    return out;
+}
+
+}  // namespace rmfx

@@ -1,0 +1,39 @@
+#pragma once
+// Expands `#include "file"` in shader code and remembers where every resulting line came from,
+// so compiler messages ("0:17: …") can be mapped back to the user's file and line.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "runtime/Diagnostic.h"
+
+namespace rmfx {
+
+struct PreprocessedShader {
+    std::string code;                      // ready for the compiler; starts with #version
+    std::vector<SourceLocation> lineOrigins;  // lineOrigins[i]: origin of line i + 1 of code
+    std::vector<std::filesystem::path> files;  // every file read (for hot reload)
+
+    // Maps a 1-based line of `code` to where the user wrote it.
+    SourceLocation origin(int line) const;
+};
+
+struct ShaderInput {
+    std::string code;               // text of the top-level shader
+    SourceLocation start;           // file, and the line its first line has there (1 for files)
+    std::filesystem::path folder;   // where includes of the top-level text resolve first
+    std::filesystem::path root;     // includes may not leave this folder
+    std::vector<std::string> defines;  // "NAME" or "NAME VALUE", inserted after #version
+};
+
+// Includes resolve relative to the including file, then to `root`. `#pragma once` is honoured.
+// Without a #version line, "#version 450 core" is put first.
+PreprocessedShader preprocessShader(const ShaderInput& input, Diagnostics& diagnostics);
+
+// Rewrites a compiler's info log (glslang, Mesa and NVIDIA styles) into diagnostics located in
+// the user's files. Lines the parser does not recognise are kept as messages on the shader.
+Diagnostics mapCompilerLog(const std::string& log, const PreprocessedShader& shader, const SourceLocation& fallback,
+                           const std::string& element);
+
+}  // namespace rmfx

@@ -1,0 +1,27 @@
+#pragma once
+// Which value feeds a uniform of a pass: a sampler of the pass, a pass constant, a workspace
+// variable or a predefined value, looked up in that order.
+
+#include <string>
+#include <variant>
+
+#include "runtime/PredefinedVariables.h"
+#include "runtime/Workspace.h"
+
+namespace rmfx {
+
+struct BoundSampler { const Sampler* sampler; int index; };
+struct BoundConstant { const Variable* constant; };
+struct BoundVariable { const Variable* variable; };
+struct BoundPredefined { PredefinedInfo info; };
+struct Unbound {};
+
+using UniformSource = std::variant<Unbound, BoundSampler, BoundConstant, BoundVariable, BoundPredefined>;
+
+UniformSource resolveUniform(const Workspace& ws, const Pass& pass, const std::string& name);
+
+// Empty when the source can feed a uniform of that type; else why not, as a sentence naming both.
+std::string bindingMismatch(const Workspace& ws, const UniformSource& source, const std::string& uniform,
+                            UniformType type, int arraySize);
+
+}  // namespace rmfx

@@ -1,0 +1,150 @@
+#include "runtime/Validation.h"
+
+#include <map>
+#include <set>
+
+#include "runtime/GlslangCheck.h"
+#include "runtime/PassProgram.h"
+#include "runtime/UniformBinding.h"
+
+namespace rmfx {
+namespace {
+
+class Validator {
+public:
+    Validator(const Workspace& ws, const ValidationOptions& options, Diagnostics& out)
+        : ws_(ws), options_(options), out_(out) {}
+
+    void run() {
+        checkUniqueNames();
+        checkTextures();
+        checkOutput();
+        for (const Pass& pass : ws_.passes) checkPass(pass);
+    }
+
+private:
+    void error(const SourceLocation& where, const std::string& element, const std::string& message) {
+        out_.push_back({Diagnostic::Severity::Error, where, element, message});
+    }
+    void warning(const SourceLocation& where, const std::string& element, const std::string& message) {
+        out_.push_back({Diagnostic::Severity::Warning, where, element, message});
+    }
+    static std::string at(const SourceLocation& where) { return "line " + std::to_string(where.line); }
+
+    template <class T>
+    void unique(const std::vector<T>& items, const char* kind, const char* tag) {
+        std::map<std::string, SourceLocation> seen;
+        for (const T& item : items) {
+            auto [it, fresh] = seen.emplace(item.name, item.where);
+            if (!fresh)
+                error(item.where, std::string("<") + tag + " name=\"" + item.name + "\">",
+                      std::string("duplicate ") + kind + " name '" + item.name + "' (first declared at " +
+                          at(it->second) + ")");
+        }
+    }
+
+    void checkUniqueNames() {
+        unique(ws_.variables, "variable", "variable");
+        unique(ws_.textures, "texture", "texture");
+        unique(ws_.targets, "target", "target");
+        unique(ws_.passes, "pass", "pass");
+        if (ws_.output.target.empty())
+            if (const RenderTarget* t = ws_.findTarget(Workspace::implicitOutputName))
+                error(t->where, "<target name=\"output\">",
+                      "the name 'output' is taken by the implicit output target; rename the target, or make it the "
+                      "output with <output target=\"output\"/>");
+    }
+
+    void checkTextures() {
+        for (const Texture& t : ws_.textures) {
+            for (size_t i = 0; i < t.files.size(); ++i) {
+                std::filesystem::path file = ws_.folder / t.files[i];
+                if (!std::filesystem::is_regular_file(file))
+                    error(i < t.fileLocations.size() ? t.fileLocations[i] : t.where,
+                          std::string(t.kind == TextureKind::Cube ? "<cubemap" : "<texture") + " name=\"" + t.name + "\">",
+                          "image file '" + t.files[i] + "' not found (looked for " + file.string() + ")");
+            }
+        }
+    }
+
+    void checkOutput() {
+        if (!ws_.output.target.empty() && !ws_.findTarget(ws_.output.target))
+            error(ws_.output.where, "<output>", "target '" + ws_.output.target + "' is not declared");
+        if (ws_.passes.empty()) error({ws_.path.string(), 1}, "<workspace>", "no <pass>: nothing to render");
+    }
+
+    void checkPass(const Pass& pass) {
+        std::string label = passLabel(pass);
+        if (!pass.target.empty() && !ws_.findTarget(pass.target) &&
+            !(pass.target == Workspace::implicitOutputName && ws_.output.target.empty()))
+            error(pass.where, label, "target '" + pass.target + "' is not declared");
+        std::string writes = ws_.passTargetName(pass);
+
+        std::set<std::string> samplerNames;
+        for (const Sampler& s : pass.samplers) {
+            std::string element = "<sampler name=\"" + s.uniform + "\">";
+            if (!samplerNames.insert(s.uniform).second)
+                error(s.where, element, "a second sampler named '" + s.uniform + "' in " + label);
+            if (!s.texture.empty()) {
+                const Texture* t = ws_.findTexture(s.texture);
+                if (!t) error(s.where, element, "texture '" + s.texture + "' is not declared");
+                else if (s.mipmap != MipmapMode::None && !t->mipmaps)
+                    error(s.where, element, "mipmap filtering, but texture '" + s.texture + "' has mipmaps=\"false\"");
+                continue;
+            }
+            const RenderTarget* t = ws_.findTarget(s.target);
+            bool implicit = s.target == Workspace::implicitOutputName && ws_.output.target.empty();
+            if (!t && !implicit) {
+                error(s.where, element, "target '" + s.target + "' is not declared");
+                continue;
+            }
+            if (s.target == writes && !s.previousFrame)
+                error(s.where, element, "pass '" + pass.name + "' samples target '" + s.target +
+                                            "', which it also writes (use frame=\"previous\" to read last frame's "
+                                            "contents, or a second target)");
+            if (s.mipmap != MipmapMode::None && (!t || !t->mipmaps))
+                error(s.where, element, "mipmap filtering, but target '" + s.target + "' is declared without mipmaps=\"true\"");
+        }
+        for (const Variable& c : pass.constants) {
+            if (const Variable* v = ws_.findVariable(c.name); v && v->value.type != c.value.type)
+                error(c.where, "<" + std::string(valueTypeName(c.value.type)) + " name=\"" + c.name + "\">",
+                      "pass constant '" + c.name + "' is a " + valueTypeName(c.value.type) + " but variable '" +
+                          c.name + "' (" + at(v->where) + ") is a " + valueTypeName(v->value.type));
+        }
+        if (!pass.draw.file.empty() && !std::filesystem::is_regular_file(ws_.folder / pass.draw.file))
+            error(pass.draw.where, "<draw>", "model file '" + pass.draw.file + "' not found (looked for " +
+                                                 (ws_.folder / pass.draw.file).string() + ")");
+
+        auto program = assemblePassProgram(ws_, pass, {}, out_);
+        if (!program || !options_.compileShaders) return;
+        auto uniforms = checkPassProgram(*program, label, out_);
+        if (!uniforms) return;
+        std::set<std::string> active;
+        for (const ActiveUniform& u : *uniforms) {
+            active.insert(u.name);
+            UniformSource source = resolveUniform(ws_, pass, u.name);
+            std::string why = bindingMismatch(ws_, source, u.name, u.type, u.arraySize);
+            if (why.empty()) continue;
+            SourceLocation where = findUniformDeclaration(*program, u.name).value_or(pass.where);
+            error(where, label, why);
+        }
+        for (const Sampler& s : pass.samplers)
+            if (!active.count(s.uniform))
+                warning(s.where, "<sampler name=\"" + s.uniform + "\">",
+                        "the shaders of pass '" + pass.name + "' do not use sampler '" + s.uniform + "'");
+    }
+
+    const Workspace& ws_;
+    const ValidationOptions& options_;
+    Diagnostics& out_;
+};
+
+}  // namespace
+
+Diagnostics validateWorkspace(const Workspace& ws, const ValidationOptions& options) {
+    Diagnostics out;
+    Validator(ws, options, out).run();
+    return out;
+}
+
+}  // namespace rmfx

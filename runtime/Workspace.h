@@ -1,0 +1,204 @@
+#pragma once
+// The in-memory workspace: what every front end (the XML format, a RenderMonkey importer)
+// produces and what validation, the pass graph and the GL executor consume. Plain data:
+// no GL, no file access. Every object remembers where it was declared.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "runtime/Diagnostic.h"
+#include "runtime/Mesh.h"
+#include "runtime/Value.h"
+
+namespace rmfx {
+
+enum class WidgetHint { Auto, Slider, Drag, Color, Checkbox, Combo };
+
+struct Variable {
+    std::string name;
+    Value value;  // the default, as written in the file
+    std::optional<float> min, max, step;
+    WidgetHint widget = WidgetHint::Auto;
+    std::vector<std::string> options;  // labels of a combo: value i selects options[i]
+    bool hdr = false;                  // colour values may exceed 1
+    std::string description;
+    SourceLocation where;
+};
+
+enum class ColorSpace { Linear, Srgb };
+enum class TextureKind { Texture2D, Cube };
+enum class CubeLayout { Faces, Cross, Equirect };
+
+struct Texture {
+    std::string name;
+    TextureKind kind = TextureKind::Texture2D;
+    CubeLayout layout = CubeLayout::Faces;   // cube maps only
+    std::vector<std::string> files;          // one, or six faces (+x -x +y -y +z -z) for CubeLayout::Faces
+    std::vector<SourceLocation> fileLocations;  // where each file was named
+    ColorSpace colorSpace = ColorSpace::Linear;
+    bool mipmaps = true;
+    int faceSize = 0;  // equirect → cube face size; 0: image height / 2
+    SourceLocation where;
+};
+
+enum class TargetFormat { RGBA8, RGBA16F, RGBA32F, R16F, R32F, RG16F, RG32F, RGBA16, R11G11B10F, RGB10A2, R8, RG8 };
+
+struct TargetSize {
+    bool relative = true;
+    double scaleX = 1.0, scaleY = 1.0;  // relative: fraction of the viewport
+    int width = 0, height = 0;          // absolute
+};
+
+struct RenderTarget {
+    std::string name;
+    TargetFormat format = TargetFormat::RGBA16F;
+    TargetSize size;
+    bool mipmaps = false;
+    glm::vec4 initial{0.0f};  // contents before the first frame writes it (seen by frame="previous")
+    SourceLocation where;
+};
+
+enum class Filter { Nearest, Linear };
+enum class MipmapMode { None, Nearest, Linear };
+enum class Wrap { Repeat, Clamp, Mirror, Border };
+
+struct Sampler {
+    std::string uniform;      // the sampler uniform in the pass's shaders
+    std::string texture;      // a texture name, or
+    std::string target;       // a render-target name
+    bool previousFrame = false;  // read the target as the previous frame left it
+    Filter filter = Filter::Linear;
+    MipmapMode mipmap = MipmapMode::None;
+    Wrap wrapS = Wrap::Clamp, wrapT = Wrap::Clamp;
+    glm::vec4 border{0.0f};
+    SourceLocation where;
+};
+
+enum class ShaderStage { Vertex, Fragment };
+
+struct ShaderSource {
+    ShaderStage stage = ShaderStage::Fragment;
+    std::string file;    // relative to the workspace folder; empty for inline code
+    std::string code;    // inline code (CDATA or text)
+    int codeLine = 0;    // line of the workspace file where inline code starts
+    SourceLocation where;
+};
+
+enum class BlendFactor {
+    Zero, One, SrcColor, OneMinusSrcColor, DstColor, OneMinusDstColor,
+    SrcAlpha, OneMinusSrcAlpha, DstAlpha, OneMinusDstAlpha, ConstantColor, OneMinusConstantColor
+};
+enum class BlendOp { Add, Subtract, ReverseSubtract, Min, Max };
+
+struct BlendState {
+    bool enabled = false;
+    BlendFactor srcColor = BlendFactor::One, dstColor = BlendFactor::Zero;
+    BlendFactor srcAlpha = BlendFactor::One, dstAlpha = BlendFactor::Zero;
+    BlendOp colorOp = BlendOp::Add, alphaOp = BlendOp::Add;
+    glm::vec4 constant{0.0f};
+};
+
+enum class CompareFunc { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
+
+struct DepthState {
+    bool test = false;
+    bool write = false;
+    CompareFunc func = CompareFunc::Less;
+};
+
+enum class CullFace { None, Back, Front };
+
+struct RasterState {
+    CullFace cull = CullFace::None;
+    bool frontCounterClockwise = true;
+};
+
+struct ClearState {
+    std::optional<glm::vec4> color;
+    std::optional<float> depth;
+};
+
+struct DrawCall {
+    std::optional<BuiltinMesh> mesh;  // a built-in mesh, or
+    std::string file;                 // a model file relative to the workspace folder
+    glm::vec3 translate{0.0f};
+    glm::vec3 rotateDegrees{0.0f};    // applied X, then Y, then Z
+    glm::vec3 scale{1.0f};
+    SourceLocation where;
+};
+
+struct Pass {
+    std::string name;
+    std::string target;  // empty: the output
+    bool enabled = true;
+    ClearState clear;
+    BlendState blend;
+    DepthState depth;
+    RasterState raster;
+    std::vector<ShaderSource> shaders;  // at most one per stage; no vertex shader: the built-in one
+    std::vector<Sampler> samplers;
+    std::vector<Variable> constants;    // pass-local values, shadowing workspace variables
+    DrawCall draw;                      // default: the full-screen triangle
+    SourceLocation where;
+};
+
+enum class DisplayTransform { None, Srgb };
+
+struct Output {
+    std::string target;  // empty: the implicit target named "output"
+    TargetFormat format = TargetFormat::RGBA16F;  // of the implicit target
+    DisplayTransform transform = DisplayTransform::Srgb;
+    SourceLocation where;
+};
+
+struct OrbitCameraSettings {
+    glm::vec3 target{0.0f};
+    float distance = 4.0f;
+    float yawDegrees = 30.0f;     // about +Y, 0 looks down -Z
+    float pitchDegrees = 15.0f;   // above the horizon
+    float fovYDegrees = 60.0f;
+    float nearPlane = 0.05f, farPlane = 100.0f;
+    SourceLocation where;
+};
+
+struct Workspace {
+    std::filesystem::path path;  // the file it came from ("<built-in>" for embedded text)
+    std::filesystem::path folder;  // shader, texture and model paths are relative to it
+    std::string name;
+    std::string description;
+    int width = 512, height = 512;  // default viewport size
+    std::vector<Variable> variables;
+    std::vector<Texture> textures;
+    std::vector<RenderTarget> targets;
+    std::vector<Pass> passes;  // run in this order
+    Output output;
+    OrbitCameraSettings camera;
+
+    static constexpr const char* implicitOutputName = "output";
+
+    const Variable* findVariable(std::string_view name) const;
+    Variable* findVariable(std::string_view name);
+    const Texture* findTexture(std::string_view name) const;
+    const RenderTarget* findTarget(std::string_view name) const;
+    const Pass* findPass(std::string_view name) const;
+    // The name of the target the output comes from: output.target or the implicit one.
+    std::string outputTargetName() const;
+    // The target a pass writes, resolved: "" → the output target.
+    std::string passTargetName(const Pass& pass) const;
+};
+
+const char* targetFormatName(TargetFormat format);
+std::optional<TargetFormat> targetFormatFromName(std::string_view name);
+int targetFormatBytesPerPixel(TargetFormat format);
+
+// Viewport-relative sizes round up, never below 1: ceil(viewport × scale), so a chain of
+// half-size targets covers every source pixel (5 → 3 → 2 → 1).
+glm::ivec2 resolveTargetSize(const TargetSize& size, glm::ivec2 viewport);
+
+}  // namespace rmfx
