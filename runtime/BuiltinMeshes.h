@@ -19,7 +19,9 @@ Mesh makeSphere(int segments = 48, int rings = 24);
 // 2x2 in XZ at y = 0, facing +Y.
 Mesh makePlane();
 // The Utah teapot, Y up, centred near the origin and scaled to fit [-1,1];
-// each of its 32 Bezier patches becomes subdivisions x subdivisions quads.
+// each of its 32 Bezier patches becomes subdivisions x subdivisions quads over its own
+// (subdivisions+1)^2 vertices, patch after patch in the classic order (rim, body, handle,
+// spout, lid, bottom). Texcoords are the patch parameters.
 Mesh makeTeapot(int subdivisions = 10);
 
 // "fullscreen", "cube", "sphere", "plane", "teapot" (case-insensitive).
