@@ -1,1 +1,56 @@
-int main() { return 0; }
+// rmfx command line: renders and validates workspaces through the runtime library only.
+
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/Commands.h"
+
+namespace {
+
+const char* usage = R"(rmfx — runs RenderMonkey-style effect workspaces as OpenGL passes
+
+usage:
+  rmfx render [WORKSPACE] [options]   render headless and write an image
+  rmfx validate WORKSPACE...          check workspaces (structure, references, shaders) without GL
+  rmfx --help | --version
+
+WORKSPACE is an rmfx workspace file (docs/workspace-format.md); without one, render uses the
+built-in default workspace.
+
+render options:
+  -o, --output FILE      image to write: .exr/.hdr keep float data; .png/.jpg/.tga/.bmp get the
+                         output's display transform (default: WORKSPACE-NAME.png)
+  --size WxH             viewport size (default: the workspace's size attribute, else 512x512)
+  --frames N             frames to render before writing (default 1)
+  --dt SECONDS           fixed time step between frames (default 1/60)
+  --set NAME=VALUE       override a variable (repeatable), e.g. --set Exposure_Level=2
+                         or --set Sun_Direction="0 1 0"
+  --target NAME          write this render target instead of the output (written linear, no transform)
+  --transform none|srgb  override the display transform for 8-bit images
+  -q, --quiet            print nothing but errors
+
+exit status: 0 success, 1 invalid workspace or arguments, 2 rendering or GL failure
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+        std::fputs(usage, args.empty() ? stderr : stdout);
+        return args.empty() ? 1 : 0;
+    }
+    if (args[0] == "--version") {
+        std::puts("rmfx 0.1.0 (workspace format 1)");
+        return 0;
+    }
+    std::string command = args[0];
+    args.erase(args.begin());
+    if (command == "render") return rmfx::cli::renderCommand(args);
+    if (command == "validate") return rmfx::cli::validateCommand(args);
+    std::cerr << "rmfx: unknown command '" << command << "' (try rmfx --help)\n";
+    return 1;
+}

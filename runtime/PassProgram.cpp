@@ -63,6 +63,7 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
         input.root = ws.folder;
         input.defines = defines;
         input.folder = ws.folder;
+        input.snippets = &ws.snippets;
         if (s.file.empty()) {
             input.code = s.code;
             input.start = {ws.path.string(), s.codeLine};

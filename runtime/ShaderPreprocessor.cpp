@@ -75,6 +75,9 @@ private:
         if (!std::regex_match(line, m, pattern)) return fail("expected #include \"file\"");
         std::string name = m[1];
         if (depth >= 32) return fail("includes nested more than 32 deep (a cycle?) at \"" + name + "\"");
+        if (input_.snippets)
+            for (const CodeSnippet& snippet : *input_.snippets)
+                if (snippet.name == name) return includeSnippet(snippet, where, folder, depth);
         std::filesystem::path candidate = folder / name;
         if (!std::filesystem::is_regular_file(candidate)) candidate = input_.root / name;
         if (!std::filesystem::is_regular_file(candidate))
@@ -99,6 +102,29 @@ private:
             if (directiveName(l) == "pragma" && l.find("once") != std::string::npos) onceFiles_.insert(key);
         stack_.push_back(key);
         expand(text, candidate.lexically_normal().string(), 1, candidate.parent_path(), depth + 1);
+        stack_.pop_back();
+    }
+
+    void includeSnippet(const CodeSnippet& snippet, const SourceLocation& where, const std::filesystem::path& folder,
+                        int depth) {
+        std::filesystem::path key = "<snippet>/" + snippet.name;
+        for (const auto& open : stack_)
+            if (open == key) {
+                diagnostics_.push_back({Diagnostic::Severity::Error, where, "#include",
+                                        "\"" + snippet.name + "\" includes itself (include cycle)"});
+                out_.code += "\n";
+                out_.lineOrigins.push_back(where);
+                return;
+            }
+        if (onceFiles_.count(key)) {
+            out_.code += "\n";
+            out_.lineOrigins.push_back(where);
+            return;
+        }
+        for (const auto& l : splitLines(snippet.code))
+            if (directiveName(l) == "pragma" && l.find("once") != std::string::npos) onceFiles_.insert(key);
+        stack_.push_back(key);
+        expand(snippet.code, snippet.where.file, snippet.codeLine, folder, depth + 1);
         stack_.pop_back();
     }
 

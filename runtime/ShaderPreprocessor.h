@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "runtime/Diagnostic.h"
+#include "runtime/Workspace.h"
 
 namespace rmfx {
 
@@ -25,9 +26,10 @@ struct ShaderInput {
     std::filesystem::path folder;   // where includes of the top-level text resolve first
     std::filesystem::path root;     // includes may not leave this folder
     std::vector<std::string> defines;  // "NAME" or "NAME VALUE", inserted after #version
+    const std::vector<CodeSnippet>* snippets = nullptr;  // found by name before any file
 };
 
-// Includes resolve relative to the including file, then to `root`. `#pragma once` is honoured.
+// Includes resolve to a snippet of that name, then relative to the including file, then to `root`. `#pragma once` is honoured.
 // Without a #version line, "#version 450 core" is put first.
 PreprocessedShader preprocessShader(const ShaderInput& input, Diagnostics& diagnostics);
 

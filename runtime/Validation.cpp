@@ -48,6 +48,7 @@ private:
         unique(ws_.textures, "texture", "texture");
         unique(ws_.targets, "target", "target");
         unique(ws_.passes, "pass", "pass");
+        unique(ws_.snippets, "code snippet", "code");
         if (ws_.output.target.empty())
             if (const RenderTarget* t = ws_.findTarget(Workspace::implicitOutputName))
                 error(t->where, "<target name=\"output\">",

@@ -82,6 +82,14 @@ struct Sampler {
 
 enum class ShaderStage { Vertex, Fragment };
 
+// Shader code kept in the workspace file itself, which `#include "NAME"` finds before any file.
+struct CodeSnippet {
+    std::string name;
+    std::string code;
+    int codeLine = 0;  // line of the workspace file where the code starts
+    SourceLocation where;
+};
+
 struct ShaderSource {
     ShaderStage stage = ShaderStage::Fragment;
     std::string file;    // relative to the workspace folder; empty for inline code
@@ -174,6 +182,7 @@ struct Workspace {
     std::string description;
     int width = 512, height = 512;  // default viewport size
     std::vector<Variable> variables;
+    std::vector<CodeSnippet> snippets;
     std::vector<Texture> textures;
     std::vector<RenderTarget> targets;
     std::vector<Pass> passes;  // run in this order

@@ -159,6 +159,8 @@ public:
                 parseCamera(e, ws.camera);
             } else if (valueTypeFromElement(tag)) {
                 if (auto v = parseVariable(e)) ws.variables.push_back(std::move(*v));
+            } else if (tag == "code") {
+                if (auto c = parseSnippet(e)) ws.snippets.push_back(std::move(*c));
             } else if (tag == "texture" || tag == "cubemap") {
                 if (auto t = parseTexture(e)) ws.textures.push_back(std::move(*t));
             } else if (tag == "target") {
@@ -171,7 +173,7 @@ public:
                 parseOutput(e, ws.output);
             } else {
                 unexpected(e, "unknown element <" + std::string(tag) +
-                                  "> in <workspace> (expected description, camera, float, int, bool, vec2, vec3, "
+                                  "> in <workspace> (expected description, camera, code, float, int, bool, vec2, vec3, "
                                   "vec4, color, mat4, texture, cubemap, target, pass, output)");
             }
         }
@@ -300,6 +302,20 @@ private:
         v.description = r.string("description").value_or("");
         noChildren(e);
         return v;
+    }
+
+    std::optional<CodeSnippet> parseSnippet(const XMLElement* e) {
+        ElementReader r(e, file_, diagnostics_, {"name"});
+        CodeSnippet c;
+        c.where = r.where();
+        auto name = r.string("name", true);
+        noChildren(e);
+        const char* text = e->GetText();
+        if (!name) return std::nullopt;
+        c.name = *name;
+        c.code = text ? text : "";
+        c.codeLine = e->FirstChild() ? e->FirstChild()->GetLineNum() : e->GetLineNum();
+        return c;
     }
 
     std::optional<Texture> parseTexture(const XMLElement* e) {

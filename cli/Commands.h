@@ -1,0 +1,12 @@
+#pragma once
+// The CLI's commands. Each returns the process exit status.
+
+#include <string>
+#include <vector>
+
+namespace rmfx::cli {
+
+int renderCommand(const std::vector<std::string>& args);
+int validateCommand(const std::vector<std::string>& args);
+
+}  // namespace rmfx::cli

@@ -1,0 +1,137 @@
+#include <cmath>
+#include <iostream>
+#include <optional>
+
+#include "cli/Commands.h"
+#include "runtime/GlContext.h"
+#include "runtime/HeadlessRun.h"
+#include "runtime/ImageIO.h"
+#include "runtime/WorkspaceLoader.h"
+
+namespace rmfx::cli {
+namespace {
+
+struct RenderArguments {
+    std::optional<std::string> workspace;
+    std::optional<std::string> output;
+    RunSettings run;
+    std::vector<std::pair<std::string, std::string>> overrides;
+    std::optional<std::string> target;
+    std::optional<DisplayTransform> transform;
+    bool quiet = false;
+};
+
+std::optional<RenderArguments> parseArguments(const std::vector<std::string>& args) {
+    RenderArguments a;
+    auto fail = [](const std::string& message) -> std::optional<RenderArguments> {
+        std::cerr << "rmfx render: " << message << "\n";
+        return std::nullopt;
+    };
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        auto next = [&]() -> std::optional<std::string> {
+            if (i + 1 >= args.size()) return std::nullopt;
+            return args[++i];
+        };
+        if (arg == "-o" || arg == "--output" || arg == "--size" || arg == "--frames" || arg == "--dt" ||
+            arg == "--set" || arg == "--target" || arg == "--transform") {
+            auto value = next();
+            if (!value) return fail(arg + " needs a value");
+            if (arg == "-o" || arg == "--output") {
+                a.output = *value;
+            } else if (arg == "--size") {
+                int w = 0, h = 0;
+                char x = 0, extra = 0;
+                if (std::sscanf(value->c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 ||
+                    w > 16384 || h > 16384)
+                    return fail("--size: expected WIDTHxHEIGHT between 1x1 and 16384x16384, got '" + *value + "'");
+                a.run.size = {w, h};
+            } else if (arg == "--frames") {
+                char* end = nullptr;
+                long n = std::strtol(value->c_str(), &end, 10);
+                if (*end || n < 1 || n > 1000000) return fail("--frames: expected a count from 1 to 1000000, got '" + *value + "'");
+                a.run.frames = static_cast<int>(n);
+            } else if (arg == "--dt") {
+                char* end = nullptr;
+                double dt = std::strtod(value->c_str(), &end);
+                if (*end || !std::isfinite(dt) || dt < 0) return fail("--dt: expected seconds ≥ 0, got '" + *value + "'");
+                a.run.deltaTime = static_cast<float>(dt);
+            } else if (arg == "--set") {
+                auto eq = value->find('=');
+                if (eq == std::string::npos || eq == 0) return fail("--set: expected NAME=VALUE, got '" + *value + "'");
+                a.overrides.emplace_back(value->substr(0, eq), value->substr(eq + 1));
+            } else if (arg == "--target") {
+                a.target = *value;
+            } else {
+                if (*value == "none") a.transform = DisplayTransform::None;
+                else if (*value == "srgb") a.transform = DisplayTransform::Srgb;
+                else return fail("--transform: expected none or srgb, got '" + *value + "'");
+            }
+        } else if (arg == "-q" || arg == "--quiet") {
+            a.quiet = true;
+        } else if (!arg.empty() && arg[0] == '-') {
+            return fail("unknown option '" + arg + "' (see rmfx --help)");
+        } else if (a.workspace) {
+            return fail("one workspace at a time; got '" + *a.workspace + "' and '" + arg + "'");
+        } else {
+            a.workspace = arg;
+        }
+    }
+    return a;
+}
+
+}  // namespace
+
+int renderCommand(const std::vector<std::string>& args) {
+    auto a = parseArguments(args);
+    if (!a) return 1;
+    LoadedWorkspace loaded = a->workspace ? loadWorkspace(*a->workspace) : loadDefaultWorkspace();
+    if (!loaded.workspace) {
+        std::cerr << formatAll(loaded.diagnostics);
+        return 1;
+    }
+    if (!a->quiet) std::cerr << formatAll(loaded.diagnostics);  // warnings
+    Workspace& ws = *loaded.workspace;
+    if (Diagnostics bad = applyOverrides(ws, a->overrides); !bad.empty()) {
+        std::cerr << formatAll(bad);
+        return 1;
+    }
+    std::string targetName = a->target.value_or(ws.outputTargetName());
+    if (a->target && !ws.findTarget(*a->target) && *a->target != ws.outputTargetName()) {
+        std::string known;
+        for (const RenderTarget& t : ws.targets) known += (known.empty() ? "" : ", ") + t.name;
+        std::cerr << "rmfx render: --target " << *a->target << ": the workspace has no such target (it has: "
+                  << (known.empty() ? "none" : known) << "; the output is '" << ws.outputTargetName() << "')\n";
+        return 1;
+    }
+    std::string output = a->output.value_or(ws.name + ".png");
+
+    auto context = GlContext::createHeadless();
+    if (!context) {
+        std::cerr << "rmfx render: " << context.error() << "\n";
+        return 2;
+    }
+    Diagnostics diagnostics;
+    auto executor = runHeadless(ws, a->run, diagnostics);
+    if (!executor) {
+        std::cerr << formatAll(diagnostics);
+        return 2;
+    }
+    auto image = executor->readTarget(targetName);
+    if (!image) {
+        std::cerr << "rmfx render: " << image.error() << "\n";
+        return 2;
+    }
+    DisplayTransform transform = a->transform.value_or(a->target ? DisplayTransform::None : ws.output.transform);
+    if (auto written = writeImage(output, *image, transform); !written) {
+        std::cerr << "rmfx render: " << written.error() << "\n";
+        return 2;
+    }
+    if (!a->quiet)
+        std::cerr << "rmfx: wrote " << output << " (" << image->width << "x" << image->height << ", target '"
+                  << targetName << "', " << a->run.frames << (a->run.frames == 1 ? " frame" : " frames") << ", "
+                  << (*context)->description() << ")\n";
+    return 0;
+}
+
+}  // namespace rmfx::cli

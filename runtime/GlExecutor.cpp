@@ -1,0 +1,544 @@
+#include "runtime/GlExecutor.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include <epoxy/gl.h>
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "runtime/BuiltinMeshes.h"
+#include "runtime/GlFormats.h"
+#include "runtime/GlMesh.h"
+#include "runtime/GlTexture.h"
+#include "runtime/ModelLoader.h"
+#include "runtime/PassProgram.h"
+#include "runtime/UniformBinding.h"
+
+namespace rmfx {
+namespace {
+
+struct GpuTarget {
+    std::string name;
+    TargetFormat format = TargetFormat::RGBA16F;
+    glm::ivec2 size{1};
+    bool mipmaps = false;
+    bool history = false;   // double-buffered: frame="previous" reads the other buffer
+    bool needsDepth = false;
+    glm::vec4 initial{0.0f};
+    GLuint textures[2] = {0, 0};
+    GLuint framebuffers[2] = {0, 0};
+    GLuint depth = 0;
+    int front = 0;          // buffer with the last finished frame's contents
+    bool writtenThisFrame = false;
+
+    int writeBuffer() const { return history ? 1 - front : 0; }
+    SourceLocation where;
+};
+
+struct UniformSlot {
+    GLint location = -1;
+    std::string name;
+    UniformType type = UniformType::Other;
+    UniformSource source;
+};
+
+struct SamplerSlot {
+    GLint unit = 0;
+    GLuint samplerObject = 0;
+    const Sampler* sampler = nullptr;
+    GLuint texture = 0;                // for textures
+    GpuTarget* target = nullptr;       // for targets
+};
+
+struct GpuPass {
+    const Pass* pass = nullptr;
+    GLuint program = 0;
+    GpuTarget* target = nullptr;
+    const GlMesh* mesh = nullptr;
+    glm::mat4 model{1.0f};
+    std::vector<UniformSlot> uniforms;
+    std::vector<SamplerSlot> samplers;
+};
+
+std::string describeGlError(GLenum e) {
+    switch (e) {
+        case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+        case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+        case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+        case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+        case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+        default: {
+            char buffer[32];
+            std::snprintf(buffer, sizeof buffer, "GL error 0x%04x", e);
+            return buffer;
+        }
+    }
+}
+
+std::string describeFramebufferStatus(GLenum status) {
+    switch (status) {
+        case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "incomplete attachment";
+        case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT: return "no attachment";
+        case GL_FRAMEBUFFER_UNSUPPORTED: return "format combination unsupported by the driver";
+        default: return "status 0x" + std::to_string(status);
+    }
+}
+
+glm::mat4 modelMatrix(const DrawCall& draw) {
+    glm::mat4 m = glm::translate(glm::mat4(1.0f), draw.translate);
+    m = glm::rotate(m, glm::radians(draw.rotateDegrees.z), glm::vec3(0, 0, 1));
+    m = glm::rotate(m, glm::radians(draw.rotateDegrees.y), glm::vec3(0, 1, 0));
+    m = glm::rotate(m, glm::radians(draw.rotateDegrees.x), glm::vec3(1, 0, 0));
+    return glm::scale(m, draw.scale);
+}
+
+}  // namespace
+
+struct GlExecutor::Impl {
+    const Workspace& ws;
+    std::map<std::string, Value> values;
+    std::vector<std::unique_ptr<GpuTarget>> targets;
+    std::map<std::string, GLuint> textures;
+    std::map<std::string, std::unique_ptr<GlMesh>> meshes;
+    std::vector<GpuPass> passes;
+    std::vector<GLuint> samplerObjects;
+
+    explicit Impl(const Workspace& w) : ws(w) {}
+
+    ~Impl() {
+        for (auto& t : targets) {
+            glDeleteFramebuffers(2, t->framebuffers);
+            glDeleteTextures(2, t->textures);
+            glDeleteRenderbuffers(1, &t->depth);
+        }
+        for (auto& [name, texture] : textures) glDeleteTextures(1, &texture);
+        for (GpuPass& p : passes) glDeleteProgram(p.program);
+        glDeleteSamplers(static_cast<GLsizei>(samplerObjects.size()), samplerObjects.data());
+    }
+
+    GpuTarget* findTarget(const std::string& name) const {
+        for (auto& t : targets)
+            if (t->name == name) return t.get();
+        return nullptr;
+    }
+
+    void error(Diagnostics& d, const SourceLocation& where, const std::string& element, const std::string& message) {
+        d.push_back({Diagnostic::Severity::Error, where, element, message});
+    }
+
+    void declareTargets(glm::ivec2 viewport) {
+        auto add = [&](const std::string& name, TargetFormat format, glm::ivec2 size, bool mipmaps, glm::vec4 initial,
+                       SourceLocation where) {
+            auto t = std::make_unique<GpuTarget>();
+            t->name = name;
+            t->format = format;
+            t->size = size;
+            t->mipmaps = mipmaps;
+            t->initial = initial;
+            t->where = where;
+            targets.push_back(std::move(t));
+        };
+        for (const RenderTarget& t : ws.targets)
+            add(t.name, t.format, resolveTargetSize(t.size, viewport), t.mipmaps, t.initial, t.where);
+        if (ws.output.target.empty())
+            add(Workspace::implicitOutputName, ws.output.format, viewport, false, glm::vec4(0), ws.output.where);
+        for (const Pass& p : ws.passes) {
+            if (!p.enabled) continue;
+            GpuTarget* written = findTarget(ws.passTargetName(p));
+            if (written && (p.depth.test || p.depth.write || p.clear.depth)) written->needsDepth = true;
+            for (const Sampler& s : p.samplers)
+                if (s.previousFrame)
+                    if (GpuTarget* t = findTarget(s.target)) t->history = true;
+        }
+    }
+
+    bool allocateTargets(Diagnostics& d) {
+        bool ok = true;
+        for (auto& t : targets) {
+            int buffers = t->history ? 2 : 1;
+            int levels = t->mipmaps ? 1 + static_cast<int>(std::floor(std::log2(std::max(t->size.x, t->size.y)))) : 1;
+            if (t->needsDepth) {
+                glCreateRenderbuffers(1, &t->depth);
+                glNamedRenderbufferStorage(t->depth, GL_DEPTH_COMPONENT32F, t->size.x, t->size.y);
+            }
+            for (int i = 0; i < buffers; ++i) {
+                glCreateTextures(GL_TEXTURE_2D, 1, &t->textures[i]);
+                glTextureStorage2D(t->textures[i], levels, gl::internalFormat(t->format), t->size.x, t->size.y);
+                glCreateFramebuffers(1, &t->framebuffers[i]);
+                glNamedFramebufferTexture(t->framebuffers[i], GL_COLOR_ATTACHMENT0, t->textures[i], 0);
+                if (t->depth) glNamedFramebufferRenderbuffer(t->framebuffers[i], GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t->depth);
+                GLenum status = glCheckNamedFramebufferStatus(t->framebuffers[i], GL_FRAMEBUFFER);
+                if (status != GL_FRAMEBUFFER_COMPLETE) {
+                    error(d, t->where, "<target name=\"" + t->name + "\">",
+                          std::string("framebuffer for format ") + targetFormatName(t->format) + " " +
+                              std::to_string(t->size.x) + "x" + std::to_string(t->size.y) +
+                              " is incomplete: " + describeFramebufferStatus(status));
+                    ok = false;
+                    continue;
+                }
+                glClearNamedFramebufferfv(t->framebuffers[i], GL_COLOR, 0, glm::value_ptr(t->initial));
+            }
+            if (GLenum e = glGetError(); e != GL_NO_ERROR) {
+                error(d, t->where, "<target name=\"" + t->name + "\">",
+                      describeGlError(e) + " while allocating " + std::to_string(t->size.x) + "x" +
+                          std::to_string(t->size.y) + " " + targetFormatName(t->format));
+                ok = false;
+            }
+        }
+        return ok;
+    }
+
+    bool loadTextures(Diagnostics& d) {
+        bool ok = true;
+        for (const Texture& t : ws.textures) {
+            auto loaded = loadGlTexture(ws, t);
+            if (!loaded) {
+                error(d, t.where, "", loaded.error());
+                ok = false;
+                continue;
+            }
+            textures[t.name] = loaded->name;
+        }
+        return ok;
+    }
+
+    const GlMesh* meshFor(const DrawCall& draw, Diagnostics& d) {
+        std::string key = draw.mesh ? std::string("builtin:") + builtinMeshName(*draw.mesh) : "file:" + draw.file;
+        if (auto it = meshes.find(key); it != meshes.end()) return it->second.get();
+        Mesh mesh;
+        if (draw.mesh) {
+            mesh = makeMesh(*draw.mesh);
+        } else {
+            auto loaded = loadModel(ws.folder / draw.file);
+            if (!loaded) {
+                error(d, draw.where, "<draw>", loaded.error());
+                return nullptr;
+            }
+            mesh = std::move(*loaded);
+        }
+        auto& slot = meshes[key];
+        slot = std::make_unique<GlMesh>(mesh);
+        return slot.get();
+    }
+
+    GLuint compileProgram(const Pass& pass, Diagnostics& d) {
+        auto source = assemblePassProgram(ws, pass, {}, d);
+        if (!source) return 0;
+        std::string label = passLabel(pass);
+        GLuint program = glCreateProgram();
+        bool ok = true;
+        for (const PassStage& stage : source->stages) {
+            GLuint shader = glCreateShader(stage.stage == ShaderStage::Vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER);
+            const char* text = stage.shader.code.c_str();
+            glShaderSource(shader, 1, &text, nullptr);
+            glCompileShader(shader);
+            GLint compiled = 0;
+            glGetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
+            if (!compiled) {
+                GLint length = 0;
+                glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+                std::string log(static_cast<size_t>(std::max(length, 1)), '\0');
+                glGetShaderInfoLog(shader, length, nullptr, log.data());
+                log.resize(std::strlen(log.c_str()));
+                auto mapped = mapCompilerLog(log, stage.shader, stage.where, label);
+                if (mapped.empty()) mapped.push_back({Diagnostic::Severity::Error, stage.where, label, "shader failed to compile"});
+                d.insert(d.end(), mapped.begin(), mapped.end());
+                ok = false;
+            }
+            glAttachShader(program, shader);
+            glDeleteShader(shader);
+        }
+        if (!ok) {
+            glDeleteProgram(program);
+            return 0;
+        }
+        glLinkProgram(program);
+        GLint linked = 0;
+        glGetProgramiv(program, GL_LINK_STATUS, &linked);
+        if (!linked) {
+            GLint length = 0;
+            glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+            std::string log(static_cast<size_t>(std::max(length, 1)), '\0');
+            glGetProgramInfoLog(program, length, nullptr, log.data());
+            log.resize(std::strlen(log.c_str()));
+            error(d, pass.where, label, "shaders failed to link: " + log);
+            glDeleteProgram(program);
+            return 0;
+        }
+        return program;
+    }
+
+    bool bindUniforms(GpuPass& gp, Diagnostics& d) {
+        const Pass& pass = *gp.pass;
+        GLint count = 0;
+        glGetProgramInterfaceiv(gp.program, GL_UNIFORM, GL_ACTIVE_RESOURCES, &count);
+        bool ok = true;
+        int unit = 0;
+        for (GLint i = 0; i < count; ++i) {
+            const GLenum props[4] = {GL_TYPE, GL_LOCATION, GL_ARRAY_SIZE, GL_BLOCK_INDEX};
+            GLint values[4] = {};
+            glGetProgramResourceiv(gp.program, GL_UNIFORM, static_cast<GLuint>(i), 4, props, 4, nullptr, values);
+            if (values[3] != -1 || values[1] < 0) continue;  // block members are not rmfx variables
+            char nameBuffer[256] = {};
+            glGetProgramResourceName(gp.program, GL_UNIFORM, static_cast<GLuint>(i), sizeof nameBuffer, nullptr, nameBuffer);
+            std::string name = nameBuffer;
+            if (name.size() > 3 && name.compare(name.size() - 3, 3, "[0]") == 0) name.resize(name.size() - 3);
+            UniformType type = uniformTypeFromGl(values[0]);
+            UniformSource source = resolveUniform(ws, pass, name);
+            if (std::string why = bindingMismatch(ws, source, name, type, values[2]); !why.empty()) {
+                error(d, pass.where, passLabel(pass), why);
+                ok = false;
+                continue;
+            }
+            if (const auto* s = std::get_if<BoundSampler>(&source)) {
+                SamplerSlot slot;
+                slot.unit = unit++;
+                slot.sampler = s->sampler;
+                glProgramUniform1i(gp.program, values[1], slot.unit);
+                if (!s->sampler->texture.empty()) slot.texture = textures[s->sampler->texture];
+                else slot.target = findTarget(s->sampler->target);
+                glCreateSamplers(1, &slot.samplerObject);
+                samplerObjects.push_back(slot.samplerObject);
+                const Sampler& spec = *s->sampler;
+                glSamplerParameteri(slot.samplerObject, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(gl::minFilter(spec.filter, spec.mipmap)));
+                glSamplerParameteri(slot.samplerObject, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(gl::magFilter(spec.filter)));
+                glSamplerParameteri(slot.samplerObject, GL_TEXTURE_WRAP_S, static_cast<GLint>(gl::wrapMode(spec.wrapS)));
+                glSamplerParameteri(slot.samplerObject, GL_TEXTURE_WRAP_T, static_cast<GLint>(gl::wrapMode(spec.wrapT)));
+                glSamplerParameteri(slot.samplerObject, GL_TEXTURE_WRAP_R, static_cast<GLint>(gl::wrapMode(spec.wrapT)));
+                glSamplerParameterfv(slot.samplerObject, GL_TEXTURE_BORDER_COLOR, glm::value_ptr(spec.border));
+                gp.samplers.push_back(slot);
+                continue;
+            }
+            gp.uniforms.push_back({values[1], name, type, source});
+        }
+        return ok;
+    }
+
+    void upload(const GpuPass& gp, const FrameClock& clock, int frame, const OrbitCamera& camera, glm::ivec2 viewport) {
+        glm::mat4 view = camera.view();
+        glm::mat4 projection = camera.projection(static_cast<float>(viewport.x) / static_cast<float>(viewport.y));
+        glm::mat4 viewProjection = projection * view;
+        for (const UniformSlot& u : gp.uniforms) {
+            const float* data = nullptr;
+            Value value;
+            if (const auto* c = std::get_if<BoundConstant>(&u.source)) {
+                value = c->constant->value;
+                data = value.data.data();
+            } else if (const auto* v = std::get_if<BoundVariable>(&u.source)) {
+                value = values.at(v->variable->name);
+                data = value.data.data();
+            }
+            if (data) {
+                switch (u.type) {
+                    case UniformType::Float: glProgramUniform1f(gp.program, u.location, data[0]); break;
+                    case UniformType::Int:
+                    case UniformType::Bool: glProgramUniform1i(gp.program, u.location, static_cast<GLint>(data[0])); break;
+                    case UniformType::Vec2: glProgramUniform2fv(gp.program, u.location, 1, data); break;
+                    case UniformType::Vec3: glProgramUniform3fv(gp.program, u.location, 1, data); break;
+                    case UniformType::Vec4: glProgramUniform4fv(gp.program, u.location, 1, data); break;
+                    case UniformType::Mat4: glProgramUniformMatrix4fv(gp.program, u.location, 1, GL_FALSE, data); break;
+                    default: break;
+                }
+                continue;
+            }
+            const auto& p = std::get<BoundPredefined>(u.source);
+            glm::vec2 targetSize = gp.target->size;
+            auto mat4 = [&](const glm::mat4& m) { glProgramUniformMatrix4fv(gp.program, u.location, 1, GL_FALSE, glm::value_ptr(m)); };
+            auto vec2 = [&](glm::vec2 v) { glProgramUniform2f(gp.program, u.location, v.x, v.y); };
+            switch (p.info.id) {
+                case Predefined::ViewportSize: vec2(glm::vec2(viewport)); break;
+                case Predefined::InvViewportSize: vec2(1.0f / glm::vec2(viewport)); break;
+                case Predefined::TargetSize: vec2(targetSize); break;
+                case Predefined::InvTargetSize: vec2(1.0f / targetSize); break;
+                case Predefined::Time: glProgramUniform1f(gp.program, u.location, clock.time); break;
+                case Predefined::DeltaTime: glProgramUniform1f(gp.program, u.location, clock.deltaTime); break;
+                case Predefined::Frame: glProgramUniform1i(gp.program, u.location, frame); break;
+                case Predefined::View: mat4(view); break;
+                case Predefined::Projection: mat4(projection); break;
+                case Predefined::ViewProjection: mat4(viewProjection); break;
+                case Predefined::InvView: mat4(glm::inverse(view)); break;
+                case Predefined::InvProjection: mat4(glm::inverse(projection)); break;
+                case Predefined::InvViewProjection: mat4(glm::inverse(viewProjection)); break;
+                case Predefined::Model: mat4(gp.model); break;
+                case Predefined::ModelViewProjection: mat4(viewProjection * gp.model); break;
+                case Predefined::NormalMatrix: {
+                    glm::mat3 n = glm::inverseTranspose(glm::mat3(gp.model));
+                    glProgramUniformMatrix3fv(gp.program, u.location, 1, GL_FALSE, glm::value_ptr(n));
+                    break;
+                }
+                case Predefined::CameraPosition: {
+                    glm::vec3 c = camera.position();
+                    glProgramUniform3f(gp.program, u.location, c.x, c.y, c.z);
+                    break;
+                }
+            }
+        }
+    }
+
+    void applyState(const Pass& pass) {
+        if (pass.blend.enabled) {
+            glEnable(GL_BLEND);
+            glBlendFuncSeparate(gl::blendFactor(pass.blend.srcColor), gl::blendFactor(pass.blend.dstColor),
+                                gl::blendFactor(pass.blend.srcAlpha), gl::blendFactor(pass.blend.dstAlpha));
+            glBlendEquationSeparate(gl::blendEquation(pass.blend.colorOp), gl::blendEquation(pass.blend.alphaOp));
+            glBlendColor(pass.blend.constant.r, pass.blend.constant.g, pass.blend.constant.b, pass.blend.constant.a);
+        } else {
+            glDisable(GL_BLEND);
+        }
+        if (pass.depth.test || pass.depth.write) {
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(pass.depth.test ? gl::compareFunc(pass.depth.func) : GL_ALWAYS);
+        } else {
+            glDisable(GL_DEPTH_TEST);
+        }
+        glDepthMask(pass.depth.write ? GL_TRUE : GL_FALSE);
+        if (pass.raster.cull == CullFace::None) {
+            glDisable(GL_CULL_FACE);
+        } else {
+            glEnable(GL_CULL_FACE);
+            glCullFace(pass.raster.cull == CullFace::Back ? GL_BACK : GL_FRONT);
+        }
+        glFrontFace(pass.raster.frontCounterClockwise ? GL_CCW : GL_CW);
+    }
+};
+
+GlExecutor::GlExecutor(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+GlExecutor::~GlExecutor() = default;
+
+std::unique_ptr<GlExecutor> GlExecutor::create(const Workspace& ws, glm::ivec2 viewport, Diagnostics& d) {
+    if (viewport.x < 1 || viewport.y < 1) {
+        d.push_back({Diagnostic::Severity::Error, {ws.path.string(), 0}, "",
+                     "viewport size " + std::to_string(viewport.x) + "x" + std::to_string(viewport.y) + " is empty"});
+        return nullptr;
+    }
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    auto impl = std::make_unique<Impl>(ws);
+    for (const Variable& v : ws.variables) impl->values[v.name] = v.value;
+    impl->declareTargets(viewport);
+    bool ok = impl->allocateTargets(d);
+    ok = impl->loadTextures(d) && ok;
+    for (const Pass& pass : ws.passes) {
+        if (!pass.enabled) continue;
+        GpuPass gp;
+        gp.pass = &pass;
+        gp.target = impl->findTarget(ws.passTargetName(pass));
+        gp.mesh = impl->meshFor(pass.draw, d);
+        gp.model = modelMatrix(pass.draw);
+        gp.program = impl->compileProgram(pass, d);
+        if (!gp.target) {
+            impl->error(d, pass.where, passLabel(pass), "target '" + ws.passTargetName(pass) + "' is not declared");
+            ok = false;
+        }
+        if (!gp.program || !gp.mesh || !gp.target) {
+            ok = false;
+            glDeleteProgram(gp.program);
+            continue;
+        }
+        ok = impl->bindUniforms(gp, d) && ok;
+        impl->passes.push_back(std::move(gp));
+    }
+    if (!ok) return nullptr;
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    std::unique_ptr<GlExecutor> executor(new GlExecutor(std::move(impl)));
+    executor->camera_ = OrbitCamera(ws.camera);
+    executor->viewport_ = viewport;
+    return executor;
+}
+
+Diagnostics GlExecutor::renderFrame(const FrameClock& clock) {
+    Diagnostics d;
+    Impl& s = *impl_;
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    for (auto& t : s.targets) t->writtenThisFrame = false;
+    for (const GpuPass& gp : s.passes) {
+        const Pass& pass = *gp.pass;
+        GpuTarget& target = *gp.target;
+        GLuint framebuffer = target.framebuffers[target.writeBuffer()];
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+        glViewport(0, 0, target.size.x, target.size.y);
+        s.applyState(pass);
+        if (pass.clear.color) glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, glm::value_ptr(*pass.clear.color));
+        if (pass.clear.depth) {
+            glDepthMask(GL_TRUE);
+            glClearNamedFramebufferfv(framebuffer, GL_DEPTH, 0, &*pass.clear.depth);
+            glDepthMask(pass.depth.write ? GL_TRUE : GL_FALSE);
+        }
+        glUseProgram(gp.program);
+        s.upload(gp, clock, frame_, camera_, viewport_);
+        for (const SamplerSlot& slot : gp.samplers) {
+            GLuint texture = slot.texture;
+            if (slot.target)
+                texture = slot.target->textures[slot.sampler->previousFrame ? slot.target->front
+                                                                            : slot.target->writeBuffer()];
+            glBindTextureUnit(static_cast<GLuint>(slot.unit), texture);
+            glBindSampler(static_cast<GLuint>(slot.unit), slot.samplerObject);
+        }
+        gp.mesh->draw();
+        target.writtenThisFrame = true;
+        if (target.mipmaps) glGenerateTextureMipmap(target.textures[target.writeBuffer()]);
+        for (GLenum e; (e = glGetError()) != GL_NO_ERROR;)
+            d.push_back({Diagnostic::Severity::Error, pass.where, passLabel(pass),
+                         describeGlError(e) + " while drawing into '" + target.name + "'"});
+    }
+    // Double-buffered targets written this frame: next frame writes the other buffer, and
+    // frame="previous" reads this one.
+    for (auto& t : s.targets)
+        if (t->history && t->writtenThisFrame) t->front = 1 - t->front;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    ++frame_;
+    return d;
+}
+
+const Value* GlExecutor::variable(const std::string& name) const {
+    auto it = impl_->values.find(name);
+    return it == impl_->values.end() ? nullptr : &it->second;
+}
+
+std::string GlExecutor::setVariable(const std::string& name, const Value& value) {
+    auto it = impl_->values.find(name);
+    if (it == impl_->values.end()) return "no variable named '" + name + "'";
+    if (it->second.type != value.type)
+        return "variable '" + name + "' is a " + valueTypeName(it->second.type) + " (" +
+               std::to_string(componentCount(it->second.type)) + " values), not a " + valueTypeName(value.type);
+    it->second = value;
+    return {};
+}
+
+Result<Image> GlExecutor::readTarget(const std::string& name) const {
+    const GpuTarget* t = impl_->findTarget(name);
+    if (!t) return Error{"no render target named '" + name + "'"};
+    int buffer = t->front;  // the newest finished contents
+    Image image;
+    image.width = t->size.x;
+    image.height = t->size.y;
+    image.channels = gl::channelCount(t->format) == 1 ? 1 : 4;
+    image.highDynamicRange = true;
+    std::vector<float> rgba(static_cast<size_t>(image.width) * image.height * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(t->textures[buffer], 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(rgba.size() * sizeof(float)), rgba.data());
+    if (GLenum e = glGetError(); e != GL_NO_ERROR) return Error{describeGlError(e) + " reading target '" + name + "'"};
+    image.pixels.resize(static_cast<size_t>(image.width) * image.height * image.channels);
+    for (int y = 0; y < image.height; ++y) {
+        const float* src = &rgba[static_cast<size_t>(image.height - 1 - y) * image.width * 4];
+        for (int x = 0; x < image.width; ++x)
+            for (int c = 0; c < image.channels; ++c) image.at(x, y, c) = src[x * 4 + c];
+    }
+    return image;
+}
+
+std::vector<std::string> GlExecutor::targetNames() const {
+    std::vector<std::string> names;
+    for (auto& t : impl_->targets) names.push_back(t->name);
+    return names;
+}
+
+glm::ivec2 GlExecutor::targetSize(const std::string& name) const {
+    const GpuTarget* t = impl_->findTarget(name);
+    return t ? t->size : glm::ivec2(0);
+}
+
+}  // namespace rmfx

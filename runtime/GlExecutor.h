@@ -1,0 +1,62 @@
+#pragma once
+// Runs a validated workspace as ordered OpenGL passes. Owns every GL object it creates:
+// textures, render targets (double-buffered where a pass reads them with frame="previous"),
+// meshes, programs and sampler objects. Needs a current GL 4.5 context (GlContext).
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "runtime/Diagnostic.h"
+#include "runtime/Image.h"
+#include "runtime/OrbitCamera.h"
+#include "runtime/Result.h"
+#include "runtime/Workspace.h"
+
+namespace rmfx {
+
+struct FrameClock {
+    float time = 0.0f;       // seconds since the first frame
+    float deltaTime = 0.0f;  // seconds since the previous frame
+};
+
+class GlExecutor {
+public:
+    // Compiles every pass, loads textures and meshes, allocates targets for `viewport`. On any
+    // error returns nullptr with diagnostics naming the pass, target or texture.
+    static std::unique_ptr<GlExecutor> create(const Workspace& ws, glm::ivec2 viewport, Diagnostics& diagnostics);
+    ~GlExecutor();
+    GlExecutor(const GlExecutor&) = delete;
+    GlExecutor& operator=(const GlExecutor&) = delete;
+
+    // Runs every enabled pass once. Errors (GL errors, incomplete framebuffers) name the pass.
+    Diagnostics renderFrame(const FrameClock& clock);
+    int frameIndex() const { return frame_; }  // frames rendered so far
+
+    // Current value of a workspace variable; setVariable checks the type (a colour takes rgb or
+    // rgba as declared) and returns an error sentence, empty on success.
+    const Value* variable(const std::string& name) const;
+    std::string setVariable(const std::string& name, const Value& value);
+
+    OrbitCamera& camera() { return camera_; }
+    glm::ivec2 viewport() const { return viewport_; }
+
+    // Reads a render target (or "output") back as float RGBA, row 0 at the top.
+    Result<Image> readTarget(const std::string& name) const;
+    std::vector<std::string> targetNames() const;
+    glm::ivec2 targetSize(const std::string& name) const;
+
+    struct Impl;
+
+private:
+    explicit GlExecutor(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+    OrbitCamera camera_;
+    glm::ivec2 viewport_{0};
+    int frame_ = 0;
+};
+
+}  // namespace rmfx

@@ -1,0 +1,55 @@
+#include "runtime/WorkspaceLoader.h"
+
+#include "runtime/DefaultWorkspace.h"
+#include "runtime/WorkspaceParser.h"
+
+namespace rmfx {
+
+static LoadedWorkspace validated(ParsedWorkspace parsed, const ValidationOptions& options) {
+    LoadedWorkspace out;
+    out.diagnostics = std::move(parsed.diagnostics);
+    if (!parsed.workspace) return out;
+    Diagnostics found = validateWorkspace(*parsed.workspace, options);
+    out.diagnostics.insert(out.diagnostics.end(), found.begin(), found.end());
+    if (!hasErrors(out.diagnostics)) out.workspace = std::move(parsed.workspace);
+    return out;
+}
+
+LoadedWorkspace loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options) {
+    return validated(parseWorkspaceFile(path), options);
+}
+
+LoadedWorkspace loadDefaultWorkspace(const ValidationOptions& options) {
+    return validated(parseWorkspaceText(defaultWorkspaceText(), defaultWorkspaceName, "."), options);
+}
+
+Diagnostics applyOverrides(Workspace& ws, const std::vector<std::pair<std::string, std::string>>& overrides) {
+    Diagnostics out;
+    for (const auto& [name, text] : overrides) {
+        Variable* v = ws.findVariable(name);
+        std::string element = "--set " + name;
+        if (!v) {
+            std::string known;
+            for (const Variable& each : ws.variables) known += (known.empty() ? "" : ", ") + each.name;
+            out.push_back({Diagnostic::Severity::Error, {ws.path.string(), 0}, element,
+                           "the workspace has no variable '" + name + "'" +
+                               (known.empty() ? " (it declares none)" : " (it has: " + known + ")")});
+            continue;
+        }
+        std::string why;
+        auto value = parseValue(v->value.type, text, &why);
+        if (value && value->type != v->value.type) {
+            value.reset();
+            why = std::string("variable is a color with ") + (v->value.type == ValueType::Color3 ? "3" : "4") + " values";
+        }
+        if (!value) {
+            out.push_back({Diagnostic::Severity::Error, v->where, element,
+                           "variable '" + name + "' (" + valueTypeName(v->value.type) + "): " + why});
+            continue;
+        }
+        v->value = *value;
+    }
+    return out;
+}
+
+}  // namespace rmfx

@@ -1,0 +1,26 @@
+#pragma once
+// Parse + validate in one step: what every front end (CLI, editor, tests) does before GL.
+
+#include <filesystem>
+#include <optional>
+
+#include "runtime/Diagnostic.h"
+#include "runtime/Validation.h"
+#include "runtime/Workspace.h"
+
+namespace rmfx {
+
+struct LoadedWorkspace {
+    std::optional<Workspace> workspace;  // present when parsing and validation found no error
+    Diagnostics diagnostics;             // errors and warnings, in file order per stage
+};
+
+LoadedWorkspace loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options = {});
+// The built-in default workspace; its relative paths resolve in the current folder.
+LoadedWorkspace loadDefaultWorkspace(const ValidationOptions& options = {});
+
+// Applies NAME=VALUE overrides to the workspace's variable defaults, checking names and types.
+// Each problem is a diagnostic naming the variable.
+Diagnostics applyOverrides(Workspace& ws, const std::vector<std::pair<std::string, std::string>>& overrides);
+
+}  // namespace rmfx
