@@ -20,6 +20,12 @@ struct Image {
     bool empty() const { return pixels.empty(); }
 };
 
+// What becomes of colour values written to an integer image format (alpha is never changed).
+enum class DisplayTransform {
+    None,  // the values as they are, clamped to [0, 1]
+    Srgb,  // encoded with the sRGB transfer function (IEC 61966-2-1)
+};
+
 // The six faces of a cube map in OpenGL order: +X, -X, +Y, -Y, +Z, -Z, each seen as OpenGL's
 // cube-map face convention expects (row 0 at the top of the face as sampled with that convention).
 using CubeFaces = std::array<Image, 6>;

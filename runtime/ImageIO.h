@@ -16,12 +16,6 @@ namespace rmfx {
 // Errors name the file.
 Result<Image> readImage(const std::filesystem::path& file);
 
-// What writeImage does to colour channels before quantising to an integer format.
-enum class DisplayTransform {
-    None,  // write the values as they are (clamped to [0, 1])
-    Srgb,  // encode with the sRGB transfer function (IEC 61966-2-1)
-};
-
 struct WriteOptions {
     DisplayTransform transform = DisplayTransform::None;
     bool exrHalf = false;  // .exr: 16-bit half instead of 32-bit float

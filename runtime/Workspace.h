@@ -13,6 +13,7 @@
 #include <glm/vec4.hpp>
 
 #include "runtime/Diagnostic.h"
+#include "runtime/Image.h"
 #include "runtime/Mesh.h"
 #include "runtime/Value.h"
 
@@ -155,8 +156,6 @@ struct Pass {
     DrawCall draw;                      // default: the full-screen triangle
     SourceLocation where;
 };
-
-enum class DisplayTransform { None, Srgb };
 
 struct Output {
     std::string target;  // empty: the implicit target named "output"
