@@ -275,6 +275,20 @@ TEST(ImageIO, OtherFormatsWriteAndReadBack) {
     EXPECT_NEAR(radiance->at(1, 0, 1), 3.5e4f, 3.5e2f);
 }
 
+TEST(ImageIO, TransparentColourSurvivesPngAndTga) {
+    test::ScratchDir dir;
+    // Colour under zero alpha must not be lost to premultiplication on either side.
+    const std::vector<float> rgba = {0.8f, 0.4f, 0.2f, 0.0f, 0.6f, 1.0f, 0.0f, 0.2f};
+    for (const char* name : {"a.png", "a.tga"}) {
+        ASSERT_TRUE(writeImage(dir / name, makeImage(2, 1, 4, rgba))) << name;
+        const Result<Image> read = readImage(dir / name);
+        ASSERT_TRUE(read) << read.error();
+        ASSERT_EQ(read->channels, 4) << name;
+        for (size_t i = 0; i < rgba.size(); ++i)
+            EXPECT_EQ(read->pixels[i], std::round(rgba[i] * 255.0f) / 255.0f) << name << " " << i;
+    }
+}
+
 TEST(ImageIO, MoreThanFourChannelsKeepsTheFirstFour) {
     test::ScratchDir dir;
     const auto file = dir / "six.exr";
