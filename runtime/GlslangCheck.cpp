@@ -32,9 +32,9 @@ std::optional<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSour
         auto shader = std::make_unique<glslang::TShader>(language(stage.stage));
         const char* text = stage.shader.code.c_str();
         shader->setStrings(&text, 1);
-        shader->setEnvInput(glslang::EShSourceGlsl, language(stage.stage), glslang::EShClientOpenGL, 100);
-        shader->setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
-        shader->setEnvTarget(glslang::EShTargetNone, glslang::EShTargetSpv_1_0);
+        // No client API: plain GLSL as a GL driver sees it (the OpenGL client means GL_ARB_gl_spirv
+        // rules, which demand explicit uniform locations).
+        shader->setEnvInput(glslang::EShSourceGlsl, language(stage.stage), glslang::EShClientNone, 0);
         if (!shader->parse(GetDefaultResources(), 450, ECoreProfile, false, false, messages)) {
             SourceLocation fallback = stage.shader.origin(1);
             for (Diagnostic d : mapCompilerLog(shader->getInfoLog(), stage.shader, fallback, element)) {
