@@ -1,0 +1,66 @@
+#include "samples/SampleMedia.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "runtime/CubeMapLayout.h"
+#include "runtime/ImageIO.h"
+
+namespace rmfx::samples {
+
+glm::vec3 analyticSky(const glm::vec3& d, const glm::vec3& sunDirection, float sunIntensity) {
+    if (d.y < 0.0f) return glm::vec3(0.2f, 0.17f, 0.14f) * (1.0f + d.y) + glm::vec3(0.02f);
+    glm::vec3 zenith(0.1f, 0.25f, 0.9f), horizon(0.9f, 1.1f, 1.5f);
+    glm::vec3 sky = glm::mix(horizon, zenith, std::sqrt(d.y));
+    float cosAngle = glm::dot(d, sunDirection);
+    sky += glm::vec3(1.0f, 0.8f, 0.5f) * std::pow(std::max(cosAngle, 0.0f), 64.0f) * 4.0f;
+    if (cosAngle > 0.9995f) sky += glm::vec3(1.0f, 0.95f, 0.85f) * sunIntensity;
+    return sky;
+}
+
+Image makeSkyCross(int n, const glm::vec3& sunDirection, float sunIntensity) {
+    Image image;
+    image.width = 4 * n;
+    image.height = 3 * n;
+    image.channels = 3;
+    image.highDynamicRange = true;
+    image.pixels.assign(static_cast<size_t>(image.width) * image.height * 3, 0.0f);
+    // Block (column, row) of each face in the horizontal cross.
+    const int blocks[6][2] = {{2, 1}, {0, 1}, {1, 0}, {1, 2}, {1, 1}, {3, 1}};
+    glm::vec3 sun = glm::normalize(sunDirection);
+    for (int face = 0; face < 6; ++face)
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) {
+                glm::vec3 d = cubeFaceTexelDirection(face, (x + 0.5f) / n, (y + 0.5f) / n);
+                glm::vec3 c = analyticSky(glm::normalize(d), sun, sunIntensity);
+                for (int k = 0; k < 3; ++k) image.at(blocks[face][0] * n + x, blocks[face][1] * n + y, k) = c[k];
+            }
+    return image;
+}
+
+Image makeDiscMask(int size) {
+    Image image;
+    image.width = image.height = size;
+    image.channels = 1;
+    image.bitsPerChannel = 8;
+    image.pixels.resize(static_cast<size_t>(size) * size);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            float dx = (x + 0.5f) / size - 0.5f, dy = (y + 0.5f) / size - 0.5f;
+            float edge = (0.4f - std::sqrt(dx * dx + dy * dy)) * size / 2.0f;  // in units of 2 pixels
+            float value = std::clamp(edge + 0.5f, 0.0f, 1.0f);
+            image.at(x, y, 0) = std::round(value * 255.0f) / 255.0f;
+        }
+    return image;
+}
+
+Result<bool> writeTourMedia(const std::filesystem::path& folder) {
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    if (auto r = writeImage(folder / "mask.png", makeDiscMask(64)); !r) return r;
+    return writeImage(folder / "sky_cross.exr", makeSkyCross(32, glm::vec3(-0.35f, 0.12f, -0.93f), 2000.0f));
+}
+
+}  // namespace rmfx::samples
