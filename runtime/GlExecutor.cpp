@@ -471,9 +471,14 @@ Diagnostics GlExecutor::renderFrame(const FrameClock& clock) {
         s.upload(gp, clock, frame_, camera_, viewport_);
         for (const SamplerSlot& slot : gp.samplers) {
             GLuint texture = slot.texture;
-            if (slot.target)
-                texture = slot.target->textures[slot.sampler->previousFrame ? slot.target->front
-                                                                            : slot.target->writeBuffer()];
+            if (slot.target) {
+                // frame="previous": what the last frame left. The current frame: the buffer a pass
+                // wrote this frame, or, before any pass has, still what the last frame left (the
+                // write buffer of a double-buffered target then holds the frame before that).
+                const GpuTarget& t = *slot.target;
+                bool current = !slot.sampler->previousFrame && t.writtenThisFrame;
+                texture = t.textures[current ? t.writeBuffer() : t.front];
+            }
             glBindTextureUnit(static_cast<GLuint>(slot.unit), texture);
             glBindSampler(static_cast<GLuint>(slot.unit), slot.samplerObject);
         }

@@ -1,0 +1,81 @@
+#include "tests/GlTestSupport.h"
+
+#include <cstdio>
+
+#include "runtime/GlContext.h"
+#include "runtime/WorkspaceLoader.h"
+#include "runtime/WorkspaceParser.h"
+
+namespace rmfx::test {
+namespace {
+
+struct SharedContext {
+    std::unique_ptr<GlContext> context;
+    std::string error;
+};
+
+const SharedContext& sharedContext() {
+    static SharedContext shared = [] {
+        SharedContext s;
+        auto created = GlContext::createHeadless();
+        if (created) s.context = std::move(*created);
+        else s.error = created.error();
+        return s;
+    }();
+    return shared;
+}
+
+}  // namespace
+
+void GlTest::SetUp() {
+    const SharedContext& shared = sharedContext();
+    ASSERT_TRUE(shared.context) << "no headless GL context: " << shared.error;
+    shared.context->makeCurrent();
+}
+
+std::unique_ptr<Workspace> workspaceFromText(const std::string& xml, const std::filesystem::path& folder) {
+    ParsedWorkspace parsed = parseWorkspaceText(xml, folder / "test-workspace.xml", folder);
+    Diagnostics diagnostics = parsed.diagnostics;
+    if (parsed.workspace) {
+        Diagnostics found = validateWorkspace(*parsed.workspace);
+        diagnostics.insert(diagnostics.end(), found.begin(), found.end());
+    }
+    if (!parsed.workspace || hasErrors(diagnostics)) {
+        ADD_FAILURE() << "workspace does not load:\n" << formatAll(diagnostics) << "\n" << xml;
+        return nullptr;
+    }
+    return std::make_unique<Workspace>(std::move(*parsed.workspace));
+}
+
+GlRun runWorkspace(std::unique_ptr<Workspace> ws, const RunSettings& settings) {
+    GlRun run;
+    run.ws = std::move(ws);
+    if (!run.ws) return run;
+    run.exec = runHeadless(*run.ws, settings, run.diagnostics);
+    if (!run.exec || hasErrors(run.diagnostics))
+        ADD_FAILURE() << "runHeadless failed:\n" << formatAll(run.diagnostics);
+    return run;
+}
+
+GlRun runWorkspace(const std::string& xml, const RunSettings& settings) {
+    return runWorkspace(workspaceFromText(xml), settings);
+}
+
+Image readBack(const GlExecutor& exec, const std::string& target) {
+    auto image = exec.readTarget(target);
+    if (!image) {
+        ADD_FAILURE() << "readTarget(" << target << "): " << image.error();
+        return {};
+    }
+    return *image;
+}
+
+std::string glslFloat(double value) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(static_cast<float>(value)));
+    std::string s = buffer;
+    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+    return s;
+}
+
+}  // namespace rmfx::test

@@ -1,0 +1,53 @@
+#pragma once
+// Shared by the GL tests (rmfx_gl_tests): one headless GL context per test executable, and small
+// helpers to load a workspace from text, render it and read targets back.
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "runtime/GlExecutor.h"
+#include "runtime/HeadlessRun.h"
+#include "runtime/Image.h"
+#include "runtime/Workspace.h"
+
+namespace rmfx::test {
+
+// Base fixture of every GL test. The first SetUp creates the headless context (kept for the
+// whole executable); when no EGL display can be opened every test FAILS with the context's
+// error message: a skipped GL suite would hide breakage.
+class GlTest : public ::testing::Test {
+protected:
+    void SetUp() override;
+};
+
+// Parses and validates workspace XML; relative file references resolve in `folder`. Adds a test
+// failure with the diagnostics and returns nullptr when the workspace has errors.
+std::unique_ptr<Workspace> workspaceFromText(const std::string& xml,
+                                             const std::filesystem::path& folder = std::filesystem::path("."));
+
+struct GlRun {
+    std::unique_ptr<Workspace> ws;     // declared first: the executor refers to it and dies first
+    std::unique_ptr<GlExecutor> exec;  // null when creation or a frame failed
+    Diagnostics diagnostics;
+};
+
+// Renders `settings.frames` frames (frame i at time i·dt) with runHeadless. Adds a test failure
+// with the diagnostics when it fails.
+GlRun runWorkspace(std::unique_ptr<Workspace> ws, const RunSettings& settings);
+GlRun runWorkspace(const std::string& xml, const RunSettings& settings);
+
+// readTarget, adding a test failure (and returning an empty image) on error.
+Image readBack(const GlExecutor& exec, const std::string& target);
+
+// Pixel (x, y) channel c of an image read back, with y counted from the BOTTOM as gl_FragCoord does.
+inline float atGl(const Image& image, int x, int yFromBottom, int c) {
+    return image.at(x, image.height - 1 - yFromBottom, c);
+}
+
+// Formats a float so that GLSL (and the workspace parser) read back exactly the same float.
+std::string glslFloat(double value);
+
+}  // namespace rmfx::test
