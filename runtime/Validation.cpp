@@ -73,7 +73,8 @@ private:
     void checkOutput() {
         if (!ws_.output.target.empty() && !ws_.findTarget(ws_.output.target))
             error(ws_.output.where, "<output>", "target '" + ws_.output.target + "' is not declared");
-        if (ws_.passes.empty()) error({ws_.path.string(), 1}, "<workspace>", "no <pass>: nothing to render");
+        // The parser reports this on the <workspace> element; a workspace built otherwise has no line.
+        if (ws_.passes.empty()) error({ws_.path.string(), 0}, "<workspace>", "no <pass>: nothing to render");
     }
 
     void checkPass(const Pass& pass) {

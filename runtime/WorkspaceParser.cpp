@@ -168,8 +168,12 @@ public:
             } else if (tag == "pass") {
                 ws.passes.push_back(parsePass(e));
             } else if (tag == "output") {
-                if (outputSeen_) unexpected(e, "a second <output>: a workspace has one");
-                outputSeen_ = true;
+                if (ws.output.where.line > 0) {
+                    ElementReader(e, file_, diagnostics_, {"target", "format", "transform"})
+                        .error("a second <output> (the first is at line " + std::to_string(ws.output.where.line) +
+                               "): a workspace has one");
+                    continue;
+                }
                 parseOutput(e, ws.output);
             } else {
                 unexpected(e, "unknown element <" + std::string(tag) +
@@ -177,6 +181,7 @@ public:
                                   "vec4, color, mat4, texture, cubemap, target, pass, output)");
             }
         }
+        if (ws.passes.empty()) r.error("no <pass>: nothing to render");
     }
 
 private:
@@ -687,7 +692,6 @@ private:
 
     std::string file_;
     Diagnostics& diagnostics_;
-    bool outputSeen_ = false;
 };
 
 }  // namespace
