@@ -216,6 +216,8 @@ Diagnostics mapCompilerLog(const std::string& log, const PreprocessedShader& sha
             d.message = line.rfind("ERROR: ", 0) == 0 ? line.substr(7) : line;
             d.severity = line.find("WARNING") == 0 ? Diagnostic::Severity::Warning : Diagnostic::Severity::Error;
         }
+        // glslang ends its messages with a space.
+        while (!d.message.empty() && (d.message.back() == ' ' || d.message.back() == '\t')) d.message.pop_back();
         out.push_back(std::move(d));
     }
     return out;
