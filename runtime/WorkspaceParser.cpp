@@ -264,10 +264,10 @@ private:
                 if (r.has(a)) r.error("attribute '" + std::string(a) + "' does not apply to a " + valueTypeName(type));
         }
         if (v.step && *v.step <= 0) r.error("attribute 'step' must be greater than 0");
-        if (v.min && v.max && *v.min > *v.max) r.error("min (" + formatValue(Value::ofFloat(*v.min)) +
-                                                        ") is greater than max (" +
-                                                        formatValue(Value::ofFloat(*v.max)) + ")");
-        if (v.min || v.max) {
+        bool inverted = v.min && v.max && *v.min > *v.max;
+        if (inverted) r.error("min (" + formatValue(Value::ofFloat(*v.min)) + ") is greater than max (" +
+                              formatValue(Value::ofFloat(*v.max)) + ")");
+        if ((v.min || v.max) && !inverted) {  // no value lies in an inverted range: one error is enough
             for (int i = 0; i < componentCount(v.value.type); ++i) {
                 float c = v.value.data[i];
                 if ((v.min && c < *v.min) || (v.max && c > *v.max)) {
