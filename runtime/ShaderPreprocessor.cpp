@@ -1,6 +1,7 @@
 #include "runtime/ShaderPreprocessor.h"
 
 #include <fstream>
+#include <optional>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -86,8 +87,7 @@ private:
         if (!isInside(candidate, input_.root))
             return fail("\"" + name + "\" lies outside the workspace folder " + input_.root.string());
         auto key = std::filesystem::weakly_canonical(candidate);
-        for (const auto& open : stack_)
-            if (open == key) return fail("\"" + name + "\" includes itself (include cycle)");
+        if (auto cycle = cycleThrough(key, name)) return fail(*cycle);
         if (onceFiles_.count(key)) {
             out_.code += "\n";
             out_.lineOrigins.push_back(where);
@@ -101,21 +101,32 @@ private:
         for (const auto& l : splitLines(text))
             if (directiveName(l) == "pragma" && l.find("once") != std::string::npos) onceFiles_.insert(key);
         stack_.push_back(key);
+        names_.push_back(name);
         expand(text, candidate.lexically_normal().string(), 1, candidate.parent_path(), depth + 1);
         stack_.pop_back();
+        names_.pop_back();
+    }
+
+    // When `key` is already open: "include cycle: "a.glsl" → "b.glsl" → "a.glsl"", the includes that lead back to it.
+    std::optional<std::string> cycleThrough(const std::filesystem::path& key, const std::string& name) const {
+        for (size_t i = 0; i < stack_.size(); ++i) {
+            if (stack_[i] != key) continue;
+            std::string chain;
+            for (size_t j = i; j < names_.size(); ++j) chain += "\"" + names_[j] + "\" → ";
+            return "include cycle: " + chain + "\"" + name + "\"";
+        }
+        return std::nullopt;
     }
 
     void includeSnippet(const CodeSnippet& snippet, const SourceLocation& where, const std::filesystem::path& folder,
                         int depth) {
         std::filesystem::path key = "<snippet>/" + snippet.name;
-        for (const auto& open : stack_)
-            if (open == key) {
-                diagnostics_.push_back({Diagnostic::Severity::Error, where, "#include",
-                                        "\"" + snippet.name + "\" includes itself (include cycle)"});
-                out_.code += "\n";
-                out_.lineOrigins.push_back(where);
-                return;
-            }
+        if (auto cycle = cycleThrough(key, snippet.name)) {
+            diagnostics_.push_back({Diagnostic::Severity::Error, where, "#include", *cycle});
+            out_.code += "\n";
+            out_.lineOrigins.push_back(where);
+            return;
+        }
         if (onceFiles_.count(key)) {
             out_.code += "\n";
             out_.lineOrigins.push_back(where);
@@ -124,14 +135,17 @@ private:
         for (const auto& l : splitLines(snippet.code))
             if (directiveName(l) == "pragma" && l.find("once") != std::string::npos) onceFiles_.insert(key);
         stack_.push_back(key);
+        names_.push_back(snippet.name);
         expand(snippet.code, snippet.where.file, snippet.codeLine, folder, depth + 1);
         stack_.pop_back();
+        names_.pop_back();
     }
 
     const ShaderInput& input_;
     Diagnostics& diagnostics_;
     PreprocessedShader& out_;
-    std::vector<std::filesystem::path> stack_;
+    std::vector<std::filesystem::path> stack_;  // the files and snippets being included, outermost first
+    std::vector<std::string> names_;            // the name each was included by
     std::set<std::filesystem::path> onceFiles_;
 };
 
@@ -216,6 +230,8 @@ Diagnostics mapCompilerLog(const std::string& log, const PreprocessedShader& sha
             d.message = line.rfind("ERROR: ", 0) == 0 ? line.substr(7) : line;
             d.severity = line.find("WARNING") == 0 ? Diagnostic::Severity::Warning : Diagnostic::Severity::Error;
         }
+        // glslang ends its messages with a space.
+        while (!d.message.empty() && (d.message.back() == ' ' || d.message.back() == '\t')) d.message.pop_back();
         out.push_back(std::move(d));
     }
     return out;

@@ -31,24 +31,26 @@ private:
     }
     static std::string at(const SourceLocation& where) { return "line " + std::to_string(where.line); }
 
-    template <class T>
-    void unique(const std::vector<T>& items, const char* kind, const char* tag) {
+    // tag(item): the element the item was declared with ("float", "cubemap", …).
+    template <class T, class Tag>
+    void unique(const std::vector<T>& items, const char* kind, Tag tag) {
         std::map<std::string, SourceLocation> seen;
         for (const T& item : items) {
             auto [it, fresh] = seen.emplace(item.name, item.where);
             if (!fresh)
-                error(item.where, std::string("<") + tag + " name=\"" + item.name + "\">",
+                error(item.where, "<" + std::string(tag(item)) + " name=\"" + item.name + "\">",
                       std::string("duplicate ") + kind + " name '" + item.name + "' (first declared at " +
                           at(it->second) + ")");
         }
     }
 
     void checkUniqueNames() {
-        unique(ws_.variables, "variable", "variable");
-        unique(ws_.textures, "texture", "texture");
-        unique(ws_.targets, "target", "target");
-        unique(ws_.passes, "pass", "pass");
-        unique(ws_.snippets, "code snippet", "code");
+        unique(ws_.variables, "variable", [](const Variable& v) { return valueTypeName(v.value.type); });
+        unique(ws_.textures, "texture",
+               [](const Texture& t) { return t.kind == TextureKind::Cube ? "cubemap" : "texture"; });
+        unique(ws_.targets, "target", [](const RenderTarget&) { return "target"; });
+        unique(ws_.passes, "pass", [](const Pass&) { return "pass"; });
+        unique(ws_.snippets, "code snippet", [](const CodeSnippet&) { return "code"; });
         if (ws_.output.target.empty())
             if (const RenderTarget* t = ws_.findTarget(Workspace::implicitOutputName))
                 error(t->where, "<target name=\"output\">",
@@ -71,7 +73,8 @@ private:
     void checkOutput() {
         if (!ws_.output.target.empty() && !ws_.findTarget(ws_.output.target))
             error(ws_.output.where, "<output>", "target '" + ws_.output.target + "' is not declared");
-        if (ws_.passes.empty()) error({ws_.path.string(), 1}, "<workspace>", "no <pass>: nothing to render");
+        // The parser reports this on the <workspace> element; a workspace built otherwise has no line.
+        if (ws_.passes.empty()) error({ws_.path.string(), 0}, "<workspace>", "no <pass>: nothing to render");
     }
 
     void checkPass(const Pass& pass) {

@@ -39,8 +39,10 @@ Diagnostics applyOverrides(Workspace& ws, const std::vector<std::pair<std::strin
         std::string why;
         auto value = parseValue(v->value.type, text, &why);
         if (value && value->type != v->value.type) {
+            // A colour's count is fixed by its default (the uniform is a vec3 or a vec4).
+            bool rgb = v->value.type == ValueType::Color3;
             value.reset();
-            why = std::string("variable is a color with ") + (v->value.type == ValueType::Color3 ? "3" : "4") + " values";
+            why = std::string("this color takes ") + (rgb ? "3 numbers (rgb), got 4" : "4 numbers (rgba), got 3");
         }
         if (!value) {
             out.push_back({Diagnostic::Severity::Error, v->where, element,

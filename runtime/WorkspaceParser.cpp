@@ -168,8 +168,12 @@ public:
             } else if (tag == "pass") {
                 ws.passes.push_back(parsePass(e));
             } else if (tag == "output") {
-                if (outputSeen_) unexpected(e, "a second <output>: a workspace has one");
-                outputSeen_ = true;
+                if (ws.output.where.line > 0) {
+                    ElementReader(e, file_, diagnostics_, {"target", "format", "transform"})
+                        .error("a second <output> (the first is at line " + std::to_string(ws.output.where.line) +
+                               "): a workspace has one");
+                    continue;
+                }
                 parseOutput(e, ws.output);
             } else {
                 unexpected(e, "unknown element <" + std::string(tag) +
@@ -177,6 +181,7 @@ public:
                                   "vec4, color, mat4, texture, cubemap, target, pass, output)");
             }
         }
+        if (ws.passes.empty()) r.error("no <pass>: nothing to render");
     }
 
 private:
@@ -259,10 +264,10 @@ private:
                 if (r.has(a)) r.error("attribute '" + std::string(a) + "' does not apply to a " + valueTypeName(type));
         }
         if (v.step && *v.step <= 0) r.error("attribute 'step' must be greater than 0");
-        if (v.min && v.max && *v.min > *v.max) r.error("min (" + formatValue(Value::ofFloat(*v.min)) +
-                                                        ") is greater than max (" +
-                                                        formatValue(Value::ofFloat(*v.max)) + ")");
-        if (v.min || v.max) {
+        bool inverted = v.min && v.max && *v.min > *v.max;
+        if (inverted) r.error("min (" + formatValue(Value::ofFloat(*v.min)) + ") is greater than max (" +
+                              formatValue(Value::ofFloat(*v.max)) + ")");
+        if ((v.min || v.max) && !inverted) {  // no value lies in an inverted range: one error is enough
             for (int i = 0; i < componentCount(v.value.type); ++i) {
                 float c = v.value.data[i];
                 if ((v.min && c < *v.min) || (v.max && c > *v.max)) {
@@ -687,8 +692,31 @@ private:
 
     std::string file_;
     Diagnostics& diagnostics_;
-    bool outputSeen_ = false;
 };
+
+// tinyxml2's ErrorStr() is "Error=XML_ERROR_… ErrorID=… (0x…) Line number=…[: XMLElement name=…]", which
+// says neither what is wrong nor how to fix it; say it in words.
+std::string xmlErrorSentence(const tinyxml2::XMLDocument& doc) {
+    std::string raw = doc.ErrorStr() ? doc.ErrorStr() : "";
+    std::string element;
+    if (auto at = raw.find("XMLElement name="); at != std::string::npos) element = raw.substr(at + 16);
+    switch (doc.ErrorID()) {
+        case tinyxml2::XML_ERROR_EMPTY_DOCUMENT: return "the file has no element";
+        case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT:
+            return "<" + element + "> is not closed (its end tag is missing, misspelled or out of order)";
+        case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE:
+            return "bad attribute in <" + element + "> (write name=\"value\", each name once)";
+        case tinyxml2::XML_ERROR_PARSING_ELEMENT: return "bad element syntax (a stray '<'? in text write &lt;)";
+        case tinyxml2::XML_ERROR_PARSING_TEXT: return "bad text (a '<' or '&' that should be &lt; or &amp;?)";
+        case tinyxml2::XML_ERROR_PARSING_CDATA: return "<![CDATA[ without its closing ]]>";
+        case tinyxml2::XML_ERROR_PARSING_COMMENT: return "<!-- without its closing -->";
+        case tinyxml2::XML_ERROR_PARSING_DECLARATION: return "bad <?…?> declaration";
+        case tinyxml2::XML_ERROR_PARSING_UNKNOWN: return "bad <!…> construct";
+        case tinyxml2::XML_ERROR_PARSING:
+            return "cannot read the document from here on (an element left open at the end of the file?)";
+        default: return doc.ErrorName();
+    }
+}
 
 }  // namespace
 
@@ -698,12 +726,8 @@ ParsedWorkspace parseWorkspaceText(const std::string& text, const std::filesyste
     std::string file = path.string();
     tinyxml2::XMLDocument doc;
     if (doc.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS) {
-        std::string message = doc.ErrorStr() ? doc.ErrorStr() : "malformed XML";
-        // tinyxml2 prefixes its own "Error=XML_ERROR_… ErrorID=… (0x…) Line number=…: "; keep what follows.
-        if (auto colon = message.find(": "); colon != std::string::npos && message.rfind("Error=", 0) == 0)
-            message = message.substr(colon + 2);
         result.diagnostics.push_back({Diagnostic::Severity::Error, {file, doc.ErrorLineNum()}, "",
-                                      "malformed XML: " + message});
+                                      "malformed XML: " + xmlErrorSentence(doc)});
         return result;
     }
     const XMLElement* root = doc.RootElement();
@@ -713,6 +737,11 @@ ParsedWorkspace parseWorkspaceText(const std::string& text, const std::filesyste
                                           (root ? ", not <" + std::string(root->Name()) + ">" : std::string())});
         return result;
     }
+    // tinyxml2 accepts several top-level elements; everything after the first would be ignored.
+    if (const XMLElement* extra = root->NextSiblingElement())
+        result.diagnostics.push_back({Diagnostic::Severity::Error, {file, extra->GetLineNum()}, "",
+                                      "<" + std::string(extra->Name()) +
+                                          "> after </workspace>: a file holds one <workspace>"});
     Workspace ws;
     ws.path = path;
     ws.folder = folder;

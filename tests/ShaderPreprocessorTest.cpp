@@ -1,0 +1,230 @@
+#include "runtime/ShaderPreprocessor.h"
+
+#include <gtest/gtest.h>
+
+#include "tests/TestSupport.h"
+
+namespace rmfx {
+
+namespace {
+
+using Lines = std::vector<std::string>;
+
+std::string lines(std::initializer_list<std::string> list) {
+    std::string out;
+    for (const std::string& l : list) out += l + "\n";
+    return out;
+}
+
+// "file:line" of every line of the output, for compact comparisons.
+Lines origins(const PreprocessedShader& shader) {
+    Lines out;
+    for (const SourceLocation& l : shader.lineOrigins) out.push_back(l.file + ":" + std::to_string(l.line));
+    return out;
+}
+
+ShaderInput inputFor(const test::ScratchDir& dir, const std::string& code) {
+    ShaderInput input;
+    input.code = code;
+    input.start = {"main.frag", 1};
+    input.folder = input.root = dir.path();
+    return input;
+}
+
+std::vector<std::string> formatted(const Diagnostics& diagnostics) {
+    std::vector<std::string> out;
+    for (const Diagnostic& d : diagnostics) out.push_back(d.format());
+    return out;
+}
+
+}  // namespace
+
+TEST(ShaderPreprocessor, LineMapThroughNestedIncludes) {
+    test::ScratchDir dir;
+    const std::string a = dir.write("a.glsl", lines({"#pragma once", "#include \"lib/b.glsl\"", "float a;"})).string();
+    const std::string b = dir.write("lib/b.glsl", lines({"// b", "float b;"})).string();
+    ShaderInput input = inputFor(dir, lines({"#version 330 core", "#include \"a.glsl\"", "void main() {}"}));
+    input.defines = {"FOO 1", "BAR"};
+    Diagnostics d;
+    PreprocessedShader out = preprocessShader(input, d);
+    EXPECT_EQ(formatted(d), Lines{});
+    EXPECT_EQ(out.code, lines({"#version 330 core", "#define FOO 1", "#define BAR", "", "", "// b", "float b;",
+                               "float a;", "void main() {}"}));
+    EXPECT_EQ(origins(out), (Lines{"main.frag:1", "main.frag:1", "main.frag:1", "main.frag:1", a + ":1", b + ":1",
+                                   b + ":2", a + ":3", "main.frag:3"}));
+    EXPECT_EQ(out.files, (std::vector<std::filesystem::path>{a, b}));
+    EXPECT_EQ(out.origin(7).file, b);
+    EXPECT_EQ(out.origin(7).line, 2);
+    // Out of range lines clamp to the first and last.
+    EXPECT_EQ(out.origin(0).line, 1);
+    EXPECT_EQ(out.origin(100).file, "main.frag");
+    EXPECT_EQ(out.origin(100).line, 3);
+}
+
+TEST(ShaderPreprocessor, IncludesResolveNextToTheIncludingFileThenAtTheRoot) {
+    test::ScratchDir dir;
+    const std::string inner = dir.write("lib/inner.glsl", "float inner;\n").string();
+    const std::string shared = dir.write("shared.glsl", "float shared;\n").string();
+    dir.write("lib/outer.glsl", lines({"#include \"inner.glsl\"", "#include \"shared.glsl\""}));
+    ShaderInput input = inputFor(dir, "#include \"lib/outer.glsl\"\n");
+    Diagnostics d;
+    PreprocessedShader out = preprocessShader(input, d);
+    EXPECT_EQ(formatted(d), Lines{});
+    EXPECT_EQ(out.code, lines({"#version 450 core", "float inner;", "float shared;"}));
+    EXPECT_EQ(origins(out), (Lines{"main.frag:1", inner + ":1", shared + ":1"}));
+}
+
+TEST(ShaderPreprocessor, PragmaOnceIncludesAFileOnce) {
+    test::ScratchDir dir;
+    const std::string once = dir.write("once.glsl", lines({"#pragma once", "float once;"})).string();
+    const std::string twice = dir.write("twice.glsl", "float twice;\n").string();
+    ShaderInput input = inputFor(dir, lines({"#version 450", "#include \"once.glsl\"", "#include \"twice.glsl\"",
+                                             "#include \"once.glsl\"", "#include \"twice.glsl\""}));
+    Diagnostics d;
+    PreprocessedShader out = preprocessShader(input, d);
+    EXPECT_EQ(formatted(d), Lines{});
+    EXPECT_EQ(out.code, lines({"#version 450", "", "", "float once;", "float twice;", "", "float twice;"}));
+    EXPECT_EQ(origins(out), (Lines{"main.frag:1", "main.frag:1", once + ":1", once + ":2", twice + ":1",
+                                   "main.frag:4", twice + ":1"}));
+    EXPECT_EQ(out.files.size(), 3u);  // once.glsl is read once
+}
+
+TEST(ShaderPreprocessor, MissingVersionGetsTheDefaultAndDefinesFollowIt) {
+    test::ScratchDir dir;
+    ShaderInput input = inputFor(dir, lines({"out vec4 c;", "void main() {}"}));
+    input.start = {"fx.xml", 20};  // inline code starting on line 20 of a workspace
+    input.defines = {"HDR 1"};
+    Diagnostics d;
+    PreprocessedShader out = preprocessShader(input, d);
+    EXPECT_EQ(out.code, lines({"#version 450 core", "#define HDR 1", "out vec4 c;", "void main() {}"}));
+    EXPECT_EQ(origins(out), (Lines{"fx.xml:20", "fx.xml:20", "fx.xml:20", "fx.xml:21"}));
+}
+
+TEST(ShaderPreprocessor, VersionAfterCommentsMovesFirst) {
+    test::ScratchDir dir;
+    ShaderInput input = inputFor(dir, lines({"// a comment", "", "#version 330", "float x;"}));
+    input.defines = {"A"};
+    Diagnostics d;
+    PreprocessedShader out = preprocessShader(input, d);
+    EXPECT_EQ(out.code, lines({"#version 330", "#define A", "// a comment", "", "", "float x;"}));
+    EXPECT_EQ(origins(out), (Lines{"main.frag:3", "main.frag:3", "main.frag:1", "main.frag:2", "main.frag:3",
+                                   "main.frag:4"}));
+}
+
+TEST(ShaderPreprocessor, VersionFromAnIncludedFile) {
+    test::ScratchDir dir;
+    const std::string header = dir.write("header.glsl", lines({"#version 410 core", "precision highp float;"})).string();
+    ShaderInput input = inputFor(dir, lines({"#include \"header.glsl\"", "void main() {}"}));
+    Diagnostics d;
+    PreprocessedShader out = preprocessShader(input, d);
+    EXPECT_EQ(out.code, lines({"#version 410 core", "", "precision highp float;", "void main() {}"}));
+    EXPECT_EQ(origins(out), (Lines{header + ":1", header + ":1", header + ":2", "main.frag:2"}));
+}
+
+TEST(ShaderPreprocessor, SnippetsComeFirstAndKeepWorkspaceLines) {
+    test::ScratchDir dir;
+    dir.write("sky.glsl", "float fromFile;\n");
+    std::vector<CodeSnippet> snippets{{"sky.glsl", "\nfloat fromSnippet;\n", 16, {"fx.xml", 16}}};
+    ShaderInput input = inputFor(dir, lines({"#version 450 core", "#include \"sky.glsl\"", "void main() {}"}));
+    input.start = {"fx.xml", 40};
+    input.snippets = &snippets;
+    Diagnostics d;
+    PreprocessedShader out = preprocessShader(input, d);
+    EXPECT_EQ(formatted(d), Lines{});
+    EXPECT_EQ(out.code, lines({"#version 450 core", "", "", "float fromSnippet;", "void main() {}"}));
+    EXPECT_EQ(origins(out), (Lines{"fx.xml:40", "fx.xml:40", "fx.xml:16", "fx.xml:17", "fx.xml:42"}));
+    EXPECT_TRUE(out.files.empty());
+}
+
+TEST(ShaderPreprocessor, IncludeErrors) {
+    test::ScratchDir dir;
+    dir.write("ws/self.glsl", lines({"float s;", "#include \"self.glsl\""}));
+    dir.write("outside.glsl", "float o;\n");
+    ShaderInput input = inputFor(dir, lines({
+                                          "#include <angle.glsl>",
+                                          "#include \"nowhere.glsl\"",
+                                          "#include \"self.glsl\"",
+                                          "#include \"../outside.glsl\"",
+                                      }));
+    input.folder = input.root = dir.path() / "ws";
+    Diagnostics d;
+    PreprocessedShader out = preprocessShader(input, d);
+    const std::string root = (dir.path() / "ws").string();
+    EXPECT_EQ(formatted(d), (Lines{
+                                "main.frag:1: error: #include: expected #include \"file\"",
+                                "main.frag:2: error: #include: cannot find \"nowhere.glsl\" (looked in " + root + ")",
+                                root + "/self.glsl:2: error: #include: include cycle: \"self.glsl\" → \"self.glsl\"",
+                                "main.frag:4: error: #include: \"../outside.glsl\" lies outside the workspace folder " +
+                                    root,
+                            }));
+    // Failed includes keep one empty line each, so later lines stay mapped.
+    EXPECT_EQ(out.code, lines({"#version 450 core", "", "", "float s;", "", ""}));
+    EXPECT_EQ(origins(out), (Lines{"main.frag:1", "main.frag:1", "main.frag:2", root + "/self.glsl:1",
+                                   root + "/self.glsl:2", "main.frag:4"}));
+}
+
+TEST(ShaderPreprocessor, SnippetCycle) {
+    test::ScratchDir dir;
+    std::vector<CodeSnippet> snippets{{"a", "#include \"b\"\n", 5, {"fx.xml", 5}},
+                                      {"b", "\n#include \"a\"\n", 8, {"fx.xml", 8}}};
+    ShaderInput input = inputFor(dir, "#include \"a\"\n");
+    input.snippets = &snippets;
+    Diagnostics d;
+    preprocessShader(input, d);
+    EXPECT_EQ(formatted(d), (Lines{"fx.xml:9: error: #include: include cycle: \"a\" → \"b\" → \"a\""}));
+}
+
+// ---- compiler logs ----
+
+namespace {
+
+// A shader whose line 2 comes from common.glsl:7 and line 3 from fx.xml:30.
+PreprocessedShader mappedShader() {
+    PreprocessedShader s;
+    s.code = "#version 450 core\nfloat helper();\nvoid main() {}\n";
+    s.lineOrigins = {{"fx.xml", 28}, {"common.glsl", 7}, {"fx.xml", 30}};
+    return s;
+}
+
+const SourceLocation kFallback{"fx.xml", 27};
+
+}  // namespace
+
+TEST(ShaderPreprocessor, MapsGlslangLog) {
+    Diagnostics d = mapCompilerLog(lines({
+                                       "ERROR: 0:2: 'helper' : no matching overloaded function found ",  // glslang's trailing space
+                                       "WARNING: 0:3: 'x' : unused",
+                                       "ERROR: 0:3: '' : compilation terminated",
+                                       "ERROR: 2 compilation errors.  No code generated.",
+                                   }),
+                                   mappedShader(), kFallback, "<pass name=\"p\">");
+    EXPECT_EQ(formatted(d),
+              (Lines{"common.glsl:7: error: <pass name=\"p\">: 'helper' : no matching overloaded function found",
+                     "fx.xml:30: warning: <pass name=\"p\">: 'x' : unused",
+                     "fx.xml:30: error: <pass name=\"p\">: '' : compilation terminated"}));
+}
+
+TEST(ShaderPreprocessor, MapsMesaLog) {
+    Diagnostics d = mapCompilerLog("0:2(12): error: `undefinedThing' undeclared\n0:3(1): warning: unused variable\n",
+                                   mappedShader(), kFallback, "<pass name=\"p\">");
+    EXPECT_EQ(formatted(d), (Lines{"common.glsl:7: error: <pass name=\"p\">: `undefinedThing' undeclared",
+                                   "fx.xml:30: warning: <pass name=\"p\">: unused variable"}));
+}
+
+TEST(ShaderPreprocessor, MapsNvidiaLog) {
+    Diagnostics d = mapCompilerLog("0(2) : error C1008: undefined variable \"undefinedThing\"\r\n"
+                                   "0(3) : warning C7022: unrecognized profile specifier\r\n",
+                                   mappedShader(), kFallback, "<pass name=\"p\">");
+    EXPECT_EQ(formatted(d),
+              (Lines{"common.glsl:7: error: <pass name=\"p\">: C1008: undefined variable \"undefinedThing\"",
+                     "fx.xml:30: warning: <pass name=\"p\">: C7022: unrecognized profile specifier"}));
+}
+
+TEST(ShaderPreprocessor, UnrecognisedLogLinesFallBackToTheShader) {
+    Diagnostics d = mapCompilerLog("\nLinking failed: something odd\nERROR: Linking fragment stage: missing main\n",
+                                   mappedShader(), kFallback, "<pass name=\"p\">");
+    EXPECT_EQ(formatted(d), (Lines{"fx.xml:27: error: <pass name=\"p\">: Linking failed: something odd",
+                                   "fx.xml:27: error: <pass name=\"p\">: Linking fragment stage: missing main"}));
+}
+
+}  // namespace rmfx
