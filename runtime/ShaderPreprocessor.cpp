@@ -55,8 +55,7 @@ public:
             if (directive == "include") {
                 include(lines[i], where, folder, depth);
             } else if (directive == "pragma" && lines[i].find("once") != std::string::npos) {
-                out_.code += "\n";  // keeps line numbers aligned
-                out_.lineOrigins.push_back(where);
+                blank(where);
             } else {
                 out_.code += lines[i] + "\n";
                 out_.lineOrigins.push_back(where);
@@ -64,45 +63,61 @@ public:
         }
     }
 
+    // The top-level shader file, so that a file including itself is caught as a cycle.
+    void openTopLevel(const std::filesystem::path& file) {
+        stack_.push_back(std::filesystem::weakly_canonical(file));
+        names_.push_back(file.filename().string());
+    }
+
 private:
+    void blank(const SourceLocation& where) {
+        out_.code += "\n";  // keeps line numbers aligned
+        out_.lineOrigins.push_back(where);
+    }
+
+    void fail(const SourceLocation& where, const std::string& message) {
+        diagnostics_.push_back({Diagnostic::Severity::Error, where, "#include", message});
+        blank(where);
+    }
+
     void include(const std::string& line, const SourceLocation& where, const std::filesystem::path& folder, int depth) {
         static const std::regex pattern(R"(^\s*#\s*include\s*"([^"]+)\"\s*(//.*)?$)");
         std::smatch m;
-        auto fail = [&](const std::string& message) {
-            diagnostics_.push_back({Diagnostic::Severity::Error, where, "#include", message});
-            out_.code += "\n";
-            out_.lineOrigins.push_back(where);
-        };
-        if (!std::regex_match(line, m, pattern)) return fail("expected #include \"file\"");
+        if (!std::regex_match(line, m, pattern)) return fail(where, "expected #include \"file\"");
         std::string name = m[1];
-        if (depth >= 32) return fail("includes nested more than 32 deep (a cycle?) at \"" + name + "\"");
+        if (depth >= 32) return fail(where, "includes nested more than 32 deep (a cycle?) at \"" + name + "\"");
         if (input_.snippets)
             for (const CodeSnippet& snippet : *input_.snippets)
-                if (snippet.name == name) return includeSnippet(snippet, where, folder, depth);
+                if (snippet.name == name)
+                    return enter("<snippet>/" + snippet.name, name, snippet.code,
+                                 {snippet.where.file, snippet.codeLine}, folder, depth, where, nullptr);
         std::filesystem::path candidate = folder / name;
         if (!std::filesystem::is_regular_file(candidate)) candidate = input_.root / name;
         if (!std::filesystem::is_regular_file(candidate))
-            return fail("cannot find \"" + name + "\" (looked in " + folder.string() +
-                        (folder == input_.root ? "" : " and " + input_.root.string()) + ")");
+            return fail(where, "cannot find \"" + name + "\" (looked in " + folder.string() +
+                                   (folder == input_.root ? "" : " and " + input_.root.string()) + ")");
         if (!isInside(candidate, input_.root))
-            return fail("\"" + name + "\" lies outside the workspace folder " + input_.root.string());
-        auto key = std::filesystem::weakly_canonical(candidate);
-        if (auto cycle = cycleThrough(key, name)) return fail(*cycle);
-        if (onceFiles_.count(key)) {
-            out_.code += "\n";
-            out_.lineOrigins.push_back(where);
-            return;
-        }
+            return fail(where, "\"" + name + "\" lies outside the workspace folder " + input_.root.string());
         std::ifstream in(candidate, std::ios::binary);
         std::stringstream buffer;
         buffer << in.rdbuf();
-        std::string text = buffer.str();
-        out_.files.push_back(candidate);
+        enter(std::filesystem::weakly_canonical(candidate), name, buffer.str(),
+              {candidate.lexically_normal().string(), 1}, candidate.parent_path(), depth, where, &candidate);
+    }
+
+    // Expands an included text unless it is already open (a cycle) or was marked #pragma once;
+    // `file` (null for snippets) is recorded among the files the shader depends on.
+    void enter(const std::filesystem::path& key, const std::string& name, const std::string& text,
+               const SourceLocation& start, const std::filesystem::path& folder, int depth, const SourceLocation& where,
+               const std::filesystem::path* file) {
+        if (auto cycle = cycleThrough(key, name)) return fail(where, *cycle);
+        if (onceFiles_.count(key)) return blank(where);
+        if (file) out_.files.push_back(*file);
         for (const auto& l : splitLines(text))
             if (directiveName(l) == "pragma" && l.find("once") != std::string::npos) onceFiles_.insert(key);
         stack_.push_back(key);
         names_.push_back(name);
-        expand(text, candidate.lexically_normal().string(), 1, candidate.parent_path(), depth + 1);
+        expand(text, start.file, start.line, folder, depth + 1);
         stack_.pop_back();
         names_.pop_back();
     }
@@ -116,29 +131,6 @@ private:
             return "include cycle: " + chain + "\"" + name + "\"";
         }
         return std::nullopt;
-    }
-
-    void includeSnippet(const CodeSnippet& snippet, const SourceLocation& where, const std::filesystem::path& folder,
-                        int depth) {
-        std::filesystem::path key = "<snippet>/" + snippet.name;
-        if (auto cycle = cycleThrough(key, snippet.name)) {
-            diagnostics_.push_back({Diagnostic::Severity::Error, where, "#include", *cycle});
-            out_.code += "\n";
-            out_.lineOrigins.push_back(where);
-            return;
-        }
-        if (onceFiles_.count(key)) {
-            out_.code += "\n";
-            out_.lineOrigins.push_back(where);
-            return;
-        }
-        for (const auto& l : splitLines(snippet.code))
-            if (directiveName(l) == "pragma" && l.find("once") != std::string::npos) onceFiles_.insert(key);
-        stack_.push_back(key);
-        names_.push_back(snippet.name);
-        expand(snippet.code, snippet.where.file, snippet.codeLine, folder, depth + 1);
-        stack_.pop_back();
-        names_.pop_back();
     }
 
     const ShaderInput& input_;
@@ -160,7 +152,10 @@ SourceLocation PreprocessedShader::origin(int line) const {
 
 PreprocessedShader preprocessShader(const ShaderInput& input, Diagnostics& diagnostics) {
     PreprocessedShader body;
-    Expander(input, diagnostics, body).expand(input.code, input.start.file, input.start.line, input.folder, 0);
+    Expander expander(input, diagnostics, body);
+    // Code read from a shader file starts at its line 1; inline code starts later in the workspace file.
+    if (input.start.line == 1 && std::filesystem::is_regular_file(input.start.file)) expander.openTopLevel(input.start.file);
+    expander.expand(input.code, input.start.file, input.start.line, input.folder, 0);
 
     // #version must come first; defines go right after it, mapped to the #version line.
     PreprocessedShader out;

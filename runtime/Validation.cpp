@@ -29,6 +29,12 @@ private:
     void warning(const SourceLocation& where, const std::string& element, const std::string& message) {
         out_.push_back({Diagnostic::Severity::Warning, where, element, message});
     }
+    // "color (rgb)" and "color (rgba)" tell the two colour types apart.
+    static std::string typeWithWidth(ValueType type) {
+        if (type == ValueType::Color3) return "color (rgb)";
+        if (type == ValueType::Color4) return "color (rgba)";
+        return valueTypeName(type);
+    }
     static std::string at(const SourceLocation& where) { return "line " + std::to_string(where.line); }
 
     // tag(item): the element the item was declared with ("float", "cubemap", …).
@@ -106,14 +112,17 @@ private:
                 error(s.where, element, "pass '" + pass.name + "' samples target '" + s.target +
                                             "', which it also writes (use frame=\"previous\" to read last frame's "
                                             "contents, or a second target)");
-            if (s.mipmap != MipmapMode::None && (!t || !t->mipmaps))
+            if (s.mipmap != MipmapMode::None && !t)
+                error(s.where, element, "mipmap filtering, but the implicit output target has no mipmaps (declare a "
+                                        "target with mipmaps=\"true\" and name it in <output target=...>)");
+            else if (s.mipmap != MipmapMode::None && !t->mipmaps)
                 error(s.where, element, "mipmap filtering, but target '" + s.target + "' is declared without mipmaps=\"true\"");
         }
         for (const Variable& c : pass.constants) {
             if (const Variable* v = ws_.findVariable(c.name); v && v->value.type != c.value.type)
                 error(c.where, "<" + std::string(valueTypeName(c.value.type)) + " name=\"" + c.name + "\">",
-                      "pass constant '" + c.name + "' is a " + valueTypeName(c.value.type) + " but variable '" +
-                          c.name + "' (" + at(v->where) + ") is a " + valueTypeName(v->value.type));
+                      "pass constant '" + c.name + "' is a " + typeWithWidth(c.value.type) + " but variable '" +
+                          c.name + "' (" + at(v->where) + ") is a " + typeWithWidth(v->value.type));
         }
         if (!pass.draw.file.empty() && !std::filesystem::is_regular_file(ws_.folder / pass.draw.file))
             error(pass.draw.where, "<draw>", "model file '" + pass.draw.file + "' not found (looked for " +

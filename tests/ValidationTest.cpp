@@ -37,9 +37,12 @@ Loaded load(const test::ScratchDir& dir, const std::string& xml, const std::stri
     out.path = path.string();
     out.folder = path.parent_path().string() + "/";
     out.result = loadWorkspace(path);
-    for (const Diagnostic& d : out.result.diagnostics)
+    for (const Diagnostic& d : out.result.diagnostics) {
         (d.severity == Diagnostic::Severity::Error ? out.errors : out.warnings).push_back(d.format());
-    if (hasErrors(out.result.diagnostics)) EXPECT_FALSE(out.result.workspace);
+    }
+    if (hasErrors(out.result.diagnostics)) {
+        EXPECT_FALSE(out.result.workspace);
+    }
     return out;
 }
 
@@ -257,6 +260,25 @@ TEST(Validation, MipmapFilteringNeedsMipmaps) {
                         }));
 }
 
+TEST(Validation, MipmapFilteringOfTheImplicitOutput) {
+    test::ScratchDir dir;
+    auto l = load(dir, lines({
+                           "<workspace version=\"1\">",
+                           "  <pass name=\"scene\">",
+                           kPlainShader,
+                           "  </pass>",
+                           "  <pass name=\"p\" target=\"a\">",
+                           "    <sampler name=\"s\" target=\"output\" mipmap=\"linear\"/>",
+                           kPlainShader,
+                           "  </pass>",
+                           "  <target name=\"a\" format=\"rgba8\"/>",
+                           "</workspace>",
+                       }));
+    EXPECT_EQ(l.errors, (Lines{l.path + ":6: error: <sampler name=\"s\">: mipmap filtering, but the implicit output "
+                                        "target has no mipmaps (declare a target with mipmaps=\"true\" and name it "
+                                        "in <output target=...>)"}));
+}
+
 TEST(Validation, SecondSamplerWithTheSameName) {
     test::ScratchDir dir;
     auto l = load(dir, lines({
@@ -286,6 +308,21 @@ TEST(Validation, PassConstantOfAnotherType) {
                        }));
     EXPECT_EQ(l.errors, (Lines{l.path + ":4: error: <vec3 name=\"Gain\">: pass constant 'Gain' is a vec3 but variable "
                                         "'Gain' (line 2) is a float"}));
+}
+
+TEST(Validation, PassConstantColorOfAnotherWidth) {
+    test::ScratchDir dir;
+    auto l = load(dir, lines({
+                           "<workspace version=\"1\">",
+                           "  <color name=\"Tint\" value=\"1 1 1\"/>",
+                           "  <pass name=\"p\">",
+                           "    <color name=\"Tint\" value=\"1 1 1 1\"/>",
+                           kPlainShader,
+                           "  </pass>",
+                           "</workspace>",
+                       }));
+    EXPECT_EQ(l.errors, (Lines{l.path + ":4: error: <color name=\"Tint\">: pass constant 'Tint' is a color (rgba) but "
+                                        "variable 'Tint' (line 2) is a color (rgb)"}));
 }
 
 // ---- files ----
@@ -392,6 +429,20 @@ TEST(Validation, IncludeCycleNamesTheChain) {
                        }));
     EXPECT_EQ(l.errors, (Lines{l.folder + "b.glsl:2: error: #include: include cycle: \"a.glsl\" → \"b.glsl\" → "
                                           "\"a.glsl\""}));
+}
+
+TEST(Validation, ShaderFileIncludingItselfIsACycle) {
+    test::ScratchDir dir;
+    dir.write("self.frag", "out vec4 c;\n#include \"self.frag\"\nvoid main() { c = vec4(1.0); }\n");
+    auto l = load(dir, lines({
+                           "<workspace version=\"1\">",
+                           "  <pass name=\"p\">",
+                           "    <shader stage=\"fragment\" file=\"self.frag\"/>",
+                           "  </pass>",
+                           "</workspace>",
+                       }));
+    EXPECT_EQ(l.errors, (Lines{l.folder + "self.frag:2: error: #include: include cycle: \"self.frag\" → "
+                                          "\"self.frag\""}));
 }
 
 TEST(Validation, IncludeOutsideTheWorkspaceFolder) {
