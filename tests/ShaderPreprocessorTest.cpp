@@ -9,12 +9,7 @@ namespace rmfx {
 namespace {
 
 using Lines = std::vector<std::string>;
-
-std::string lines(std::initializer_list<std::string> list) {
-    std::string out;
-    for (const std::string& l : list) out += l + "\n";
-    return out;
-}
+using test::lines;
 
 // "file:line" of every line of the output, for compact comparisons.
 Lines origins(const PreprocessedShader& shader) {

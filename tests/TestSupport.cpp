@@ -9,6 +9,12 @@ namespace rmfx::test {
 std::filesystem::path sourceDir() { return RMFX_SOURCE_DIR; }
 std::filesystem::path binaryDir() { return RMFX_BINARY_DIR; }
 
+std::string lines(std::initializer_list<std::string> list) {
+    std::string out;
+    for (const std::string& l : list) out += l + "\n";
+    return out;
+}
+
 ScratchDir::ScratchDir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : "scratch";

@@ -2,12 +2,17 @@
 // Paths and scratch folders shared by the tests.
 
 #include <filesystem>
+#include <initializer_list>
 #include <string>
 
 namespace rmfx::test {
 
 std::filesystem::path sourceDir();  // the repository root
 std::filesystem::path binaryDir();  // the build folder
+
+// Joins lines with "\n", so the i-th string is line i + 1 of the text: tests then state the line
+// of each element they expect a message about.
+std::string lines(std::initializer_list<std::string> list);
 
 // A fresh, empty folder under the build tree, named after the running test; removed on destruction.
 class ScratchDir {

@@ -12,13 +12,7 @@ namespace rmfx {
 namespace {
 
 using Lines = std::vector<std::string>;
-
-// Joins lines with "\n", so the i-th string is line i + 1 of the text.
-std::string lines(std::initializer_list<std::string> list) {
-    std::string out;
-    for (const std::string& l : list) out += l + "\n";
-    return out;
-}
+using test::lines;
 
 // A fragment shader on one line that compiles and uses nothing.
 const std::string kPlainShader = "    <shader stage=\"fragment\">out vec4 c; void main() { c = vec4(1.0); }</shader>";

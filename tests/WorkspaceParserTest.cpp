@@ -12,13 +12,6 @@ namespace {
 
 const std::string kPath = "fx/test.xml";
 
-// Joins lines with "\n", so the i-th string is line i + 1 of the text.
-std::string lines(std::initializer_list<std::string> list) {
-    std::string out;
-    for (const std::string& l : list) out += l + "\n";
-    return out;
-}
-
 // A workspace whose body starts on line 2, followed by a pass (a workspace needs one).
 std::string workspace(std::initializer_list<std::string> body) {
     std::string out = "<workspace version=\"1\">\n";
@@ -50,6 +43,7 @@ Workspace parsedOk(const std::string& text) {
 }
 
 using Lines = std::vector<std::string>;
+using test::lines;
 const std::string at = kPath + ":";
 
 }  // namespace
