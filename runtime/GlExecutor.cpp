@@ -158,7 +158,7 @@ struct GlExecutor::Impl {
         bool ok = true;
         for (auto& t : targets) {
             int buffers = t->history ? 2 : 1;
-            int levels = t->mipmaps ? 1 + static_cast<int>(std::floor(std::log2(std::max(t->size.x, t->size.y)))) : 1;
+            int levels = t->mipmaps ? gl::mipLevels(t->size.x, t->size.y) : 1;
             if (t->needsDepth) {
                 glCreateRenderbuffers(1, &t->depth);
                 glNamedRenderbufferStorage(t->depth, GL_DEPTH_COMPONENT32F, t->size.x, t->size.y);

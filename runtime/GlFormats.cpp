@@ -1,5 +1,8 @@
 #include "runtime/GlFormats.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <epoxy/gl.h>
 
 namespace rmfx::gl {
@@ -99,5 +102,9 @@ unsigned minFilter(Filter filter, MipmapMode mipmap) {
 }
 
 unsigned magFilter(Filter filter) { return filter == Filter::Linear ? GL_LINEAR : GL_NEAREST; }
+
+int mipLevels(int width, int height) {
+    return 1 + static_cast<int>(std::floor(std::log2(std::max(width, height))));
+}
 
 }  // namespace rmfx::gl

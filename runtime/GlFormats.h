@@ -14,5 +14,7 @@ unsigned compareFunc(CompareFunc func);
 unsigned wrapMode(Wrap wrap);
 unsigned minFilter(Filter filter, MipmapMode mipmap);
 unsigned magFilter(Filter filter);
+// Levels of a full mip chain down to 1x1.
+int mipLevels(int width, int height);
 
 }  // namespace rmfx::gl

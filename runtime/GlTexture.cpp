@@ -6,6 +6,7 @@
 #include <epoxy/gl.h>
 
 #include "runtime/CubeMapLayout.h"
+#include "runtime/GlFormats.h"
 #include "runtime/ImageIO.h"
 
 namespace rmfx {
@@ -58,10 +59,6 @@ size_t bytesPerTexel(GLenum internal) {
     }
 }
 
-int mipLevels(int width, int height) {
-    return 1 + static_cast<int>(std::floor(std::log2(std::max(width, height))));
-}
-
 void applySwizzle(GLuint texture, int channels) {
     if (channels == 1) {
         const GLint swizzle[4] = {GL_RED, GL_RED, GL_RED, GL_ONE};
@@ -92,7 +89,7 @@ Result<GlTextureInfo> loadGlTexture(const Workspace& ws, const Texture& texture)
         for (int y = 0; y < image->height; ++y)
             std::copy_n(image->pixels.begin() + static_cast<long>(y * row), row,
                         flipped.begin() + static_cast<long>((image->height - 1 - y) * row));
-        int levels = texture.mipmaps ? mipLevels(info.width, info.height) : 1;
+        int levels = texture.mipmaps ? gl::mipLevels(info.width, info.height) : 1;
         glCreateTextures(GL_TEXTURE_2D, 1, &info.name);
         glTextureStorage2D(info.name, levels, f.internal, info.width, info.height);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -123,7 +120,7 @@ Result<GlTextureInfo> loadGlTexture(const Workspace& ws, const Texture& texture)
     UploadFormat f;
     for (Image& face : cube) f = chooseFormat(face, texture.colorSpace);
     info.width = info.height = cube[0].width;
-    int levels = texture.mipmaps ? mipLevels(info.width, info.height) : 1;
+    int levels = texture.mipmaps ? gl::mipLevels(info.width, info.height) : 1;
     glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &info.name);
     glTextureStorage2D(info.name, levels, f.internal, info.width, info.height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
