@@ -63,4 +63,63 @@ Result<bool> writeTourMedia(const std::filesystem::path& folder) {
     return writeImage(folder / "sky_cross.exr", makeSkyCross(32, glm::vec3(-0.35f, 0.12f, -0.93f), 2000.0f));
 }
 
+Image encodeAlphaIntensity(const Image& hdr) {
+    constexpr float kMaxMultiplier = 65.0f;
+    Image encoded;
+    encoded.width = hdr.width;
+    encoded.height = hdr.height;
+    encoded.channels = 4;
+    encoded.bitsPerChannel = 8;
+    encoded.pixels.resize(static_cast<size_t>(hdr.width) * hdr.height * 4);
+    auto quantise = [](float v) { return std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f) / 255.0f; };
+    for (int y = 0; y < hdr.height; ++y)
+        for (int x = 0; x < hdr.width; ++x) {
+            glm::vec3 c(0.0f);
+            for (int k = 0; k < std::min(hdr.channels, 3); ++k) {
+                float v = hdr.at(x, y, k);
+                c[k] = v > 0.0f ? std::min(v, 1e30f) : 0.0f;  // NaN and negatives to 0, Inf to finite
+            }
+            if (hdr.channels < 3) c = glm::vec3(c[0]);
+            float peak = std::max({c.r, c.g, c.b});
+            if (peak > kMaxMultiplier) c *= kMaxMultiplier / peak;
+            peak = std::min(peak, kMaxMultiplier);
+            // Smallest alpha step whose multiplier 1 + 64 a covers the peak.
+            float alpha = peak > 1.0f ? std::min(std::ceil((peak - 1.0f) / 64.0f * 255.0f), 255.0f) / 255.0f : 0.0f;
+            float multiplier = 1.0f + 64.0f * alpha;
+            for (int k = 0; k < 3; ++k) encoded.at(x, y, k) = quantise(c[k] / multiplier);
+            encoded.at(x, y, 3) = alpha;
+        }
+    return encoded;
+}
+
+glm::vec3 decodeAlphaIntensity(float r, float g, float b, float a) { return glm::vec3(r, g, b) * (1.0f + 64.0f * a); }
+
+Image makeGhostMask(int size) {
+    Image image;
+    image.width = image.height = size;
+    image.channels = 4;
+    image.bitsPerChannel = 8;
+    image.pixels.resize(static_cast<size_t>(size) * size * 4);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            float dx = (x + 0.5f) / size - 0.5f, dy = (y + 0.5f) / size - 0.5f;
+            float t = std::clamp((0.5f - std::sqrt(dx * dx + dy * dy)) / 0.2f, 0.0f, 1.0f);
+            float alpha = t * t * (3.0f - 2.0f * t);
+            for (int k = 0; k < 3; ++k) image.at(x, y, k) = 1.0f;
+            image.at(x, y, 3) = std::round(alpha * 255.0f) / 255.0f;
+        }
+    return image;
+}
+
+Result<bool> writeChapterMedia(const std::filesystem::path& folder) {
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    Image sky = makeSkyCross(128, kChapterSunDirection, kChapterSunIntensity);
+    WriteOptions half;
+    half.exrHalf = true;
+    if (auto r = writeImage(folder / "sky_cross.exr", sky, half); !r) return r;
+    if (auto r = writeImage(folder / "sky_cross_alpha64.png", encodeAlphaIntensity(sky)); !r) return r;
+    return writeImage(folder / "ghost_mask.png", makeGhostMask(128));
+}
+
 }  // namespace rmfx::samples

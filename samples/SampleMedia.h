@@ -24,4 +24,24 @@ Image makeDiscMask(int size);
 // Writes what samples/tour/tour.xml reads (mask.png, sky_cross.exr) into `folder`.
 Result<bool> writeTourMedia(const std::filesystem::path& folder);
 
+// The chapter's 8-bit HDR encoding: colour in rgb, brightness in alpha, decoded as
+// rgb * (1 + 64 a). Each texel gets the smallest 8-bit alpha whose multiplier reaches its largest
+// channel, so rgb keeps as many of its 8 bits as possible; values above 65 are scaled down to 65
+// keeping their hue. Returns an RGBA image with 8-bit values (k / 255).
+Image encodeAlphaIntensity(const Image& hdr);
+glm::vec3 decodeAlphaIntensity(float r, float g, float b, float a);
+
+// The lens-flare mask of the chapter (its figure 8.9): white, with alpha 1 inside radius 0.3 of the
+// image falling smoothly to 0 at radius 0.5, so scaled ghost images lose their hard borders.
+Image makeGhostMask(int size);
+
+// The chapter scene's sun: low above the horizon, in view of the effects' default camera.
+inline const glm::vec3 kChapterSunDirection{-0.35f, 0.12f, -0.93f};
+inline constexpr float kChapterSunIntensity = 2000.0f;
+
+// Writes the media of the chapter-8 workspaces in effects/ into `folder`: sky_cross.exr (half
+// float, 128-texel faces, range 0.02 .. 2000), sky_cross_alpha64.png (the same sky in the
+// chapter's alpha encoding) and ghost_mask.png.
+Result<bool> writeChapterMedia(const std::filesystem::path& folder);
+
 }  // namespace rmfx::samples
