@@ -10,7 +10,6 @@
 
 #include "runtime/CubeMapLayout.h"
 #include "runtime/ImageIO.h"
-#include "runtime/WorkspaceLoader.h"
 #include "tests/GlTestSupport.h"
 #include "tests/TestSupport.h"
 #include "tests/reference/CameraRays.h"
@@ -30,18 +29,10 @@ struct SkyRun {
     OrbitCameraSettings camera;
 };
 
-SkyRun renderSky(const std::vector<std::pair<std::string, std::string>>& overrides) {
+SkyRun renderSky(const Overrides& overrides) {
     SkyRun out;
-    LoadedWorkspace loaded = loadWorkspace(sourceDir() / "effects" / "shader_1.xml");
-    if (!loaded.workspace) {
-        ADD_FAILURE() << formatAll(loaded.diagnostics);
-        return out;
-    }
-    auto ws = std::make_unique<Workspace>(std::move(*loaded.workspace));
-    if (Diagnostics bad = applyOverrides(*ws, overrides); !bad.empty()) {
-        ADD_FAILURE() << formatAll(bad);
-        return out;
-    }
+    std::unique_ptr<Workspace> ws = effectWorkspace("shader_1.xml", overrides);
+    if (!ws) return out;
     for (Pass& pass : ws->passes)
         if (pass.name == "teapot") pass.enabled = false;
     out.camera = ws->camera;

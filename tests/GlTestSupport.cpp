@@ -5,6 +5,7 @@
 #include "runtime/GlContext.h"
 #include "runtime/WorkspaceLoader.h"
 #include "runtime/WorkspaceParser.h"
+#include "tests/TestSupport.h"
 
 namespace rmfx::test {
 namespace {
@@ -45,6 +46,20 @@ std::unique_ptr<Workspace> workspaceFromText(const std::string& xml, const std::
         return nullptr;
     }
     return std::make_unique<Workspace>(std::move(*parsed.workspace));
+}
+
+std::unique_ptr<Workspace> effectWorkspace(const std::string& file, const Overrides& overrides) {
+    LoadedWorkspace loaded = loadWorkspace(sourceDir() / "effects" / file);
+    if (!loaded.workspace) {
+        ADD_FAILURE() << file << " does not load:\n" << formatAll(loaded.diagnostics);
+        return nullptr;
+    }
+    auto ws = std::make_unique<Workspace>(std::move(*loaded.workspace));
+    if (Diagnostics bad = applyOverrides(*ws, overrides); !bad.empty()) {
+        ADD_FAILURE() << formatAll(bad);
+        return nullptr;
+    }
+    return ws;
 }
 
 GlRun runWorkspace(std::unique_ptr<Workspace> ws, const RunSettings& settings) {

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -27,6 +29,11 @@ protected:
 // failure with the diagnostics and returns nullptr when the workspace has errors.
 std::unique_ptr<Workspace> workspaceFromText(const std::string& xml,
                                              const std::filesystem::path& folder = std::filesystem::path("."));
+
+// A workspace of effects/ (e.g. "shader_1.xml") with `--set`-style overrides applied. Adds a test
+// failure with the diagnostics and returns nullptr when it does not load.
+using Overrides = std::vector<std::pair<std::string, std::string>>;
+std::unique_ptr<Workspace> effectWorkspace(const std::string& file, const Overrides& overrides = {});
 
 struct GlRun {
     std::unique_ptr<Workspace> ws;     // declared first: the executor refers to it and dies first
