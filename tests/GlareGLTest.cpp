@@ -21,8 +21,10 @@ namespace {
 
 class GlareGLTest : public GlTest {};
 
-constexpr int kSize = 128;
-constexpr glm::ivec2 kQuarter{kSize / 4, kSize / 4};
+// A small square size, where sampling positions fall on texel centres and half-texels, and an odd
+// one, where the 1/4 targets round up (25x16) and bilinear weights are fractions of every kind.
+const std::vector<glm::ivec2> kSizes{{128, 128}, {97, 61}};
+constexpr int kSize = 128;  // the impulse and scene-encoding tests
 const glm::dvec3 kGlowFactors(0.1, 0.1, 0.1);  // the workspaces' defaults
 const double kHalfUlp = std::ldexp(1.0, -10);  // an rgba16f rounding step, relative (2^-11 each side)
 const double kUnorm8Step = 1.0 / 255.0;
@@ -36,7 +38,14 @@ std::unique_ptr<Workspace> loadEffect(const std::string& name) {
     return std::make_unique<Workspace>(std::move(*loaded.workspace));
 }
 
-GlRun renderEffect(std::unique_ptr<Workspace> ws) { return runWorkspace(std::move(ws), {{kSize, kSize}, 1, 1.0f / 60.0f}); }
+GlRun renderEffect(std::unique_ptr<Workspace> ws, glm::ivec2 size = {kSize, kSize}) {
+    return runWorkspace(std::move(ws), {size, 1, 1.0f / 60.0f});
+}
+
+std::string sizeName(glm::ivec2 size) { return std::to_string(size.x) + "x" + std::to_string(size.y); }
+
+// A 1/4 target's size: ceil(viewport / 4), the format's rounding rule.
+glm::ivec2 quarterOf(glm::ivec2 size) { return (size + 3) / 4; }
 
 RefImage readRef(const GlRun& run, const std::string& target) { return fromImage(readBack(*run.exec, target)); }
 
@@ -51,58 +60,62 @@ double maxChannel(const RefImage& image, int channels = 3) {
 // floor only keeps the ratio finite where a channel is 0.
 constexpr double kRelativeFloor = 1e-4;
 
-// The scene must hold the sun (about 1000 at Exposure_Level 0.5) and the compared level must carry
-// its energy, or a comparison of two black images would pass.
+// The scene must hold the sun (65 · Exposure_Level = 16 from the 8-bit environment at the default
+// 0.25) and the compared level must carry its energy, or a comparison of two black images would pass.
 void expectSunEnergy(const RefImage& scene, const RefImage& level, bool alpha64) {
     RefImage sceneHdr = alpha64 ? decodedAlpha64(scene) : scene;
     RefImage levelHdr = alpha64 ? decodedAlpha64(level) : level;
-    EXPECT_GT(maxChannel(sceneHdr), 30.0) << "no sun in the scene";
+    EXPECT_GT(maxChannel(sceneHdr), 10.0) << "no sun in the scene";
     EXPECT_GT(maxChannel(levelHdr), 1.0) << "the blur level carries no energy";
 }
 
 // shader_2: six 9-sample passes on rgba16f. Level k went through k roundings to half on the GPU and
 // k in the reference; where they round to different sides the two differ by one half ulp
 // (2^-10 relative), and averages with positive weights keep relative differences: level k within
-// k · 2^-10. The screen adds one more rounding. Sampling positions fall on texel centres and
-// half-texels at 128x128, where bilinear weights are exact.
+// k · 2^-10. The screen adds one more rounding. llvmpipe interpolates float textures in float32,
+// far finer than that (measured: within these bounds at 97x61 too).
 TEST_F(GlareGLTest, Shader2LevelsAndScreenMatchTheReference) {
-    GlRun run = renderEffect(loadEffect("shader_2"));
-    ASSERT_TRUE(run.exec);
-    RefImage scene = readRef(run, "scene");
-    ASSERT_EQ(scene.width, kSize);
-    std::vector<RefImage> expected = blurChain(scene, kQuarter, gauss9Kernel(), 6, TargetRounding::Half);
-    for (int k = 1; k <= 6; ++k) {
-        RefImage level = readRef(run, "glare_" + std::to_string(k));
-        double error = maxRelativeDifference(level, expected[k - 1], kRelativeFloor);
-        EXPECT_LE(error, k * kHalfUlp) << "glare_" << k;
-        RecordProperty("glare_" + std::to_string(k) + "_relative_error", std::to_string(error));
-    }
-    expectSunEnergy(scene, expected[5], false);
+    for (glm::ivec2 size : kSizes) {
+        SCOPED_TRACE(sizeName(size));
+        GlRun run = renderEffect(loadEffect("shader_2"), size);
+        ASSERT_TRUE(run.exec);
+        RefImage scene = readRef(run, "scene");
+        ASSERT_EQ(scene.width, size.x);
+        std::vector<RefImage> expected = blurChain(scene, quarterOf(size), gauss9Kernel(), 6, TargetRounding::Half);
+        for (int k = 1; k <= 6; ++k) {
+            RefImage level = readRef(run, "glare_" + std::to_string(k));
+            EXPECT_LE(maxRelativeDifference(level, expected[k - 1], kRelativeFloor), k * kHalfUlp) << "glare_" << k;
+        }
+        expectSunEnergy(scene, expected[5], false);
 
-    RefImage screen = roundedToHalf(blendedAdditive(
-        scene, glareCombine(expected[3], expected[4], expected[5], kGlowFactors, kSize, kSize, false)));
-    RefImage output = readRef(run, "output");
-    EXPECT_LE(maxRelativeDifference(output, screen, kRelativeFloor, 3), 7 * kHalfUlp);
-    // The glare really is on the screen: near the sun it adds more than the scene's own half ulp.
-    EXPECT_GT(maxAbsDifference(output, roundedToHalf(scene), 3), 0.1);
+        RefImage screen = roundedToHalf(blendedAdditive(
+            scene, glareCombine(expected[3], expected[4], expected[5], kGlowFactors, size.x, size.y, false)));
+        RefImage output = readRef(run, "output");
+        EXPECT_LE(maxRelativeDifference(output, screen, kRelativeFloor, 3), 7 * kHalfUlp);
+        // The glare really is on the screen: near the sun it adds far more than the scene's half ulp.
+        EXPECT_GT(maxAbsDifference(output, roundedToHalf(scene), 3), 0.1);
+    }
 }
 
 // exercise 1: two 49-sample passes on rgba16f, the same rounding argument as shader_2.
 TEST_F(GlareGLTest, Exercise1LevelsAndScreenMatchTheReference) {
-    GlRun run = renderEffect(loadEffect("exercise_1"));
-    ASSERT_TRUE(run.exec);
-    RefImage scene = readRef(run, "scene");
-    ASSERT_EQ(scene.width, kSize);
-    std::vector<RefImage> expected = blurChain(scene, kQuarter, gauss49Kernel(), 2, TargetRounding::Half);
-    for (int k = 1; k <= 2; ++k) {
-        RefImage level = readRef(run, "glare49_" + std::to_string(k));
-        EXPECT_LE(maxRelativeDifference(level, expected[k - 1], kRelativeFloor), k * kHalfUlp) << "glare49_" << k;
-    }
-    expectSunEnergy(scene, expected[1], false);
+    for (glm::ivec2 size : kSizes) {
+        SCOPED_TRACE(sizeName(size));
+        GlRun run = renderEffect(loadEffect("exercise_1"), size);
+        ASSERT_TRUE(run.exec);
+        RefImage scene = readRef(run, "scene");
+        ASSERT_EQ(scene.width, size.x);
+        std::vector<RefImage> expected = blurChain(scene, quarterOf(size), gauss49Kernel(), 2, TargetRounding::Half);
+        for (int k = 1; k <= 2; ++k) {
+            RefImage level = readRef(run, "glare49_" + std::to_string(k));
+            EXPECT_LE(maxRelativeDifference(level, expected[k - 1], kRelativeFloor), k * kHalfUlp) << "glare49_" << k;
+        }
+        expectSunEnergy(scene, expected[1], false);
 
-    RefImage screen = roundedToHalf(blendedAdditive(
-        scene, glareCombine(expected[0], expected[1], expected[1], kGlowFactors, kSize, kSize, false)));
-    EXPECT_LE(maxRelativeDifference(readRef(run, "output"), screen, kRelativeFloor, 3), 3 * kHalfUlp);
+        RefImage screen = roundedToHalf(blendedAdditive(
+            scene, glareCombine(expected[0], expected[1], expected[1], kGlowFactors, size.x, size.y, false)));
+        EXPECT_LE(maxRelativeDifference(readRef(run, "output"), screen, kRelativeFloor, 3), 3 * kHalfUlp);
+    }
 }
 
 // shader_6's screen, decode(scene) + Σ Glow_Factor_j · decode(level_j) rounded to half, from the
@@ -111,12 +124,13 @@ TEST_F(GlareGLTest, Exercise1LevelsAndScreenMatchTheReference) {
 // Σ_j Glow_Factor_j · 64 (δ_j a + rgb δ_j + δ_j²) + the half rounding of the screen.
 double worstAlpha64ScreenError(const RefImage& output, const RefImage& scene, const std::vector<RefImage>& levels,
                                const std::vector<int>& steps) {
+    int width = scene.width, height = scene.height;
     RefImage screen = roundedToHalf(blendedAdditive(
-        decodedAlpha64(scene), glareCombine(levels[0], levels[1], levels[2], kGlowFactors, kSize, kSize, true)));
+        decodedAlpha64(scene), glareCombine(levels[0], levels[1], levels[2], kGlowFactors, width, height, true)));
     double worst = 0.0;
-    for (int y = 0; y < kSize; ++y)
-        for (int x = 0; x < kSize; ++x) {
-            glm::dvec2 uv((x + 0.5) / kSize, (y + 0.5) / kSize);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            glm::dvec2 uv((x + 0.5) / width, (y + 0.5) / height);
             for (int c = 0; c < 3; ++c) {
                 double bound = kHalfUlp * screen.at(x, y)[c] + 1e-6;
                 for (int j = 0; j < 3; ++j) {
@@ -133,24 +147,27 @@ double worstAlpha64ScreenError(const RefImage& output, const RefImage& scene, co
 // shader_6: the same passes on rgba8. A level rounded to 1/255 on both sides differs by at most
 // one more step than its source did: level k within k/255 (the scene is the GPU's own).
 TEST_F(GlareGLTest, Shader6LevelsAndScreenMatchTheReference) {
-    GlRun run = renderEffect(loadEffect("shader_6"));
-    ASSERT_TRUE(run.exec);
-    RefImage scene = readRef(run, "scene");
-    ASSERT_EQ(scene.width, kSize);
-    std::vector<RefImage> expected = blurChain(scene, kQuarter, gauss9Kernel(), 6, TargetRounding::Unorm8);
-    std::vector<RefImage> levels;
-    for (int k = 1; k <= 6; ++k) {
-        levels.push_back(readRef(run, "glare_" + std::to_string(k)));
-        EXPECT_LE(maxAbsDifference(levels.back(), expected[k - 1]), k * kUnorm8Step + 1e-6) << "glare_" << k;
-    }
-    expectSunEnergy(scene, expected[5], true);
+    for (glm::ivec2 size : kSizes) {
+        SCOPED_TRACE(sizeName(size));
+        GlRun run = renderEffect(loadEffect("shader_6"), size);
+        ASSERT_TRUE(run.exec);
+        RefImage scene = readRef(run, "scene");
+        ASSERT_EQ(scene.width, size.x);
+        std::vector<RefImage> expected = blurChain(scene, quarterOf(size), gauss9Kernel(), 6, TargetRounding::Unorm8);
+        std::vector<RefImage> levels;
+        for (int k = 1; k <= 6; ++k) {
+            levels.push_back(readRef(run, "glare_" + std::to_string(k)));
+            EXPECT_LE(maxAbsDifference(levels.back(), expected[k - 1]), k * kUnorm8Step + 1e-6) << "glare_" << k;
+        }
+        expectSunEnergy(scene, expected[5], true);
 
-    // llvmpipe filters rgba8 textures in 8 bits: a bilinear sample is within one step of the
-    // exact interpolation. Screen from the GPU's own levels: that step on every level. From the
-    // reference levels: level k's k steps, plus that one.
-    RefImage output = readRef(run, "output");
-    EXPECT_LE(worstAlpha64ScreenError(output, scene, {levels[3], levels[4], levels[5]}, {1, 1, 1}), 1.0);
-    EXPECT_LE(worstAlpha64ScreenError(output, scene, {expected[3], expected[4], expected[5]}, {5, 6, 7}), 1.0);
+        // Bilinear filtering of rgba8 textures is not exact in llvmpipe (fixed-point weights and
+        // results): allow one 1/255 step per filtered sample. Screen from the GPU's own levels:
+        // that step on every level. From the reference levels: level k's k steps, plus that one.
+        RefImage output = readRef(run, "output");
+        EXPECT_LE(worstAlpha64ScreenError(output, scene, {levels[3], levels[4], levels[5]}, {1, 1, 1}), 1.0);
+        EXPECT_LE(worstAlpha64ScreenError(output, scene, {expected[3], expected[4], expected[5]}, {5, 6, 7}), 1.0);
+    }
 }
 
 // The 8-bit scene of shader_6 decodes to the half-float scene of shader_2 (same camera, same 8-bit
@@ -175,8 +192,8 @@ TEST_F(GlareGLTest, Shader6SceneDecodesToTheFloatSceneWithinItsQuantisation) {
         }
     }
     EXPECT_LE(worstRatio, 1.0);
-    // The encoding keeps the sun: its multiplier (1 + 64 a) · 0.5 fits below 64.
-    EXPECT_GT(maxChannel(decoded), 30.0);
+    // The encoding keeps the sun: its multiplier (1 + 64 a) · 0.25 fits below 64.
+    EXPECT_GT(maxChannel(decoded), 10.0);
 }
 
 // Both glare chains fed a single bright scene pixel instead of the scene. The first pass reads the
