@@ -8,7 +8,9 @@ rmfx="${1:-build}/rmfx"
 out=docs/images
 render() { "$rmfx" render "$@" -q; }
 
-render effects/shader_1.xml --size 384x384 -o "$out/shader_1.png"
+for ws in shader_1 shader_2 shader_6 exercise_1; do
+  render effects/$ws.xml --size 384x384 -o "$out/$ws.png"
+done
 
 # The article's four exposures side by side (256x256 each).
 tmp=$(mktemp -d)
