@@ -159,7 +159,7 @@ TEST_F(AutoExposureGLTest, SceneChangeMovesTheExposureMonotonicallyTowardsTheNew
     GlRun run = runWorkspace(std::move(ws), {{48, 48}, 1});
     ASSERT_TRUE(run.exec);
     const double average = meanBrightness(fromImage(readBack(*run.exec, "scene")));
-    renderFrames(*run.exec, 40);
+    renderFrames(*run.exec, 80);  // 0.8^80 ≈ 2e-8 of the initial distance is left
     double e = readExposure(*run.exec);
     EXPECT_NEAR(e, 0.5 / average, 1e-4 * e) << "settled before the change";
 
