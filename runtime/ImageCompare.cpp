@@ -70,8 +70,10 @@ std::string ImageComparison::describe() const {
     auto compared = [](const LimitCheck& c) {
         return number(c.value) + (c.passed() ? " ≤ " : " > ") + number(c.limit);
     };
-    std::string where = " at x=" + std::to_string(metrics.maxX) + " y=" + std::to_string(metrics.maxY) + " channel " +
-                        std::to_string(metrics.maxChannel);
+    std::string where = metrics.maxError > 0 ? " at x=" + std::to_string(metrics.maxX) + " y=" +
+                                                   std::to_string(metrics.maxY) + " channel " +
+                                                   std::to_string(metrics.maxChannel)
+                                             : "";
     if (checks.empty() && difference.empty()) return out;
     if (checks.empty()) {
         clause("max " + error + number(metrics.maxError) + where + ", mean " + error + number(metrics.meanError));

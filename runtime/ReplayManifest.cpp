@@ -167,7 +167,7 @@ private:
         if (c.compares.empty() && !e->FirstChildElement("compare")) r.error("no <compare>: the case checks nothing");
         if (!named || !workspace) return std::nullopt;
         c.workspaceText = *workspace;
-        c.workspace = folder_ / *workspace;
+        c.workspace = (folder_ / *workspace).lexically_normal();
         return c;
     }
 

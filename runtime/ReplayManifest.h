@@ -26,7 +26,7 @@ struct ReplayCompare {
     SourceLocation where;
     std::string target;                 // a render target; "" for the workspace's output
     std::string referenceText;          // as written in the manifest
-    std::filesystem::path reference;    // resolved against the manifest's folder
+    std::filesystem::path reference;    // resolved against the manifest's folder, normalised
     CompareLimits limits;
     bool storeHalf = false;             // --update writes 16-bit half floats instead of 32-bit
 
@@ -38,7 +38,7 @@ struct ReplayCase {
     SourceLocation where;
     std::string name;
     std::string workspaceText;          // as written in the manifest
-    std::filesystem::path workspace;    // resolved against the manifest's folder
+    std::filesystem::path workspace;    // resolved against the manifest's folder, normalised
     RunSettings run;                    // size {0, 0}: the workspace's own size
     std::vector<ReplaySet> sets;
     std::vector<ReplayCompare> compares;  // at least one

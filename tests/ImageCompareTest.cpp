@@ -145,7 +145,7 @@ TEST(ImageCompare, NaNInTheRenderWhereTheReferenceIsFiniteFails) {
     EXPECT_FALSE(r.passed());
     // The other values still measure: all equal.
     EXPECT_DOUBLE_EQ(r.metrics.maxError, 0.0);
-    EXPECT_EQ(r.describe(), r.problem + "; max error 0 ≤ 1 at x=0 y=0 channel 0");
+    EXPECT_EQ(r.describe(), r.problem + "; max error 0 ≤ 1");  // no place for a zero error
     // The same in the reference (a NaN where the render is finite) fails too.
     EXPECT_FALSE(compareImages(b, a, limits(1.0, {})).passed());
 }
