@@ -97,11 +97,9 @@ int renderCommand(const std::vector<std::string>& args) {
         return 1;
     }
     std::string targetName = a->target.value_or(ws.outputTargetName());
-    if (a->target && !ws.findTarget(*a->target) && *a->target != ws.outputTargetName()) {
-        std::string known;
-        for (const RenderTarget& t : ws.targets) known += (known.empty() ? "" : ", ") + t.name;
-        std::cerr << "rmfx render: --target " << *a->target << ": the workspace has no such target (it has: "
-                  << (known.empty() ? "none" : known) << "; the output is '" << ws.outputTargetName() << "')\n";
+    if (a->target && !ws.canReadTarget(*a->target)) {
+        std::cerr << "rmfx render: --target " << *a->target << ": the workspace has no such target ("
+                  << ws.describeTargets() << ")\n";
         return 1;
     }
     std::string output = a->output.value_or(ws.name + ".png");

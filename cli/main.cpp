@@ -1,4 +1,4 @@
-// rmfx command line: renders and validates workspaces through the runtime library only.
+// rmfx command line: renders, validates and replays workspaces through the runtime library only.
 
 #include <cstdio>
 #include <cstring>
@@ -15,6 +15,8 @@ const char* usage = R"(rmfx — runs RenderMonkey-style effect workspaces as Ope
 usage:
   rmfx render [WORKSPACE] [options]   render headless and write an image
   rmfx validate WORKSPACE...          check workspaces (structure, references, shaders) without GL
+  rmfx replay MANIFEST [options]      regression tests: render the manifest's cases and compare them
+                                      with their reference images (docs/replay.md)
   rmfx --help | --version
 
 WORKSPACE is an rmfx workspace file (docs/workspace-format.md); without one, render uses the
@@ -32,7 +34,17 @@ render options:
   --transform none|srgb  override the display transform for 8-bit images
   -q, --quiet            print nothing but errors
 
-exit status: 0 success, 1 invalid workspace or arguments, 2 rendering or GL failure
+replay options:
+  --out DIR              where failing compares leave their diff and actual images, as
+                         DIR/CASE/NAME.diff.exr and DIR/CASE/NAME.actual.exr (default: replay-out)
+  --junit FILE           also write a JUnit XML report, one testcase per case
+  --case NAME            replay only this case (repeatable)
+  --update               store the renders as the references instead of comparing
+  -q, --quiet            print only failing cases and errors
+
+exit status: render, validate: 0 success, 1 invalid workspace or arguments, 2 rendering or GL
+failure. replay: 0 every case passed, 1 a case failed (comparison, workspace or rendering
+error) or the manifest or arguments are invalid, 2 no GL context.
 )";
 
 }  // namespace
@@ -51,6 +63,7 @@ int main(int argc, char** argv) {
     args.erase(args.begin());
     if (command == "render") return rmfx::cli::renderCommand(args);
     if (command == "validate") return rmfx::cli::validateCommand(args);
+    if (command == "replay") return rmfx::cli::replayCommand(args);
     std::cerr << "rmfx: unknown command '" << command << "' (try rmfx --help)\n";
     return 1;
 }

@@ -27,6 +27,14 @@ std::string Workspace::passTargetName(const Pass& pass) const {
     return pass.target.empty() ? outputTargetName() : pass.target;
 }
 
+bool Workspace::canReadTarget(std::string_view name) const { return findTarget(name) || name == outputTargetName(); }
+
+std::string Workspace::describeTargets() const {
+    std::string known;
+    for (const RenderTarget& t : targets) known += (known.empty() ? "" : ", ") + t.name;
+    return "it has: " + (known.empty() ? std::string("none") : known) + "; the output is '" + outputTargetName() + "'";
+}
+
 namespace {
 struct FormatInfo {
     TargetFormat format;

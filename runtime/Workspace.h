@@ -199,6 +199,10 @@ struct Workspace {
     std::string outputTargetName() const;
     // The target a pass writes, resolved: "" → the output target.
     std::string passTargetName(const Pass& pass) const;
+    // Whether GlExecutor::readTarget can read `name`: a declared target or the output.
+    bool canReadTarget(std::string_view name) const;
+    // For messages about a target that is not there: "it has: a, b; the output is 'output'".
+    std::string describeTargets() const;
 };
 
 const char* targetFormatName(TargetFormat format);

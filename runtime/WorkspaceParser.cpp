@@ -2,135 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
-#include <tinyxml2.h>
-
 #include "runtime/BuiltinMeshes.h"
+#include "runtime/XmlElementReader.h"
 
 namespace rmfx {
 namespace {
 
-using tinyxml2::XMLElement;
-
-// Reads one element: reports attributes it does not know, parses typed attributes, and names
-// the element in every diagnostic.
-class ElementReader {
-public:
-    ElementReader(const XMLElement* element, const std::string& file, Diagnostics& diagnostics,
-                  std::initializer_list<const char*> allowed)
-        : element_(element), file_(file), diagnostics_(diagnostics) {
-        for (const auto* a = element->FirstAttribute(); a; a = a->Next()) {
-            bool known = std::any_of(allowed.begin(), allowed.end(),
-                                     [&](const char* n) { return std::string_view(n) == a->Name(); });
-            if (known) continue;
-            std::string list;
-            for (const char* n : allowed) list += std::string(list.empty() ? "" : ", ") + n;
-            error("unknown attribute '" + std::string(a->Name()) + "'" +
-                  (list.empty() ? " (it takes none)" : " (expected one of: " + list + ")"));
-        }
-    }
-
-    SourceLocation where() const { return {file_, element_->GetLineNum()}; }
-
-    std::string label() const {
-        const char* name = element_->Attribute("name");
-        return name ? "<" + std::string(element_->Name()) + " name=\"" + name + "\">"
-                    : "<" + std::string(element_->Name()) + ">";
-    }
-
-    void error(const std::string& message) const {
-        diagnostics_.push_back({Diagnostic::Severity::Error, where(), label(), message});
-    }
-    void warning(const std::string& message) const {
-        diagnostics_.push_back({Diagnostic::Severity::Warning, where(), label(), message});
-    }
-
-    const char* raw(const char* name) const { return element_->Attribute(name); }
-    bool has(const char* name) const { return raw(name) != nullptr; }
-
-    std::optional<std::string> string(const char* name, bool required = false) const {
-        if (const char* v = raw(name)) return std::string(v);
-        if (required) error("missing attribute '" + std::string(name) + "'");
-        return std::nullopt;
-    }
-
-    // A name that shaders and other elements can refer to.
-    std::optional<std::string> identifier(const char* name, bool required = true) const {
-        auto v = string(name, required);
-        if (!v) return std::nullopt;
-        bool ok = !v->empty() && (std::isalpha(static_cast<unsigned char>((*v)[0])) || (*v)[0] == '_');
-        for (char c : *v) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
-        if (!ok) {
-            error("attribute '" + std::string(name) + "': '" + *v +
-                  "' is not a valid name (letters, digits and '_', not starting with a digit)");
-            return std::nullopt;
-        }
-        return v;
-    }
-
-    std::optional<float> number(const char* name, bool required = false) const {
-        auto v = string(name, required);
-        if (!v) return std::nullopt;
-        auto f = parseFloat(*v);
-        if (!f) error("attribute '" + std::string(name) + "': expected a number, got '" + *v + "'");
-        return f;
-    }
-
-    std::optional<int> integer(const char* name, int minimum) const {
-        auto v = string(name);
-        if (!v) return std::nullopt;
-        auto f = parseFloat(*v);
-        if (!f || *f != std::floor(*f) || *f < minimum || *f > 1e9f) {
-            error("attribute '" + std::string(name) + "': expected an integer ≥ " + std::to_string(minimum) +
-                  ", got '" + *v + "'");
-            return std::nullopt;
-        }
-        return static_cast<int>(*f);
-    }
-
-    std::optional<bool> boolean(const char* name) const {
-        auto v = string(name);
-        if (!v) return std::nullopt;
-        if (*v == "true" || *v == "1") return true;
-        if (*v == "false" || *v == "0") return false;
-        error("attribute '" + std::string(name) + "': expected true or false, got '" + *v + "'");
-        return std::nullopt;
-    }
-
-    template <size_t N>
-    std::optional<std::array<float, N>> numbers(const char* name) const {
-        auto v = string(name);
-        if (!v) return std::nullopt;
-        auto list = parseFloatList(*v);
-        if (!list || list->size() != N) {
-            error("attribute '" + std::string(name) + "': expected " + std::to_string(N) + " numbers, got '" + *v + "'");
-            return std::nullopt;
-        }
-        std::array<float, N> out{};
-        std::copy(list->begin(), list->end(), out.begin());
-        return out;
-    }
-
-    // One of a fixed set of words.
-    template <class E>
-    std::optional<E> choice(const char* name, std::initializer_list<std::pair<const char*, E>> words) const {
-        auto v = string(name);
-        if (!v) return std::nullopt;
-        for (const auto& [word, value] : words)
-            if (*v == word) return value;
-        std::string list;
-        for (const auto& [word, value] : words) list += std::string(list.empty() ? "" : ", ") + word;
-        error("attribute '" + std::string(name) + "': '" + *v + "' is not one of: " + list);
-        return std::nullopt;
-    }
-
-private:
-    const XMLElement* element_;
-    const std::string& file_;
-    Diagnostics& diagnostics_;
-};
+using xml::ElementReader;
+using xml::XMLElement;
 
 class Parser {
 public:
@@ -142,13 +23,9 @@ public:
         if (version && *version != "1")
             r.error("unsupported version '" + *version + "': this rmfx reads version 1");
         ws.name = r.string("name").value_or(ws.path.stem().string());
-        if (auto size = r.string("size")) {
-            if (auto wh = parseSize(*size)) {
-                ws.width = wh->first;
-                ws.height = wh->second;
-            } else {
-                r.error("attribute 'size': expected WIDTHxHEIGHT such as 512x512, got '" + *size + "'");
-            }
+        if (auto wh = r.size("size")) {
+            ws.width = wh->first;
+            ws.height = wh->second;
         }
         for (const XMLElement* e = root->FirstChildElement(); e; e = e->NextSiblingElement()) {
             std::string_view tag = e->Name();
@@ -185,18 +62,7 @@ public:
     }
 
 private:
-    void unexpected(const XMLElement* e, const std::string& message) {
-        diagnostics_.push_back({Diagnostic::Severity::Error, {file_, e->GetLineNum()}, "", message});
-    }
-
-    static std::optional<std::pair<int, int>> parseSize(const std::string& text) {
-        auto x = text.find('x');
-        if (x == std::string::npos) return std::nullopt;
-        auto w = parseFloat(text.substr(0, x)), h = parseFloat(text.substr(x + 1));
-        if (!w || !h || *w < 1 || *h < 1 || *w != std::floor(*w) || *h != std::floor(*h) || *w > 1e6f || *h > 1e6f)
-            return std::nullopt;
-        return std::pair{static_cast<int>(*w), static_cast<int>(*h)};
-    }
+    void unexpected(const XMLElement* e, const std::string& message) { xml::errorAt(e, file_, diagnostics_, message); }
 
     // "1/4", "0.25" → 0.25
     static std::optional<double> parseFraction(const std::string& text) {
@@ -227,11 +93,7 @@ private:
         noChildren(e);
     }
 
-    void noChildren(const XMLElement* e) {
-        if (const XMLElement* child = e->FirstChildElement())
-            unexpected(child, "unknown element <" + std::string(child->Name()) + "> in <" + e->Name() +
-                                  "> (it takes no child elements)");
-    }
+    void noChildren(const XMLElement* e) { xml::noChildren(e, file_, diagnostics_); }
 
     std::optional<Variable> parseVariable(const XMLElement* e) {
         ValueType type = *valueTypeFromElement(e->Name());
@@ -410,16 +272,13 @@ private:
                          "' (expected rgba8, rgba16f, rgba32f, r16f, r32f, rg16f, rg32f, rgba16, r11g11b10f, "
                          "rgb10a2, r8, rg8)");
         }
-        auto size = r.string("size");
         auto scale = r.string("scale");
-        if (size && scale) r.error("give either 'size' (absolute) or 'scale' (relative to the viewport), not both");
-        if (size) {
-            if (auto wh = parseSize(*size)) {
+        if (r.has("size") && scale) r.error("give either 'size' (absolute) or 'scale' (relative to the viewport), not both");
+        if (r.has("size")) {
+            if (auto wh = r.size("size", "64x64")) {
                 t.size.relative = false;
                 t.size.width = wh->first;
                 t.size.height = wh->second;
-            } else {
-                r.error("attribute 'size': expected WIDTHxHEIGHT such as 64x64, got '" + *size + "'");
             }
         } else if (scale) {
             auto parts = std::stringstream(*scale);
@@ -694,30 +553,6 @@ private:
     Diagnostics& diagnostics_;
 };
 
-// tinyxml2's ErrorStr() is "Error=XML_ERROR_… ErrorID=… (0x…) Line number=…[: XMLElement name=…]", which
-// says neither what is wrong nor how to fix it; say it in words.
-std::string xmlErrorSentence(const tinyxml2::XMLDocument& doc) {
-    std::string raw = doc.ErrorStr() ? doc.ErrorStr() : "";
-    std::string element;
-    if (auto at = raw.find("XMLElement name="); at != std::string::npos) element = raw.substr(at + 16);
-    switch (doc.ErrorID()) {
-        case tinyxml2::XML_ERROR_EMPTY_DOCUMENT: return "the file has no element";
-        case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT:
-            return "<" + element + "> is not closed (its end tag is missing, misspelled or out of order)";
-        case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE:
-            return "bad attribute in <" + element + "> (write name=\"value\", each name once)";
-        case tinyxml2::XML_ERROR_PARSING_ELEMENT: return "bad element syntax (a stray '<'? in text write &lt;)";
-        case tinyxml2::XML_ERROR_PARSING_TEXT: return "bad text (a '<' or '&' that should be &lt; or &amp;?)";
-        case tinyxml2::XML_ERROR_PARSING_CDATA: return "<![CDATA[ without its closing ]]>";
-        case tinyxml2::XML_ERROR_PARSING_COMMENT: return "<!-- without its closing -->";
-        case tinyxml2::XML_ERROR_PARSING_DECLARATION: return "bad <?…?> declaration";
-        case tinyxml2::XML_ERROR_PARSING_UNKNOWN: return "bad <!…> construct";
-        case tinyxml2::XML_ERROR_PARSING:
-            return "cannot read the document from here on (an element left open at the end of the file?)";
-        default: return doc.ErrorName();
-    }
-}
-
 }  // namespace
 
 ParsedWorkspace parseWorkspaceText(const std::string& text, const std::filesystem::path& path,
@@ -725,23 +560,8 @@ ParsedWorkspace parseWorkspaceText(const std::string& text, const std::filesyste
     ParsedWorkspace result;
     std::string file = path.string();
     tinyxml2::XMLDocument doc;
-    if (doc.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS) {
-        result.diagnostics.push_back({Diagnostic::Severity::Error, {file, doc.ErrorLineNum()}, "",
-                                      "malformed XML: " + xmlErrorSentence(doc)});
-        return result;
-    }
-    const XMLElement* root = doc.RootElement();
-    if (!root || std::string_view(root->Name()) != "workspace") {
-        result.diagnostics.push_back({Diagnostic::Severity::Error, {file, root ? root->GetLineNum() : 1}, "",
-                                      "the root element must be <workspace>" +
-                                          (root ? ", not <" + std::string(root->Name()) + ">" : std::string())});
-        return result;
-    }
-    // tinyxml2 accepts several top-level elements; everything after the first would be ignored.
-    if (const XMLElement* extra = root->NextSiblingElement())
-        result.diagnostics.push_back({Diagnostic::Severity::Error, {file, extra->GetLineNum()}, "",
-                                      "<" + std::string(extra->Name()) +
-                                          "> after </workspace>: a file holds one <workspace>"});
+    const XMLElement* root = xml::parseDocument(doc, text, file, "workspace", result.diagnostics);
+    if (!root) return result;
     Workspace ws;
     ws.path = path;
     ws.folder = folder;
@@ -751,15 +571,10 @@ ParsedWorkspace parseWorkspaceText(const std::string& text, const std::filesyste
 }
 
 ParsedWorkspace parseWorkspaceFile(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        ParsedWorkspace result;
-        result.diagnostics.push_back({Diagnostic::Severity::Error, {path.string(), 0}, "", "cannot open the file"});
-        return result;
-    }
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return parseWorkspaceText(buffer.str(), path, path.parent_path().empty() ? "." : path.parent_path());
+    ParsedWorkspace result;
+    auto text = xml::readTextFile(path, result.diagnostics);
+    if (!text) return result;
+    return parseWorkspaceText(*text, path, path.parent_path().empty() ? "." : path.parent_path());
 }
 
 }  // namespace rmfx

@@ -1,12 +1,6 @@
 // The rmfx binary: `rmfx render` writes what the executor renders, and a bad workspace exits
 // non-zero with a file:line message.
 
-#include <sys/wait.h>
-
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
-
 #include <gtest/gtest.h>
 
 #include "runtime/ImageIO.h"
@@ -19,30 +13,11 @@ namespace {
 
 class CliRenderGLTest : public GlTest {};
 
-std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
-
-// Runs the rmfx binary with arguments; stderr goes to `errFile`. Returns the exit status.
-int runRmfx(const std::string& arguments, const std::filesystem::path& errFile) {
-    std::filesystem::path binary = binaryDir() / "rmfx";
-    EXPECT_TRUE(std::filesystem::exists(binary)) << binary;
-    std::string command = quoted(binary) + " " + arguments + " >/dev/null 2>" + quoted(errFile);
-    int status = std::system(command.c_str());
-    EXPECT_TRUE(WIFEXITED(status)) << command;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string readText(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 TEST_F(CliRenderGLTest, RenderWritesTheOutputTargetAsExr) {
     ScratchDir dir;
     std::filesystem::path exr = dir / "default.exr";
-    int status = runRmfx("render -o " + quoted(exr) + " --size 32x32", dir / "stderr.txt");
-    ASSERT_EQ(status, 0) << readText(dir / "stderr.txt");
+    CommandResult cli = runRmfx("render -o " + shellQuoted(exr) + " --size 32x32", dir.path());
+    ASSERT_EQ(cli.status, 0) << cli.err;
     auto image = readImage(exr);
     ASSERT_TRUE(image) << image.error();
 
@@ -71,9 +46,9 @@ TEST_F(CliRenderGLTest, BadWorkspaceExitsNonZeroWithFileAndLine) {
 </workspace>
 )");
     std::filesystem::path png = dir / "never.png";
-    int status = runRmfx("render " + quoted(bad) + " -o " + quoted(png), dir / "stderr.txt");
-    std::string err = readText(dir / "stderr.txt");
-    EXPECT_NE(status, 0);
+    CommandResult run = runRmfx("render " + shellQuoted(bad) + " -o " + shellQuoted(png), dir.path());
+    const std::string& err = run.err;
+    EXPECT_NE(run.status, 0);
     EXPECT_NE(err.find(bad.string() + ":3:"), std::string::npos) << err;
     EXPECT_NE(err.find("rgba99"), std::string::npos) << err;
     EXPECT_FALSE(std::filesystem::exists(png));

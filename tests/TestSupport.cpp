@@ -1,8 +1,11 @@
 #include "tests/TestSupport.h"
 
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <fstream>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -15,6 +18,38 @@ std::string lines(std::initializer_list<std::string> list) {
     std::string out;
     for (const std::string& l : list) out += l + "\n";
     return out;
+}
+
+std::string readText(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::string shellQuoted(const std::filesystem::path& path) {
+    std::string out = "'";
+    for (char c : path.string()) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+CommandResult runRmfx(const std::string& arguments, const std::filesystem::path& folder,
+                      const std::string& environment) {
+    std::filesystem::path binary = binaryDir() / "rmfx";
+    EXPECT_TRUE(std::filesystem::exists(binary)) << binary;
+    std::filesystem::path out = folder / "rmfx-stdout.txt", err = folder / "rmfx-stderr.txt";
+    std::string command = "cd " + shellQuoted(folder) + " && " + environment + (environment.empty() ? "" : " ") +
+                          shellQuoted(binary) + " " + arguments + " >" +
+                          shellQuoted(out) + " 2>" + shellQuoted(err);
+    int status = std::system(command.c_str());
+    CommandResult result;
+    EXPECT_TRUE(WIFEXITED(status)) << command;
+    result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = readText(out);
+    result.err = readText(err);
+    std::filesystem::remove(out);
+    std::filesystem::remove(err);
+    return result;
 }
 
 ScratchDir::ScratchDir() {

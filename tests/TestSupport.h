@@ -14,6 +14,24 @@ std::filesystem::path binaryDir();  // the build folder
 // of each element they expect a message about.
 std::string lines(std::initializer_list<std::string> list);
 
+// The whole text of a file; "" when it cannot be read.
+std::string readText(const std::filesystem::path& file);
+
+// A path in single quotes, for a shell command line.
+std::string shellQuoted(const std::filesystem::path& path);
+
+struct CommandResult {
+    int status = -1;  // the exit status; -1 when the process did not exit normally
+    std::string out;  // stdout
+    std::string err;  // stderr
+};
+
+// Runs the rmfx binary of this build in `folder` with `arguments` (quoted for the shell where
+// needed) and `environment` (NAME=value words, or ""); stdout and stderr pass through files in
+// `folder`.
+CommandResult runRmfx(const std::string& arguments, const std::filesystem::path& folder,
+                      const std::string& environment = "");
+
 // A fresh, empty folder under the build tree, named after the running test; removed on destruction.
 class ScratchDir {
 public:

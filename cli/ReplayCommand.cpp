@@ -1,0 +1,251 @@
+// rmfx replay MANIFEST: renders each case of a replay manifest and compares its images with the
+// stored references (or, with --update, stores them as the references). docs/replay.md.
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+#include "cli/Commands.h"
+#include "runtime/GlContext.h"
+#include "runtime/ImageIO.h"
+#include "runtime/JUnitReport.h"
+#include "runtime/ReplayManifest.h"
+#include "runtime/ReplayRun.h"
+
+namespace rmfx::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ReplayArguments {
+    std::optional<std::string> manifest;
+    fs::path out = "replay-out";
+    std::optional<fs::path> junit;
+    std::vector<std::string> cases;
+    bool update = false;
+    bool quiet = false;
+};
+
+std::optional<ReplayArguments> parseArguments(const std::vector<std::string>& args) {
+    ReplayArguments a;
+    auto fail = [](const std::string& message) -> std::optional<ReplayArguments> {
+        std::cerr << "rmfx replay: " << message << "\n";
+        return std::nullopt;
+    };
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        if (arg == "--out" || arg == "--junit" || arg == "--case") {
+            if (i + 1 >= args.size() || args[i + 1].empty()) return fail(arg + " needs a value");
+            const std::string& value = args[++i];
+            if (arg == "--out") a.out = value;
+            else if (arg == "--junit") a.junit = value;
+            else a.cases.push_back(value);
+        } else if (arg == "--update") {
+            a.update = true;
+        } else if (arg == "-q" || arg == "--quiet") {
+            a.quiet = true;
+        } else if (!arg.empty() && arg[0] == '-') {
+            return fail("unknown option '" + arg + "' (see rmfx --help)");
+        } else if (a.manifest) {
+            return fail("one manifest at a time; got '" + *a.manifest + "' and '" + arg + "'");
+        } else {
+            a.manifest = arg;
+        }
+    }
+    if (!a.manifest) return fail("name a manifest file (see rmfx --help and docs/replay.md)");
+    return a;
+}
+
+// The cases --case names, in manifest order; all without --case. nullopt (reported) when a name
+// is not in the manifest.
+std::optional<std::vector<const ReplayCase*>> selectCases(const ReplayManifest& manifest,
+                                                          const std::vector<std::string>& names) {
+    std::vector<const ReplayCase*> selected;
+    for (const std::string& name : names) {
+        if (manifest.findCase(name)) continue;
+        std::string known;
+        for (const ReplayCase& c : manifest.cases) known += (known.empty() ? "" : ", ") + c.name;
+        std::cerr << "rmfx replay: --case " << name << ": " << manifest.path.string() << " has no such case (it has: "
+                  << known << ")\n";
+        return std::nullopt;
+    }
+    for (const ReplayCase& c : manifest.cases)
+        if (names.empty() || std::find(names.begin(), names.end(), c.name) != names.end()) selected.push_back(&c);
+    return selected;
+}
+
+std::string channelsAndSize(const Image& image) {
+    return std::to_string(image.width) + "x" + std::to_string(image.height) + ", " + std::to_string(image.channels) +
+           (image.channels == 1 ? " channel" : " channels");
+}
+
+// What became of one case: the lines printed under it, the line for the JUnit report, counts.
+struct CaseOutcome {
+    JUnitTestCase::Outcome outcome = JUnitTestCase::Outcome::Passed;
+    std::string message;  // one line: why it failed
+    int comparesPassed = 0, comparesFailed = 0, comparesNotRun = 0;
+    int referencesWritten = 0;
+
+    bool passed() const { return outcome == JUnitTestCase::Outcome::Passed; }
+    // A line under the case's progress line; `onFailure`: shown only when the case fails (the
+    // metrics of a compare that passed, next to one that did not).
+    void line(const std::string& text, bool onFailure = false) { lines_.push_back({"    " + text + "\n", onFailure}); }
+    void fail(JUnitTestCase::Outcome why, const std::string& text) {
+        outcome = why;
+        message += (message.empty() ? "" : " | ") + text;
+    }
+    // The lines to show: all of them when the case failed.
+    std::string report() const {
+        std::string out;
+        for (const auto& [text, onFailure] : lines_)
+            if (!onFailure || !passed()) out += text;
+        return out;
+    }
+
+private:
+    std::vector<std::pair<std::string, bool>> lines_;
+};
+
+class ReplayRunner {
+public:
+    explicit ReplayRunner(const ReplayArguments& a) : a_(a) {}
+
+    CaseOutcome run(const ReplayCase& c) {
+        CaseOutcome o;
+        CaseRender render = renderReplayCase(c);
+        for (const Diagnostic& d : render.diagnostics)
+            if (d.severity == Diagnostic::Severity::Error || !a_.quiet) o.line(d.format());
+        if (!render.ok()) {
+            for (const Diagnostic& d : render.diagnostics)
+                if (d.severity == Diagnostic::Severity::Error) {
+                    o.fail(JUnitTestCase::Outcome::Error, d.format());
+                    break;
+                }
+            o.comparesNotRun = static_cast<int>(c.compares.size());
+            return o;
+        }
+        for (size_t i = 0; i < c.compares.size(); ++i) {
+            if (a_.update) update(c.compares[i], render.images[i], o);
+            else compare(c, c.compares[i], render.images[i], o);
+        }
+        return o;
+    }
+
+private:
+    void update(const ReplayCompare& compare, const Image& image, CaseOutcome& o) {
+        if (auto written = storeReference(image, compare); !written) {
+            o.line(compare.label() + ": " + written.error());
+            o.fail(JUnitTestCase::Outcome::Error, compare.label() + ": " + written.error());
+            ++o.comparesFailed;
+            return;
+        }
+        o.line("wrote " + compare.reference.string() + " (" + compare.label() + ", " + channelsAndSize(image) + ", " +
+               (compare.storeHalf ? "half" : "float") + ")");
+        ++o.referencesWritten;
+    }
+
+    void compare(const ReplayCase& c, const ReplayCompare& compare, const Image& image, CaseOutcome& o) {
+        ImageComparison result = compareWithReference(image, compare);
+        fs::path folder = a_.out / c.name;
+        fs::path diffFile = folder / (compare.label() + ".diff.exr");
+        fs::path actualFile = folder / (compare.label() + ".actual.exr");
+        // Images of an earlier failure must not outlive it.
+        std::error_code ignored;
+        fs::remove(diffFile, ignored);
+        fs::remove(actualFile, ignored);
+        if (result.passed()) {
+            ++o.comparesPassed;
+            o.line(compare.label() + ": ok (" + result.describe() + ")", true);
+            fs::remove(folder, ignored);  // only when empty
+            return;
+        }
+        ++o.comparesFailed;
+        o.line(compare.label() + ": FAILED: " + result.describe());
+        o.fail(JUnitTestCase::Outcome::Failed, compare.label() + ": " + result.describe());
+        fs::create_directories(folder, ignored);
+        if (!result.difference.empty()) writeFailureImage("diff:  ", diffFile, result.difference, o);
+        writeFailureImage("actual:", actualFile, image, o);
+    }
+
+    void writeFailureImage(const std::string& what, const fs::path& file, const Image& image, CaseOutcome& o) {
+        if (auto written = writeImage(file, image); !written) o.line("  " + what + " " + written.error());
+        else o.line("  " + what + " " + file.string());
+    }
+
+    const ReplayArguments& a_;
+};
+
+}  // namespace
+
+int replayCommand(const std::vector<std::string>& args) {
+    auto a = parseArguments(args);
+    if (!a) return 1;
+    ParsedManifest parsed = parseReplayManifestFile(*a->manifest);
+    std::cerr << formatAll(parsed.diagnostics);
+    if (!parsed.manifest) return 1;
+    const ReplayManifest& manifest = *parsed.manifest;
+    auto cases = selectCases(manifest, a->cases);
+    if (!cases) return 1;
+
+    auto context = GlContext::createHeadless();
+    if (!context) {
+        std::cerr << "rmfx replay: " << context.error() << "\n";
+        return 2;
+    }
+
+    using Clock = std::chrono::steady_clock;
+    auto started = Clock::now();
+    JUnitTestSuite suite;
+    suite.name = "rmfx replay " + manifest.path.string();
+    int casesFailed = 0, comparesPassed = 0, comparesFailed = 0, comparesNotRun = 0, referencesWritten = 0;
+    ReplayRunner runner(*a);
+    for (size_t i = 0; i < cases->size(); ++i) {
+        const ReplayCase& c = *(*cases)[i];
+        std::string progress = "[" + std::to_string(i + 1) + "/" + std::to_string(cases->size()) + "] " + c.name + " ... ";
+        if (!a->quiet) std::cout << progress << std::flush;
+        auto caseStarted = Clock::now();
+        CaseOutcome o = runner.run(c);
+        double seconds = std::chrono::duration<double>(Clock::now() - caseStarted).count();
+        bool passed = o.passed();
+        char time[32];
+        std::snprintf(time, sizeof time, " (%.2f s)\n", seconds);
+        if (a->quiet && !passed) std::cout << progress;
+        if (!a->quiet || !passed)
+            std::cout << (passed ? (a->update ? "updated" : "ok") : "FAILED") << time << o.report() << std::flush;
+        casesFailed += passed ? 0 : 1;
+        comparesPassed += o.comparesPassed;
+        comparesFailed += o.comparesFailed;
+        comparesNotRun += o.comparesNotRun;
+        referencesWritten += o.referencesWritten;
+        suite.cases.push_back({c.name, "replay." + manifest.path.stem().string(), seconds, o.outcome, o.message, o.report()});
+    }
+    suite.seconds = std::chrono::duration<double>(Clock::now() - started).count();
+
+    int total = static_cast<int>(cases->size());
+    if (!a->quiet) {
+        std::cout << "replay: " << (total - casesFailed) << " of " << total << (total == 1 ? " case" : " cases")
+                  << " passed, " << casesFailed << " failed; ";
+        if (a->update)
+            std::cout << referencesWritten << (referencesWritten == 1 ? " reference" : " references") << " written";
+        else
+            std::cout << comparesPassed << " of " << (comparesPassed + comparesFailed + comparesNotRun)
+                      << " compares passed, " << comparesFailed << " failed";
+        if (comparesNotRun > 0) std::cout << ", " << comparesNotRun << " not run";
+        std::cout << "\n";
+    }
+    int status = casesFailed > 0 ? 1 : 0;
+    if (a->junit) {
+        if (auto written = writeJUnit(*a->junit, suite); !written) {
+            std::cerr << "rmfx replay: " << written.error() << "\n";
+            status = 1;
+        } else if (!a->quiet) {
+            std::cout << "replay: wrote " << a->junit->string() << "\n";
+        }
+    }
+    return status;
+}
+
+}  // namespace rmfx::cli
