@@ -1,10 +1,12 @@
 #include "tests/GlTestSupport.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "runtime/GlContext.h"
 #include "runtime/WorkspaceLoader.h"
 #include "runtime/WorkspaceParser.h"
+#include "tests/TestSupport.h"
 
 namespace rmfx::test {
 namespace {
@@ -45,6 +47,32 @@ std::unique_ptr<Workspace> workspaceFromText(const std::string& xml, const std::
         return nullptr;
     }
     return std::make_unique<Workspace>(std::move(*parsed.workspace));
+}
+
+std::unique_ptr<Workspace> loadEffect(const std::string& name) {
+    LoadedWorkspace loaded = loadWorkspace(sourceDir() / "effects" / (name + ".xml"));
+    if (!loaded.workspace) {
+        ADD_FAILURE() << formatAll(loaded.diagnostics);
+        return nullptr;
+    }
+    return std::make_unique<Workspace>(std::move(*loaded.workspace));
+}
+
+void replaceScene(Workspace& ws, const std::string& scenePass, const std::string& fragmentCode) {
+    auto found = std::find_if(ws.passes.begin(), ws.passes.end(), [&](const Pass& p) { return p.name == scenePass; });
+    if (found == ws.passes.end()) {
+        ADD_FAILURE() << "no pass '" << scenePass << "'";
+        return;
+    }
+    for (Pass& pass : ws.passes)
+        if (&pass != &*found && pass.target == found->target) pass.enabled = false;
+    found->samplers.clear();
+    found->constants.clear();
+    ShaderSource fragment;
+    fragment.code = fragmentCode;
+    fragment.codeLine = found->where.line;
+    fragment.where = found->where;
+    found->shaders = {fragment};
 }
 
 GlRun runWorkspace(std::unique_ptr<Workspace> ws, const RunSettings& settings) {

@@ -28,6 +28,15 @@ protected:
 std::unique_ptr<Workspace> workspaceFromText(const std::string& xml,
                                              const std::filesystem::path& folder = std::filesystem::path("."));
 
+// Loads and validates effects/NAME.xml of the repository. Adds a test failure with the diagnostics
+// and returns nullptr when it has errors.
+std::unique_ptr<Workspace> loadEffect(const std::string& name);
+
+// Replaces the scene of a chapter-8 effect with a test image: pass `scenePass` draws
+// `fragmentCode` (inline GLSL) with no samplers, and every other pass drawing into the same target
+// is disabled. Adds a test failure when there is no such pass.
+void replaceScene(Workspace& ws, const std::string& scenePass, const std::string& fragmentCode);
+
 struct GlRun {
     std::unique_ptr<Workspace> ws;     // declared first: the executor refers to it and dies first
     std::unique_ptr<GlExecutor> exec;  // null when creation or a frame failed

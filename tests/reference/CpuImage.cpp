@@ -75,6 +75,25 @@ static RefImage mapTexels(const RefImage& image, double (*f)(double)) {
 RefImage roundedToHalf(const RefImage& image) { return mapTexels(image, roundToHalf); }
 RefImage roundedToUnorm8(const RefImage& image) { return mapTexels(image, roundToUnorm8); }
 
+RefImage roundedTo(const RefImage& image, TargetRounding rounding) {
+    return rounding == TargetRounding::Half ? roundedToHalf(image) : roundedToUnorm8(image);
+}
+
+glm::dvec3 decodeAlpha64(glm::dvec4 encoded) { return glm::dvec3(encoded) * (encoded.a * 64.0); }
+
+RefImage decodedAlpha64(const RefImage& image) {
+    RefImage out = image;
+    for (glm::dvec4& t : out.texels) t = glm::dvec4(decodeAlpha64(t), 1.0);
+    return out;
+}
+
+RefImage blendedAdditive(const RefImage& dst, const RefImage& src) {
+    RefImage out = dst;
+    for (size_t i = 0; i < out.texels.size() && i < src.texels.size(); ++i)
+        out.texels[i] += src.texels[i] * src.texels[i].a;
+    return out;
+}
+
 double maxAbsDifference(const RefImage& a, const RefImage& b, int channels) {
     return maxRelativeDifference(a, b, 0.0, channels);
 }

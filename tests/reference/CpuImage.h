@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "runtime/Image.h"
@@ -45,6 +46,20 @@ double roundToHalf(double value);
 double roundToUnorm8(double value);
 RefImage roundedToHalf(const RefImage& image);
 RefImage roundedToUnorm8(const RefImage& image);
+
+// What a render target of that format keeps of every value.
+enum class TargetRounding { Half, Unorm8 };
+RefImage roundedTo(const RefImage& image, TargetRounding rounding);
+
+// The chapter's 8-bit intensity encoding (shader_6, exercise 2): colour in rgb, the HDR multiplier
+// / 64 in alpha, decoded as rgb · (a · 64). decodedAlpha64 decodes every texel, alpha 1 (the copy
+// of such a scene to the screen).
+glm::dvec3 decodeAlpha64(glm::dvec4 encoded);
+RefImage decodedAlpha64(const RefImage& image);
+
+// dst + src · src.a on every channel, what <blend mode="custom" src="src-alpha" dst="one"/>
+// writes (sizes must match). Not rounded.
+RefImage blendedAdditive(const RefImage& dst, const RefImage& src);
 
 // Largest per-channel |a − b| over the first `channels` channels (sizes must match, else +Inf).
 double maxAbsDifference(const RefImage& a, const RefImage& b, int channels = 4);
