@@ -36,6 +36,9 @@ glm::dvec4 fetchClamped(const RefImage& image, int x, int y);
 // GL_LINEAR / GL_NEAREST lookups with GL_CLAMP_TO_EDGE, texel centres at (i + 0.5) / size.
 glm::dvec4 sampleBilinear(const RefImage& image, glm::dvec2 uv);
 glm::dvec4 sampleNearest(const RefImage& image, glm::dvec2 uv);
+// Per channel, max − min of the four texels sampleBilinear blends at uv: how far an error in the
+// bilinear weights can move the result (GL leaves their precision to the implementation).
+glm::dvec4 bilinearFootprintRange(const RefImage& image, glm::dvec2 uv);
 
 // Evaluates `shade(uv)` at every pixel centre of a width x height target, as a full-screen pass does.
 RefImage shadePixels(int width, int height, const std::function<glm::dvec4(glm::dvec2 uv)>& shade);
