@@ -27,24 +27,12 @@ const double kHalfUlp = std::ldexp(1.0, -10);  // an rgba16f step, relative (2^-
 constexpr double kRelativeFloor = 1e-4;        // keeps relative differences finite at 0
 
 GlRun render(std::unique_ptr<Workspace> ws) { return runWorkspace(std::move(ws), {{kSize, kSize}, 1, 1.0f / 60.0f}); }
-RefImage readRef(const GlRun& run, const std::string& target) { return fromImage(readBack(*run.exec, target)); }
 
 // The mask the workspace reads (written by the build).
 RefImage ghostMask() {
     auto image = readImage(sourceDir() / "samples" / "media" / "ghost_mask.png");
     if (!image) ADD_FAILURE() << image.error();
     return image ? fromImage(*image) : RefImage();
-}
-
-double maxChannel(const RefImage& image) {
-    double m = 0.0;
-    for (const glm::dvec4& t : image.texels) m = std::max({m, t.r, t.g, t.b});
-    return m;
-}
-
-void expectWithin(const std::string& what, double error, double tolerance) {
-    ::testing::Test::RecordProperty(what, std::to_string(error) + " of " + std::to_string(tolerance));
-    EXPECT_LE(error, tolerance) << what;
 }
 
 // What texture filtering may add to a ghost pass beyond the rounding of its result (GL leaves
@@ -89,7 +77,7 @@ TEST_F(GhostGLTest, Shader4PassesMatchTheReference) {
     RefImage ghost1 = readRef(run, "ghost_1");
     RefImage ghost2 = readRef(run, "ghost_2");
     ASSERT_EQ(ghost1.width, kQuarter.x);
-    EXPECT_GT(maxChannel(scene), 30.0) << "no sun in the scene";
+    EXPECT_GT(maxColorChannel(scene), 30.0) << "no sun in the scene";
     RefImage expected1 = roundedToHalf(ghostPass(scene, mask, kQuarter.x, kQuarter.y, kGlowFactor));
     RefImage expected2 = roundedToHalf(ghostPass(ghost1, mask, kQuarter.x, kQuarter.y, kGlowFactor));
     RefImage slack1 = filterSlack(scene, mask), slack2 = filterSlack(ghost1, mask);
@@ -103,8 +91,8 @@ TEST_F(GhostGLTest, Shader4PassesMatchTheReference) {
     RefImage chainSlack = ghostPass(tolerance1, mask, kQuarter.x, kQuarter.y, kGlowFactor);
     for (size_t t = 0; t < chainSlack.texels.size(); ++t) chainSlack.texels[t] += slack2.texels[t];
     expectWithin("ghost_chain", worstFraction(ghost2, chain[1], chainSlack, 1), 1.0);
-    EXPECT_GT(maxChannel(ghost1), 1.0) << "the ghosts carry no energy";
-    EXPECT_GT(maxChannel(ghost2), 0.1) << "the ghosts of ghosts carry no energy";
+    EXPECT_GT(maxColorChannel(ghost1), 1.0) << "the ghosts carry no energy";
+    EXPECT_GT(maxColorChannel(ghost2), 0.1) << "the ghosts of ghosts carry no energy";
 }
 
 // The scales come in pairs ±s, and c_−s(uv) = c_s(1 − uv): whatever the source, a ghost pass is
@@ -152,12 +140,7 @@ TEST_F(GhostGLTest, Shader4ScreenIsTheSceneWithTheGhostsAdded) {
 TEST_F(GhostGLTest, Shader4LightMakesGhostsWhereTheScalesPutThem) {
     auto ws = loadEffect("shader_4");
     ASSERT_TRUE(ws);
-    replaceScene(*ws, "environment", R"(
-out vec4 fragColor;
-void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy);
-    fragColor = all(greaterThanEqual(p, ivec2(88, 72))) && all(lessThan(p, ivec2(96, 80))) ? vec4(1.0) : vec4(0.0);
-})");
+    replaceSceneWithLight(*ws, "environment", {88, 72}, {96, 80});
     GlRun run = render(std::move(ws));
     ASSERT_TRUE(run.exec);
     const glm::dvec2 light(92.0 / kSize, 76.0 / kSize);
@@ -173,7 +156,7 @@ void main() {
             if (q.x > 0 && q.x < 1 && q.y > 0 && q.y < 1) inside.push_back(c);
         }
         EXPECT_EQ(inside.size(), passes == 1 ? 4u : 12u);
-        double peak = maxChannel(ghost);
+        double peak = maxColorChannel(ghost);
         ASSERT_GT(peak, passes == 1 ? 0.1 : 0.01) << "no ghosts";
         const double lit = 1e-3 * peak;
         for (int y = 0; y < ghost.height; ++y)

@@ -58,7 +58,7 @@ std::unique_ptr<Workspace> loadEffect(const std::string& name) {
     return std::make_unique<Workspace>(std::move(*loaded.workspace));
 }
 
-void replaceScene(Workspace& ws, const std::string& scenePass, const std::string& fragmentCode) {
+void replaceSceneWithLight(Workspace& ws, const std::string& scenePass, glm::ivec2 from, glm::ivec2 to) {
     auto found = std::find_if(ws.passes.begin(), ws.passes.end(), [&](const Pass& p) { return p.name == scenePass; });
     if (found == ws.passes.end()) {
         ADD_FAILURE() << "no pass '" << scenePass << "'";
@@ -69,7 +69,13 @@ void replaceScene(Workspace& ws, const std::string& scenePass, const std::string
     found->samplers.clear();
     found->constants.clear();
     ShaderSource fragment;
-    fragment.code = fragmentCode;
+    fragment.code = "out vec4 fragColor;\n"
+                    "void main() {\n"
+                    "    ivec2 p = ivec2(gl_FragCoord.xy);\n"
+                    "    bool lit = all(greaterThanEqual(p, ivec2(" + std::to_string(from.x) + ", " + std::to_string(from.y) +
+                    "))) && all(lessThan(p, ivec2(" + std::to_string(to.x) + ", " + std::to_string(to.y) + ")));\n"
+                    "    fragColor = lit ? vec4(1.0) : vec4(0.0);\n"
+                    "}\n";
     fragment.codeLine = found->where.line;
     fragment.where = found->where;
     found->shaders = {fragment};
@@ -96,6 +102,13 @@ Image readBack(const GlExecutor& exec, const std::string& target) {
         return {};
     }
     return *image;
+}
+
+RefImage readRef(const GlRun& run, const std::string& target) { return fromImage(readBack(*run.exec, target)); }
+
+void expectWithin(const std::string& what, double error, double tolerance) {
+    ::testing::Test::RecordProperty(what, std::to_string(error) + " of " + std::to_string(tolerance));
+    EXPECT_LE(error, tolerance) << what;
 }
 
 std::string glslFloat(double value) {

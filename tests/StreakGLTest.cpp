@@ -32,19 +32,6 @@ struct Direction {
 const std::array<Direction, 4> kDirections{{{"dl", {1, 1}}, {"dr", {-1, 1}}, {"ul", {1, -1}}, {"ur", {-1, -1}}}};
 
 GlRun render(std::unique_ptr<Workspace> ws) { return runWorkspace(std::move(ws), {{kSize, kSize}, 1, 1.0f / 60.0f}); }
-RefImage readRef(const GlRun& run, const std::string& target) { return fromImage(readBack(*run.exec, target)); }
-
-double maxChannel(const RefImage& image) {
-    double m = 0.0;
-    for (const glm::dvec4& t : image.texels) m = std::max({m, t.r, t.g, t.b});
-    return m;
-}
-
-// EXPECT_LE that records the measured error as a fraction of its tolerance (--gtest_output=xml).
-void expectWithin(const std::string& what, double error, double tolerance) {
-    ::testing::Test::RecordProperty(what, std::to_string(error) + " of " + std::to_string(tolerance));
-    EXPECT_LE(error, tolerance) << what;
-}
 
 std::array<RefImage, 4> finalStreaks(const GlRun& run) {
     std::array<RefImage, 4> streaks;
@@ -63,7 +50,7 @@ TEST_F(StreakGLTest, Shader3PassesMatchTheReference) {
     ASSERT_TRUE(run.exec);
     RefImage scene = readRef(run, "scene");
     ASSERT_EQ(scene.width, kSize);
-    EXPECT_GT(maxChannel(scene), 30.0) << "no sun in the scene";
+    EXPECT_GT(maxColorChannel(scene), 30.0) << "no sun in the scene";
     double first = 0.0, second = 0.0;
     for (int i = 0; i < 4; ++i) {
         first += std::pow(kStreakBlurFactor, i);
@@ -80,7 +67,7 @@ TEST_F(StreakGLTest, Shader3PassesMatchTheReference) {
         expectWithin(d.name + "_16", maxRelativeDifference(long16, expected16, kRelativeFloor), kHalfUlp);
         auto chain = streakChain(scene, kQuarter, d.sampled, TargetRounding::Half);
         expectWithin(d.name + "_chain", maxRelativeDifference(long16, chain[1], kRelativeFloor), 2 * kHalfUlp);
-        EXPECT_GT(maxChannel(long16), 30.0) << "the streaks carry no energy";
+        EXPECT_GT(maxColorChannel(long16), 30.0) << "the streaks carry no energy";
         for (size_t t = 0; t < short4.texels.size(); ++t) {
             ASSERT_NEAR(short4.texels[t].a, first, first * kHalfUlp);
             ASSERT_NEAR(long16.texels[t].a, first * second, 2 * first * second * kHalfUlp);
@@ -122,7 +109,7 @@ TEST_F(StreakGLTest, Exercise2PassesMatchTheReference) {
     ASSERT_TRUE(run.exec);
     RefImage scene = readRef(run, "scene");
     ASSERT_EQ(scene.width, kSize);
-    EXPECT_GT(maxChannel(decodedAlpha64(scene)), 30.0) << "no sun in the scene";
+    EXPECT_GT(maxColorChannel(decodedAlpha64(scene)), 30.0) << "no sun in the scene";
     const double firstSteps = 1.0 + 0.96 + 0.96 * 0.96 + 0.96 * 0.96 * 0.96 + 1.0;
     const double secondWeights = 1.0 + std::pow(0.96, 4) + std::pow(0.96, 8) + std::pow(0.96, 12);
     for (const Direction& d : kDirections) {
@@ -136,7 +123,7 @@ TEST_F(StreakGLTest, Exercise2PassesMatchTheReference) {
         auto chain = streakChain(scene, kQuarter, d.sampled, TargetRounding::Unorm8);
         expectWithin("a8_" + d.name + "_chain", maxAbsDifference(long16, chain[1]),
                      (secondWeights * firstSteps + 1.0) * kUnorm8Step);
-        EXPECT_EQ(maxChannel(long16), 1.0);
+        EXPECT_EQ(maxColorChannel(long16), 1.0);
         double alpha = 0.0;
         for (const glm::dvec4& t : long16.texels) alpha = std::max(alpha, t.a);
         EXPECT_EQ(alpha, 1.0) << "the sun's streak should saturate alpha";
@@ -170,7 +157,7 @@ TEST_F(StreakGLTest, Exercise2ScreenIsTheDecodedSceneWithTheStreaksAdded) {
             worst = std::max(worst, std::abs(output.texels[t][c] - expected.texels[t][c]) / tolerance);
         }
     expectWithin("a8_screen_fraction_of_tolerance", worst, 1.0);
-    EXPECT_GT(maxChannel(output), 30.0);
+    EXPECT_GT(maxColorChannel(output), 30.0);
 }
 
 // A light filling one texel of the 1/4 targets (a 4x4 block of the scene, so the first pass's
@@ -180,12 +167,7 @@ TEST_F(StreakGLTest, Exercise2ScreenIsTheDecodedSceneWithTheStreaksAdded) {
 TEST_F(StreakGLTest, Shader3LightBecomesStreaksOf4Then16Texels) {
     auto ws = loadEffect("shader_3");
     ASSERT_TRUE(ws);
-    replaceScene(*ws, "environment", R"(
-out vec4 fragColor;
-void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy);
-    fragColor = all(greaterThanEqual(p, ivec2(64))) && all(lessThan(p, ivec2(68))) ? vec4(1.0) : vec4(0.0);
-})");
+    replaceSceneWithLight(*ws, "environment", {64, 64}, {68, 68});
     GlRun run = render(std::move(ws));
     ASSERT_TRUE(run.exec);
     const glm::ivec2 light(16, 16);

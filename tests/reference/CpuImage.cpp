@@ -119,6 +119,12 @@ RefImage blendedAdditive(const RefImage& dst, const RefImage& src) {
     return out;
 }
 
+double maxColorChannel(const RefImage& image) {
+    double m = 0.0;
+    for (const glm::dvec4& t : image.texels) m = std::max({m, t.r, t.g, t.b});
+    return m;
+}
+
 double maxAbsDifference(const RefImage& a, const RefImage& b, int channels) {
     return maxRelativeDifference(a, b, 0.0, channels);
 }

@@ -64,6 +64,9 @@ RefImage decodedAlpha64(const RefImage& image);
 // writes (sizes must match). Not rounded.
 RefImage blendedAdditive(const RefImage& dst, const RefImage& src);
 
+// The largest r, g or b of any texel.
+double maxColorChannel(const RefImage& image);
+
 // Largest per-channel |a − b| over the first `channels` channels (sizes must match, else +Inf).
 double maxAbsDifference(const RefImage& a, const RefImage& b, int channels = 4);
 // Largest per-channel |a − b| / max(|b|, floor).
