@@ -55,9 +55,10 @@ RefImage filterSlack(const RefImage& source, const RefImage& mask) {
     });
 }
 
-// Largest |gl − expected| as a fraction of its tolerance: `steps` roundings to half (2^-10
-// relative each) plus the filtering slack.
-double worstFraction(const RefImage& gl, const RefImage& expected, const RefImage& slack, int steps) {
+// Largest |gl − expected| as a fraction of its tolerance: `steps` half steps (2^-10 relative) plus
+// the filtering slack. GL leaves the rounding to half to the driver (llvmpipe truncates) and the
+// reference rounds to nearest: a pass's result differs by less than one step.
+double worstFraction(const RefImage& gl, const RefImage& expected, const RefImage& slack, double steps) {
     double worst = 0.0;
     for (size_t t = 0; t < gl.texels.size(); ++t)
         for (int c = 0; c < 4; ++c) {
@@ -84,13 +85,14 @@ TEST_F(GhostGLTest, Shader4PassesMatchTheReference) {
     expectWithin("ghost_1", worstFraction(ghost1, expected1, slack1, 1), 1.0);
     expectWithin("ghost_2", worstFraction(ghost2, expected2, slack2, 1), 1.0);
     // From the scene: the first pass's tolerance reaches the second through the same positive,
-    // linear pass (a ghost pass of the tolerance image), then its own rounding and filtering.
+    // linear pass (a ghost pass of the tolerance image), then its own filtering, a truncation on
+    // the GPU and a rounding in the reference (1.5 steps).
     auto chain = ghostChain(scene, mask, kQuarter, kGlowFactor, TargetRounding::Half);
     RefImage tolerance1 = slack1;
     for (size_t t = 0; t < tolerance1.texels.size(); ++t) tolerance1.texels[t] += kHalfUlp * chain[0].texels[t];
     RefImage chainSlack = ghostPass(tolerance1, mask, kQuarter.x, kQuarter.y, kGlowFactor);
     for (size_t t = 0; t < chainSlack.texels.size(); ++t) chainSlack.texels[t] += slack2.texels[t];
-    expectWithin("ghost_chain", worstFraction(ghost2, chain[1], chainSlack, 1), 1.0);
+    expectWithin("ghost_chain", worstFraction(ghost2, chain[1], chainSlack, 1.5), 1.0);
     EXPECT_GT(maxColorChannel(ghost1), 1.0) << "the ghosts carry no energy";
     EXPECT_GT(maxColorChannel(ghost2), 0.1) << "the ghosts of ghosts carry no energy";
 }

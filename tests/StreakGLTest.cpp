@@ -39,12 +39,14 @@ std::array<RefImage, 4> finalStreaks(const GlRun& run) {
     return streaks;
 }
 
-// shader_3 on rgba16f. Each pass is computed from the target the GPU gave it: the GPU and the
-// reference round the same sum to half, so they differ by at most one step (2^-10 relative) where
-// they fall on either side of a rounding boundary. Sampling positions are texel centres or
-// half-texels at 128x128, where bilinear weights are exact. Through the two passes from the scene,
-// sums of positive terms keep relative differences: two steps. The scene's alpha is 1, so the
-// passes' alpha is the sum of the filter's weights, 3.77 then 3.77 x 3.18, whatever the reference.
+// shader_3 on rgba16f. Each pass is computed from the target the GPU gave it. GL leaves the
+// rounding of render-target writes to half to the driver (llvmpipe truncates: half the texels come
+// out one step low, none high); the reference rounds to nearest, so the two differ by less than
+// one step, 2^-10 relative. Sampling positions are texel centres or half-texels at 128x128, where
+// bilinear weights are exact. Through the two passes from the scene: the first pass's step carried
+// by sums of positive terms, plus a truncation and a rounding, 2.5 steps. The scene's alpha is 1,
+// so the passes' alpha is the sum of the filter's weights, 3.77 then 3.77 x 3.18, whatever the
+// reference.
 TEST_F(StreakGLTest, Shader3PassesMatchTheReference) {
     GlRun run = render(loadEffect("shader_3"));
     ASSERT_TRUE(run.exec);
@@ -66,11 +68,11 @@ TEST_F(StreakGLTest, Shader3PassesMatchTheReference) {
         expectWithin(d.name + "_4", maxRelativeDifference(short4, expected4, kRelativeFloor), kHalfUlp);
         expectWithin(d.name + "_16", maxRelativeDifference(long16, expected16, kRelativeFloor), kHalfUlp);
         auto chain = streakChain(scene, kQuarter, d.sampled, TargetRounding::Half);
-        expectWithin(d.name + "_chain", maxRelativeDifference(long16, chain[1], kRelativeFloor), 2 * kHalfUlp);
+        expectWithin(d.name + "_chain", maxRelativeDifference(long16, chain[1], kRelativeFloor), 2.5 * kHalfUlp);
         EXPECT_GT(maxColorChannel(long16), 30.0) << "the streaks carry no energy";
         for (size_t t = 0; t < short4.texels.size(); ++t) {
             ASSERT_NEAR(short4.texels[t].a, first, first * kHalfUlp);
-            ASSERT_NEAR(long16.texels[t].a, first * second, 2 * first * second * kHalfUlp);
+            ASSERT_NEAR(long16.texels[t].a, first * second, 2.5 * first * second * kHalfUlp);
         }
     }
 }
@@ -130,8 +132,8 @@ TEST_F(StreakGLTest, Exercise2PassesMatchTheReference) {
     }
 }
 
-// The screen of exercise 2: the scene decoded to rgb · (a · 64) (one rounding to half), then the
-// decoded streaks added at alpha 0.6 (another). The upsampling samples of the 8-bit streaks may be
+// The screen of exercise 2: the scene decoded to rgb · (a · 64) (one rounding to half, a step at
+// most), then the decoded streaks added at alpha 0.6 (that step, a truncation and a rounding: 2.5). The upsampling samples of the 8-bit streaks may be
 // one step off in rgb and in a (see above), which moves a decoded streak by up to
 // 64 · (rgb + a + 1/255) / 255; times Glow_Factor and 0.6, summed over the four, per pixel.
 TEST_F(StreakGLTest, Exercise2ScreenIsTheDecodedSceneWithTheStreaksAdded) {
@@ -153,7 +155,7 @@ TEST_F(StreakGLTest, Exercise2ScreenIsTheDecodedSceneWithTheStreaksAdded) {
     double worst = 0.0;
     for (size_t t = 0; t < output.texels.size(); ++t)
         for (int c = 0; c < 4; ++c) {
-            double tolerance = 2 * kHalfUlp * std::abs(expected.texels[t][c]) + slack.texels[t][c] + kRelativeFloor;
+            double tolerance = 2.5 * kHalfUlp * std::abs(expected.texels[t][c]) + slack.texels[t][c] + kRelativeFloor;
             worst = std::max(worst, std::abs(output.texels[t][c] - expected.texels[t][c]) / tolerance);
         }
     expectWithin("a8_screen_fraction_of_tolerance", worst, 1.0);
