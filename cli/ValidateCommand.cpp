@@ -5,6 +5,10 @@
 
 namespace rmfx::cli {
 
+static std::string counted(size_t n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
 int validateCommand(const std::vector<std::string>& args) {
     if (args.empty()) {
         std::cerr << "rmfx validate: name one or more workspace files\n";
@@ -22,9 +26,10 @@ int validateCommand(const std::vector<std::string>& args) {
             status = 1;
             continue;
         }
-        std::cout << path << ": ok (" << loaded.workspace->passes.size() << " passes, "
-                  << loaded.workspace->targets.size() << " targets, " << loaded.workspace->variables.size()
-                  << " variables)\n";
+        const Workspace& ws = *loaded.workspace;
+        std::cout << path << ": ok (" << counted(ws.passes.size(), "pass", "passes") << ", "
+                  << counted(ws.targets.size(), "target", "targets") << ", "
+                  << counted(ws.variables.size(), "variable", "variables") << ")\n";
     }
     return status;
 }

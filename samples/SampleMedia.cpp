@@ -20,7 +20,7 @@ glm::vec3 analyticSky(const glm::vec3& d, const glm::vec3& sunDirection, float s
     return sky;
 }
 
-Image makeSkyCross(int n, const glm::vec3& sunDirection, float sunIntensity) {
+Image makeSkyCross(int n, const glm::vec3& sunDirection, float sunIntensity, int samplesPerAxis) {
     Image image;
     image.width = 4 * n;
     image.height = 3 * n;
@@ -33,8 +33,13 @@ Image makeSkyCross(int n, const glm::vec3& sunDirection, float sunIntensity) {
     for (int face = 0; face < 6; ++face)
         for (int y = 0; y < n; ++y)
             for (int x = 0; x < n; ++x) {
-                glm::vec3 d = cubeFaceTexelDirection(face, (x + 0.5f) / n, (y + 0.5f) / n);
-                glm::vec3 c = analyticSky(glm::normalize(d), sun, sunIntensity);
+                glm::vec3 c(0.0f);
+                for (int j = 0; j < samplesPerAxis; ++j)
+                    for (int i = 0; i < samplesPerAxis; ++i) {
+                        float u = (x + (i + 0.5f) / samplesPerAxis) / n, v = (y + (j + 0.5f) / samplesPerAxis) / n;
+                        c += analyticSky(glm::normalize(cubeFaceTexelDirection(face, u, v)), sun, sunIntensity);
+                    }
+                c /= float(samplesPerAxis * samplesPerAxis);
                 for (int k = 0; k < 3; ++k) image.at(blocks[face][0] * n + x, blocks[face][1] * n + y, k) = c[k];
             }
     return image;
@@ -114,7 +119,7 @@ Image makeGhostMask(int size) {
 Result<bool> writeChapterMedia(const std::filesystem::path& folder) {
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
-    Image sky = makeSkyCross(128, kChapterSunDirection, kChapterSunIntensity);
+    Image sky = makeSkyCross(256, kChapterSunDirection, kChapterSunIntensity, 4);
     WriteOptions half;
     half.exrHalf = true;
     if (auto r = writeImage(folder / "sky_cross.exr", sky, half); !r) return r;

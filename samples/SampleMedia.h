@@ -15,8 +15,10 @@ namespace rmfx::samples {
 // (0.02 .. 0.2) and a sun disc of `sunIntensity` around `sunDirection` (unit length).
 glm::vec3 analyticSky(const glm::vec3& direction, const glm::vec3& sunDirection, float sunIntensity);
 
-// A horizontal cross (4N x 3N, float RGB) of analyticSky; the six unused blocks are black.
-Image makeSkyCross(int faceSize, const glm::vec3& sunDirection, float sunIntensity);
+// A horizontal cross (4N x 3N, float RGB) of analyticSky; the six unused blocks are black. Each
+// texel averages samplesPerAxis² point samples, so the sun disc's edge is antialiased rather than
+// a staircase of texels.
+Image makeSkyCross(int faceSize, const glm::vec3& sunDirection, float sunIntensity, int samplesPerAxis = 1);
 
 // An 8-bit single-channel disc: 1 inside radius 0.4 of the image, 0 outside, 2-pixel soft edge.
 Image makeDiscMask(int size);
@@ -40,7 +42,7 @@ inline const glm::vec3 kChapterSunDirection{-0.35f, 0.12f, -0.93f};
 inline constexpr float kChapterSunIntensity = 2000.0f;
 
 // Writes the media of the chapter-8 workspaces in effects/ into `folder`: sky_cross.exr (half
-// float, 128-texel faces, range 0.02 .. 2000), sky_cross_alpha64.png (the same sky in the
+// float, 256-texel faces, range 0.02 .. 2000), sky_cross_alpha64.png (the same sky in the
 // chapter's alpha encoding) and ghost_mask.png.
 Result<bool> writeChapterMedia(const std::filesystem::path& folder);
 

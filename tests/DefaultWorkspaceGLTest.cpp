@@ -9,6 +9,7 @@
 
 #include "runtime/WorkspaceLoader.h"
 #include "tests/GlTestSupport.h"
+#include "tests/reference/CameraRays.h"
 
 namespace rmfx::test {
 namespace {
@@ -16,7 +17,6 @@ namespace {
 class DefaultWorkspaceGLTest : public GlTest {};
 
 constexpr int kSize = 128;
-const double kPi = 3.14159265358979323846;
 
 // skyRadiance from effects/default.xml, in double, with the workspace's defaults.
 glm::dvec3 skyRadiance(glm::dvec3 d, double* cosAngleOut = nullptr) {
@@ -33,28 +33,16 @@ glm::dvec3 skyRadiance(glm::dvec3 d, double* cosAngleOut = nullptr) {
     return sky;
 }
 
-struct CameraRays {
-    glm::dvec3 eye;
-    glm::dmat4 invViewProjection;
-
-    CameraRays() {
-        // <camera target="0 0 0" distance="3.2" yaw="35" pitch="12" fov="50"/>, near 0.05, far 100.
-        double yaw = 35 * kPi / 180, pitch = 12 * kPi / 180;
-        glm::dvec3 target(0.0);
-        eye = target + 3.2 * glm::dvec3(std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch));
-        glm::dmat4 view = glm::lookAt(eye, target, glm::dvec3(0, 1, 0));
-        glm::dmat4 projection = glm::perspective(50 * kPi / 180, 1.0, 0.05, 100.0);
-        invViewProjection = glm::inverse(projection * view);
-    }
-
-    // The ray of pixel (x, y) (y from the bottom) as the built-in fullscreen vertex shader builds
-    // it: the far-plane point rm_InvViewProjection * (ndc, 1, 1), minus the camera position.
-    glm::dvec3 ray(int x, int y) const {
-        glm::dvec2 ndc((x + 0.5) / kSize * 2.0 - 1.0, (y + 0.5) / kSize * 2.0 - 1.0);
-        glm::dvec4 far = invViewProjection * glm::dvec4(ndc, 1.0, 1.0);
-        return glm::normalize(glm::dvec3(far) / far.w - eye);
-    }
-};
+// <camera target="0 0 0" distance="3.2" yaw="35" pitch="12" fov="50"/>, near 0.05, far 100.
+CameraRays workspaceCamera() {
+    OrbitCameraSettings camera;
+    camera.target = glm::vec3(0.0f);
+    camera.distance = 3.2f;
+    camera.yawDegrees = 35.0f;
+    camera.pitchDegrees = 12.0f;
+    camera.fovYDegrees = 50.0f;
+    return CameraRays(camera, kSize, kSize);
+}
 
 // The tonemap pass: max(c, 0) × exposure, then Reinhard c / (1 + c).
 glm::dvec3 toneMapped(glm::dvec3 radiance, double exposure = 0.8) {
@@ -94,7 +82,7 @@ TEST_F(DefaultWorkspaceGLTest, TopCornersShowTheSkyFunction) {
     ASSERT_TRUE(run.exec);
     Image out = readBack(*run.exec, "output");
     ASSERT_EQ(out.width, kSize);
-    CameraRays camera;
+    CameraRays camera = workspaceCamera();
     for (int x : {0, kSize - 1}) {
         SCOPED_TRACE("corner x=" + std::to_string(x));
         int y = kSize - 1;  // the top row
@@ -115,7 +103,7 @@ TEST_F(DefaultWorkspaceGLTest, TheTeapotCoversTheCentre) {
     ASSERT_TRUE(run.exec);
     Image out = readBack(*run.exec, "output");
     ASSERT_EQ(out.width, kSize);
-    CameraRays camera;
+    CameraRays camera = workspaceCamera();
     int x = kSize / 2, y = kSize / 2;
     glm::dvec3 sky = toneMapped(skyRadiance(camera.ray(x, y)));
     double difference = 0;

@@ -49,13 +49,18 @@ std::unique_ptr<Workspace> workspaceFromText(const std::string& xml, const std::
     return std::make_unique<Workspace>(std::move(*parsed.workspace));
 }
 
-std::unique_ptr<Workspace> loadEffect(const std::string& name) {
-    LoadedWorkspace loaded = loadWorkspace(sourceDir() / "effects" / (name + ".xml"));
+std::unique_ptr<Workspace> effectWorkspace(const std::string& file, const Overrides& overrides) {
+    LoadedWorkspace loaded = loadWorkspace(sourceDir() / "effects" / file);
     if (!loaded.workspace) {
-        ADD_FAILURE() << formatAll(loaded.diagnostics);
+        ADD_FAILURE() << file << " does not load:\n" << formatAll(loaded.diagnostics);
         return nullptr;
     }
-    return std::make_unique<Workspace>(std::move(*loaded.workspace));
+    auto ws = std::make_unique<Workspace>(std::move(*loaded.workspace));
+    if (Diagnostics bad = applyOverrides(*ws, overrides); !bad.empty()) {
+        ADD_FAILURE() << formatAll(bad);
+        return nullptr;
+    }
+    return ws;
 }
 
 void replaceSceneWithLight(Workspace& ws, const std::string& scenePass, glm::ivec2 from, glm::ivec2 to) {

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -29,9 +31,10 @@ protected:
 std::unique_ptr<Workspace> workspaceFromText(const std::string& xml,
                                              const std::filesystem::path& folder = std::filesystem::path("."));
 
-// Loads and validates effects/NAME.xml of the repository. Adds a test failure with the diagnostics
-// and returns nullptr when it has errors.
-std::unique_ptr<Workspace> loadEffect(const std::string& name);
+// A workspace of effects/ (e.g. "shader_1.xml") with `--set`-style overrides applied. Adds a test
+// failure with the diagnostics and returns nullptr when it does not load.
+using Overrides = std::vector<std::pair<std::string, std::string>>;
+std::unique_ptr<Workspace> effectWorkspace(const std::string& file, const Overrides& overrides = {});
 
 // Replaces the scene of a chapter-8 effect with a single light: pass `scenePass` draws (1, 1, 1, 1)
 // on the pixels [from, to) (x and y from the bottom) and 0 elsewhere, with no samplers, and every

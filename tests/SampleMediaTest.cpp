@@ -27,10 +27,10 @@ glm::dvec3 roundTrip(glm::vec3 c) {
     return glm::dvec3(decodeAlphaIntensity(e.pixels[0], e.pixels[1], e.pixels[2], e.pixels[3]));
 }
 
-// At 128 texels per face (what writeChapterMedia writes) the sun disc covers several texels; at 32
-// it falls between texel centres and vanishes.
+// At 128 texels per face and more the sun disc covers several texels; at 32 it falls between
+// texel centres and vanishes.
 TEST(ChapterMedia, SkySpansMoreThanFourDecadesWithASun) {
-    Image sky = makeSkyCross(128, kChapterSunDirection, kChapterSunIntensity);
+    Image sky = makeSkyCross(128, kChapterSunDirection, kChapterSunIntensity, 2);
     float lo = 1e30f, hi = 0.0f;
     for (int y = 0; y < sky.height; ++y)
         for (int x = 0; x < sky.width; ++x) {

@@ -48,7 +48,7 @@ std::array<RefImage, 4> finalStreaks(const GlRun& run) {
 // so the passes' alpha is the sum of the filter's weights, 3.77 then 3.77 x 3.18, whatever the
 // reference.
 TEST_F(StreakGLTest, Shader3PassesMatchTheReference) {
-    GlRun run = render(loadEffect("shader_3"));
+    GlRun run = render(effectWorkspace("shader_3.xml"));
     ASSERT_TRUE(run.exec);
     RefImage scene = readRef(run, "scene");
     ASSERT_EQ(scene.width, kSize);
@@ -82,7 +82,7 @@ TEST_F(StreakGLTest, Shader3PassesMatchTheReference) {
 // exact in bilinear weights; one rounding to half. Whatever the reference says, the streaks add
 // between 0 and 0.6 (alpha 0.6, colour clamped to 1), and near the sun a good part of it.
 TEST_F(StreakGLTest, Shader3ScreenIsTheSceneWithTheStreaksAdded) {
-    GlRun run = render(loadEffect("shader_3"));
+    GlRun run = render(effectWorkspace("shader_3.xml"));
     ASSERT_TRUE(run.exec);
     RefImage scene = readRef(run, "scene");
     RefImage output = readRef(run, "output");
@@ -107,7 +107,7 @@ TEST_F(StreakGLTest, Shader3ScreenIsTheSceneWithTheStreaksAdded) {
 // reach the second through weights summing to 3.18, plus its step: 16.2 steps. The streaks
 // saturate 8 bits: rgb and alpha at the sun are 1, since the chapter's filter is not normalised.
 TEST_F(StreakGLTest, Exercise2PassesMatchTheReference) {
-    GlRun run = render(loadEffect("exercise_2"));
+    GlRun run = render(effectWorkspace("exercise_2.xml"));
     ASSERT_TRUE(run.exec);
     RefImage scene = readRef(run, "scene");
     ASSERT_EQ(scene.width, kSize);
@@ -137,7 +137,7 @@ TEST_F(StreakGLTest, Exercise2PassesMatchTheReference) {
 // one step off in rgb and in a (see above), which moves a decoded streak by up to
 // 64 · (rgb + a + 1/255) / 255; times Glow_Factor and 0.6, summed over the four, per pixel.
 TEST_F(StreakGLTest, Exercise2ScreenIsTheDecodedSceneWithTheStreaksAdded) {
-    GlRun run = render(loadEffect("exercise_2"));
+    GlRun run = render(effectWorkspace("exercise_2.xml"));
     ASSERT_TRUE(run.exec);
     RefImage scene = readRef(run, "scene");
     RefImage output = readRef(run, "output");
@@ -167,7 +167,7 @@ TEST_F(StreakGLTest, Exercise2ScreenIsTheDecodedSceneWithTheStreaksAdded) {
 // k < 4, after the first pass and k < 16 after the second; nothing else lights up. `step` is the
 // direction the target's name gives, so the names and the sampling direction agree.
 TEST_F(StreakGLTest, Shader3LightBecomesStreaksOf4Then16Texels) {
-    auto ws = loadEffect("shader_3");
+    auto ws = effectWorkspace("shader_3.xml");
     ASSERT_TRUE(ws);
     replaceSceneWithLight(*ws, "environment", {64, 64}, {68, 68});
     GlRun run = render(std::move(ws));

@@ -1,5 +1,7 @@
 #include "tests/TestSupport.h"
 
+#include <unistd.h>
+
 #include <fstream>
 
 #include <gtest/gtest.h>
@@ -20,7 +22,8 @@ ScratchDir::ScratchDir() {
     std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : "scratch";
     for (char& c : name)
         if (c == '/') c = '_';
-    path_ = binaryDir() / "test-scratch" / name;
+    // The process id keeps two runs of the same test (two ctest runs on one build) apart.
+    path_ = binaryDir() / "test-scratch" / (name + "." + std::to_string(::getpid()));
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
 }

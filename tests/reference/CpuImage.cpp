@@ -104,6 +104,8 @@ RefImage roundedTo(const RefImage& image, TargetRounding rounding) {
     return rounding == TargetRounding::Half ? roundedToHalf(image) : roundedToUnorm8(image);
 }
 
+glm::dvec4 encodeAlpha64(glm::dvec3 rgb, double multiplier) { return glm::dvec4(rgb, multiplier / 64.0); }
+
 glm::dvec3 decodeAlpha64(glm::dvec4 encoded) { return glm::dvec3(encoded) * (encoded.a * 64.0); }
 
 RefImage decodedAlpha64(const RefImage& image) {

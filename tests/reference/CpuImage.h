@@ -36,8 +36,8 @@ glm::dvec4 fetchClamped(const RefImage& image, int x, int y);
 // GL_LINEAR / GL_NEAREST lookups with GL_CLAMP_TO_EDGE, texel centres at (i + 0.5) / size.
 glm::dvec4 sampleBilinear(const RefImage& image, glm::dvec2 uv);
 glm::dvec4 sampleNearest(const RefImage& image, glm::dvec2 uv);
-// Per channel, max − min of the four texels sampleBilinear blends at uv: how far an error in the
-// bilinear weights can move the result (GL leaves their precision to the implementation).
+// Per channel, max − min of the four texels sampleBilinear blends at uv (0 where the footprint is
+// flat and any filtering returns the texel exactly).
 glm::dvec4 bilinearFootprintRange(const RefImage& image, glm::dvec2 uv);
 
 // Evaluates `shade(uv)` at every pixel centre of a width x height target, as a full-screen pass does.
@@ -54,9 +54,10 @@ RefImage roundedToUnorm8(const RefImage& image);
 enum class TargetRounding { Half, Unorm8 };
 RefImage roundedTo(const RefImage& image, TargetRounding rounding);
 
-// The chapter's 8-bit intensity encoding (shader_6, exercise 2): colour in rgb, the HDR multiplier
-// / 64 in alpha, decoded as rgb · (a · 64). decodedAlpha64 decodes every texel, alpha 1 (the copy
-// of such a scene to the screen).
+// The chapter's 8-bit intensity encoding (shader_6, exercise 2): colour in rgb (0..1), the HDR
+// multiplier / 64 in alpha, decoded as rgb · (a · 64). decodedAlpha64 decodes every texel, alpha 1
+// (the copy of such a scene to the screen).
+glm::dvec4 encodeAlpha64(glm::dvec3 rgb, double multiplier);
 glm::dvec3 decodeAlpha64(glm::dvec4 encoded);
 RefImage decodedAlpha64(const RefImage& image);
 

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Renders the images of docs/effects.md from the workspaces in effects/ with the built rmfx:
+#   bash docs/make-effect-images.sh [BUILD_DIR]      (default: build)
+# Every image is one frame at 384x384 with the workspace's default values unless noted.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+rmfx="${1:-build}/rmfx"
+out=docs/images
+render() { "$rmfx" render "$@" -q; }
+
+for ws in shader_1 shader_2 shader_3 shader_4 shader_6 exercise_1 exercise_2; do
+  render effects/$ws.xml --size 384x384 -o "$out/$ws.png"
+done
+
+# The article's four exposures side by side (256x256 each).
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+for e in 0.5 2.5 10 20; do
+  render effects/article_pipeline.xml --size 256x256 --set fExposureLevel=$e -o "$tmp/article_$e.png"
+done
+oiiotool "$tmp/article_0.5.png" "$tmp/article_2.5.png" "$tmp/article_10.png" "$tmp/article_20.png" \
+  --mosaic 4x1 -o "$out/article_pipeline.png"
+echo "wrote the images of docs/effects.md into $out"

@@ -1,0 +1,18 @@
+// The article's tone mapping: 40 % of the blurred highlights over the original, a vignette of
+// (1 - r^2)^4 around the centre, the exposure, and a gamma of 0.55.
+uniform sampler2D FullSampler;
+uniform sampler2D BlurSampler;
+uniform float fExposureLevel;
+in vec2 vTexCoord;
+out vec4 fragColor;
+
+void main() {
+    vec4 original = texture(FullSampler, vTexCoord);
+    vec4 blur = texture(BlurSampler, vTexCoord);
+    vec4 color = mix(original, blur, 0.4);
+    vec2 fromCentre = vTexCoord - 0.5;
+    float vignette = 1.0 - dot(fromCentre, fromCentre);
+    color *= pow(vignette, 4.0);
+    color *= fExposureLevel;
+    fragColor = vec4(pow(max(color.rgb, 0.0), vec3(0.55)), 1.0);
+}

@@ -1,0 +1,13 @@
+#pragma once
+// "Brightness" of an HDR colour for automatic exposure: Rec.709 luminance of the colour after
+// NaN and negative channels become 0 and +Inf becomes 65504 (the largest half float, what the
+// rgba16f scene can hold), so one bad pixel cannot turn the average into NaN or Inf.
+float sanitisedChannel(float c) {
+    if (isnan(c) || c < 0.0) return 0.0;
+    return min(c, 65504.0);
+}
+
+float brightness(vec3 color) {
+    vec3 c = vec3(sanitisedChannel(color.r), sanitisedChannel(color.g), sanitisedChannel(color.b));
+    return dot(c, vec3(0.2126, 0.7152, 0.0722));
+}
