@@ -1,5 +1,6 @@
 #include "tests/GlTestSupport.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "runtime/GlContext.h"
@@ -62,6 +63,29 @@ std::unique_ptr<Workspace> effectWorkspace(const std::string& file, const Overri
     return ws;
 }
 
+void replaceSceneWithLight(Workspace& ws, const std::string& scenePass, glm::ivec2 from, glm::ivec2 to) {
+    auto found = std::find_if(ws.passes.begin(), ws.passes.end(), [&](const Pass& p) { return p.name == scenePass; });
+    if (found == ws.passes.end()) {
+        ADD_FAILURE() << "no pass '" << scenePass << "'";
+        return;
+    }
+    for (Pass& pass : ws.passes)
+        if (&pass != &*found && pass.target == found->target) pass.enabled = false;
+    found->samplers.clear();
+    found->constants.clear();
+    ShaderSource fragment;
+    fragment.code = "out vec4 fragColor;\n"
+                    "void main() {\n"
+                    "    ivec2 p = ivec2(gl_FragCoord.xy);\n"
+                    "    bool lit = all(greaterThanEqual(p, ivec2(" + std::to_string(from.x) + ", " + std::to_string(from.y) +
+                    "))) && all(lessThan(p, ivec2(" + std::to_string(to.x) + ", " + std::to_string(to.y) + ")));\n"
+                    "    fragColor = lit ? vec4(1.0) : vec4(0.0);\n"
+                    "}\n";
+    fragment.codeLine = found->where.line;
+    fragment.where = found->where;
+    found->shaders = {fragment};
+}
+
 GlRun runWorkspace(std::unique_ptr<Workspace> ws, const RunSettings& settings) {
     GlRun run;
     run.ws = std::move(ws);
@@ -83,6 +107,13 @@ Image readBack(const GlExecutor& exec, const std::string& target) {
         return {};
     }
     return *image;
+}
+
+RefImage readRef(const GlRun& run, const std::string& target) { return fromImage(readBack(*run.exec, target)); }
+
+void expectWithin(const std::string& what, double error, double tolerance) {
+    ::testing::Test::RecordProperty(what, std::to_string(error) + " of " + std::to_string(tolerance));
+    EXPECT_LE(error, tolerance) << what;
 }
 
 std::string glslFloat(double value) {

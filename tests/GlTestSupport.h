@@ -14,6 +14,7 @@
 #include "runtime/HeadlessRun.h"
 #include "runtime/Image.h"
 #include "runtime/Workspace.h"
+#include "tests/reference/CpuImage.h"
 
 namespace rmfx::test {
 
@@ -35,6 +36,11 @@ std::unique_ptr<Workspace> workspaceFromText(const std::string& xml,
 using Overrides = std::vector<std::pair<std::string, std::string>>;
 std::unique_ptr<Workspace> effectWorkspace(const std::string& file, const Overrides& overrides = {});
 
+// Replaces the scene of a chapter-8 effect with a single light: pass `scenePass` draws (1, 1, 1, 1)
+// on the pixels [from, to) (x and y from the bottom) and 0 elsewhere, with no samplers, and every
+// other pass drawing into the same target is disabled. Adds a test failure when there is no such pass.
+void replaceSceneWithLight(Workspace& ws, const std::string& scenePass, glm::ivec2 from, glm::ivec2 to);
+
 struct GlRun {
     std::unique_ptr<Workspace> ws;     // declared first: the executor refers to it and dies first
     std::unique_ptr<GlExecutor> exec;  // null when creation or a frame failed
@@ -48,6 +54,13 @@ GlRun runWorkspace(const std::string& xml, const RunSettings& settings);
 
 // readTarget, adding a test failure (and returning an empty image) on error.
 Image readBack(const GlExecutor& exec, const std::string& target);
+
+// readBack as a float64 reference image (row 0 at the bottom).
+RefImage readRef(const GlRun& run, const std::string& target);
+
+// EXPECT_LE(error, tolerance) that also records "error of tolerance" as the test property `what`,
+// so --gtest_output=xml shows how close each comparison comes to its bound.
+void expectWithin(const std::string& what, double error, double tolerance);
 
 // Pixel (x, y) channel c of an image read back, with y counted from the BOTTOM as gl_FragCoord does.
 inline float atGl(const Image& image, int x, int yFromBottom, int c) {

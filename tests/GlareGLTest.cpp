@@ -29,15 +29,6 @@ const glm::dvec3 kGlowFactors(0.1, 0.1, 0.1);  // the workspaces' defaults
 const double kHalfUlp = std::ldexp(1.0, -10);  // an rgba16f rounding step, relative (2^-11 each side)
 const double kUnorm8Step = 1.0 / 255.0;
 
-std::unique_ptr<Workspace> loadEffect(const std::string& name) {
-    LoadedWorkspace loaded = loadWorkspace(sourceDir() / "effects" / (name + ".xml"));
-    if (!loaded.workspace) {
-        ADD_FAILURE() << formatAll(loaded.diagnostics);
-        return nullptr;
-    }
-    return std::make_unique<Workspace>(std::move(*loaded.workspace));
-}
-
 GlRun renderEffect(std::unique_ptr<Workspace> ws, glm::ivec2 size = {kSize, kSize}) {
     return runWorkspace(std::move(ws), {size, 1, 1.0f / 60.0f});
 }
@@ -46,15 +37,6 @@ std::string sizeName(glm::ivec2 size) { return std::to_string(size.x) + "x" + st
 
 // A 1/4 target's size: ceil(viewport / 4), the format's rounding rule.
 glm::ivec2 quarterOf(glm::ivec2 size) { return (size + 3) / 4; }
-
-RefImage readRef(const GlRun& run, const std::string& target) { return fromImage(readBack(*run.exec, target)); }
-
-double maxChannel(const RefImage& image, int channels = 3) {
-    double m = 0.0;
-    for (const glm::dvec4& t : image.texels)
-        for (int c = 0; c < channels; ++c) m = std::max(m, t[c]);
-    return m;
-}
 
 // Every value is a sum of positive terms, so relative errors do not grow through the chain; the
 // floor only keeps the ratio finite where a channel is 0.
@@ -65,8 +47,8 @@ constexpr double kRelativeFloor = 1e-4;
 void expectSunEnergy(const RefImage& scene, const RefImage& level, bool alpha64) {
     RefImage sceneHdr = alpha64 ? decodedAlpha64(scene) : scene;
     RefImage levelHdr = alpha64 ? decodedAlpha64(level) : level;
-    EXPECT_GT(maxChannel(sceneHdr), 10.0) << "no sun in the scene";
-    EXPECT_GT(maxChannel(levelHdr), 1.0) << "the blur level carries no energy";
+    EXPECT_GT(maxColorChannel(sceneHdr), 10.0) << "no sun in the scene";
+    EXPECT_GT(maxColorChannel(levelHdr), 1.0) << "the blur level carries no energy";
 }
 
 // A half-float glare workspace: `passes` passes of `kernel` into targets prefix_1 .. prefix_n, the
@@ -79,7 +61,7 @@ void expectHalfFloatGlareMatchesTheReference(const std::string& effect, const st
                                              int passes, const std::string& prefix, glm::ivec3 combined) {
     for (glm::ivec2 size : kSizes) {
         SCOPED_TRACE(effect + " at " + sizeName(size));
-        GlRun run = renderEffect(loadEffect(effect), size);
+        GlRun run = renderEffect(effectWorkspace(effect + ".xml"), size);
         ASSERT_TRUE(run.exec);
         RefImage scene = readRef(run, "scene");
         ASSERT_EQ(scene.width, size.x);
@@ -142,7 +124,7 @@ double worstAlpha64ScreenError(const RefImage& output, const RefImage& scene, co
 TEST_F(GlareGLTest, Shader6LevelsAndScreenMatchTheReference) {
     for (glm::ivec2 size : kSizes) {
         SCOPED_TRACE(sizeName(size));
-        GlRun run = renderEffect(loadEffect("shader_6"), size);
+        GlRun run = renderEffect(effectWorkspace("shader_6.xml"), size);
         ASSERT_TRUE(run.exec);
         RefImage scene = readRef(run, "scene");
         ASSERT_EQ(scene.width, size.x);
@@ -167,8 +149,8 @@ TEST_F(GlareGLTest, Shader6LevelsAndScreenMatchTheReference) {
 // environment) within the quantisation of the encoding: rgb to 1/255, the multiplier to 64/255
 // (half a step each side), plus the half rounding of shader_2's scene.
 TEST_F(GlareGLTest, Shader6SceneDecodesToTheFloatSceneWithinItsQuantisation) {
-    GlRun floatRun = renderEffect(loadEffect("shader_2"));
-    GlRun byteRun = renderEffect(loadEffect("shader_6"));
+    GlRun floatRun = renderEffect(effectWorkspace("shader_2.xml"));
+    GlRun byteRun = renderEffect(effectWorkspace("shader_6.xml"));
     ASSERT_TRUE(floatRun.exec && byteRun.exec);
     RefImage hdr = readRef(floatRun, "scene");
     RefImage encoded = readRef(byteRun, "scene");
@@ -186,7 +168,7 @@ TEST_F(GlareGLTest, Shader6SceneDecodesToTheFloatSceneWithinItsQuantisation) {
     }
     EXPECT_LE(worstRatio, 1.0);
     // The encoding keeps the sun: its multiplier (1 + 64 a) · 0.25 fits below 64.
-    EXPECT_GT(maxChannel(decoded), 10.0);
+    EXPECT_GT(maxColorChannel(decoded), 10.0);
 }
 
 // Both glare chains fed a single bright scene pixel instead of the scene. The first pass reads the
@@ -213,8 +195,8 @@ void main() { fragColor = all(equal(ivec2(gl_FragCoord.xy), ivec2(65))) ? vec4(4
 }
 
 TEST_F(GlareGLTest, Exercise1BlursAsMuchAsShader2) {
-    GlRun nine = renderEffect(withImpulseScene(loadEffect("shader_2")));
-    GlRun fortyNine = renderEffect(withImpulseScene(loadEffect("exercise_1")));
+    GlRun nine = renderEffect(withImpulseScene(effectWorkspace("shader_2.xml")));
+    GlRun fortyNine = renderEffect(withImpulseScene(effectWorkspace("exercise_1.xml")));
     ASSERT_TRUE(nine.exec && fortyNine.exec);
 
     // Kernels that sum to 1 keep the energy: the impulse (4096) reaches the first level through

@@ -29,14 +29,39 @@ glm::dvec4 fetchClamped(const RefImage& image, int x, int y) {
     return image.at(std::clamp(x, 0, image.width - 1), std::clamp(y, 0, image.height - 1));
 }
 
-glm::dvec4 sampleBilinear(const RefImage& image, glm::dvec2 uv) {
+namespace {
+
+struct Footprint {
+    glm::dvec4 texels[4];  // (i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1)
+    double fx, fy;
+};
+
+Footprint bilinearFootprint(const RefImage& image, glm::dvec2 uv) {
     double x = uv.x * image.width - 0.5, y = uv.y * image.height - 0.5;
     double x0 = std::floor(x), y0 = std::floor(y);
-    double fx = x - x0, fy = y - y0;
     int i = static_cast<int>(x0), j = static_cast<int>(y0);
-    glm::dvec4 bottom = glm::mix(fetchClamped(image, i, j), fetchClamped(image, i + 1, j), fx);
-    glm::dvec4 top = glm::mix(fetchClamped(image, i, j + 1), fetchClamped(image, i + 1, j + 1), fx);
-    return glm::mix(bottom, top, fy);
+    return {{fetchClamped(image, i, j), fetchClamped(image, i + 1, j), fetchClamped(image, i, j + 1),
+             fetchClamped(image, i + 1, j + 1)},
+            x - x0, y - y0};
+}
+
+}  // namespace
+
+glm::dvec4 sampleBilinear(const RefImage& image, glm::dvec2 uv) {
+    Footprint f = bilinearFootprint(image, uv);
+    glm::dvec4 bottom = glm::mix(f.texels[0], f.texels[1], f.fx);
+    glm::dvec4 top = glm::mix(f.texels[2], f.texels[3], f.fx);
+    return glm::mix(bottom, top, f.fy);
+}
+
+glm::dvec4 bilinearFootprintRange(const RefImage& image, glm::dvec2 uv) {
+    Footprint f = bilinearFootprint(image, uv);
+    glm::dvec4 low = f.texels[0], high = f.texels[0];
+    for (const glm::dvec4& t : f.texels) {
+        low = glm::min(low, t);
+        high = glm::max(high, t);
+    }
+    return high - low;
 }
 
 glm::dvec4 sampleNearest(const RefImage& image, glm::dvec2 uv) {
@@ -74,6 +99,33 @@ static RefImage mapTexels(const RefImage& image, double (*f)(double)) {
 
 RefImage roundedToHalf(const RefImage& image) { return mapTexels(image, roundToHalf); }
 RefImage roundedToUnorm8(const RefImage& image) { return mapTexels(image, roundToUnorm8); }
+
+RefImage roundedTo(const RefImage& image, TargetRounding rounding) {
+    return rounding == TargetRounding::Half ? roundedToHalf(image) : roundedToUnorm8(image);
+}
+
+glm::dvec4 encodeAlpha64(glm::dvec3 rgb, double multiplier) { return glm::dvec4(rgb, multiplier / 64.0); }
+
+glm::dvec3 decodeAlpha64(glm::dvec4 encoded) { return glm::dvec3(encoded) * (encoded.a * 64.0); }
+
+RefImage decodedAlpha64(const RefImage& image) {
+    RefImage out = image;
+    for (glm::dvec4& t : out.texels) t = glm::dvec4(decodeAlpha64(t), 1.0);
+    return out;
+}
+
+RefImage blendedAdditive(const RefImage& dst, const RefImage& src) {
+    RefImage out = dst;
+    for (size_t i = 0; i < out.texels.size() && i < src.texels.size(); ++i)
+        out.texels[i] += src.texels[i] * src.texels[i].a;
+    return out;
+}
+
+double maxColorChannel(const RefImage& image) {
+    double m = 0.0;
+    for (const glm::dvec4& t : image.texels) m = std::max({m, t.r, t.g, t.b});
+    return m;
+}
 
 double maxAbsDifference(const RefImage& a, const RefImage& b, int channels) {
     return maxRelativeDifference(a, b, 0.0, channels);

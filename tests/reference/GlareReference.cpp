@@ -32,10 +32,6 @@ glm::dvec2 kernelVariance(const std::vector<KernelTap>& kernel) {
     return square / total - mean * mean;
 }
 
-RefImage roundedTo(const RefImage& image, TargetRounding rounding) {
-    return rounding == TargetRounding::Half ? roundedToHalf(image) : roundedToUnorm8(image);
-}
-
 RefImage blurPass(const RefImage& source, int width, int height, const std::vector<KernelTap>& kernel) {
     glm::dvec2 texel(1.0 / width, 1.0 / height);
     return shadePixels(width, height, [&](glm::dvec2 uv) {
@@ -64,22 +60,6 @@ RefImage glareCombine(const RefImage& level0, const RefImage& level1, const RefI
                          level(level2, uv) * glowFactors[2];
         return glm::dvec4(rgb, 1.0);
     });
-}
-
-glm::dvec4 encodeAlpha64(glm::dvec3 rgb, double multiplier) { return glm::dvec4(rgb, multiplier / 64.0); }
-
-glm::dvec3 decodeAlpha64(glm::dvec4 encoded) { return glm::dvec3(encoded) * (encoded.a * 64.0); }
-
-RefImage decodedAlpha64(const RefImage& image) {
-    RefImage out = image;
-    for (glm::dvec4& t : out.texels) t = glm::dvec4(decodeAlpha64(t), 1.0);
-    return out;
-}
-
-RefImage blendedAdditive(const RefImage& dst, const RefImage& src) {
-    RefImage out = dst;
-    for (size_t i = 0; i < out.texels.size(); ++i) out.texels[i] += src.texels[i] * src.texels[i].a;
-    return out;
 }
 
 ImageMoments imageMoments(const RefImage& image, int channel) {
