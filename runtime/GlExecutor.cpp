@@ -21,6 +21,7 @@ namespace {
 
 struct GpuTarget {
     std::string name;
+    const RenderTarget* spec = nullptr;  // null for the implicit output
     TargetFormat format = TargetFormat::RGBA16F;
     glm::ivec2 size{1};
     bool mipmaps = false;
@@ -86,6 +87,11 @@ std::string describeFramebufferStatus(GLenum status) {
     }
 }
 
+std::string picksNoFormat(const GpuTarget& t, const Value* value) {
+    return "variable '" + t.spec->formatVariable + "' = " + (value ? std::to_string(value->asInt()) : "?") +
+           " picks none of the " + std::to_string(t.spec->formats.size()) + " formats of target '" + t.name + "'";
+}
+
 glm::mat4 modelMatrix(const DrawCall& draw) {
     glm::mat4 m = glm::translate(glm::mat4(1.0f), draw.translate);
     m = glm::rotate(m, glm::radians(draw.rotateDegrees.z), glm::vec3(0, 0, 1));
@@ -108,11 +114,7 @@ struct GlExecutor::Impl {
     explicit Impl(const Workspace& w) : ws(w) {}
 
     ~Impl() {
-        for (auto& t : targets) {
-            glDeleteFramebuffers(2, t->framebuffers);
-            glDeleteTextures(2, t->textures);
-            glDeleteRenderbuffers(1, &t->depth);
-        }
+        for (auto& t : targets) release(*t);
         for (auto& [name, texture] : textures) glDeleteTextures(1, &texture);
         for (GpuPass& p : passes) glDeleteProgram(p.program);
         glDeleteSamplers(static_cast<GLsizei>(samplerObjects.size()), samplerObjects.data());
@@ -129,10 +131,11 @@ struct GlExecutor::Impl {
     }
 
     void declareTargets(glm::ivec2 viewport) {
-        auto add = [&](const std::string& name, TargetFormat format, glm::ivec2 size, bool mipmaps, glm::vec4 initial,
-                       SourceLocation where) {
+        auto add = [&](const std::string& name, const RenderTarget* spec, TargetFormat format, glm::ivec2 size,
+                       bool mipmaps, glm::vec4 initial, SourceLocation where) {
             auto t = std::make_unique<GpuTarget>();
             t->name = name;
+            t->spec = spec;
             t->format = format;
             t->size = size;
             t->mipmaps = mipmaps;
@@ -141,9 +144,9 @@ struct GlExecutor::Impl {
             targets.push_back(std::move(t));
         };
         for (const RenderTarget& t : ws.targets)
-            add(t.name, t.format, resolveTargetSize(t.size, viewport), t.mipmaps, t.initial, t.where);
+            add(t.name, &t, t.format, resolveTargetSize(t.size, viewport), t.mipmaps, t.initial, t.where);
         if (ws.output.target.empty())
-            add(Workspace::implicitOutputName, ws.output.format, viewport, false, glm::vec4(0), ws.output.where);
+            add(Workspace::implicitOutputName, nullptr, ws.output.format, viewport, false, glm::vec4(0), ws.output.where);
         for (const Pass& p : ws.passes) {
             if (!p.enabled) continue;
             GpuTarget* written = findTarget(ws.passTargetName(p));
@@ -154,39 +157,68 @@ struct GlExecutor::Impl {
         }
     }
 
+    // The format the target's format variable picks now; an error when it picks none.
+    std::string selectFormat(GpuTarget& t) {
+        if (!t.spec || t.spec->formatVariable.empty()) return {};
+        auto it = values.find(t.spec->formatVariable);
+        const Value* value = it == values.end() ? nullptr : &it->second;
+        if (auto format = selectTargetFormat(*t.spec, value)) {
+            t.format = *format;
+            return {};
+        }
+        return picksNoFormat(t, value);
+    }
+
+    void release(GpuTarget& t) {
+        glDeleteFramebuffers(2, t.framebuffers);
+        glDeleteTextures(2, t.textures);
+        glDeleteRenderbuffers(1, &t.depth);
+        t.framebuffers[0] = t.framebuffers[1] = t.textures[0] = t.textures[1] = t.depth = 0;
+        t.front = 0;
+    }
+
+    bool allocate(GpuTarget& t, Diagnostics& d) {
+        std::string element = "<target name=\"" + t.name + "\">";
+        if (std::string why = selectFormat(t); !why.empty()) {
+            error(d, t.where, element, why);
+            return false;
+        }
+        int buffers = t.history ? 2 : 1;
+        int levels = t.mipmaps ? gl::mipLevels(t.size.x, t.size.y) : 1;
+        if (t.needsDepth) {
+            glCreateRenderbuffers(1, &t.depth);
+            glNamedRenderbufferStorage(t.depth, GL_DEPTH_COMPONENT32F, t.size.x, t.size.y);
+        }
+        bool ok = true;
+        for (int i = 0; i < buffers; ++i) {
+            glCreateTextures(GL_TEXTURE_2D, 1, &t.textures[i]);
+            glTextureStorage2D(t.textures[i], levels, gl::internalFormat(t.format), t.size.x, t.size.y);
+            glCreateFramebuffers(1, &t.framebuffers[i]);
+            glNamedFramebufferTexture(t.framebuffers[i], GL_COLOR_ATTACHMENT0, t.textures[i], 0);
+            if (t.depth) glNamedFramebufferRenderbuffer(t.framebuffers[i], GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth);
+            GLenum status = glCheckNamedFramebufferStatus(t.framebuffers[i], GL_FRAMEBUFFER);
+            if (status != GL_FRAMEBUFFER_COMPLETE) {
+                error(d, t.where, element,
+                      std::string("framebuffer for format ") + targetFormatName(t.format) + " " +
+                          std::to_string(t.size.x) + "x" + std::to_string(t.size.y) +
+                          " is incomplete: " + describeFramebufferStatus(status));
+                ok = false;
+                continue;
+            }
+            glClearNamedFramebufferfv(t.framebuffers[i], GL_COLOR, 0, glm::value_ptr(t.initial));
+        }
+        if (GLenum e = glGetError(); e != GL_NO_ERROR) {
+            error(d, t.where, element,
+                  describeGlError(e) + " while allocating " + std::to_string(t.size.x) + "x" +
+                      std::to_string(t.size.y) + " " + targetFormatName(t.format));
+            ok = false;
+        }
+        return ok;
+    }
+
     bool allocateTargets(Diagnostics& d) {
         bool ok = true;
-        for (auto& t : targets) {
-            int buffers = t->history ? 2 : 1;
-            int levels = t->mipmaps ? gl::mipLevels(t->size.x, t->size.y) : 1;
-            if (t->needsDepth) {
-                glCreateRenderbuffers(1, &t->depth);
-                glNamedRenderbufferStorage(t->depth, GL_DEPTH_COMPONENT32F, t->size.x, t->size.y);
-            }
-            for (int i = 0; i < buffers; ++i) {
-                glCreateTextures(GL_TEXTURE_2D, 1, &t->textures[i]);
-                glTextureStorage2D(t->textures[i], levels, gl::internalFormat(t->format), t->size.x, t->size.y);
-                glCreateFramebuffers(1, &t->framebuffers[i]);
-                glNamedFramebufferTexture(t->framebuffers[i], GL_COLOR_ATTACHMENT0, t->textures[i], 0);
-                if (t->depth) glNamedFramebufferRenderbuffer(t->framebuffers[i], GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t->depth);
-                GLenum status = glCheckNamedFramebufferStatus(t->framebuffers[i], GL_FRAMEBUFFER);
-                if (status != GL_FRAMEBUFFER_COMPLETE) {
-                    error(d, t->where, "<target name=\"" + t->name + "\">",
-                          std::string("framebuffer for format ") + targetFormatName(t->format) + " " +
-                              std::to_string(t->size.x) + "x" + std::to_string(t->size.y) +
-                              " is incomplete: " + describeFramebufferStatus(status));
-                    ok = false;
-                    continue;
-                }
-                glClearNamedFramebufferfv(t->framebuffers[i], GL_COLOR, 0, glm::value_ptr(t->initial));
-            }
-            if (GLenum e = glGetError(); e != GL_NO_ERROR) {
-                error(d, t->where, "<target name=\"" + t->name + "\">",
-                      describeGlError(e) + " while allocating " + std::to_string(t->size.x) + "x" +
-                          std::to_string(t->size.y) + " " + targetFormatName(t->format));
-                ok = false;
-            }
-        }
+        for (auto& t : targets) ok = allocate(*t, d) && ok;
         return ok;
     }
 
@@ -509,7 +541,17 @@ std::string GlExecutor::setVariable(const std::string& name, const Value& value)
     if (it->second.type != value.type)
         return "variable '" + name + "' is a " + valueTypeName(it->second.type) + " (" +
                std::to_string(componentCount(it->second.type)) + " values), not a " + valueTypeName(value.type);
+    for (auto& t : impl_->targets)
+        if (t->spec && t->spec->formatVariable == name && !selectTargetFormat(*t->spec, &value))
+            return picksNoFormat(*t, &value);
     it->second = value;
+    // Targets whose format follows this variable are allocated anew (their contents start over).
+    for (auto& t : impl_->targets) {
+        if (!t->spec || t->spec->formatVariable != name || *selectTargetFormat(*t->spec, &value) == t->format) continue;
+        impl_->release(*t);
+        Diagnostics d;
+        if (!impl_->allocate(*t, d)) return d.front().message;
+    }
     return {};
 }
 

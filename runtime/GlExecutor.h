@@ -37,7 +37,8 @@ public:
     int frameIndex() const { return frame_; }  // frames rendered so far
 
     // Current value of a workspace variable; setVariable checks the type (a colour takes rgb or
-    // rgba as declared) and returns an error sentence, empty on success.
+    // rgba as declared) and returns an error sentence, empty on success. Targets whose format the
+    // variable picks (format-by) are allocated anew in the new format, back to their initial value.
     const Value* variable(const std::string& name) const;
     std::string setVariable(const std::string& name, const Value& value);
 

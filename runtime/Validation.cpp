@@ -18,6 +18,7 @@ public:
     void run() {
         checkUniqueNames();
         checkTextures();
+        checkTargets();
         checkOutput();
         for (const Pass& pass : ws_.passes) checkPass(pass);
     }
@@ -73,6 +74,32 @@ private:
                           std::string(t.kind == TextureKind::Cube ? "<cubemap" : "<texture") + " name=\"" + t.name + "\">",
                           "image file '" + t.files[i] + "' not found (looked for " + file.string() + ")");
             }
+        }
+    }
+
+    void checkTargets() {
+        for (const RenderTarget& t : ws_.targets) {
+            if (t.formatVariable.empty()) continue;
+            std::string element = "<target name=\"" + t.name + "\">";
+            const Variable* v = ws_.findVariable(t.formatVariable);
+            if (!v) {
+                error(t.where, element, "format-by names '" + t.formatVariable + "', which is not a declared variable");
+                continue;
+            }
+            if (v->value.type != ValueType::Int) {
+                error(t.where, element, "format-by variable '" + v->name + "' (" + at(v->where) + ") is a " +
+                                            valueTypeName(v->value.type) + "; it must be an int");
+                continue;
+            }
+            std::string count = std::to_string(t.formats.size());
+            if (!v->options.empty() && v->options.size() != t.formats.size())
+                error(t.where, element, "format lists " + count + " formats, but variable '" + v->name + "' (" +
+                                            at(v->where) + ") has " + std::to_string(v->options.size()) +
+                                            " options: give one format per option");
+            else if (!selectTargetFormat(t, &v->value))
+                error(t.where, element, "variable '" + v->name + "' = " + std::to_string(v->value.asInt()) +
+                                            " picks none of the " + count + " formats (values 0 to " +
+                                            std::to_string(t.formats.size() - 1) + ")");
         }
     }
 

@@ -69,6 +69,14 @@ int targetFormatBytesPerPixel(TargetFormat format) {
     return 0;
 }
 
+std::optional<TargetFormat> selectTargetFormat(const RenderTarget& target, const Value* value) {
+    if (target.formatVariable.empty()) return target.format;
+    if (!value || value->type != ValueType::Int) return std::nullopt;
+    int index = value->asInt();
+    if (index < 0 || index >= static_cast<int>(target.formats.size())) return std::nullopt;
+    return target.formats[static_cast<size_t>(index)];
+}
+
 glm::ivec2 resolveTargetSize(const TargetSize& size, glm::ivec2 viewport) {
     if (!size.relative) return {size.width, size.height};
     // The small epsilon keeps exact products (256 × 0.25) from rounding up through float noise.

@@ -58,7 +58,11 @@ struct TargetSize {
 
 struct RenderTarget {
     std::string name;
-    TargetFormat format = TargetFormat::RGBA16F;
+    TargetFormat format = TargetFormat::RGBA16F;  // with formatVariable: formats[0]
+    // format-by: the int variable whose value i picks formats[i] (the format follows an encoding
+    // chosen by a variable or --set); empty: the format is fixed.
+    std::string formatVariable;
+    std::vector<TargetFormat> formats;
     TargetSize size;
     bool mipmaps = false;
     glm::vec4 initial{0.0f};  // contents before the first frame writes it (seen by frame="previous")
@@ -208,6 +212,9 @@ struct Workspace {
 const char* targetFormatName(TargetFormat format);
 std::optional<TargetFormat> targetFormatFromName(std::string_view name);
 int targetFormatBytesPerPixel(TargetFormat format);
+// The format a target is allocated with when its format variable (if any) has `value`; nullopt
+// when the value picks none of its formats.
+std::optional<TargetFormat> selectTargetFormat(const RenderTarget& target, const Value* value);
 
 // Viewport-relative sizes round up, never below 1: ceil(viewport × scale), so a chain of
 // half-size targets covers every source pixel (5 → 3 → 2 → 1).

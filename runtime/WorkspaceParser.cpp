@@ -262,15 +262,29 @@ private:
     }
 
     std::optional<RenderTarget> parseTarget(const XMLElement* e) {
-        ElementReader r(e, file_, diagnostics_, {"name", "format", "size", "scale", "mipmaps", "initial"});
+        ElementReader r(e, file_, diagnostics_, {"name", "format", "format-by", "size", "scale", "mipmaps", "initial"});
         RenderTarget t;
         t.where = r.where();
         auto name = r.identifier("name");
+        if (auto by = r.identifier("format-by", false)) t.formatVariable = *by;
         if (auto format = r.string("format", true)) {
-            if (auto f = targetFormatFromName(*format)) t.format = *f;
-            else r.error("attribute 'format': unknown format '" + *format +
-                         "' (expected rgba8, rgba16f, rgba32f, r16f, r32f, rg16f, rg32f, rgba16, r11g11b10f, "
-                         "rgb10a2, r8, rg8)");
+            std::string spaced = *format;
+            std::replace(spaced.begin(), spaced.end(), ',', ' ');
+            std::vector<std::string> words;
+            std::stringstream list(spaced);
+            for (std::string w; list >> w;) words.push_back(w);
+            for (const std::string& w : words) {
+                if (auto f = targetFormatFromName(w)) t.formats.push_back(*f);
+                else r.error("attribute 'format': unknown format '" + w +
+                             "' (expected rgba8, rgba16f, rgba32f, r16f, r32f, rg16f, rg32f, rgba16, r11g11b10f, "
+                             "rgb10a2, r8, rg8)");
+            }
+            if (words.size() > 1 && t.formatVariable.empty())
+                r.error("attribute 'format': a list of formats needs format-by=\"VARIABLE\", the int variable whose "
+                        "value picks one");
+            if (words.empty()) r.error("attribute 'format' is empty");
+            if (!t.formats.empty()) t.format = t.formats[0];
+            if (t.formatVariable.empty()) t.formats.clear();
         }
         auto scale = r.string("scale");
         if (r.has("size") && scale) r.error("give either 'size' (absolute) or 'scale' (relative to the viewport), not both");

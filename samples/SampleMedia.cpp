@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "runtime/CubeMapLayout.h"
+#include "runtime/HdrEncoding.h"
 #include "runtime/ImageIO.h"
 
 namespace rmfx::samples {
@@ -69,35 +70,25 @@ Result<bool> writeTourMedia(const std::filesystem::path& folder) {
 }
 
 Image encodeAlphaIntensity(const Image& hdr) {
-    constexpr float kMaxMultiplier = 65.0f;
     Image encoded;
     encoded.width = hdr.width;
     encoded.height = hdr.height;
     encoded.channels = 4;
     encoded.bitsPerChannel = 8;
     encoded.pixels.resize(static_cast<size_t>(hdr.width) * hdr.height * 4);
-    auto quantise = [](float v) { return std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f) / 255.0f; };
     for (int y = 0; y < hdr.height; ++y)
         for (int x = 0; x < hdr.width; ++x) {
-            glm::vec3 c(0.0f);
-            for (int k = 0; k < std::min(hdr.channels, 3); ++k) {
-                float v = hdr.at(x, y, k);
-                c[k] = v > 0.0f ? std::min(v, 1e30f) : 0.0f;  // NaN and negatives to 0, Inf to finite
-            }
-            if (hdr.channels < 3) c = glm::vec3(c[0]);
-            float peak = std::max({c.r, c.g, c.b});
-            if (peak > kMaxMultiplier) c *= kMaxMultiplier / peak;
-            peak = std::min(peak, kMaxMultiplier);
-            // Smallest alpha step whose multiplier 1 + 64 a covers the peak.
-            float alpha = peak > 1.0f ? std::min(std::ceil((peak - 1.0f) / 64.0f * 255.0f), 255.0f) / 255.0f : 0.0f;
-            float multiplier = 1.0f + 64.0f * alpha;
-            for (int k = 0; k < 3; ++k) encoded.at(x, y, k) = quantise(c[k] / multiplier);
-            encoded.at(x, y, 3) = alpha;
+            glm::vec3 c(hdr.at(x, y, 0));
+            for (int k = 1; k < std::min(hdr.channels, 3); ++k) c[k] = hdr.at(x, y, k);
+            glm::vec4 texel = encodeHdr(HdrEncoding::Rgba8x64, c);
+            for (int k = 0; k < 4; ++k) encoded.at(x, y, k) = texel[k];
         }
     return encoded;
 }
 
-glm::vec3 decodeAlphaIntensity(float r, float g, float b, float a) { return glm::vec3(r, g, b) * (1.0f + 64.0f * a); }
+glm::vec3 decodeAlphaIntensity(float r, float g, float b, float a) {
+    return decodeHdr(HdrEncoding::Rgba8x64, glm::vec4(r, g, b, a));
+}
 
 Image makeGhostMask(int size) {
     Image image;

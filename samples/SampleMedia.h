@@ -27,9 +27,10 @@ Image makeDiscMask(int size);
 Result<bool> writeTourMedia(const std::filesystem::path& folder);
 
 // The chapter's 8-bit HDR encoding: colour in rgb, brightness in alpha, decoded as
-// rgb * (1 + 64 a). Each texel gets the smallest 8-bit alpha whose multiplier reaches its largest
-// channel, so rgb keeps as many of its 8 bits as possible; values above 65 are scaled down to 65
-// keeping their hue. Returns an RGBA image with 8-bit values (k / 255).
+// rgb * (1 + 64 a): HdrEncoding::Rgba8x64 (runtime/HdrEncoding.h) on every texel. Each texel gets
+// the smallest 8-bit alpha whose multiplier reaches its largest channel, so rgb keeps as many of
+// its 8 bits as possible; values above 65 are scaled down to 65 keeping their hue. Returns an RGBA
+// image with 8-bit values (k / 255).
 Image encodeAlphaIntensity(const Image& hdr);
 glm::vec3 decodeAlphaIntensity(float r, float g, float b, float a);
 

@@ -75,6 +75,32 @@ TEST(Validation, DuplicateTargetNamesTheFirstLine) {
                                         "line 2)"}));
 }
 
+TEST(Validation, FormatByNeedsAnIntVariableWithAFormatPerValue) {
+    test::ScratchDir dir;
+    auto l = load(dir, lines({
+                           "<workspace version=\"1\">",
+                           "  <int name=\"Enc\" value=\"3\"/>",
+                           "  <int name=\"Mode\" value=\"0\" options=\"a, b, c\"/>",
+                           "  <float name=\"Gain\" value=\"1\"/>",
+                           "  <target name=\"a\" format=\"rgba8 rgba16f\" format-by=\"Enc\"/>",
+                           "  <target name=\"b\" format=\"rgba8 rgba16f\" format-by=\"Mode\"/>",
+                           "  <target name=\"c\" format=\"rgba8 rgba16f\" format-by=\"Gain\"/>",
+                           "  <target name=\"d\" format=\"rgba8 rgba16f\" format-by=\"Nope\"/>",
+                           "  <pass name=\"p\">",
+                           kPlainShader,
+                           "  </pass>",
+                           "</workspace>",
+                       }));
+    EXPECT_EQ(l.errors,
+              (Lines{
+                  l.path + ":5: error: <target name=\"a\">: variable 'Enc' = 3 picks none of the 2 formats (values 0 to 1)",
+                  l.path + ":6: error: <target name=\"b\">: format lists 2 formats, but variable 'Mode' (line 3) has 3 "
+                           "options: give one format per option",
+                  l.path + ":7: error: <target name=\"c\">: format-by variable 'Gain' (line 4) is a float; it must be an int",
+                  l.path + ":8: error: <target name=\"d\">: format-by names 'Nope', which is not a declared variable",
+              }));
+}
+
 TEST(Validation, DuplicatePassNamesTheFirstLine) {
     test::ScratchDir dir;
     auto l = load(dir, lines({

@@ -186,6 +186,21 @@ TEST(WorkspaceParser, BadEnumWordListsTheChoices) {
                           "rgba8, rgba16f, rgba32f, r16f, r32f, rg16f, rg32f, rgba16, r11g11b10f, rgb10a2, r8, rg8)"}));
 }
 
+TEST(WorkspaceParser, FormatListFollowsTheFormatByVariable) {
+    auto parsed = parse(workspace({"  <target name=\"t\" format=\"rgba16f, rgba16 rgba8\" format-by=\"Enc\"/>"}));
+    ASSERT_TRUE(parsed.workspace);
+    const RenderTarget& t = parsed.workspace->targets.at(0);
+    EXPECT_EQ(t.formatVariable, "Enc");
+    EXPECT_EQ(t.formats, (std::vector<TargetFormat>{TargetFormat::RGBA16F, TargetFormat::RGBA16, TargetFormat::RGBA8}));
+    EXPECT_EQ(t.format, TargetFormat::RGBA16F);
+    EXPECT_EQ(selectTargetFormat(t, nullptr), std::nullopt);
+    Value two = Value::ofInt(2);
+    EXPECT_EQ(selectTargetFormat(t, &two), TargetFormat::RGBA8);
+    EXPECT_EQ(errorsOf(workspace({"  <target name=\"t\" format=\"rgba16f rgba8\"/>"})),
+              (Lines{at + "2: error: <target name=\"t\">: attribute 'format': a list of formats needs "
+                          "format-by=\"VARIABLE\", the int variable whose value picks one"}));
+}
+
 TEST(WorkspaceParser, WrongComponentCount) {
     EXPECT_EQ(errorsOf(workspace({"  <vec3 name=\"v\" value=\"1 2\"/>"})),
               (Lines{at + "2: error: <vec3 name=\"v\">: attribute 'value': a vec3 takes 3 numbers, got 2"}));
