@@ -321,33 +321,6 @@ TEST_F(HdrLightingGLTest, BrightPassBloomAndStarSourcesMatchFloat64) {
     EXPECT_NEAR(total(starSource) / total(bright), 1.0, 2 * kHalfStep);
 }
 
-TEST(HdrLightingKernels, NormalisedSymmetricGaussians) {
-    std::vector<double> bloom = hdr::bloomKernel();
-    ASSERT_EQ(bloom.size(), 15u);
-    double sum = 0.0;
-    for (size_t i = 0; i < bloom.size(); ++i) {
-        sum += bloom[i];
-        EXPECT_EQ(bloom[i], bloom[bloom.size() - 1 - i]);
-    }
-    EXPECT_NEAR(sum, 1.0, 1e-15);
-    EXPECT_GT(bloom[7], bloom[6]);
-    // σ = 3: the centre is exp(0) and the ends exp(-49/18) of it before normalising.
-    EXPECT_NEAR(bloom[0] / bloom[7], std::exp(-49.0 / 18.0), 1e-15);
-    double sum5 = 0.0;
-    std::vector<hdr::Tap> taps = hdr::gauss5x5Kernel();
-    EXPECT_EQ(taps.size(), 13u);
-    for (const hdr::Tap& t : taps) sum5 += t.weight;
-    EXPECT_NEAR(sum5, 1.0, 1e-15);
-}
-
-TEST(HdrLightingKernels, BlueShiftCoefficient) {
-    EXPECT_DOUBLE_EQ(hdr::blueShiftCoefficient(0.0), 1.0 - 1.5 / 4.1);
-    EXPECT_DOUBLE_EQ(hdr::blueShiftCoefficient(2.6), 0.0);
-    EXPECT_DOUBLE_EQ(hdr::blueShiftCoefficient(10.0), 0.0);
-    EXPECT_DOUBLE_EQ(hdr::blueShiftCoefficient(-1.5), 1.0);
-    EXPECT_DOUBLE_EQ(hdr::blueShiftCoefficient(0.55), 0.5);
-}
-
 // The star source replaced by a single white texel: pass 0 of line 0 of the Vertical star (step one
 // texel, straight down in the sample's terms, so the line grows upwards) gathers the texel into the
 // 8 texels above it with exactly the 8 tap weights, and nothing anywhere else. Lines 1..7 are
