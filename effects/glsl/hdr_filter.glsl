@@ -1,0 +1,44 @@
+#pragma once
+// Filters over images read with loadHDR (decode first, then filter). Coordinates are in texels of
+// the image read: texel (i, j) covers [i, i+1) x [j, j+1), its centre at (i + 0.5, j + 0.5).
+#include "hdr_storage.glsl"
+
+// A texel, or black outside the image: the DirectX sample keeps a one-texel black border around
+// its glare textures so that blurs and star lines fade out at the edges instead of smearing them.
+vec3 loadHDROrBlack(sampler2D image, ivec2 texel) {
+    ivec2 size = textureSize(image, 0);
+    if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, size))) return vec3(0.0);
+    return loadHDR(image, texel);
+}
+
+// Bilinear interpolation at `position` (in texels) with black outside the image.
+vec3 bilinearHDROrBlack(sampler2D image, vec2 position) {
+    vec2 p = position - 0.5;
+    ivec2 i = ivec2(floor(p));
+    vec2 f = p - vec2(i);
+    vec3 bottom = mix(loadHDROrBlack(image, i), loadHDROrBlack(image, i + ivec2(1, 0)), f.x);
+    vec3 top = mix(loadHDROrBlack(image, i + ivec2(0, 1)), loadHDROrBlack(image, i + ivec2(1, 1)), f.x);
+    return mix(bottom, top, f.y);
+}
+
+// NaN, ±Inf and negative channels as 0, tested on the bits (GLSL's min/max need not drop a NaN,
+// and a compiler may assume isnan is false): one bad texel would otherwise spread through every
+// average, blur and the log-average luminance.
+vec3 finiteNonNegative(vec3 c) {
+    bvec3 finite = notEqual(floatBitsToUint(c) & 0x7F800000u, uvec3(0x7F800000u));
+    return vec3(finite.x && c.x > 0.0 ? c.x : 0.0, finite.y && c.y > 0.0 ? c.y : 0.0, finite.z && c.z > 0.0 ? c.z : 0.0);
+}
+
+// Exact mean of the texels of the block [block * n, block * n + n) that lie inside the image,
+// each made finite and non-negative: blocks at the right and top edges of an image whose size is
+// not a multiple of n average the texels they have, so every texel counts once, in one block.
+vec3 boxAverageHDR(sampler2D image, ivec2 block, int n) {
+    ivec2 size = textureSize(image, 0);
+    ivec2 start = block * n;
+    ivec2 end = min(start + n, size);
+    vec3 sum = vec3(0.0);
+    for (int y = start.y; y < end.y; ++y)
+        for (int x = start.x; x < end.x; ++x) sum += finiteNonNegative(loadHDR(image, ivec2(x, y)));
+    ivec2 count = max(end - start, ivec2(1));
+    return sum / float(count.x * count.y);
+}

@@ -1,0 +1,10 @@
+// 64x64 -> 16x16 -> 4x4 of the log-average: weighted means of the log-luminance, max of the peaks.
+#include "luminance.glsl"
+uniform sampler2D Finer;
+uniform sampler2D Quarter;  // only its size, which fixes the footprints
+out vec4 fragColor;
+
+void main() {
+    vec2 reduced = reduceLogLuminance(Finer, ivec2(gl_FragCoord.xy), textureSize(Quarter, 0));
+    fragColor = storeHDR(vec3(reduced, 0.0));
+}
