@@ -12,6 +12,17 @@ for ws in shader_1 shader_2 shader_3 shader_4 shader_6 exercise_1 exercise_2; do
   render effects/$ws.xml --size 384x384 -o "$out/$ws.png"
 done
 
+# Automatic exposure after 120 frames (settled), with the 8-bit and the half-float sky.
+render effects/auto_exposure.xml --size 384x384 --frames 120 -o "$out/auto_exposure.png"
+render effects/auto_exposure.xml --size 384x384 --frames 120 --set Environment_Format=1 -o "$out/auto_exposure_float.png"
+
+# HDRLighting after 30 frames of 0.5 s, so the light adaptation has settled.
+lighting="effects/hdr_lighting.xml --size 384x384 --frames 30 --dt 0.5"
+render $lighting -o "$out/hdr_lighting.png"
+render $lighting --set Star_Type=4 --set Tone_Map_Operator=2 -o "$out/hdr_lighting_sunnycross_photographic.png"
+render $lighting --set Tone_Map_Operator=0 --set Bloom_Scale=0 --set Star_Scale=0 --set Blue_Shift=false \
+  -o "$out/hdr_lighting_no_tone_map.png"
+
 # The article's four exposures side by side (256x256 each).
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
