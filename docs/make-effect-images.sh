@@ -8,7 +8,7 @@ rmfx="${1:-build}/rmfx"
 out=docs/images
 render() { "$rmfx" render "$@" -q; }
 
-for ws in shader_1 shader_2 shader_3 shader_4 shader_6 exercise_1 exercise_2; do
+for ws in shader_1 shader_2 shader_3 shader_4 shader_5 shader_6 exercise_1 exercise_2; do
   render effects/$ws.xml --size 384x384 -o "$out/$ws.png"
 done
 
