@@ -67,9 +67,13 @@ void stopAfter(Workspace& ws, const std::string& last) {
     }
 }
 
+// The target in `format`, whatever HDR_Encoding picks (its format-by list too).
 void setFormat(Workspace& ws, const std::string& target, TargetFormat format) {
     for (RenderTarget& t : ws.targets)
-        if (t.name == target) t.format = format;
+        if (t.name == target) {
+            t.format = format;
+            std::fill(t.formats.begin(), t.formats.end(), format);
+        }
 }
 
 RefImage targetImage(const GlRun& run, const std::string& name) { return fromImage(readBack(*run.exec, name)); }

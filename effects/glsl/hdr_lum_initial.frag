@@ -27,5 +27,5 @@ void main() {
     for (int y = start.y * QUARTER; y < sceneEnd.y; ++y)
         for (int x = start.x * QUARTER; x < sceneEnd.x; ++x)
             peak = max(peak, luminance(finiteNonNegative(loadHDR(Scene, ivec2(x, y)))));
-    fragColor = storeHDR(vec3(mean, logLuminance(peak), 0.0));
+    fragColor = storeLogLevel(mean, logLuminance(peak));
 }

@@ -6,5 +6,5 @@ out vec4 fragColor;
 
 void main() {
     vec2 reduced = reduceLogLuminance(Finer, ivec2(gl_FragCoord.xy), textureSize(Quarter, 0));
-    fragColor = storeHDR(vec3(reduced, 0.0));
+    fragColor = storeLogLevel(reduced.x, reduced.y);
 }

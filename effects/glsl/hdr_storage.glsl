@@ -1,11 +1,14 @@
 #pragma once
-// How the HDR pipeline's intermediate images (scene, quarter, luminance chain, bright pass, bloom
-// and star sources) are written and read: every pass writes them with storeHDR and reads them
-// with loadHDR, one texel at a time (an encoded texel must be decoded before it is filtered, so
-// filtering is done after loadHDR, in hdr_filter.glsl). Both are the identity on float targets
-// today; the HDR encodings (RGB16, RGB9E5, RGBE8, ...) plug in here and nowhere else.
+// How the HDR pipeline's colour images (scene, quarter, bright pass, bloom and star images) are
+// written and read: every pass writes them with storeHDR and reads them with loadHDR, one texel at
+// a time, in the encoding HDR_Encoding picks (hdr_encoding.glsl: 0 float, 1 RGB16, 2 RGB32,
+// 3 RGB9E5, 4 RGBE8, 5 RGBA8x64); the targets' formats follow the same variable (format-by).
+// An encoded texel must be decoded before it is filtered, so filtering is done after loadHDR, in
+// hdr_filter.glsl. The log-luminance chain and the 1x1 statistics are plain float targets, not
+// written through here (see luminance.glsl).
+#include "hdr_encoding.glsl"
 
-vec4 storeHDR(vec3 color) { return vec4(color, 1.0); }
+vec4 storeHDR(vec3 color) { return encodeHDR(color); }
 
-// Texel `texel` of an image written with storeHDR; the caller keeps it inside the image.
-vec3 loadHDR(sampler2D image, ivec2 texel) { return texelFetch(image, texel, 0).rgb; }
+// Texel `texel` of an image written with storeHDR, decoded; the caller keeps it inside the image.
+vec3 loadHDR(sampler2D image, ivec2 texel) { return decodeHDR(texelFetch(image, texel, 0)); }

@@ -1,7 +1,6 @@
 #pragma once
 // Luminance and the log-average reduction of the HDRLighting sample (Reinhard et al. 2002):
 // Lavg = exp(mean(log(delta + Y))) over the texels of the quarter-size scene.
-#include "hdr_storage.glsl"
 
 const vec3 LUMINANCE_WEIGHTS = vec3(0.2125, 0.7154, 0.0721);  // the DirectX sample's
 const float LOG_DELTA = 0.0001;                                // keeps log finite on black texels
@@ -9,12 +8,19 @@ const float LOG_DELTA = 0.0001;                                // keeps log fini
 float luminance(vec3 c) { return max(dot(c, LUMINANCE_WEIGHTS), 0.0); }
 
 // The reduction carries log(delta + Y) - log(delta) = log(1 + Y / delta) instead of log(delta + Y):
-// the same mean up to the constant log(delta), but never negative, so any HDR encoding can store
-// the chain. The largest luminance travels beside it the same way (log is monotonic, so the max
-// of the logs is the log of the max).
+// the same mean up to the constant log(delta), but never negative. The largest luminance travels
+// beside it the same way (log is monotonic, so the max of the logs is the log of the max). The
+// chain (r: mean, g: log of the peak) stays in rg32f whatever HDR_Encoding is: an absolute error e
+// of a log is a relative error e of Lavg or the peak, and the shared-exponent encodings would tie
+// the mean's error to the larger log of the peak (RGBE8: up to 2^-8 of ~16, 6%, per level).
+// It is read and written as plain floats: logLevel / storeLogLevel.
 float logLuminance(float y) { return log(1.0 + y / LOG_DELTA); }
 float fromLogLuminance(float s) { return LOG_DELTA * exp(s); }  // delta * exp(mean): exp(mean(log(delta + Y)))
 float peakFromLogLuminance(float m) { return LOG_DELTA * (exp(m) - 1.0); }
+
+// A texel of the chain (mean, log of the peak), and what a chain pass writes.
+vec2 logLevel(sampler2D level, ivec2 texel) { return texelFetch(level, texel, 0).rg; }
+vec4 storeLogLevel(float mean, float logPeak) { return vec4(mean, logPeak, 0.0, 1.0); }
 
 // The reduction levels (64², 16², 4², 1²) partition the quarter image exactly: texel k of a level
 // n texels wide covers quarter texels [k * size / n, (k + 1) * size / n) (integer division), and
@@ -34,7 +40,7 @@ vec2 reduceLogLuminance(sampler2D finer, ivec2 k, ivec2 quarterSize) {
             ivec2 span = footprintEnd(child, finerSize, quarterSize) - footprintStart(child, finerSize, quarterSize);
             float w = float(span.x * span.y);
             if (w == 0.0) continue;
-            vec3 v = loadHDR(finer, child);
+            vec2 v = logLevel(finer, child);
             sum += w * v.x;
             weight += w;
             peak = max(peak, v.y);
