@@ -23,9 +23,15 @@ render $lighting --set Star_Type=4 --set Tone_Map_Operator=2 -o "$out/hdr_lighti
 render $lighting --set Tone_Map_Operator=0 --set Bloom_Scale=0 --set Star_Scale=0 --set Blue_Shift=false \
   -o "$out/hdr_lighting_no_tone_map.png"
 
-# The article's four exposures side by side (256x256 each).
+# HDRLighting with its colour targets in each encoding: float, RGB16, RGB32 / RGB9E5, RGBE8, RGBA8x64.
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+for e in 0 1 2 3 4 5; do
+  render effects/hdr_lighting.xml --size 256x256 --frames 30 --dt 0.5 --set HDR_Encoding=$e -o "$tmp/encoding_$e.png"
+done
+oiiotool "$tmp"/encoding_{0,1,2,3,4,5}.png --mosaic 3x2 -o "$out/hdr_lighting_encodings.png"
+
+# The article's four exposures side by side (256x256 each).
 for e in 0.5 2.5 10 20; do
   render effects/article_pipeline.xml --size 256x256 --set fExposureLevel=$e -o "$tmp/article_$e.png"
 done
