@@ -26,20 +26,8 @@ namespace {
 
 class HdrLightingGLTest : public GlTest {};
 
-using Overrides = std::vector<std::pair<std::string, std::string>>;
-
 std::unique_ptr<Workspace> loadHdrLighting(const Overrides& overrides = {}) {
-    LoadedWorkspace loaded = loadWorkspace(sourceDir() / "effects" / "hdr_lighting.xml");
-    if (!loaded.workspace) {
-        ADD_FAILURE() << formatAll(loaded.diagnostics);
-        return nullptr;
-    }
-    auto ws = std::make_unique<Workspace>(std::move(*loaded.workspace));
-    if (Diagnostics bad = applyOverrides(*ws, overrides); !bad.empty()) {
-        ADD_FAILURE() << formatAll(bad);
-        return nullptr;
-    }
-    return ws;
+    return effectWorkspace("hdr_lighting.xml", overrides);
 }
 
 // Replaces every pass that draws the scene by one full-screen pass running `pattern` (a fragment
