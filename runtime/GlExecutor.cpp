@@ -102,6 +102,13 @@ glm::mat4 modelMatrix(const DrawCall& draw) {
 
 }  // namespace
 
+// Timestamps of one frame's passes: queries[0] before the first pass, queries[i + 1] after pass i.
+struct TimerFrame {
+    std::vector<GLuint> queries;
+    std::vector<std::string> passes;
+    bool pending = false;
+};
+
 struct GlExecutor::Impl {
     const Workspace& ws;
     std::map<std::string, Value> values;
@@ -111,9 +118,17 @@ struct GlExecutor::Impl {
     std::vector<GpuPass> passes;
     std::vector<GLuint> samplerObjects;
 
+    bool timing = false;
+    TimerFrame timerFrames[3];
+    int timerNext = 0;
+    std::vector<PassTiming> timings;
+    double frameMilliseconds = 0.0;
+
     explicit Impl(const Workspace& w) : ws(w) {}
 
     ~Impl() {
+        for (TimerFrame& f : timerFrames)
+            glDeleteQueries(static_cast<GLsizei>(f.queries.size()), f.queries.data());
         for (auto& t : targets) release(*t);
         for (auto& [name, texture] : textures) glDeleteTextures(1, &texture);
         for (GpuPass& p : passes) glDeleteProgram(p.program);
@@ -409,6 +424,41 @@ struct GlExecutor::Impl {
         }
     }
 
+    // Reads every pending frame whose last timestamp is available, oldest first; waits only when
+    // the slot about to be reused is still pending.
+    void collectTimings(bool waitForNext) {
+        for (int k = 0; k < 3; ++k) {
+            TimerFrame& f = timerFrames[(timerNext + k) % 3];
+            if (!f.pending) continue;
+            GLint available = 0;
+            glGetQueryObjectiv(f.queries.back(), GL_QUERY_RESULT_AVAILABLE, &available);
+            if (!available && !(waitForNext && k == 0)) continue;
+            std::vector<GLuint64> stamps(f.queries.size());
+            for (size_t i = 0; i < f.queries.size(); ++i) glGetQueryObjectui64v(f.queries[i], GL_QUERY_RESULT, &stamps[i]);
+            timings.clear();
+            for (size_t i = 0; i < f.passes.size(); ++i)
+                timings.push_back({f.passes[i], static_cast<double>(stamps[i + 1] - stamps[i]) * 1e-6});
+            frameMilliseconds = static_cast<double>(stamps.back() - stamps.front()) * 1e-6;
+            f.pending = false;
+        }
+    }
+
+    TimerFrame* beginTimedFrame(size_t passCount) {
+        if (!timing) return nullptr;
+        collectTimings(true);
+        TimerFrame& f = timerFrames[timerNext];
+        timerNext = (timerNext + 1) % 3;
+        if (f.queries.size() != passCount + 1) {
+            glDeleteQueries(static_cast<GLsizei>(f.queries.size()), f.queries.data());
+            f.queries.assign(passCount + 1, 0);
+            glCreateQueries(GL_TIMESTAMP, static_cast<GLsizei>(f.queries.size()), f.queries.data());
+        }
+        f.passes.clear();
+        f.pending = true;
+        glQueryCounter(f.queries[0], GL_TIMESTAMP);
+        return &f;
+    }
+
     void applyState(const Pass& pass) {
         if (pass.blend.enabled) {
             glEnable(GL_BLEND);
@@ -486,6 +536,7 @@ Diagnostics GlExecutor::renderFrame(const FrameClock& clock) {
     while (glGetError() != GL_NO_ERROR) {
     }
     for (auto& t : s.targets) t->writtenThisFrame = false;
+    TimerFrame* timer = s.beginTimedFrame(s.passes.size());
     for (const GpuPass& gp : s.passes) {
         const Pass& pass = *gp.pass;
         GpuTarget& target = *gp.target;
@@ -517,6 +568,10 @@ Diagnostics GlExecutor::renderFrame(const FrameClock& clock) {
         gp.mesh->draw();
         target.writtenThisFrame = true;
         if (target.mipmaps) glGenerateTextureMipmap(target.textures[target.writeBuffer()]);
+        if (timer) {
+            timer->passes.push_back(pass.name);
+            glQueryCounter(timer->queries[timer->passes.size()], GL_TIMESTAMP);
+        }
         for (GLenum e; (e = glGetError()) != GL_NO_ERROR;)
             d.push_back({Diagnostic::Severity::Error, pass.where, passLabel(pass),
                          describeGlError(e) + " while drawing into '" + target.name + "'"});
@@ -555,6 +610,25 @@ std::string GlExecutor::setVariable(const std::string& name, const Value& value)
     return {};
 }
 
+void GlExecutor::setTimingEnabled(bool enabled) {
+    impl_->timing = enabled;
+    if (!enabled) {
+        for (TimerFrame& f : impl_->timerFrames) f.pending = false;
+        impl_->timings.clear();
+        impl_->frameMilliseconds = 0.0;
+    }
+}
+
+const std::vector<PassTiming>& GlExecutor::passTimings() const {
+    impl_->collectTimings(false);
+    return impl_->timings;
+}
+
+double GlExecutor::frameGpuMilliseconds() const {
+    impl_->collectTimings(false);
+    return impl_->frameMilliseconds;
+}
+
 Result<Image> GlExecutor::readTarget(const std::string& name) const {
     const GpuTarget* t = impl_->findTarget(name);
     if (!t) return Error{"no render target named '" + name + "'"};
@@ -586,6 +660,16 @@ std::vector<std::string> GlExecutor::targetNames() const {
 glm::ivec2 GlExecutor::targetSize(const std::string& name) const {
     const GpuTarget* t = impl_->findTarget(name);
     return t ? t->size : glm::ivec2(0);
+}
+
+TargetFormat GlExecutor::targetFormat(const std::string& name) const {
+    const GpuTarget* t = impl_->findTarget(name);
+    return t ? t->format : TargetFormat::RGBA8;
+}
+
+unsigned GlExecutor::targetTexture(const std::string& name) const {
+    const GpuTarget* t = impl_->findTarget(name);
+    return t ? t->textures[t->front] : 0;
 }
 
 }  // namespace rmfx

@@ -18,6 +18,12 @@
 
 namespace rmfx {
 
+// GPU time of one pass, from timer queries (GL_TIMESTAMP around each pass).
+struct PassTiming {
+    std::string pass;
+    double milliseconds = 0.0;
+};
+
 struct FrameClock {
     float time = 0.0f;       // seconds since the first frame
     float deltaTime = 0.0f;  // seconds since the previous frame
@@ -42,6 +48,13 @@ public:
     const Value* variable(const std::string& name) const;
     std::string setVariable(const std::string& name, const Value& value);
 
+    // Per-pass GPU timing. Off by default: queries cost a little. Results arrive a frame or two
+    // late (never stalling the pipeline); passTimings() holds the newest completed frame, in
+    // schedule order, and is empty until one has completed.
+    void setTimingEnabled(bool enabled);
+    const std::vector<PassTiming>& passTimings() const;
+    double frameGpuMilliseconds() const;  // first pass start to last pass end of that frame
+
     OrbitCamera& camera() { return camera_; }
     glm::ivec2 viewport() const { return viewport_; }
 
@@ -49,6 +62,10 @@ public:
     Result<Image> readTarget(const std::string& name) const;
     std::vector<std::string> targetNames() const;
     glm::ivec2 targetSize(const std::string& name) const;
+    TargetFormat targetFormat(const std::string& name) const;
+    // The GL texture holding the newest finished contents of a target (0 if none): for display
+    // (ImGui::Image) only; it stays owned by the executor and may change after setVariable.
+    unsigned targetTexture(const std::string& name) const;
 
     struct Impl;
 
