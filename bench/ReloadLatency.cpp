@@ -2,7 +2,8 @@
 // (20 passes) in a temporary folder, then N times saves a file the way editors do (a temporary
 // file renamed over the original) and measures the time from just before the write to the end of
 // the rebuild: poll() is called every millisecond until it reports the reload. Prints min,
-// median, p95 and max in ms for each kind of file, and the first frame rendered after a reload.
+// median, p95 and max in ms for each kind of file, and the frames: one without a reload, the first
+// one after a reload, and the time from the write until that frame is read back.
 //
 //   rmfx_bench_reload [--iterations N] [--keep]
 //
@@ -119,7 +120,16 @@ int main(int argc, char** argv) {
         {"glsl/streak.frag (8 passes)", "glsl/streak.frag"},
         {"shader_5.xml (the workspace: everything)", "shader_5.xml"},
     };
-    std::vector<double> firstFrames;
+    // llvmpipe compiles a program's machine code at its first draw, not at link: the first frame
+    // after a reload pays for that. A frame without a reload, for comparison:
+    std::vector<double> steadyFrames;
+    for (int i = 0; i < 10; ++i) {
+        auto frameStart = Clock::now();
+        live->executor().renderFrame({});
+        live->executor().readTarget(live->workspace().outputTargetName());  // waits for the GPU
+        steadyFrames.push_back(std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count());
+    }
+    std::vector<double> firstFrames, visible;
     int failures = 0;
     for (const Edit& edit : edits) {
         fs::path file = root / "effects" / edit.file;
@@ -149,11 +159,15 @@ int main(int argc, char** argv) {
             live->executor().renderFrame({});
             live->executor().readTarget(live->workspace().outputTargetName());  // waits for the GPU
             firstFrames.push_back(std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count());
+            visible.push_back(std::chrono::duration<double, std::milli>(Clock::now() - written).count());
         }
         printRow(edit.label, latencies);
         printRow("  as lastReloadMilliseconds() reports it", reported);
     }
-    printRow("first frame after a reload (render + read back)", firstFrames);
+    std::printf("\n");
+    printRow("a frame without a reload (render + read back)", steadyFrames);
+    printRow("the first frame after a reload", firstFrames);
+    printRow("from the write to that frame read back", visible);
 
     if (!keep) fs::remove_all(root);
     else std::printf("\nkept %s\n", root.string().c_str());

@@ -199,7 +199,8 @@ void LiveWorkspace::reloadPendingModels() {
 }
 
 void LiveWorkspace::updateWatches() {
-    std::vector<std::filesystem::path> files{dependencyPath(file_)};
+    // The workspace file as named too: when it is a symbolic link, replacing the link is a change.
+    std::vector<std::filesystem::path> files{dependencyPath(file_), std::filesystem::absolute(file_).lexically_normal()};
     for (const auto* deps : {&dependencies_, &failedDependencies_})
         for (const FileDependency& d : deps->files)
             if (std::find(files.begin(), files.end(), d.file) == files.end()) files.push_back(d.file);

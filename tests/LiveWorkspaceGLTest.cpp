@@ -239,6 +239,31 @@ TEST_F(LiveWorkspaceGLTest, BrokenIncludeKeepsEveryPassThatIncludesIt) {
     EXPECT_EQ(pixel("tb"), glm::vec4(0.125f, 0.0f, 0.0f, 1.0f));
 }
 
+// One change, two passes: one compiles, the other does not. Neither is swapped in, and the
+// include's new text reaches both once the other is fixed, even though only b.frag changed then.
+TEST_F(LiveWorkspaceGLTest, PassesOfOneChangeAreSwappedInAllOrNothing) {
+    saveInPlace(dir_ / "b.frag", lines({"#version 450 core", "#include \"common.glsl\"", "out vec4 color;",
+                                        "float helper() { return 1.0; }",
+                                        "void main() { color = vec4(common_value() * 2.0, helper(), 0.0, 1.0); }"}));
+    ASSERT_TRUE(waitForReload());
+    ASSERT_EQ(live_->lastReload().recompiledPasses, Names{"b"});
+    auto before = programs();
+    // helper() is now defined twice in b (line 4 of b.frag, line 2 of common.glsl); a is fine.
+    saveInPlace(dir_ / "common.glsl", "float common_value() { return 0.125; }\nfloat helper() { return 2.0; }\n");
+    ASSERT_TRUE(waitForReload());
+    EXPECT_TRUE(live_->lastReload().failed);
+    EXPECT_TRUE(live_->lastReload().recompiledPasses.empty());
+    EXPECT_FALSE(live_->errors().empty());
+    EXPECT_EQ(programs(), before);
+    EXPECT_EQ(pixel("ta"), glm::vec4(0.25f, 0.5f, 0.0f, 1.0f));
+    saveInPlace(dir_ / "b.frag", bShader);
+    ASSERT_TRUE(waitForReload());
+    EXPECT_TRUE(live_->errors().empty()) << formatAll(live_->errors());
+    EXPECT_EQ(live_->lastReload().recompiledPasses, (Names{"a", "b"}));
+    EXPECT_EQ(pixel("ta"), glm::vec4(0.25f, 0.125f, 0.0f, 1.0f));
+    EXPECT_EQ(pixel("tb"), glm::vec4(0.25f, 0.0f, 0.0f, 1.0f));
+}
+
 TEST_F(LiveWorkspaceGLTest, ShaderThatIncludesAFileNotWrittenYetRecoversWhenItAppears) {
     saveInPlace(dir_ / "c.frag", lines({"#version 450 core", "#include \"later.glsl\"", "out vec4 color;",
                                         "void main() { color = vec4(later_value()); }"}));
@@ -288,6 +313,71 @@ TEST_F(LiveWorkspaceGLTest, WorkspaceReloadCopiesUnchangedTexturesAndReadsChange
     }
     EXPECT_TRUE(live_->errors().empty()) << formatAll(live_->errors());
     EXPECT_EQ(pixel("tc"), glm::vec4(2.0f, 3.0f, 5.0f, 7.0f));
+}
+
+class LiveModelGLTest : public GlTest {};
+
+// A model file rewritten on disk: its mesh is replaced, no program is recompiled. The pass draws
+// the model's triangle straight in clip space, so which pixels it covers shows which mesh is drawn.
+TEST_F(LiveModelGLTest, ReplacedModelReloadsItsMesh) {
+    ScratchDir dir;
+    const std::string wholeScreen = "v -1 -1 0\nv 3 -1 0\nv -1 3 0\nf 1 2 3\n";
+    const std::string lowerLeft = "v -1 -1 0\nv 0 -1 0\nv -1 0 0\nf 1 2 3\n";
+    dir.write("tri.obj", wholeScreen);
+    dir.write("ws.xml", lines({
+        R"(<workspace version="1" name="model" size="4x4">)",
+        R"(  <output format="rgba32f" transform="none"/>)",
+        R"(  <pass name="p"><clear color="0 0 0 0"/><draw file="tri.obj"/>)",
+        R"(    <shader stage="vertex"><![CDATA[)",
+        R"(layout(location = 0) in vec3 rm_Position;)",
+        R"(void main() { gl_Position = vec4(rm_Position.xy, 0.0, 1.0); })",
+        R"(]]></shader>)",
+        R"(    <shader stage="fragment"><![CDATA[)",
+        R"(out vec4 color;)",
+        R"(void main() { color = vec4(1.0); })",
+        R"(]]></shader></pass>)",
+        R"(</workspace>)",
+    }));
+    Diagnostics diagnostics;
+    auto live = LiveWorkspace::open(dir / "ws.xml", {0, 0}, {}, diagnostics);
+    ASSERT_TRUE(live) << formatAll(diagnostics);
+    auto render = [&] {
+        EXPECT_FALSE(hasErrors(live->executor().renderFrame({})));
+        return readBack(live->executor(), "output");
+    };
+    Image before = render();
+    ASSERT_FALSE(before.empty());
+    EXPECT_EQ(atGl(before, 0, 0, 0), 1.0f);
+    EXPECT_EQ(atGl(before, 3, 3, 0), 1.0f);
+    unsigned program = live->executor().passProgram("p");
+
+    saveAtomically(dir / "tri.obj", lowerLeft);
+    bool reloaded = false;
+    for (int i = 0; i < 1000 && !reloaded; ++i) {
+        reloaded = live->poll();
+        if (!reloaded) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    ASSERT_TRUE(reloaded);
+    EXPECT_TRUE(live->errors().empty()) << formatAll(live->errors());
+    EXPECT_EQ(live->lastReload().reloadedModels, Names{"tri.obj"});
+    EXPECT_TRUE(live->lastReload().recompiledPasses.empty());
+    EXPECT_EQ(live->executor().passProgram("p"), program);
+    Image after = render();
+    ASSERT_FALSE(after.empty());
+    EXPECT_EQ(atGl(after, 0, 0, 0), 1.0f);  // pixel centre (0.5, 0.5) of 4: inside the small triangle
+    EXPECT_EQ(atGl(after, 3, 3, 0), 0.0f);  // outside it
+    EXPECT_EQ(atGl(after, 3, 0, 0), 0.0f);
+
+    // A model file that cannot be read keeps the mesh drawn so far.
+    saveInPlace(dir / "tri.obj", "this is no model\n");
+    reloaded = false;
+    for (int i = 0; i < 1000 && !reloaded; ++i) {
+        reloaded = live->poll();
+        if (!reloaded) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    ASSERT_TRUE(reloaded);
+    EXPECT_FALSE(live->errors().empty());
+    EXPECT_EQ(atGl(render(), 0, 0, 0), 1.0f);
 }
 
 class TextureCopyGLTest : public GlTest {};
