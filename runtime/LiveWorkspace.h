@@ -52,6 +52,9 @@ public:
     LiveWorkspace(const LiveWorkspace&) = delete;
     LiveWorkspace& operator=(const LiveWorkspace&) = delete;
 
+    // errors(): what failed to rebuild and still runs from its last good build (the workspace
+    // file, the passes of a shader change, a texture, a model), with file and line; it empties
+    // as each is rebuilt from a good save, and once nothing failed it is empty.
     bool poll();                        // non-blocking: handles changes seen since the last call; true if something was rebuilt (or a rebuild failed)
     GlExecutor& executor();             // the last good build
     const Workspace& workspace() const; // the workspace of the last good build
