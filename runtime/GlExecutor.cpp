@@ -336,6 +336,7 @@ struct GlExecutor::Impl {
         bool ok = true;
         for (const Texture& t : ws.textures) {
             if (!sampled.count(t.name)) continue;
+            if (takeOverTexture(t)) continue;  // hot reload: a copy of the previous build's
             auto loaded = loadGlTexture(ws, t);
             if (!loaded) {
                 error(d, t.where, "", loaded.error());
@@ -614,6 +615,73 @@ struct GlExecutor::Impl {
         }
         glFrontFace(pass.raster.frontCounterClockwise ? GL_CCW : GL_CW);
     }
+
+    // Hot reload (recompilePasses, reloadTexture, reloadModel).
+    GpuPass* findPass(const std::string& name) const {
+        for (auto& p : passes)
+            if (p->pass->name == name) return p.get();
+        return nullptr;
+    }
+
+    void deleteSamplerObjects(const std::vector<SamplerSlot>& slots) {
+        for (const SamplerSlot& slot : slots) {
+            glDeleteSamplers(1, &slot.samplerObject);
+            std::erase(samplerObjects, slot.samplerObject);
+        }
+    }
+
+    // createReusing: the previous build, and the textures it may give, while create() runs.
+    static thread_local const Impl* textureDonor;
+    static thread_local const std::vector<std::string>* donatedTextures;
+
+    // A texture the donor holds with the same declaration (files, layout, colour space, mipmaps)
+    // is copied on the GPU instead of being read, decoded and converted again.
+    bool takeOverTexture(const Texture& t) {
+        if (!textureDonor || !donatedTextures ||
+            std::find(donatedTextures->begin(), donatedTextures->end(), t.name) == donatedTextures->end())
+            return false;
+        const Texture* old = textureDonor->ws.findTexture(t.name);
+        auto it = textureDonor->textures.find(t.name);
+        if (!old || it == textureDonor->textures.end() || old->kind != t.kind || old->layout != t.layout ||
+            old->colorSpace != t.colorSpace || old->mipmaps != t.mipmaps || old->faceSize != t.faceSize ||
+            old->files.size() != t.files.size())
+            return false;
+        for (size_t i = 0; i < t.files.size(); ++i)
+            if ((textureDonor->ws.folder / old->files[i]).lexically_normal() != (ws.folder / t.files[i]).lexically_normal())
+                return false;
+        GLuint copy = copyTexture(it->second);
+        if (!copy) return false;
+        textures[t.name] = copy;
+        return true;
+    }
+
+    static GLuint copyTexture(GLuint source) {
+        while (glGetError() != GL_NO_ERROR) {
+        }
+        GLint target = 0, levels = 0, width = 0, height = 0, internal = 0;
+        GLint swizzle[4] = {GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA};
+        glGetTextureParameteriv(source, GL_TEXTURE_TARGET, &target);
+        glGetTextureParameteriv(source, GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+        glGetTextureParameteriv(source, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+        glGetTextureLevelParameteriv(source, 0, GL_TEXTURE_WIDTH, &width);
+        glGetTextureLevelParameteriv(source, 0, GL_TEXTURE_HEIGHT, &height);
+        glGetTextureLevelParameteriv(source, 0, GL_TEXTURE_INTERNAL_FORMAT, &internal);
+        if ((target != GL_TEXTURE_2D && target != GL_TEXTURE_CUBE_MAP) || levels < 1 || width < 1 || height < 1)
+            return 0;
+        GLuint copy = 0;
+        glCreateTextures(static_cast<GLenum>(target), 1, &copy);
+        glTextureStorage2D(copy, levels, static_cast<GLenum>(internal), width, height);
+        glTextureParameteriv(copy, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+        for (GLint level = 0; level < levels; ++level)
+            glCopyImageSubData(source, static_cast<GLenum>(target), level, 0, 0, 0, copy, static_cast<GLenum>(target), level,
+                               0, 0, 0, std::max(1, width >> level), std::max(1, height >> level),
+                               target == GL_TEXTURE_CUBE_MAP ? 6 : 1);
+        if (glGetError() != GL_NO_ERROR) {
+            glDeleteTextures(1, &copy);
+            return 0;
+        }
+        return copy;
+    }
 };
 
 GlExecutor::GlExecutor(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -853,6 +921,140 @@ int GlExecutor::allocatedTextureCount() const {
     for (auto& r : impl_->resources)
         for (GLuint texture : r->textures) count += texture != 0 ? 1 : 0;
     return count;
+}
+
+// Hot reload: each change is built completely before anything of the running build is touched.
+
+Diagnostics GlExecutor::recompilePasses(const std::vector<std::string>& passNames) {
+    Diagnostics d;
+    Impl& s = *impl_;
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    std::vector<std::string> names;
+    for (const std::string& name : passNames)
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    size_t samplerObjectsBefore = s.samplerObjects.size();
+    std::vector<std::pair<GpuPass*, GpuPass>> rebuilt;
+    bool ok = true;
+    for (const std::string& name : names) {
+        GpuPass* old = s.findPass(name);
+        if (!old && s.ws.findPass(name)) continue;  // culled: nothing compiled to replace
+        if (!old) {
+            s.error(d, {s.ws.path.string(), 0}, "<pass name=\"" + name + "\">", "no enabled pass named '" + name + "' to recompile");
+            ok = false;
+            continue;
+        }
+        GpuPass fresh;
+        fresh.pass = old->pass;
+        fresh.index = old->index;
+        fresh.target = old->target;
+        fresh.mesh = old->mesh;
+        fresh.model = old->model;
+        fresh.program = s.compileProgram(*fresh.pass, d);
+        if (!fresh.program) {
+            ok = false;
+            continue;
+        }
+        ok = s.bindUniforms(fresh, d) && ok;
+        rebuilt.emplace_back(old, std::move(fresh));
+    }
+    if (!ok) {
+        for (auto& [old, fresh] : rebuilt) glDeleteProgram(fresh.program);
+        // bindUniforms appended the new passes' sampler objects.
+        glDeleteSamplers(static_cast<GLsizei>(s.samplerObjects.size() - samplerObjectsBefore),
+                         s.samplerObjects.data() + samplerObjectsBefore);
+        s.samplerObjects.resize(samplerObjectsBefore);
+        return d;
+    }
+    for (auto& [old, fresh] : rebuilt) {
+        glDeleteProgram(old->program);
+        s.deleteSamplerObjects(old->samplers);
+        *old = std::move(fresh);
+    }
+    return d;
+}
+
+Diagnostics GlExecutor::reloadTexture(const std::string& name) {
+    Diagnostics d;
+    Impl& s = *impl_;
+    const Texture* spec = s.ws.findTexture(name);
+    auto it = s.textures.find(name);
+    if (spec && it == s.textures.end()) return d;  // no pass that can run samples it: nothing loaded
+    if (!spec) {
+        s.error(d, {s.ws.path.string(), 0}, "", "no texture named '" + name + "' to reload");
+        return d;
+    }
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    auto loaded = loadGlTexture(s.ws, *spec);
+    if (!loaded) {
+        s.error(d, spec->where, "", loaded.error());
+        return d;
+    }
+    if (GLenum e = glGetError(); e != GL_NO_ERROR) {
+        glDeleteTextures(1, &loaded->name);
+        s.error(d, spec->where, "", describeGlError(e) + " while uploading texture '" + name + "'");
+        return d;
+    }
+    GLuint old = it->second;
+    it->second = loaded->name;
+    for (auto& p : s.passes)
+        for (SamplerSlot& slot : p->samplers)
+            if (!slot.target && slot.sampler->texture == name) slot.texture = loaded->name;
+    glDeleteTextures(1, &old);
+    return d;
+}
+
+Diagnostics GlExecutor::reloadModel(const std::string& file) {
+    Diagnostics d;
+    Impl& s = *impl_;
+    auto it = s.meshes.find("file:" + file);
+    const Pass* user = nullptr;
+    for (const auto& p : s.passes)
+        if (!p->pass->draw.mesh && p->pass->draw.file == file) user = p->pass;
+    if (it == s.meshes.end() || !user) {
+        s.error(d, {s.ws.path.string(), 0}, "<draw>", "no pass draws model file '" + file + "'");
+        return d;
+    }
+    auto loaded = loadModel(s.ws.folder / file);
+    if (!loaded) {
+        s.error(d, user->draw.where, "<draw>", loaded.error());
+        return d;
+    }
+    auto fresh = std::make_unique<GlMesh>(*loaded);
+    for (auto& p : s.passes)
+        if (p->mesh == it->second.get()) p->mesh = fresh.get();
+    it->second = std::move(fresh);
+    return d;
+}
+
+thread_local const GlExecutor::Impl* GlExecutor::Impl::textureDonor = nullptr;
+thread_local const std::vector<std::string>* GlExecutor::Impl::donatedTextures = nullptr;
+
+std::unique_ptr<GlExecutor> GlExecutor::createReusing(const Workspace& ws, glm::ivec2 viewport, Diagnostics& diagnostics,
+                                                      const GlExecutor& previous,
+                                                      const std::vector<std::string>& reusableTextures) {
+    struct Donation {
+        Donation(const Impl* impl, const std::vector<std::string>* names) {
+            Impl::textureDonor = impl;
+            Impl::donatedTextures = names;
+        }
+        ~Donation() {
+            Impl::textureDonor = nullptr;
+            Impl::donatedTextures = nullptr;
+        }
+    } donation(previous.impl_.get(), &reusableTextures);
+    return create(ws, viewport, diagnostics, previous.impl_->options);
+}
+
+unsigned GlExecutor::passProgram(const std::string& pass) const {
+    const GpuPass* p = impl_->findPass(pass);
+    return p ? p->program : 0;
+}
+
+unsigned GlExecutor::textureObject(const std::string& name) const {
+    auto it = impl_->textures.find(name);
+    return it == impl_->textures.end() ? 0 : it->second;
 }
 
 }  // namespace rmfx

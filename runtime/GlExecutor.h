@@ -98,6 +98,26 @@ public:
     const std::vector<std::string>& passesRun() const;
     // GL textures holding target memory now (for tests: culled targets hold none, shared ones one).
     int allocatedTextureCount() const;
+    // Hot reload (LiveWorkspace). Each is all or nothing: on any error the executor is left
+    // exactly as it was, and the diagnostics say why.
+    // Compiles and links the named passes' programs anew from their files; only when every one
+    // succeeds are they swapped in (uniforms and samplers bound anew) and the old ones deleted.
+    Diagnostics recompilePasses(const std::vector<std::string>& passNames);
+    // Reads a texture's image files again and replaces its GL texture.
+    Diagnostics reloadTexture(const std::string& name);
+    // Reads a model file again (as a pass's <draw file="…"> names it) and replaces its mesh.
+    Diagnostics reloadModel(const std::string& file);
+    // The GL program of an enabled pass (0 for none): a different one once the pass is recompiled.
+    unsigned passProgram(const std::string& pass) const;
+    // The GL texture object of a workspace texture (0 for none): a different one once reloaded.
+    unsigned textureObject(const std::string& name) const;
+    // create() for a reload of the workspace file: the textures named in `reusableTextures` that
+    // `previous` holds with the same declaration and files are copied from it on the GPU instead
+    // of being read and decoded again (the caller knows their files did not change). `previous`
+    // is not modified.
+    static std::unique_ptr<GlExecutor> createReusing(const Workspace& ws, glm::ivec2 viewport, Diagnostics& diagnostics,
+                                                     const GlExecutor& previous,
+                                                     const std::vector<std::string>& reusableTextures);
 
     struct Impl;
 
