@@ -46,6 +46,7 @@ struct UniformSlot {
     UniformType type = UniformType::Other;
     UniformSource source;
     std::string effectSwitch;  // rmfx_effect_<name>: whether that effect runs this frame
+    const Value* value = nullptr;  // a pass constant's, or the variable's current value
 };
 
 struct SamplerSlot {
@@ -90,6 +91,21 @@ std::string describeFramebufferStatus(GLenum status) {
         default: return "status 0x" + std::to_string(status);
     }
 }
+
+// The camera's matrices, computed once per frame for every pass that uploads them.
+struct FrameCamera {
+    glm::mat4 view, projection, viewProjection, inverseView, inverseProjection, inverseViewProjection;
+    glm::vec3 position;
+
+    FrameCamera(const OrbitCamera& camera, glm::ivec2 viewport)
+        : view(camera.view()),
+          projection(camera.projection(static_cast<float>(viewport.x) / static_cast<float>(viewport.y))),
+          viewProjection(projection * view),
+          inverseView(glm::inverse(view)),
+          inverseProjection(glm::inverse(projection)),
+          inverseViewProjection(glm::inverse(viewProjection)),
+          position(camera.position()) {}
+};
 
 glm::mat4 modelMatrix(const DrawCall& draw) {
     glm::mat4 m = glm::translate(glm::mat4(1.0f), draw.translate);
@@ -467,7 +483,10 @@ struct GlExecutor::Impl {
                 gp.samplers.push_back(slot);
                 continue;
             }
-            gp.uniforms.push_back({values[1], name, type, source, {}});
+            UniformSlot slot{values[1], name, type, source, {}};
+            if (const auto* c = std::get_if<BoundConstant>(&source)) slot.value = &c->constant->value;
+            else if (const auto* v = std::get_if<BoundVariable>(&source)) slot.value = &this->values.at(v->variable->name);
+            gp.uniforms.push_back(std::move(slot));
         }
         return ok;
     }
@@ -490,25 +509,14 @@ struct GlExecutor::Impl {
         return head + ", which no scheduled pass writes";
     }
 
-    void upload(const GpuPass& gp, const FrameClock& clock, int frame, const OrbitCamera& camera, glm::ivec2 viewport) {
-        glm::mat4 view = camera.view();
-        glm::mat4 projection = camera.projection(static_cast<float>(viewport.x) / static_cast<float>(viewport.y));
-        glm::mat4 viewProjection = projection * view;
+    void upload(const GpuPass& gp, const FrameClock& clock, int frame, const FrameCamera& camera, glm::ivec2 viewport) {
         for (const UniformSlot& u : gp.uniforms) {
             if (!u.effectSwitch.empty()) {
                 glProgramUniform1i(gp.program, u.location, switchedOff.count(u.effectSwitch) ? 0 : 1);
                 continue;
             }
-            const float* data = nullptr;
-            Value value;
-            if (const auto* c = std::get_if<BoundConstant>(&u.source)) {
-                value = c->constant->value;
-                data = value.data.data();
-            } else if (const auto* v = std::get_if<BoundVariable>(&u.source)) {
-                value = values.at(v->variable->name);
-                data = value.data.data();
-            }
-            if (data) {
+            if (u.value) {
+                const float* data = u.value->data.data();
                 switch (u.type) {
                     case UniformType::Float: glProgramUniform1f(gp.program, u.location, data[0]); break;
                     case UniformType::Int:
@@ -533,21 +541,21 @@ struct GlExecutor::Impl {
                 case Predefined::Time: glProgramUniform1f(gp.program, u.location, clock.time); break;
                 case Predefined::DeltaTime: glProgramUniform1f(gp.program, u.location, clock.deltaTime); break;
                 case Predefined::Frame: glProgramUniform1i(gp.program, u.location, frame); break;
-                case Predefined::View: mat4(view); break;
-                case Predefined::Projection: mat4(projection); break;
-                case Predefined::ViewProjection: mat4(viewProjection); break;
-                case Predefined::InvView: mat4(glm::inverse(view)); break;
-                case Predefined::InvProjection: mat4(glm::inverse(projection)); break;
-                case Predefined::InvViewProjection: mat4(glm::inverse(viewProjection)); break;
+                case Predefined::View: mat4(camera.view); break;
+                case Predefined::Projection: mat4(camera.projection); break;
+                case Predefined::ViewProjection: mat4(camera.viewProjection); break;
+                case Predefined::InvView: mat4(camera.inverseView); break;
+                case Predefined::InvProjection: mat4(camera.inverseProjection); break;
+                case Predefined::InvViewProjection: mat4(camera.inverseViewProjection); break;
                 case Predefined::Model: mat4(gp.model); break;
-                case Predefined::ModelViewProjection: mat4(viewProjection * gp.model); break;
+                case Predefined::ModelViewProjection: mat4(camera.viewProjection * gp.model); break;
                 case Predefined::NormalMatrix: {
                     glm::mat3 n = glm::inverseTranspose(glm::mat3(gp.model));
                     glProgramUniformMatrix3fv(gp.program, u.location, 1, GL_FALSE, glm::value_ptr(n));
                     break;
                 }
                 case Predefined::CameraPosition: {
-                    glm::vec3 c = camera.position();
+                    const glm::vec3& c = camera.position;
                     glProgramUniform3f(gp.program, u.location, c.x, c.y, c.z);
                     break;
                 }
@@ -744,6 +752,7 @@ Diagnostics GlExecutor::renderFrame(const FrameClock& clock) {
     for (auto& t : s.targets) t->writtenThisFrame = false;
     TimerFrame* timer = s.beginTimedFrame(s.schedule.size());
     s.lastFramePasses.clear();
+    const FrameCamera camera(camera_, viewport_);
     for (const GpuPass* scheduled : s.schedule) {
         const GpuPass& gp = *scheduled;
         const Pass& pass = *gp.pass;
@@ -760,7 +769,7 @@ Diagnostics GlExecutor::renderFrame(const FrameClock& clock) {
             glDepthMask(pass.depth.write ? GL_TRUE : GL_FALSE);
         }
         glUseProgram(gp.program);
-        s.upload(gp, clock, frame_, camera_, viewport_);
+        s.upload(gp, clock, frame_, camera, viewport_);
         for (const SamplerSlot& slot : gp.samplers) {
             GLuint texture = slot.texture;
             if (slot.target) {
