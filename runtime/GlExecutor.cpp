@@ -135,6 +135,7 @@ struct GlExecutor::Impl {
     // The graph of every combination of effect switches, built once: switching costs a lookup.
     std::map<std::set<std::string>, PassGraph> graphs;
     std::set<std::string> switchedOff;
+    bool variablesChanged = true;       // since selectGraph last read the switches
     const PassGraph* graph = nullptr;   // of the current switches
     std::vector<GpuPass*> schedule;     // the passes the current graph runs
     std::vector<std::string> lastFramePasses;
@@ -237,6 +238,8 @@ struct GlExecutor::Impl {
 
     // Follows the effect switches: the schedule of the graph of the current combination.
     void selectGraph() {
+        if (graph && !variablesChanged) return;
+        variablesChanged = false;
         std::set<std::string> off = rmfx::switchedOffEffects(ws, askedEffects, values);
         if (graph && off == switchedOff) return;
         auto it = graphs.find(off);
@@ -826,6 +829,7 @@ std::string GlExecutor::setVariable(const std::string& name, const Value& value)
         formats = formats || *selectTargetFormat(t, &value) != *selectTargetFormat(t, &it->second);
     }
     it->second = value;
+    s.variablesChanged = true;
     // A new format changes which targets can share memory: the plan and its memory start over
     // (every target back to its initial value). Effect switches take effect at the next frame.
     if (formats) {
