@@ -294,10 +294,10 @@ namespace {
 TEST(ReplayManifest, EffectsOfACaseAreAList) {
     ReplayManifest m = parsedOk(manifest({
         "  <case name=\"some\" workspace=\"a.xml\" effects=\"glare, streak ghost\">",
-        kCompare,
+        "    <compare reference=\"refs/some.exr\"/>",
         "  </case>",
         "  <case name=\"none\" workspace=\"a.xml\" effects=\"\">",
-        kCompare,
+        "    <compare reference=\"refs/none.exr\"/>",
         "  </case>",
         "  <case name=\"default\" workspace=\"a.xml\">",
         kCompare,
