@@ -205,6 +205,31 @@ TEST_F(PassCullingGLTest, SharingMemoryChangesNoPixel) {
     expectSameBits(readBack(*a.exec, "output"), readBack(*b.exec, "output"), "hdr_lighting pooled vs not");
 }
 
+// HDRLighting: with bloom and star both off nothing reads the bright pass or the star source
+// either, so they are culled with them; the frame is that of the workspace asked for no effect.
+TEST_F(PassCullingGLTest, HdrLightingWithoutBloomAndStarSkipsTheirSharedSourcesToo) {
+    RunSettings frames{{kSize, kSize}, 3, 0.1f};
+    GlRun live = runWorkspace(effectWorkspace("hdr_lighting.xml"), frames, outputOnly());
+    GlRun none = runWorkspace(effectWorkspace("hdr_lighting.xml"), frames, outputOnly(Names{}));
+    ASSERT_TRUE(live.exec && none.exec);
+    Names noEffects = none.exec->passesRun();
+    for (const char* culled : {"bright_pass", "star_source", "bloom_source", "star0_0", "star_merge"})
+        EXPECT_EQ(std::count(noEffects.begin(), noEffects.end(), culled), 0) << culled;
+    for (const char* kept : {"teapot", "luminance1", "adaptation", "final"})
+        EXPECT_EQ(std::count(noEffects.begin(), noEffects.end(), kept), 1) << kept;
+
+    ASSERT_EQ(live.exec->setVariable("Bloom_Scale", Value::ofFloat(0.0f)), "");
+    ASSERT_EQ(live.exec->setVariable("Star_Scale", Value::ofFloat(0.0f)), "");
+    // The frames before the switch left the same adaptation state in both: 3 frames each.
+    for (int i = 3; i < 5; ++i) {
+        ASSERT_TRUE(live.exec->renderFrame({0.1f * i, 0.1f}).empty());
+        ASSERT_TRUE(none.exec->renderFrame({0.1f * i, 0.1f}).empty());
+    }
+    EXPECT_EQ(live.exec->passesRun(), noEffects);
+    expectSameBits(readBack(*live.exec, "output"), readBack(*none.exec, "output"), "bloom and star switched off");
+    EXPECT_EQ(primitivesOfFrame(*live.exec), primitivesOfFrame(*none.exec));
+}
+
 TEST_F(PassCullingGLTest, ReadingATargetWhoseMemoryWasReusedSaysSo) {
     GlRun run = shader5(outputOnly(Names{"glare"}));
     ASSERT_TRUE(run.exec);
