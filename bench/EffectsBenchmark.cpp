@@ -330,7 +330,11 @@ std::string markdownSummary(const std::map<std::string, Summary>& runs, const st
         };
         out << "### Interpreter (GlExecutor::renderFrame) against a hand-written GL loop, shader_5 with all "
             << fixed(s->counters.at("passes"), 0) << " passes\n\n"
-            << "Medians over the frames of each repetition (frames interleaved), then the median over repetitions.\n\n"
+            << "Each repetition interleaves the two frame by frame and takes the median of each over its frames; "
+               "its overhead is (interpreter - hand) / hand of those medians. The table gives the median over the "
+               "repetitions of each column, so the overhead need not be the ratio of the two medians beside it "
+               "(they may come from different repetitions); min … max is the spread of the per-repetition "
+               "overheads.\n\n"
             << "| per frame | interpreter ms | hand loop ms | overhead | overhead min … max |\n"
             << "|---|---:|---:|---:|---:|\n";
         row("CPU time to issue (wall clock, no glFinish)", "interp_issue_ms", "hand_issue_ms", "issue_overhead_pct");
