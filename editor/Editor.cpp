@@ -1,0 +1,213 @@
+#include "editor/Editor.h"
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+
+#include <epoxy/gl.h>
+#include <imgui.h>
+
+#include "editor/CameraControl.h"
+#include "editor/EditorWindow.h"
+#include "editor/EffectSession.h"
+#include "editor/ErrorPanel.h"
+#include "editor/TargetBrowser.h"
+#include "editor/TextureBlit.h"
+#include "editor/TimingPanel.h"
+#include "editor/VariablesPanel.h"
+#include "runtime/ImageIO.h"
+#include "runtime/WorkspaceLoader.h"
+
+namespace rmfx::editor {
+namespace {
+
+constexpr float fixedStep = 1.0f / 60.0f;  // the frame step of --frames runs, as rmfx render's default
+
+class Editor {
+public:
+    Editor(EditorWindow& window, EffectSession& session, TextureBlit& blit)
+        : window_(window), session_(session), blit_(blit), camera_(session.workspace().camera) {}
+
+    // One frame: input, reload, the effect's frame, the panel, presentation (not the swap).
+    void frame(const FrameClock& clock) {
+        window_.beginFrame();
+        if (session_.poll()) timing_.clear();
+        handleMouse();
+        GlExecutor& executor = session_.executor();
+        executor.setTimingEnabled(true);
+        executor.camera() = camera_;
+        frameErrors_ = executor.renderFrame(clock);
+        timing_.record(executor);
+        targets_.setOutput(session_.workspace().outputTargetName(), session_.workspace().output.transform);
+        targets_.updateThumbnails(executor, blit_);
+        drawPanel(clock);
+        const glm::vec2 scale = window_.framebufferScale();
+        glm::vec2 effectBottom = glm::vec2(0.0f, static_cast<float>(executor.viewport().y)) / scale;
+        targets_.drawViewers(executor, {8.0f, effectBottom.y + 8.0f});
+        ImGui::Render();
+        present();
+        window_.renderImGui();
+    }
+
+    Result<bool> writeOutput(const std::filesystem::path& file) {
+        const Workspace& ws = session_.workspace();
+        Result<Image> image = session_.executor().readTarget(ws.outputTargetName());
+        if (!image) return Error{image.error()};
+        return writeImage(file, *image, ws.output.transform);
+    }
+
+private:
+    // The effect's rectangle in ImGui's (window) coordinates: the top-left corner.
+    glm::vec2 effectExtent() const { return glm::vec2(session_.executor().viewport()) / window_.framebufferScale(); }
+
+    void handleMouse() {
+        const ImGuiIO& io = ImGui::GetIO();
+        const glm::vec2 extent = effectExtent();
+        const bool over = !io.WantCaptureMouse && io.MousePos.x >= 0.0f && io.MousePos.y >= 0.0f &&
+                          io.MousePos.x < extent.x && io.MousePos.y < extent.y;
+        // A drag that starts over the effect keeps going when the cursor leaves it.
+        for (int b = 0; b < 3; ++b) {
+            if (ImGui::IsMouseClicked(b)) dragging_[b] = over;
+            if (!ImGui::IsMouseDown(b)) dragging_[b] = false;
+        }
+        const glm::vec2 delta(io.MouseDelta.x, io.MouseDelta.y);
+        const glm::vec2 scale = window_.framebufferScale();
+        if (dragging_[ImGuiMouseButton_Left]) orbitByDrag(camera_, delta);
+        if (dragging_[ImGuiMouseButton_Right] || dragging_[ImGuiMouseButton_Middle])
+            panByDrag(camera_, delta * scale, session_.executor().viewport().y);
+        if (over && io.MouseWheel != 0.0f) zoomByWheel(camera_, io.MouseWheel);
+    }
+
+    void drawPanel(const FrameClock& clock) {
+        const glm::vec2 scale = window_.framebufferScale();
+        const glm::vec2 windowSize = glm::vec2(window_.framebufferSize()) / scale;
+        const float left = effectExtent().x;
+        ImGui::SetNextWindowPos(ImVec2(left, 0.0f));
+        ImGui::SetNextWindowSize(ImVec2(std::max(windowSize.x - left, 200.0f), windowSize.y));
+        const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                       ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings;
+        const Workspace& ws = session_.workspace();
+        const std::string title = "rmfx edit: " + ws.path.filename().string() + "###panel";
+        ImGui::Begin(title.c_str(), nullptr, flags);
+        GlExecutor& executor = session_.executor();
+        ImGui::TextWrapped("%s", ws.description.empty() ? ws.name.c_str() : ws.description.c_str());
+        ImGui::TextDisabled("%dx%d, frame %d, t %.2f s, %.0f fps", executor.viewport().x, executor.viewport().y,
+                            executor.frameIndex(), clock.time, ImGui::GetIO().Framerate);
+        ImGui::TextDisabled("%s", window_.description().c_str());
+        drawErrorPanel(session_.errors(), frameErrors_);
+        if (ImGui::CollapsingHeader("Variables", ImGuiTreeNodeFlags_DefaultOpen)) variables_.draw(session_);
+        if (ImGui::CollapsingHeader("Camera")) drawCamera();
+        if (ImGui::CollapsingHeader("Render targets", ImGuiTreeNodeFlags_DefaultOpen)) targets_.draw(executor);
+        if (ImGui::CollapsingHeader("Timing", ImGuiTreeNodeFlags_DefaultOpen)) timing_.draw();
+        ImGui::End();
+    }
+
+    void drawCamera() {
+        const OrbitCameraSettings& s = camera_.settings();
+        ImGui::Text("target %.2f %.2f %.2f, distance %.2f", s.target.x, s.target.y, s.target.z, s.distance);
+        ImGui::Text("yaw %.1f, pitch %.1f, fov %.0f", s.yawDegrees, s.pitchDegrees, s.fovYDegrees);
+        ImGui::TextDisabled("over the effect: left drag orbits, right or middle drag pans, the wheel zooms");
+        if (ImGui::Button("Reset camera")) camera_.reset(session_.workspace().camera);
+    }
+
+    // The effect's output, texel for pixel, at the framebuffer's top-left corner.
+    void present() {
+        const glm::ivec2 fb = window_.framebufferSize();
+        GlExecutor& executor = session_.executor();
+        const glm::ivec2 size = executor.viewport();
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, fb.x, fb.y);
+        glDisable(GL_SCISSOR_TEST);
+        glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        const Workspace& ws = session_.workspace();
+        if (unsigned texture = executor.targetTexture(ws.outputTargetName())) {
+            const glm::ivec2 origin(0, fb.y - size.y);
+            glViewport(origin.x, origin.y, size.x, size.y);
+            blit_.drawExact(texture, origin, ws.output.transform);
+            glViewport(0, 0, fb.x, fb.y);
+        }
+    }
+
+    EditorWindow& window_;
+    EffectSession& session_;
+    TextureBlit& blit_;
+    OrbitCamera camera_;
+    bool dragging_[3] = {false, false, false};
+    Diagnostics frameErrors_;
+    VariablesPanel variables_;
+    TargetBrowser targets_;
+    TimingPanel timing_;
+};
+
+}  // namespace
+
+int runEditor(const EditorOptions& options) {
+    // Checked before any window opens: a broken workspace is reported like rmfx render reports it,
+    // and its size sets the window's.
+    LoadedWorkspace loaded = loadWorkspace(options.workspace);
+    Workspace* checked = loaded.workspace ? &*loaded.workspace : nullptr;
+    if (checked) {
+        Diagnostics bad = applyOverrides(*checked, options.overrides);
+        loaded.diagnostics.insert(loaded.diagnostics.end(), bad.begin(), bad.end());
+        if (hasErrors(bad)) checked = nullptr;
+    }
+    std::cerr << formatAll(loaded.diagnostics);
+    if (!checked) return 1;
+    const glm::ivec2 effect = options.size.x > 0 ? options.size : glm::ivec2(checked->width, checked->height);
+
+    auto window = EditorWindow::create("rmfx edit: " + options.workspace.filename().string());
+    if (!window) {
+        std::cerr << "rmfx edit: " << window.error() << "\n";
+        return 2;
+    }
+    Diagnostics diagnostics;
+    auto session = EffectSession::open(options.workspace, effect, options.overrides, diagnostics);
+    if (!session) {
+        std::cerr << formatAll(diagnostics);
+        return 2;
+    }
+    auto blit = TextureBlit::create();
+    if (!blit) {
+        std::cerr << "rmfx edit: " << blit.error() << "\n";
+        return 2;
+    }
+    (*window)->show({effect.x + panelWidth, std::max(effect.y, minimumWindowHeight)});
+    (*window)->setVsync(!options.frames);
+
+    Editor editor(**window, *session, **blit);
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point start = Clock::now();
+    Clock::time_point previous = start;
+    for (int i = 0; !(*window)->shouldClose(); ++i) {
+        FrameClock clock;
+        if (options.frames) {
+            clock = {static_cast<float>(i) * fixedStep, fixedStep};
+        } else {
+            Clock::time_point now = Clock::now();
+            clock = {std::chrono::duration<float>(now - start).count(), std::chrono::duration<float>(now - previous).count()};
+            previous = now;
+        }
+        editor.frame(clock);
+        if (options.frames && i + 1 >= *options.frames) {
+            int status = 0;
+            if (options.screenshot) {
+                if (auto written = writeImage(*options.screenshot, (*window)->readFramebuffer()); !written) {
+                    std::cerr << "rmfx edit: " << written.error() << "\n";
+                    status = 2;
+                }
+            }
+            if (options.outputScreenshot) {
+                if (auto written = editor.writeOutput(*options.outputScreenshot); !written) {
+                    std::cerr << "rmfx edit: " << written.error() << "\n";
+                    status = 2;
+                }
+            }
+            return status;
+        }
+        (*window)->swapBuffers();
+    }
+    return 0;
+}
+
+}  // namespace rmfx::editor
