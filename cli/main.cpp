@@ -48,7 +48,10 @@ edit options:
   --size WxH             viewport size (default: the workspace's size); the effect is shown 1:1
                          at the window's top-left corner
   --set NAME=VALUE       override a variable's starting value (repeatable), as for render
-  --frames N             render N frames at a fixed 1/60 s step, write the screenshots, exit
+  --view TARGET          open the viewer of a render target from the start (repeatable)
+  --frames N             render N frames at a fixed step, write the screenshots, exit
+                         (the mouse is ignored meanwhile)
+  --dt SECONDS           the step of --frames runs (default 1/60)
   --screenshot FILE      with --frames: write the whole window to FILE (PNG)
   --output-screenshot FILE
                          with --frames: write the effect's output to FILE, as render would

@@ -21,16 +21,14 @@
 namespace rmfx::editor {
 namespace {
 
-constexpr float fixedStep = 1.0f / 60.0f;  // the frame step of --frames runs, as rmfx render's default
-
 class Editor {
 public:
     Editor(EditorWindow& window, EffectSession& session, TextureBlit& blit)
         : window_(window), session_(session), blit_(blit), camera_(session.workspace().camera) {}
 
     // One frame: input, reload, the effect's frame, the panel, presentation (not the swap).
-    void frame(const FrameClock& clock) {
-        window_.beginFrame();
+    void frame(const FrameClock& clock, bool userInput) {
+        window_.beginFrame(userInput);
         if (session_.poll()) timing_.clear();
         handleMouse();
         GlExecutor& executor = session_.executor();
@@ -41,13 +39,13 @@ public:
         targets_.setOutput(session_.workspace().outputTargetName(), session_.workspace().output.transform);
         targets_.updateThumbnails(executor, blit_);
         drawPanel(clock);
-        const glm::vec2 scale = window_.framebufferScale();
-        glm::vec2 effectBottom = glm::vec2(0.0f, static_cast<float>(executor.viewport().y)) / scale;
-        targets_.drawViewers(executor, {8.0f, effectBottom.y + 8.0f});
+        drawViewers();
         ImGui::Render();
         present();
         window_.renderImGui();
     }
+
+    void view(const std::string& target) { targets_.open(target); }
 
     Result<bool> writeOutput(const std::filesystem::path& file) {
         const Workspace& ws = session_.workspace();
@@ -102,11 +100,25 @@ private:
         ImGui::End();
     }
 
+    // Viewers open below the effect when there is room, else over it; never over the panel.
+    void drawViewers() {
+        const glm::vec2 effect = effectExtent();
+        const glm::vec2 window = glm::vec2(window_.framebufferSize()) / window_.framebufferScale();
+        const float width = std::max(effect.x - 16.0f, 320.0f);
+        const float below = window.y - effect.y - 16.0f;
+        if (below >= 260.0f)
+            targets_.drawViewers(session_.executor(), {8.0f, effect.y + 8.0f}, {width, below});
+        else
+            targets_.drawViewers(session_.executor(), {8.0f, 8.0f}, {width, std::min(480.0f, window.y - 16.0f)});
+    }
+
     void drawCamera() {
         const OrbitCameraSettings& s = camera_.settings();
         ImGui::Text("target %.2f %.2f %.2f, distance %.2f", s.target.x, s.target.y, s.target.z, s.distance);
         ImGui::Text("yaw %.1f, pitch %.1f, fov %.0f", s.yawDegrees, s.pitchDegrees, s.fovYDegrees);
-        ImGui::TextDisabled("over the effect: left drag orbits, right or middle drag pans, the wheel zooms");
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+        ImGui::TextWrapped("over the effect: left drag orbits, right or middle drag pans, the wheel zooms");
+        ImGui::PopStyleColor();
         if (ImGui::Button("Reset camera")) camera_.reset(session_.workspace().camera);
     }
 
@@ -154,6 +166,12 @@ int runEditor(const EditorOptions& options) {
     }
     std::cerr << formatAll(loaded.diagnostics);
     if (!checked) return 1;
+    for (const std::string& target : options.viewTargets)
+        if (!checked->canReadTarget(target)) {
+            std::cerr << "rmfx edit: --view " << target << ": the workspace has no such target (" << checked->describeTargets()
+                      << ")\n";
+            return 1;
+        }
     const glm::ivec2 effect = options.size.x > 0 ? options.size : glm::ivec2(checked->width, checked->height);
 
     auto window = EditorWindow::create("rmfx edit: " + options.workspace.filename().string());
@@ -176,19 +194,20 @@ int runEditor(const EditorOptions& options) {
     (*window)->setVsync(!options.frames);
 
     Editor editor(**window, *session, **blit);
+    for (const std::string& target : options.viewTargets) editor.view(target);
     using Clock = std::chrono::steady_clock;
     const Clock::time_point start = Clock::now();
     Clock::time_point previous = start;
     for (int i = 0; !(*window)->shouldClose(); ++i) {
         FrameClock clock;
         if (options.frames) {
-            clock = {static_cast<float>(i) * fixedStep, fixedStep};
+            clock = {static_cast<float>(i) * options.deltaTime, options.deltaTime};
         } else {
             Clock::time_point now = Clock::now();
             clock = {std::chrono::duration<float>(now - start).count(), std::chrono::duration<float>(now - previous).count()};
             previous = now;
         }
-        editor.frame(clock);
+        editor.frame(clock, !options.frames);
         if (options.frames && i + 1 >= *options.frames) {
             int status = 0;
             if (options.screenshot) {

@@ -1,5 +1,6 @@
 #include "editor/EditorOptions.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -7,14 +8,15 @@ namespace rmfx::editor {
 
 std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& args, std::string* error) {
     EditorOptions o;
-    bool haveWorkspace = false;
+    bool haveWorkspace = false, dtGiven = false;
     auto fail = [&](const std::string& message) -> std::optional<EditorOptions> {
         *error = message;
         return std::nullopt;
     };
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];
-        if (arg == "--size" || arg == "--set" || arg == "--frames" || arg == "--screenshot" || arg == "--output-screenshot") {
+        if (arg == "--size" || arg == "--set" || arg == "--frames" || arg == "--screenshot" || arg == "--output-screenshot" ||
+            arg == "--view" || arg == "--dt") {
             if (i + 1 >= args.size()) return fail(arg + " needs a value");
             const std::string& value = args[++i];
             if (arg == "--size") {
@@ -34,6 +36,15 @@ std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& 
                 if (value.empty() || *end || n < 1 || n > 1000000)
                     return fail("--frames: expected a count from 1 to 1000000, got '" + value + "'");
                 o.frames = static_cast<int>(n);
+            } else if (arg == "--dt") {
+                char* end = nullptr;
+                double dt = std::strtod(value.c_str(), &end);
+                if (value.empty() || *end || !std::isfinite(dt) || dt < 0)
+                    return fail("--dt: expected seconds >= 0, got '" + value + "'");
+                o.deltaTime = static_cast<float>(dt);
+                dtGiven = true;
+            } else if (arg == "--view") {
+                o.viewTargets.push_back(value);
             } else if (arg == "--screenshot") {
                 o.screenshot = value;
             } else {
@@ -51,6 +62,7 @@ std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& 
     if (!haveWorkspace) return fail("which workspace? usage: rmfx edit WORKSPACE [options]");
     if ((o.screenshot || o.outputScreenshot) && !o.frames)
         return fail("--screenshot and --output-screenshot need --frames N (the frames to render first)");
+    if (dtGiven && !o.frames) return fail("--dt sets the step of --frames runs; interactive runs follow the clock");
     return o;
 }
 

@@ -15,8 +15,10 @@ struct EditorOptions {
     std::filesystem::path workspace;
     glm::ivec2 size{0};  // 0: the workspace's size
     std::vector<std::pair<std::string, std::string>> overrides;  // --set NAME=VALUE, as rmfx render
-    // --frames N: render N frames at a fixed 1/60 s step, write the screenshots asked for, exit.
+    std::vector<std::string> viewTargets;  // --view TARGET: viewer windows open from the start
+    // --frames N: render N frames at a fixed step (--dt), write the screenshots asked for, exit.
     std::optional<int> frames;
+    float deltaTime = 1.0f / 60.0f;  // --dt: the step of those frames
     std::optional<std::filesystem::path> screenshot;        // the whole window, PNG
     std::optional<std::filesystem::path> outputScreenshot;  // the effect's output, as rmfx render writes it
 };

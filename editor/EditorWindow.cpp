@@ -1,5 +1,7 @@
 #include "editor/EditorWindow.h"
 
+#include <cfloat>
+
 #include <epoxy/gl.h>
 // After epoxy: GLFW must not include the system GL header.
 #define GLFW_INCLUDE_NONE
@@ -69,10 +71,16 @@ void EditorWindow::setVsync(bool on) { glfwSwapInterval(on ? 1 : 0); }
 
 bool EditorWindow::shouldClose() const { return glfwWindowShouldClose(window_); }
 
-void EditorWindow::beginFrame() {
+void EditorWindow::beginFrame(bool userInput) {
     glfwPollEvents();
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    if (!userInput) {
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+        for (bool& down : io.MouseDown) down = false;
+        io.MouseWheel = io.MouseWheelH = 0.0f;
+    }
     ImGui::NewFrame();
 }
 

@@ -27,8 +27,9 @@ public:
     void setVsync(bool on);
     bool shouldClose() const;
 
-    // Polls events and starts an ImGui frame.
-    void beginFrame();
+    // Polls events and starts an ImGui frame. Without user input (scripted --frames runs) ImGui
+    // sees no mouse, so where the pointer happens to be changes nothing.
+    void beginFrame(bool userInput = true);
     // Draws ImGui's frame into the back buffer (over whatever was drawn there).
     void renderImGui();
     void swapBuffers();

@@ -12,7 +12,7 @@ namespace {
 
 glm::ivec2 thumbnailExtent(glm::ivec2 size) {
     const float longer = static_cast<float>(std::max(size.x, size.y));
-    const float scale = std::min(1.0f, static_cast<float>(thumbnailSize) / std::max(longer, 1.0f));
+    const float scale = static_cast<float>(thumbnailSize) / std::max(longer, 1.0f);  // small targets grow
     return glm::max(glm::ivec2(glm::vec2(size) * scale + 0.5f), glm::ivec2(1));
 }
 
@@ -81,14 +81,14 @@ void TargetBrowser::open(const std::string& target) {
     viewers_.push_back(std::make_unique<TargetViewer>(target, transformOf(target)));
 }
 
-void TargetBrowser::drawViewers(const GlExecutor& executor, glm::vec2 firstPosition) {
+void TargetBrowser::drawViewers(const GlExecutor& executor, glm::vec2 firstPosition, glm::vec2 firstSize) {
     std::vector<std::string> names = executor.targetNames();
     for (size_t i = 0; i < viewers_.size();) {
         TargetViewer& v = *viewers_[i];
         bool exists = std::find(names.begin(), names.end(), v.target()) != names.end();
         if (exists && v.target() == focus_) ImGui::SetNextWindowFocus();
         glm::vec2 position = firstPosition + glm::vec2(24.0f) * static_cast<float>(i);
-        if (!exists || !v.draw(executor, position)) viewers_.erase(viewers_.begin() + static_cast<long>(i));
+        if (!exists || !v.draw(executor, position, firstSize)) viewers_.erase(viewers_.begin() + static_cast<long>(i));
         else ++i;
     }
     focus_.clear();

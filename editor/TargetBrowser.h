@@ -15,7 +15,7 @@
 
 namespace rmfx::editor {
 
-inline constexpr int thumbnailSize = 96;  // the longer side, pixels
+inline constexpr int thumbnailSize = 84;  // the longer side, pixels
 
 class TargetBrowser {
 public:
@@ -25,8 +25,8 @@ public:
     void updateThumbnails(const GlExecutor& executor, TextureBlit& blit);
     // The section's contents: the thumbnails; a click opens (or focuses) the target's viewer.
     void draw(const GlExecutor& executor);
-    // The open viewers' windows; new ones appear near `firstPosition`.
-    void drawViewers(const GlExecutor& executor, glm::vec2 firstPosition);
+    // The open viewers' windows; new ones appear near `firstPosition`, `firstSize` large.
+    void drawViewers(const GlExecutor& executor, glm::vec2 firstPosition, glm::vec2 firstSize);
     // Opens a viewer (as a click on its thumbnail does).
     void open(const std::string& target);
 

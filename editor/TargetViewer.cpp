@@ -7,10 +7,10 @@
 
 namespace rmfx::editor {
 
-bool TargetViewer::draw(const GlExecutor& executor, glm::vec2 firstPosition) {
+bool TargetViewer::draw(const GlExecutor& executor, glm::vec2 firstPosition, glm::vec2 firstSize) {
     const std::string title = target_ + " (render target)";
     ImGui::SetNextWindowPos(ImVec2(firstPosition.x, firstPosition.y), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(420, 480), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(firstSize.x, firstSize.y), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin(title.c_str(), &open_)) {  // collapsed: nothing to read
         ImGui::End();
         return open_;
@@ -26,7 +26,10 @@ bool TargetViewer::draw(const GlExecutor& executor, glm::vec2 firstPosition) {
     texture_.upload(displayPixels(*image, decode_, exposureStops_, srgb_ ? DisplayTransform::Srgb : DisplayTransform::None));
 
     ImGui::Text("%dx%d %s", size.x, size.y, targetFormatName(executor.targetFormat(target_)));
-    ImGui::SetNextItemWidth(140);
+    ImGui::SameLine();
+    ImGui::Checkbox("sRGB", &srgb_);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("encode for display with the sRGB curve (off: the values clipped to 0..1)");
+    ImGui::SetNextItemWidth(100);
     if (ImGui::BeginCombo("decode as", decodeAsLabel(decode_))) {
         for (int i = 0; i < decodeAsCount; ++i) {
             DecodeAs d = static_cast<DecodeAs>(i);
@@ -35,12 +38,9 @@ bool TargetViewer::draw(const GlExecutor& executor, glm::vec2 firstPosition) {
         ImGui::EndCombo();
     }
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(120);
+    ImGui::SetNextItemWidth(100);
     ImGui::SliderFloat("exposure", &exposureStops_, -16.0f, 16.0f, "%+.1f stops");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("display = decoded value x 2^exposure, then sRGB");
-    ImGui::SameLine();
-    ImGui::Checkbox("sRGB", &srgb_);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("encode for display with the sRGB curve (off: the values clipped to 0..1)");
 
     // Fit the window, but at least 128 pixels on the longer side (a 1x1 target shows as a block).
     ImVec2 avail = ImGui::GetContentRegionAvail();

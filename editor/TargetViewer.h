@@ -20,8 +20,8 @@ public:
     const std::string& target() const { return target_; }
 
     // Reads the target, updates the picture and draws the window, first placed at `firstPosition`
-    // (window coordinates). Returns false once the user closed the window.
-    bool draw(const GlExecutor& executor, glm::vec2 firstPosition);
+    // with `firstSize` (window coordinates). Returns false once the user closed the window.
+    bool draw(const GlExecutor& executor, glm::vec2 firstPosition, glm::vec2 firstSize);
 
 private:
     std::string target_;

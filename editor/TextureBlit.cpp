@@ -64,11 +64,11 @@ GLuint compile(GLenum stage, const char* source, std::string* error) {
     return shader;
 }
 
-GLuint makeSampler(GLenum filter) {
+GLuint makeSampler(GLenum minify, GLenum magnify) {
     GLuint sampler = 0;
     glCreateSamplers(1, &sampler);
-    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
-    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
+    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(minify));
+    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(magnify));
     glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     return sampler;
@@ -100,8 +100,8 @@ Result<std::unique_ptr<TextureBlit>> TextureBlit::create() {
     blit->scaleLocation_ = glGetUniformLocation(blit->program_, "scale");
     blit->srgbLocation_ = glGetUniformLocation(blit->program_, "srgb");
     glCreateVertexArrays(1, &blit->vertexArray_);
-    blit->nearest_ = makeSampler(GL_NEAREST);
-    blit->linear_ = makeSampler(GL_LINEAR);
+    blit->nearest_ = makeSampler(GL_NEAREST, GL_NEAREST);
+    blit->linear_ = makeSampler(GL_LINEAR, GL_NEAREST);  // magnified texels stay sharp
     return blit;
 }
 

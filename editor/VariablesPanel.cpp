@@ -1,5 +1,6 @@
 #include "editor/VariablesPanel.h"
 
+#include <algorithm>
 #include <ctime>
 #include <map>
 
@@ -111,6 +112,11 @@ void VariablesPanel::draw(EffectSession& session) {
         ImGui::TextDisabled("the workspace declares no variables");
         return;
     }
+    // Widgets fill the width the longest name leaves (names are the widgets' labels, on the right).
+    float labels = 0.0f;
+    for (const Variable& v : ws.variables) labels = std::max(labels, ImGui::CalcTextSize(v.name.c_str()).x);
+    labels = std::min(labels + ImGui::GetStyle().ItemInnerSpacing.x * 2.0f, ImGui::GetContentRegionAvail().x * 0.5f);
+    ImGui::PushItemWidth(-labels);
     for (const Variable& v : ws.variables) {
         const Value* current = executor.variable(v.name);
         if (!current) continue;
@@ -132,6 +138,7 @@ void VariablesPanel::draw(EffectSession& session) {
         tooltip(v);
         ImGui::PopID();
     }
+    ImGui::PopItemWidth();
     ImGui::Spacing();
     if (ImGui::Button("Reset all"))
         for (const Variable& v : ws.variables) session.resetVariable(v.name);

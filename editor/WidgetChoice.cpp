@@ -7,13 +7,12 @@
 namespace rmfx::editor {
 namespace {
 
-// Enough decimals to show one step: step 0.01 → "%.2f", 0.25 → "%.2f", none → "%.3f".
+// Enough decimals to show one step: step 0.01 → "%.2f", 0.25 → "%.2f", 1 → "%.0f", none → "%.3f".
 std::string floatFormat(const std::optional<float>& step) {
     int decimals = 3;
     if (step && *step > 0.0f) {
         decimals = 0;
-        while (decimals < 6 && std::fabs(*step * std::pow(10.0f, decimals) - std::round(*step * std::pow(10.0f, decimals))) > 1e-3f)
-            ++decimals;
+        for (double scaled = *step; decimals < 6 && std::fabs(scaled - std::round(scaled)) > 1e-3 * scaled; scaled *= 10.0) ++decimals;
     }
     return "%." + std::to_string(decimals) + "f";
 }

@@ -16,7 +16,7 @@ std::string rejection(const std::vector<std::string>& args) {
 TEST(EditorOptions, ParsesEveryOption) {
     std::string error;
     auto o = parseEditorOptions({"fx.xml", "--size", "256x128", "--set", "Exposure_Level=2", "--set", "Tint=1 0 0",
-                                 "--frames", "5", "--screenshot", "w.png", "--output-screenshot", "o.png"},
+                                 "--frames", "5", "--screenshot", "w.png", "--output-screenshot", "o.png", "--view", "scene", "--dt", "0.5"},
                                 &error);
     ASSERT_TRUE(o) << error;
     EXPECT_EQ(o->workspace, "fx.xml");
@@ -26,6 +26,8 @@ TEST(EditorOptions, ParsesEveryOption) {
     EXPECT_EQ(o->frames, 5);
     EXPECT_EQ(o->screenshot, std::filesystem::path("w.png"));
     EXPECT_EQ(o->outputScreenshot, std::filesystem::path("o.png"));
+    EXPECT_EQ(o->viewTargets, std::vector<std::string>{"scene"});
+    EXPECT_EQ(o->deltaTime, 0.5f);
 }
 
 TEST(EditorOptions, RejectsWhatItCannotUse) {
@@ -35,6 +37,8 @@ TEST(EditorOptions, RejectsWhatItCannotUse) {
     EXPECT_NE(rejection({"a.xml", "--frames", "0"}).find("--frames"), std::string::npos);
     EXPECT_NE(rejection({"a.xml", "--set", "=3"}).find("NAME=VALUE"), std::string::npos);
     EXPECT_NE(rejection({"a.xml", "--screenshot", "x.png"}).find("--frames"), std::string::npos);
+    EXPECT_NE(rejection({"a.xml", "--dt", "0.1"}).find("--frames"), std::string::npos);
+    EXPECT_NE(rejection({"a.xml", "--frames", "2", "--dt", "-1"}).find("--dt"), std::string::npos);
     EXPECT_NE(rejection({"a.xml", "--bogus"}).find("'--bogus'"), std::string::npos);
     EXPECT_NE(rejection({"a.xml", "--size"}).find("needs a value"), std::string::npos);
 }

@@ -46,6 +46,20 @@ TEST(EditorWidgetChoice, FloatWithARangeIsASliderOverIt) {
     EXPECT_EQ(c.format, "%.2f");  // step 0.01: two decimals
 }
 
+TEST(EditorWidgetChoice, FloatFormatShowsOneStep) {
+    auto formatFor = [](float step) {
+        Variable v = variable(ValueType::Float);
+        v.step = step;
+        return chooseWidget(v).format;
+    };
+    EXPECT_EQ(formatFor(0.001f), "%.3f");
+    EXPECT_EQ(formatFor(0.0001f), "%.4f");
+    EXPECT_EQ(formatFor(0.5f), "%.1f");
+    EXPECT_EQ(formatFor(1.0f), "%.0f");
+    EXPECT_EQ(formatFor(2.5f), "%.1f");
+    EXPECT_EQ(formatFor(1.0f / 3.0f), "%.4f");  // no finite decimal: within a thousandth of a step
+}
+
 TEST(EditorWidgetChoice, IntSliderUsesIntegers) {
     Variable v = variable(ValueType::Int, WidgetHint::Slider);
     v.min = 1.0f;
