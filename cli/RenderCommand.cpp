@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "cli/Commands.h"
+#include "runtime/FrameExplanation.h"
 #include "runtime/GlContext.h"
 #include "runtime/HeadlessRun.h"
 #include "runtime/ImageIO.h"
@@ -19,6 +20,8 @@ struct RenderArguments {
     std::optional<std::string> target;
     std::optional<DisplayTransform> transform;
     bool quiet = false;
+    bool explain = false;
+    ExecutorOptions executor;
 };
 
 std::optional<RenderArguments> parseArguments(const std::vector<std::string>& args) {
@@ -34,7 +37,7 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
             return args[++i];
         };
         if (arg == "-o" || arg == "--output" || arg == "--size" || arg == "--frames" || arg == "--dt" ||
-            arg == "--set" || arg == "--target" || arg == "--transform") {
+            arg == "--set" || arg == "--target" || arg == "--transform" || arg == "--effects") {
             auto value = next();
             if (!value) return fail(arg + " needs a value");
             if (arg == "-o" || arg == "--output") {
@@ -62,6 +65,20 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
                 a.overrides.emplace_back(value->substr(0, eq), value->substr(eq + 1));
             } else if (arg == "--target") {
                 a.target = *value;
+            } else if (arg == "--effects") {
+                std::vector<std::string> names;
+                std::string name;
+                for (char c : *value + ",") {
+                    if (c != ',') {
+                        name += c;
+                    } else if (!name.empty()) {
+                        names.push_back(name);
+                        name.clear();
+                    }
+                }
+                if (value->find_first_not_of(", ") == std::string::npos && !value->empty())
+                    return fail("--effects: expected names separated by commas, got '" + *value + "'");
+                a.executor.effects = names;
             } else {
                 if (*value == "none") a.transform = DisplayTransform::None;
                 else if (*value == "srgb") a.transform = DisplayTransform::Srgb;
@@ -69,6 +86,10 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
             }
         } else if (arg == "-q" || arg == "--quiet") {
             a.quiet = true;
+        } else if (arg == "--explain") {
+            a.explain = true;
+        } else if (arg == "--no-pool") {
+            a.executor.poolTargets = false;
         } else if (!arg.empty() && arg[0] == '-') {
             return fail("unknown option '" + arg + "' (see rmfx --help)");
         } else if (a.workspace) {
@@ -103,6 +124,7 @@ int renderCommand(const std::vector<std::string>& args) {
         return 1;
     }
     std::string output = a->output.value_or(ws.name + ".png");
+    a->executor.outputs = {targetName};
 
     auto context = GlContext::createHeadless();
     if (!context) {
@@ -110,10 +132,16 @@ int renderCommand(const std::vector<std::string>& args) {
         return 2;
     }
     Diagnostics diagnostics;
-    auto executor = runHeadless(ws, a->run, diagnostics);
+    auto executor = runHeadless(ws, a->run, diagnostics, a->executor);
     if (!executor) {
         std::cerr << formatAll(diagnostics);
         return 2;
+    }
+    if (a->explain) {
+        FrameExplanationInput explained{&ws, &executor->graph(), &executor->targetPlan(), executor->askedEffects(),
+                                        executor->switchedOffEffects(), a->executor.poolTargets};
+        std::cout << explainFrame(explained);
+        if (!a->output) return 0;  // --explain alone writes no image
     }
     auto image = executor->readTarget(targetName);
     if (!image) {

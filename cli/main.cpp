@@ -34,6 +34,12 @@ render options:
                          or --set Sun_Direction="0 1 0"
   --target NAME          write this render target instead of the output (written linear, no transform)
   --transform none|srgb  override the display transform for 8-bit images
+  --effects A,B          compute only these effects (<effect> groups); the others' passes are
+                         culled and their targets not allocated (default: the workspace's choice)
+  --explain              print the frame's schedule: each pass run or culled and why, each target
+                         with size, format, bytes and shared memory, and the peak GPU memory;
+                         writes an image only when -o is given
+  --no-pool              give every target memory of its own (no sharing between lifetimes)
   -q, --quiet            print nothing but errors
 
 replay options:

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <set>
 
 #include <epoxy/gl.h>
 #include <glm/gtc/matrix_inverse.hpp>
@@ -9,6 +10,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "runtime/BuiltinMeshes.h"
+#include "runtime/EffectSelection.h"
 #include "runtime/GlFormats.h"
 #include "runtime/GlMesh.h"
 #include "runtime/GlTexture.h"
@@ -19,22 +21,22 @@
 namespace rmfx {
 namespace {
 
-struct GpuTarget {
-    std::string name;
-    const RenderTarget* spec = nullptr;  // null for the implicit output
-    TargetFormat format = TargetFormat::RGBA16F;
-    glm::ivec2 size{1};
-    bool mipmaps = false;
-    bool history = false;   // double-buffered: frame="previous" reads the other buffer
-    bool needsDepth = false;
-    glm::vec4 initial{0.0f};
+// GL memory of one TargetResource of the plan: shared by the targets whose lifetimes do not overlap.
+struct GpuResource {
+    TargetResource spec;
     GLuint textures[2] = {0, 0};
     GLuint framebuffers[2] = {0, 0};
     GLuint depth = 0;
-    int front = 0;          // buffer with the last finished frame's contents
-    bool writtenThisFrame = false;
+    int front = 0;  // buffer with the last finished frame's contents
 
-    int writeBuffer() const { return history ? 1 - front : 0; }
+    int writeBuffer() const { return spec.history ? 1 - front : 0; }
+};
+
+struct GpuTarget {
+    std::string name;
+    const RenderTarget* spec = nullptr;  // null for the implicit output
+    GpuResource* resource = nullptr;     // null when the plan does not allocate it
+    bool writtenThisFrame = false;
     SourceLocation where;
 };
 
@@ -43,6 +45,7 @@ struct UniformSlot {
     std::string name;
     UniformType type = UniformType::Other;
     UniformSource source;
+    std::string effectSwitch;  // rmfx_effect_<name>: whether that effect runs this frame
 };
 
 struct SamplerSlot {
@@ -55,6 +58,7 @@ struct SamplerSlot {
 
 struct GpuPass {
     const Pass* pass = nullptr;
+    int index = 0;  // in Workspace::passes
     GLuint program = 0;
     GpuTarget* target = nullptr;
     const GlMesh* mesh = nullptr;
@@ -87,11 +91,6 @@ std::string describeFramebufferStatus(GLenum status) {
     }
 }
 
-std::string picksNoFormat(const GpuTarget& t, const Value* value) {
-    return "variable '" + t.spec->formatVariable + "' = " + (value ? std::to_string(value->asInt()) : "?") +
-           " picks none of the " + std::to_string(t.spec->formats.size()) + " formats of target '" + t.name + "'";
-}
-
 glm::mat4 modelMatrix(const DrawCall& draw) {
     glm::mat4 m = glm::translate(glm::mat4(1.0f), draw.translate);
     m = glm::rotate(m, glm::radians(draw.rotateDegrees.z), glm::vec3(0, 0, 1));
@@ -111,11 +110,24 @@ struct TimerFrame {
 
 struct GlExecutor::Impl {
     const Workspace& ws;
+    ExecutorOptions options;
+    glm::ivec2 viewport{1};
     std::map<std::string, Value> values;
+    std::set<std::string> askedEffects;
+    ShaderPrelude prelude;
+    FrameRequest request;
+    // The graph of every combination of effect switches, built once: switching costs a lookup.
+    std::map<std::set<std::string>, PassGraph> graphs;
+    std::set<std::string> switchedOff;
+    const PassGraph* graph = nullptr;   // of the current switches
+    std::vector<GpuPass*> schedule;     // the passes the current graph runs
+    std::vector<std::string> lastFramePasses;
+    TargetPlan plan;
+    std::vector<std::unique_ptr<GpuResource>> resources;
     std::vector<std::unique_ptr<GpuTarget>> targets;
     std::map<std::string, GLuint> textures;
     std::map<std::string, std::unique_ptr<GlMesh>> meshes;
-    std::vector<GpuPass> passes;
+    std::vector<std::unique_ptr<GpuPass>> passes;  // compiled: every pass some combination of switches runs
     std::vector<GLuint> samplerObjects;
 
     bool timing = false;
@@ -129,9 +141,9 @@ struct GlExecutor::Impl {
     ~Impl() {
         for (TimerFrame& f : timerFrames)
             glDeleteQueries(static_cast<GLsizei>(f.queries.size()), f.queries.data());
-        for (auto& t : targets) release(*t);
+        releaseResources();
         for (auto& [name, texture] : textures) glDeleteTextures(1, &texture);
-        for (GpuPass& p : passes) glDeleteProgram(p.program);
+        for (auto& p : passes) glDeleteProgram(p->program);
         glDeleteSamplers(static_cast<GLsizei>(samplerObjects.size()), samplerObjects.data());
     }
 
@@ -145,101 +157,186 @@ struct GlExecutor::Impl {
         d.push_back({Diagnostic::Severity::Error, where, element, message});
     }
 
-    void declareTargets(glm::ivec2 viewport) {
-        auto add = [&](const std::string& name, const RenderTarget* spec, TargetFormat format, glm::ivec2 size,
-                       bool mipmaps, glm::vec4 initial, SourceLocation where) {
-            auto t = std::make_unique<GpuTarget>();
-            t->name = name;
-            t->spec = spec;
-            t->format = format;
-            t->size = size;
-            t->mipmaps = mipmaps;
-            t->initial = initial;
-            t->where = where;
-            targets.push_back(std::move(t));
-        };
-        for (const RenderTarget& t : ws.targets)
-            add(t.name, &t, t.format, resolveTargetSize(t.size, viewport), t.mipmaps, t.initial, t.where);
-        if (ws.output.target.empty())
-            add(Workspace::implicitOutputName, nullptr, ws.output.format, viewport, false, glm::vec4(0), ws.output.where);
-        for (const Pass& p : ws.passes) {
-            if (!p.enabled) continue;
-            GpuTarget* written = findTarget(ws.passTargetName(p));
-            if (written && (p.depth.test || p.depth.write || p.clear.depth)) written->needsDepth = true;
-            for (const Sampler& s : p.samplers)
-                if (s.previousFrame)
-                    if (GpuTarget* t = findTarget(s.target)) t->history = true;
-        }
+    GpuPass* compiledPass(int index) const {
+        for (auto& p : passes)
+            if (p->index == index) return p.get();
+        return nullptr;
     }
 
-    // The format the target's format variable picks now; an error when it picks none.
-    std::string selectFormat(GpuTarget& t) {
-        if (!t.spec || t.spec->formatVariable.empty()) return {};
-        auto it = values.find(t.spec->formatVariable);
-        const Value* value = it == values.end() ? nullptr : &it->second;
-        if (auto format = selectTargetFormat(*t.spec, value)) {
-            t.format = *format;
-            return {};
-        }
-        return picksNoFormat(t, value);
-    }
-
-    void release(GpuTarget& t) {
-        glDeleteFramebuffers(2, t.framebuffers);
-        glDeleteTextures(2, t.textures);
-        glDeleteRenderbuffers(1, &t.depth);
-        t.framebuffers[0] = t.framebuffers[1] = t.textures[0] = t.textures[1] = t.depth = 0;
-        t.front = 0;
-    }
-
-    bool allocate(GpuTarget& t, Diagnostics& d) {
-        std::string element = "<target name=\"" + t.name + "\">";
-        if (std::string why = selectFormat(t); !why.empty()) {
-            error(d, t.where, element, why);
+    // The graphs of every combination of the asked-for effects' switches (all-on first). With
+    // more than 10 switched effects, only all on, each one off and all off are prepared.
+    bool buildGraphs(Diagnostics& d) {
+        auto asked = selectEffects(ws, options.effects);
+        if (!asked) {
+            error(d, {ws.path.string(), 0}, "", asked.error());
             return false;
         }
-        int buffers = t.history ? 2 : 1;
-        int levels = t.mipmaps ? gl::mipLevels(t.size.x, t.size.y) : 1;
-        if (t.needsDepth) {
-            glCreateRenderbuffers(1, &t.depth);
-            glNamedRenderbufferStorage(t.depth, GL_DEPTH_COMPONENT32F, t.size.x, t.size.y);
+        askedEffects = *asked;
+        prelude = effectPrelude(ws, askedEffects);
+        request.effects = askedEffects;
+        request.outputs = options.outputs;
+        if (request.outputs.empty()) {  // inspect everything: every target a running pass writes
+            std::set<std::string> written;
+            for (const Pass& p : ws.passes) {
+                const Effect* e = ws.effectOfPass(p.name);
+                if (p.enabled && (!e || askedEffects.count(e->name))) written.insert(ws.passTargetName(p));
+            }
+            for (const RenderTarget& t : ws.targets)
+                if (written.count(t.name)) request.outputs.push_back(t.name);
+            if (written.count(Workspace::implicitOutputName) && ws.output.target.empty())
+                request.outputs.push_back(Workspace::implicitOutputName);
+        }
+        std::vector<std::string> switched;
+        for (const Effect& e : ws.effects)
+            if (askedEffects.count(e.name) && !e.switches.empty()) switched.push_back(e.name);
+        std::vector<std::set<std::string>> combinations;
+        if (switched.size() <= 10) {
+            for (unsigned mask = 0; mask < (1u << switched.size()); ++mask) {
+                std::set<std::string> off;
+                for (size_t k = 0; k < switched.size(); ++k)
+                    if (mask & (1u << k)) off.insert(switched[k]);
+                combinations.push_back(off);
+            }
+        } else {
+            combinations.push_back({});
+            for (const std::string& e : switched) combinations.push_back({e});
+            combinations.push_back(std::set<std::string>(switched.begin(), switched.end()));
+        }
+        bool ok = true;
+        for (const std::set<std::string>& off : combinations) {
+            FrameRequest r = request;
+            r.switchedOff = off;
+            Diagnostics found;
+            PassGraph g = buildPassGraph(ws, r, found);
+            if (hasErrors(found)) {
+                std::string when = off.empty() ? "" : " (with effects " + joinNames(off) + " switched off)";
+                for (Diagnostic& diagnostic : found) diagnostic.message += when;
+                d.insert(d.end(), found.begin(), found.end());
+                ok = false;
+            }
+            graphs.emplace(off, std::move(g));
+        }
+        return ok;
+    }
+
+    // Follows the effect switches: the schedule of the graph of the current combination.
+    void selectGraph() {
+        std::set<std::string> off = rmfx::switchedOffEffects(ws, askedEffects, values);
+        if (graph && off == switchedOff) return;
+        auto it = graphs.find(off);
+        if (it == graphs.end()) it = graphs.find({});  // more switches than prepared: run them all
+        switchedOff = it->first;
+        graph = &it->second;
+        schedule.clear();
+        for (int index : graph->schedule)
+            if (GpuPass* p = compiledPass(index)) schedule.push_back(p);
+    }
+
+    int lastWriter(const std::string& target) const {
+        for (int i = static_cast<int>(ws.passes.size()) - 1; i >= 0; --i)
+            if (ws.passes[static_cast<size_t>(i)].enabled && ws.passTargetName(ws.passes[static_cast<size_t>(i)]) == target) return i;
+        return -1;
+    }
+
+    void releaseResources() {
+        for (auto& r : resources) {
+            glDeleteFramebuffers(2, r->framebuffers);
+            glDeleteTextures(2, r->textures);
+            glDeleteRenderbuffers(1, &r->depth);
+        }
+        resources.clear();
+        for (auto& t : targets) t->resource = nullptr;
+    }
+
+    bool allocate(GpuResource& r, const std::string& element, const SourceLocation& where, Diagnostics& d) {
+        const TargetResource& spec = r.spec;
+        int buffers = spec.history ? 2 : 1;
+        int levels = spec.mipmaps ? gl::mipLevels(spec.size.x, spec.size.y) : 1;
+        if (spec.depth) {
+            glCreateRenderbuffers(1, &r.depth);
+            glNamedRenderbufferStorage(r.depth, GL_DEPTH_COMPONENT32F, spec.size.x, spec.size.y);
         }
         bool ok = true;
         for (int i = 0; i < buffers; ++i) {
-            glCreateTextures(GL_TEXTURE_2D, 1, &t.textures[i]);
-            glTextureStorage2D(t.textures[i], levels, gl::internalFormat(t.format), t.size.x, t.size.y);
-            glCreateFramebuffers(1, &t.framebuffers[i]);
-            glNamedFramebufferTexture(t.framebuffers[i], GL_COLOR_ATTACHMENT0, t.textures[i], 0);
-            if (t.depth) glNamedFramebufferRenderbuffer(t.framebuffers[i], GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth);
-            GLenum status = glCheckNamedFramebufferStatus(t.framebuffers[i], GL_FRAMEBUFFER);
+            glCreateTextures(GL_TEXTURE_2D, 1, &r.textures[i]);
+            glTextureStorage2D(r.textures[i], levels, gl::internalFormat(spec.format), spec.size.x, spec.size.y);
+            glCreateFramebuffers(1, &r.framebuffers[i]);
+            glNamedFramebufferTexture(r.framebuffers[i], GL_COLOR_ATTACHMENT0, r.textures[i], 0);
+            if (r.depth) glNamedFramebufferRenderbuffer(r.framebuffers[i], GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, r.depth);
+            GLenum status = glCheckNamedFramebufferStatus(r.framebuffers[i], GL_FRAMEBUFFER);
             if (status != GL_FRAMEBUFFER_COMPLETE) {
-                error(d, t.where, element,
-                      std::string("framebuffer for format ") + targetFormatName(t.format) + " " +
-                          std::to_string(t.size.x) + "x" + std::to_string(t.size.y) +
+                error(d, where, element,
+                      std::string("framebuffer for format ") + targetFormatName(spec.format) + " " +
+                          std::to_string(spec.size.x) + "x" + std::to_string(spec.size.y) +
                           " is incomplete: " + describeFramebufferStatus(status));
                 ok = false;
                 continue;
             }
-            glClearNamedFramebufferfv(t.framebuffers[i], GL_COLOR, 0, glm::value_ptr(t.initial));
+            glClearNamedFramebufferfv(r.framebuffers[i], GL_COLOR, 0, glm::value_ptr(spec.initial));
         }
         if (GLenum e = glGetError(); e != GL_NO_ERROR) {
-            error(d, t.where, element,
-                  describeGlError(e) + " while allocating " + std::to_string(t.size.x) + "x" +
-                      std::to_string(t.size.y) + " " + targetFormatName(t.format));
+            error(d, where, element,
+                  describeGlError(e) + " while allocating " + std::to_string(spec.size.x) + "x" +
+                      std::to_string(spec.size.y) + " " + targetFormatName(spec.format));
             ok = false;
         }
         return ok;
     }
 
+    // Plans the targets for the graphs of every switch combination and allocates the plan's
+    // resources: a target some combination uses gets memory, shared where lifetimes allow.
     bool allocateTargets(Diagnostics& d) {
+        std::vector<const PassGraph*> all;
+        for (auto& [off, g] : graphs) all.push_back(&g);
+        for (const RenderTarget& t : ws.targets) {
+            if (t.formatVariable.empty()) continue;
+            auto it = values.find(t.formatVariable);
+            if (!selectTargetFormat(t, it == values.end() ? nullptr : &it->second)) {
+                error(d, t.where, "<target name=\"" + t.name + "\">",
+                      "variable '" + t.formatVariable + "' = " +
+                          (it == values.end() ? std::string("?") : std::to_string(it->second.asInt())) +
+                          " picks none of the " + std::to_string(t.formats.size()) + " formats of target '" + t.name + "'");
+                return false;
+            }
+        }
+        auto planned = planTargets(ws, all, viewport, values, options.poolTargets && !options.outputs.empty());
+        if (!planned) {
+            error(d, {ws.path.string(), 0}, "", planned.error());
+            return false;
+        }
+        releaseResources();
+        plan = std::move(*planned);
+        if (targets.empty())
+            for (const PlannedTarget& p : plan.targets) {
+                auto t = std::make_unique<GpuTarget>();
+                t->name = p.name;
+                t->spec = p.spec;
+                t->where = p.where;
+                targets.push_back(std::move(t));
+            }
         bool ok = true;
-        for (auto& t : targets) ok = allocate(*t, d) && ok;
+        for (const TargetResource& spec : plan.resources) {
+            auto r = std::make_unique<GpuResource>();
+            r->spec = spec;
+            const PlannedTarget& first = plan.targets[static_cast<size_t>(spec.targets.front())];
+            ok = allocate(*r, "<target name=\"" + first.name + "\">", first.where, d) && ok;
+            for (int t : spec.targets) targets[static_cast<size_t>(t)]->resource = r.get();
+            resources.push_back(std::move(r));
+        }
         return ok;
     }
 
+    // Only the textures a pass that can run samples.
     bool loadTextures(Diagnostics& d) {
+        std::set<std::string> sampled;
+        for (auto& [off, g] : graphs)
+            for (int index : g.schedule)
+                for (const Sampler& s : ws.passes[static_cast<size_t>(index)].samplers)
+                    if (!s.texture.empty()) sampled.insert(s.texture);
         bool ok = true;
         for (const Texture& t : ws.textures) {
+            if (!sampled.count(t.name)) continue;
+            if (takeOverTexture(t)) continue;  // hot reload: a copy of the previous build's
             auto loaded = loadGlTexture(ws, t);
             if (!loaded) {
                 error(d, t.where, "", loaded.error());
@@ -271,7 +368,7 @@ struct GlExecutor::Impl {
     }
 
     GLuint compileProgram(const Pass& pass, Diagnostics& d) {
-        auto source = assemblePassProgram(ws, pass, {}, d);
+        auto source = assemblePassProgram(ws, pass, prelude.defines, d, prelude.declarations);
         if (!source) return 0;
         std::string label = passLabel(pass);
         GLuint program = glCreateProgram();
@@ -333,6 +430,10 @@ struct GlExecutor::Impl {
             std::string name = nameBuffer;
             if (name.size() > 3 && name.compare(name.size() - 3, 3, "[0]") == 0) name.resize(name.size() - 3);
             UniformType type = uniformTypeFromGl(values[0]);
+            if (name.rfind("rmfx_effect_", 0) == 0) {  // declared by the effect prelude
+                gp.uniforms.push_back({values[1], name, type, Unbound{}, name.substr(12)});
+                continue;
+            }
             UniformSource source = resolveUniform(ws, pass, name);
             if (std::string why = bindingMismatch(ws, source, name, type, values[2]); !why.empty()) {
                 error(d, pass.where, passLabel(pass), why);
@@ -344,8 +445,16 @@ struct GlExecutor::Impl {
                 slot.unit = unit++;
                 slot.sampler = s->sampler;
                 glProgramUniform1i(gp.program, values[1], slot.unit);
-                if (!s->sampler->texture.empty()) slot.texture = textures[s->sampler->texture];
-                else slot.target = findTarget(s->sampler->target);
+                if (!s->sampler->texture.empty()) {
+                    slot.texture = textures[s->sampler->texture];
+                } else {
+                    slot.target = findTarget(s->sampler->target);
+                    if (!slot.target || !slot.target->resource) {
+                        error(d, s->sampler->where, "<sampler name=\"" + name + "\">", unallocatedRead(gp, *s->sampler));
+                        ok = false;
+                        continue;
+                    }
+                }
                 glCreateSamplers(1, &slot.samplerObject);
                 samplerObjects.push_back(slot.samplerObject);
                 const Sampler& spec = *s->sampler;
@@ -358,9 +467,27 @@ struct GlExecutor::Impl {
                 gp.samplers.push_back(slot);
                 continue;
             }
-            gp.uniforms.push_back({values[1], name, type, source});
+            gp.uniforms.push_back({values[1], name, type, source, {}});
         }
         return ok;
+    }
+
+    // Why a sampler that the compiled shader still uses reads a target with no memory.
+    std::string unallocatedRead(const GpuPass& gp, const Sampler& sampler) const {
+        std::string head = "pass '" + gp.pass->name + "' samples target '" + sampler.target + "'";
+        for (auto& [off, g] : graphs) {
+            const PassNode& node = g.nodes[static_cast<size_t>(gp.index)];
+            for (const std::string& skipped : node.skippedInputs) {
+                if (skipped != sampler.target) continue;
+                const Effect* owner = nullptr;
+                for (const PassNode& n : g.nodes)
+                    if (n.target == skipped && n.effect) owner = n.effect;
+                std::string effect = owner ? owner->name : "?";
+                return head + ", which only effect '" + effect + "' writes, and that effect is not asked for; guard the "
+                       "read with `if (" + effectMacro(effect) + ")` so that it compiles away";
+            }
+        }
+        return head + ", which no scheduled pass writes";
     }
 
     void upload(const GpuPass& gp, const FrameClock& clock, int frame, const OrbitCamera& camera, glm::ivec2 viewport) {
@@ -368,6 +495,10 @@ struct GlExecutor::Impl {
         glm::mat4 projection = camera.projection(static_cast<float>(viewport.x) / static_cast<float>(viewport.y));
         glm::mat4 viewProjection = projection * view;
         for (const UniformSlot& u : gp.uniforms) {
+            if (!u.effectSwitch.empty()) {
+                glProgramUniform1i(gp.program, u.location, switchedOff.count(u.effectSwitch) ? 0 : 1);
+                continue;
+            }
             const float* data = nullptr;
             Value value;
             if (const auto* c = std::get_if<BoundConstant>(&u.source)) {
@@ -391,7 +522,7 @@ struct GlExecutor::Impl {
                 continue;
             }
             const auto& p = std::get<BoundPredefined>(u.source);
-            glm::vec2 targetSize = gp.target->size;
+            glm::vec2 targetSize = gp.target->resource->spec.size;
             auto mat4 = [&](const glm::mat4& m) { glProgramUniformMatrix4fv(gp.program, u.location, 1, GL_FALSE, glm::value_ptr(m)); };
             auto vec2 = [&](glm::vec2 v) { glProgramUniform2f(gp.program, u.location, v.x, v.y); };
             switch (p.info.id) {
@@ -484,12 +615,80 @@ struct GlExecutor::Impl {
         }
         glFrontFace(pass.raster.frontCounterClockwise ? GL_CCW : GL_CW);
     }
+
+    // Hot reload (recompilePasses, reloadTexture, reloadModel).
+    GpuPass* findPass(const std::string& name) const {
+        for (auto& p : passes)
+            if (p->pass->name == name) return p.get();
+        return nullptr;
+    }
+
+    void deleteSamplerObjects(const std::vector<SamplerSlot>& slots) {
+        for (const SamplerSlot& slot : slots) {
+            glDeleteSamplers(1, &slot.samplerObject);
+            std::erase(samplerObjects, slot.samplerObject);
+        }
+    }
+
+    // createReusing: the previous build, and the textures it may give, while create() runs.
+    static thread_local const Impl* textureDonor;
+    static thread_local const std::vector<std::string>* donatedTextures;
+
+    // A texture the donor holds with the same declaration (files, layout, colour space, mipmaps)
+    // is copied on the GPU instead of being read, decoded and converted again.
+    bool takeOverTexture(const Texture& t) {
+        if (!textureDonor || !donatedTextures ||
+            std::find(donatedTextures->begin(), donatedTextures->end(), t.name) == donatedTextures->end())
+            return false;
+        const Texture* old = textureDonor->ws.findTexture(t.name);
+        auto it = textureDonor->textures.find(t.name);
+        if (!old || it == textureDonor->textures.end() || old->kind != t.kind || old->layout != t.layout ||
+            old->colorSpace != t.colorSpace || old->mipmaps != t.mipmaps || old->faceSize != t.faceSize ||
+            old->files.size() != t.files.size())
+            return false;
+        for (size_t i = 0; i < t.files.size(); ++i)
+            if ((textureDonor->ws.folder / old->files[i]).lexically_normal() != (ws.folder / t.files[i]).lexically_normal())
+                return false;
+        GLuint copy = copyTexture(it->second);
+        if (!copy) return false;
+        textures[t.name] = copy;
+        return true;
+    }
+
+    static GLuint copyTexture(GLuint source) {
+        while (glGetError() != GL_NO_ERROR) {
+        }
+        GLint target = 0, levels = 0, width = 0, height = 0, internal = 0;
+        GLint swizzle[4] = {GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA};
+        glGetTextureParameteriv(source, GL_TEXTURE_TARGET, &target);
+        glGetTextureParameteriv(source, GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+        glGetTextureParameteriv(source, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+        glGetTextureLevelParameteriv(source, 0, GL_TEXTURE_WIDTH, &width);
+        glGetTextureLevelParameteriv(source, 0, GL_TEXTURE_HEIGHT, &height);
+        glGetTextureLevelParameteriv(source, 0, GL_TEXTURE_INTERNAL_FORMAT, &internal);
+        if ((target != GL_TEXTURE_2D && target != GL_TEXTURE_CUBE_MAP) || levels < 1 || width < 1 || height < 1)
+            return 0;
+        GLuint copy = 0;
+        glCreateTextures(static_cast<GLenum>(target), 1, &copy);
+        glTextureStorage2D(copy, levels, static_cast<GLenum>(internal), width, height);
+        glTextureParameteriv(copy, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+        for (GLint level = 0; level < levels; ++level)
+            glCopyImageSubData(source, static_cast<GLenum>(target), level, 0, 0, 0, copy, static_cast<GLenum>(target), level,
+                               0, 0, 0, std::max(1, width >> level), std::max(1, height >> level),
+                               target == GL_TEXTURE_CUBE_MAP ? 6 : 1);
+        if (glGetError() != GL_NO_ERROR) {
+            glDeleteTextures(1, &copy);
+            return 0;
+        }
+        return copy;
+    }
 };
 
 GlExecutor::GlExecutor(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 GlExecutor::~GlExecutor() = default;
 
-std::unique_ptr<GlExecutor> GlExecutor::create(const Workspace& ws, glm::ivec2 viewport, Diagnostics& d) {
+std::unique_ptr<GlExecutor> GlExecutor::create(const Workspace& ws, glm::ivec2 viewport, Diagnostics& d,
+                                               const ExecutorOptions& options) {
     if (viewport.x < 1 || viewport.y < 1) {
         d.push_back({Diagnostic::Severity::Error, {ws.path.string(), 0}, "",
                      "viewport size " + std::to_string(viewport.x) + "x" + std::to_string(viewport.y) + " is empty"});
@@ -498,31 +697,37 @@ std::unique_ptr<GlExecutor> GlExecutor::create(const Workspace& ws, glm::ivec2 v
     while (glGetError() != GL_NO_ERROR) {
     }
     auto impl = std::make_unique<Impl>(ws);
+    impl->options = options;
+    impl->viewport = viewport;
     for (const Variable& v : ws.variables) impl->values[v.name] = v.value;
-    impl->declareTargets(viewport);
+    if (!impl->buildGraphs(d)) return nullptr;
     bool ok = impl->allocateTargets(d);
     ok = impl->loadTextures(d) && ok;
-    for (const Pass& pass : ws.passes) {
-        if (!pass.enabled) continue;
-        GpuPass gp;
-        gp.pass = &pass;
-        gp.target = impl->findTarget(ws.passTargetName(pass));
-        gp.mesh = impl->meshFor(pass.draw, d);
-        gp.model = modelMatrix(pass.draw);
-        gp.program = impl->compileProgram(pass, d);
-        if (!gp.target) {
+    std::set<int> runnable;  // every pass some combination of switches runs
+    for (auto& [off, g] : impl->graphs) runnable.insert(g.schedule.begin(), g.schedule.end());
+    for (int index : runnable) {
+        const Pass& pass = ws.passes[static_cast<size_t>(index)];
+        auto gp = std::make_unique<GpuPass>();
+        gp->pass = &pass;
+        gp->index = index;
+        gp->target = impl->findTarget(ws.passTargetName(pass));
+        gp->mesh = impl->meshFor(pass.draw, d);
+        gp->model = modelMatrix(pass.draw);
+        gp->program = impl->compileProgram(pass, d);
+        if (!gp->target || !gp->target->resource) {
             impl->error(d, pass.where, passLabel(pass), "target '" + ws.passTargetName(pass) + "' is not declared");
             ok = false;
         }
-        if (!gp.program || !gp.mesh || !gp.target) {
+        if (!gp->program || !gp->mesh || !gp->target || !gp->target->resource) {
             ok = false;
-            glDeleteProgram(gp.program);
+            glDeleteProgram(gp->program);
             continue;
         }
-        ok = impl->bindUniforms(gp, d) && ok;
+        ok = impl->bindUniforms(*gp, d) && ok;
         impl->passes.push_back(std::move(gp));
     }
     if (!ok) return nullptr;
+    impl->selectGraph();
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     std::unique_ptr<GlExecutor> executor(new GlExecutor(std::move(impl)));
     executor->camera_ = OrbitCamera(ws.camera);
@@ -535,14 +740,18 @@ Diagnostics GlExecutor::renderFrame(const FrameClock& clock) {
     Impl& s = *impl_;
     while (glGetError() != GL_NO_ERROR) {
     }
+    s.selectGraph();
     for (auto& t : s.targets) t->writtenThisFrame = false;
-    TimerFrame* timer = s.beginTimedFrame(s.passes.size());
-    for (const GpuPass& gp : s.passes) {
+    TimerFrame* timer = s.beginTimedFrame(s.schedule.size());
+    s.lastFramePasses.clear();
+    for (const GpuPass* scheduled : s.schedule) {
+        const GpuPass& gp = *scheduled;
         const Pass& pass = *gp.pass;
         GpuTarget& target = *gp.target;
-        GLuint framebuffer = target.framebuffers[target.writeBuffer()];
+        GpuResource& memory = *target.resource;
+        GLuint framebuffer = memory.framebuffers[memory.writeBuffer()];
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-        glViewport(0, 0, target.size.x, target.size.y);
+        glViewport(0, 0, memory.spec.size.x, memory.spec.size.y);
         s.applyState(pass);
         if (pass.clear.color) glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, glm::value_ptr(*pass.clear.color));
         if (pass.clear.depth) {
@@ -559,15 +768,17 @@ Diagnostics GlExecutor::renderFrame(const FrameClock& clock) {
                 // wrote this frame, or, before any pass has, still what the last frame left (the
                 // write buffer of a double-buffered target then holds the frame before that).
                 const GpuTarget& t = *slot.target;
+                const GpuResource& r = *t.resource;
                 bool current = !slot.sampler->previousFrame && t.writtenThisFrame;
-                texture = t.textures[current ? t.writeBuffer() : t.front];
+                texture = r.textures[current ? r.writeBuffer() : r.front];
             }
             glBindTextureUnit(static_cast<GLuint>(slot.unit), texture);
             glBindSampler(static_cast<GLuint>(slot.unit), slot.samplerObject);
         }
         gp.mesh->draw();
         target.writtenThisFrame = true;
-        if (target.mipmaps) glGenerateTextureMipmap(target.textures[target.writeBuffer()]);
+        s.lastFramePasses.push_back(pass.name);
+        if (memory.spec.mipmaps) glGenerateTextureMipmap(memory.textures[memory.writeBuffer()]);
         if (timer) {
             timer->passes.push_back(pass.name);
             glQueryCounter(timer->queries[timer->passes.size()], GL_TIMESTAMP);
@@ -579,7 +790,7 @@ Diagnostics GlExecutor::renderFrame(const FrameClock& clock) {
     // Double-buffered targets written this frame: next frame writes the other buffer, and
     // frame="previous" reads this one.
     for (auto& t : s.targets)
-        if (t->history && t->writtenThisFrame) t->front = 1 - t->front;
+        if (t->resource && t->resource->spec.history && t->writtenThisFrame) t->resource->front = 1 - t->resource->front;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     ++frame_;
     return d;
@@ -591,21 +802,26 @@ const Value* GlExecutor::variable(const std::string& name) const {
 }
 
 std::string GlExecutor::setVariable(const std::string& name, const Value& value) {
-    auto it = impl_->values.find(name);
-    if (it == impl_->values.end()) return "no variable named '" + name + "'";
+    Impl& s = *impl_;
+    auto it = s.values.find(name);
+    if (it == s.values.end()) return "no variable named '" + name + "'";
     if (it->second.type != value.type)
         return "variable '" + name + "' is a " + valueTypeName(it->second.type) + " (" +
                std::to_string(componentCount(it->second.type)) + " values), not a " + valueTypeName(value.type);
-    for (auto& t : impl_->targets)
-        if (t->spec && t->spec->formatVariable == name && !selectTargetFormat(*t->spec, &value))
-            return picksNoFormat(*t, &value);
+    bool formats = false;
+    for (const RenderTarget& t : s.ws.targets) {
+        if (t.formatVariable != name) continue;
+        if (!selectTargetFormat(t, &value))
+            return "variable '" + name + "' = " + std::to_string(value.asInt()) + " picks none of the " +
+                   std::to_string(t.formats.size()) + " formats of target '" + t.name + "'";
+        formats = formats || *selectTargetFormat(t, &value) != *selectTargetFormat(t, &it->second);
+    }
     it->second = value;
-    // Targets whose format follows this variable are allocated anew (their contents start over).
-    for (auto& t : impl_->targets) {
-        if (!t->spec || t->spec->formatVariable != name || *selectTargetFormat(*t->spec, &value) == t->format) continue;
-        impl_->release(*t);
+    // A new format changes which targets can share memory: the plan and its memory start over
+    // (every target back to its initial value). Effect switches take effect at the next frame.
+    if (formats) {
         Diagnostics d;
-        if (!impl_->allocate(*t, d)) return d.front().message;
+        if (!s.allocateTargets(d)) return d.empty() ? "cannot allocate the targets" : d.front().message;
     }
     return {};
 }
@@ -630,17 +846,33 @@ double GlExecutor::frameGpuMilliseconds() const {
 }
 
 Result<Image> GlExecutor::readTarget(const std::string& name) const {
-    const GpuTarget* t = impl_->findTarget(name);
+    const Impl& s = *impl_;
+    const GpuTarget* t = s.findTarget(name);
     if (!t) return Error{"no render target named '" + name + "'"};
-    int buffer = t->front;  // the newest finished contents
+    const PlannedTarget& planned = s.plan.targets[static_cast<size_t>(s.plan.find(name))];
+    if (!t->resource) {
+        std::string why = "target '" + name + "' is not computed: no pass the outputs need writes or reads it";
+        if (int writer = s.lastWriter(name); writer >= 0)
+            why += " (its writer '" + s.ws.passes[static_cast<size_t>(writer)].name + "' is " +
+                   passFateName(s.graph->nodes[static_cast<size_t>(writer)].fate) + ": " +
+                   s.graph->nodes[static_cast<size_t>(writer)].why + ")";
+        return Error{why + "; ask for it as an output (rmfx render --target " + name + ")"};
+    }
+    const GpuResource& r = *t->resource;
+    if (static_cast<size_t>(r.spec.targets.back()) != static_cast<size_t>(s.plan.find(name)))
+        return Error{"target '" + name + "' shares memory with '" +
+                     s.plan.targets[static_cast<size_t>(r.spec.targets.back())].name +
+                     "', which overwrites it later in the frame; ask for it as an output (rmfx render --target " +
+                     name + ") to keep it"};
+    int buffer = r.front;  // the newest finished contents
     Image image;
-    image.width = t->size.x;
-    image.height = t->size.y;
-    image.channels = gl::channelCount(t->format) == 1 ? 1 : 4;
+    image.width = planned.size.x;
+    image.height = planned.size.y;
+    image.channels = gl::channelCount(planned.format) == 1 ? 1 : 4;
     image.highDynamicRange = true;
     std::vector<float> rgba(static_cast<size_t>(image.width) * image.height * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(t->textures[buffer], 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(rgba.size() * sizeof(float)), rgba.data());
+    glGetTextureImage(r.textures[buffer], 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(rgba.size() * sizeof(float)), rgba.data());
     if (GLenum e = glGetError(); e != GL_NO_ERROR) return Error{describeGlError(e) + " reading target '" + name + "'"};
     image.pixels.resize(static_cast<size_t>(image.width) * image.height * image.channels);
     for (int y = 0; y < image.height; ++y) {
@@ -658,18 +890,171 @@ std::vector<std::string> GlExecutor::targetNames() const {
 }
 
 glm::ivec2 GlExecutor::targetSize(const std::string& name) const {
-    const GpuTarget* t = impl_->findTarget(name);
-    return t ? t->size : glm::ivec2(0);
+    int i = impl_->plan.find(name);
+    return i < 0 ? glm::ivec2(0) : impl_->plan.targets[static_cast<size_t>(i)].size;
 }
 
 TargetFormat GlExecutor::targetFormat(const std::string& name) const {
-    const GpuTarget* t = impl_->findTarget(name);
-    return t ? t->format : TargetFormat::RGBA8;
+    int i = impl_->plan.find(name);
+    return i < 0 ? TargetFormat::RGBA8 : impl_->plan.targets[static_cast<size_t>(i)].format;
 }
 
 unsigned GlExecutor::targetTexture(const std::string& name) const {
     const GpuTarget* t = impl_->findTarget(name);
-    return t ? t->textures[t->front] : 0;
+    return t && t->resource ? t->resource->textures[t->resource->front] : 0;
+}
+
+const PassGraph& GlExecutor::graph() const {
+    impl_->selectGraph();
+    return *impl_->graph;
+}
+const TargetPlan& GlExecutor::targetPlan() const { return impl_->plan; }
+const std::set<std::string>& GlExecutor::askedEffects() const { return impl_->askedEffects; }
+const std::set<std::string>& GlExecutor::switchedOffEffects() const {
+    impl_->selectGraph();
+    return impl_->switchedOff;
+}
+const std::vector<std::string>& GlExecutor::passesRun() const { return impl_->lastFramePasses; }
+
+int GlExecutor::allocatedTextureCount() const {
+    int count = 0;
+    for (auto& r : impl_->resources)
+        for (GLuint texture : r->textures) count += texture != 0 ? 1 : 0;
+    return count;
+}
+
+// Hot reload: each change is built completely before anything of the running build is touched.
+
+Diagnostics GlExecutor::recompilePasses(const std::vector<std::string>& passNames) {
+    Diagnostics d;
+    Impl& s = *impl_;
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    std::vector<std::string> names;
+    for (const std::string& name : passNames)
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    size_t samplerObjectsBefore = s.samplerObjects.size();
+    std::vector<std::pair<GpuPass*, GpuPass>> rebuilt;
+    bool ok = true;
+    for (const std::string& name : names) {
+        GpuPass* old = s.findPass(name);
+        if (!old && s.ws.findPass(name)) continue;  // culled: nothing compiled to replace
+        if (!old) {
+            s.error(d, {s.ws.path.string(), 0}, "<pass name=\"" + name + "\">", "no enabled pass named '" + name + "' to recompile");
+            ok = false;
+            continue;
+        }
+        GpuPass fresh;
+        fresh.pass = old->pass;
+        fresh.index = old->index;
+        fresh.target = old->target;
+        fresh.mesh = old->mesh;
+        fresh.model = old->model;
+        fresh.program = s.compileProgram(*fresh.pass, d);
+        if (!fresh.program) {
+            ok = false;
+            continue;
+        }
+        ok = s.bindUniforms(fresh, d) && ok;
+        rebuilt.emplace_back(old, std::move(fresh));
+    }
+    if (!ok) {
+        for (auto& [old, fresh] : rebuilt) glDeleteProgram(fresh.program);
+        // bindUniforms appended the new passes' sampler objects.
+        glDeleteSamplers(static_cast<GLsizei>(s.samplerObjects.size() - samplerObjectsBefore),
+                         s.samplerObjects.data() + samplerObjectsBefore);
+        s.samplerObjects.resize(samplerObjectsBefore);
+        return d;
+    }
+    for (auto& [old, fresh] : rebuilt) {
+        glDeleteProgram(old->program);
+        s.deleteSamplerObjects(old->samplers);
+        *old = std::move(fresh);
+    }
+    return d;
+}
+
+Diagnostics GlExecutor::reloadTexture(const std::string& name) {
+    Diagnostics d;
+    Impl& s = *impl_;
+    const Texture* spec = s.ws.findTexture(name);
+    auto it = s.textures.find(name);
+    if (spec && it == s.textures.end()) return d;  // no pass that can run samples it: nothing loaded
+    if (!spec) {
+        s.error(d, {s.ws.path.string(), 0}, "", "no texture named '" + name + "' to reload");
+        return d;
+    }
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    auto loaded = loadGlTexture(s.ws, *spec);
+    if (!loaded) {
+        s.error(d, spec->where, "", loaded.error());
+        return d;
+    }
+    if (GLenum e = glGetError(); e != GL_NO_ERROR) {
+        glDeleteTextures(1, &loaded->name);
+        s.error(d, spec->where, "", describeGlError(e) + " while uploading texture '" + name + "'");
+        return d;
+    }
+    GLuint old = it->second;
+    it->second = loaded->name;
+    for (auto& p : s.passes)
+        for (SamplerSlot& slot : p->samplers)
+            if (!slot.target && slot.sampler->texture == name) slot.texture = loaded->name;
+    glDeleteTextures(1, &old);
+    return d;
+}
+
+Diagnostics GlExecutor::reloadModel(const std::string& file) {
+    Diagnostics d;
+    Impl& s = *impl_;
+    auto it = s.meshes.find("file:" + file);
+    const Pass* user = nullptr;
+    for (const auto& p : s.passes)
+        if (!p->pass->draw.mesh && p->pass->draw.file == file) user = p->pass;
+    if (it == s.meshes.end() || !user) {
+        s.error(d, {s.ws.path.string(), 0}, "<draw>", "no pass draws model file '" + file + "'");
+        return d;
+    }
+    auto loaded = loadModel(s.ws.folder / file);
+    if (!loaded) {
+        s.error(d, user->draw.where, "<draw>", loaded.error());
+        return d;
+    }
+    auto fresh = std::make_unique<GlMesh>(*loaded);
+    for (auto& p : s.passes)
+        if (p->mesh == it->second.get()) p->mesh = fresh.get();
+    it->second = std::move(fresh);
+    return d;
+}
+
+thread_local const GlExecutor::Impl* GlExecutor::Impl::textureDonor = nullptr;
+thread_local const std::vector<std::string>* GlExecutor::Impl::donatedTextures = nullptr;
+
+std::unique_ptr<GlExecutor> GlExecutor::createReusing(const Workspace& ws, glm::ivec2 viewport, Diagnostics& diagnostics,
+                                                      const GlExecutor& previous,
+                                                      const std::vector<std::string>& reusableTextures) {
+    struct Donation {
+        Donation(const Impl* impl, const std::vector<std::string>* names) {
+            Impl::textureDonor = impl;
+            Impl::donatedTextures = names;
+        }
+        ~Donation() {
+            Impl::textureDonor = nullptr;
+            Impl::donatedTextures = nullptr;
+        }
+    } donation(previous.impl_.get(), &reusableTextures);
+    return create(ws, viewport, diagnostics, previous.impl_->options);
+}
+
+unsigned GlExecutor::passProgram(const std::string& pass) const {
+    const GpuPass* p = impl_->findPass(pass);
+    return p ? p->program : 0;
+}
+
+unsigned GlExecutor::textureObject(const std::string& name) const {
+    auto it = impl_->textures.find(name);
+    return it == impl_->textures.end() ? 0 : it->second;
 }
 
 }  // namespace rmfx

@@ -2,9 +2,10 @@
 
 namespace rmfx {
 
-std::unique_ptr<GlExecutor> runHeadless(const Workspace& ws, const RunSettings& settings, Diagnostics& diagnostics) {
+std::unique_ptr<GlExecutor> runHeadless(const Workspace& ws, const RunSettings& settings, Diagnostics& diagnostics,
+                                        const ExecutorOptions& options) {
     glm::ivec2 size = settings.size.x > 0 ? settings.size : glm::ivec2(ws.width, ws.height);
-    auto executor = GlExecutor::create(ws, size, diagnostics);
+    auto executor = GlExecutor::create(ws, size, diagnostics, options);
     if (!executor) return nullptr;
     for (int i = 0; i < settings.frames; ++i) {
         Diagnostics frame = executor->renderFrame({static_cast<float>(i) * settings.deltaTime, settings.deltaTime});

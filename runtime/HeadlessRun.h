@@ -20,6 +20,7 @@ struct RunSettings {
 
 // Frame i runs at time i·dt with deltaTime dt. Returns the executor after the last frame, or
 // nullptr with diagnostics when creation or a frame failed.
-std::unique_ptr<GlExecutor> runHeadless(const Workspace& ws, const RunSettings& settings, Diagnostics& diagnostics);
+std::unique_ptr<GlExecutor> runHeadless(const Workspace& ws, const RunSettings& settings, Diagnostics& diagnostics,
+                                        const ExecutorOptions& options = {});
 
 }  // namespace rmfx

@@ -48,7 +48,8 @@ std::string passLabel(const Pass& pass) { return "<pass name=\"" + pass.name + "
 
 std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const Pass& pass,
                                                      const std::vector<std::string>& defines,
-                                                     Diagnostics& diagnostics) {
+                                                     Diagnostics& diagnostics,
+                                                     const std::vector<std::string>& declarations) {
     PassProgramSource program;
     bool ok = true;
     const ShaderSource* vertex = nullptr;
@@ -62,6 +63,7 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
         ShaderInput input;
         input.root = ws.folder;
         input.defines = defines;
+        input.declarations = declarations;
         input.folder = ws.folder;
         input.snippets = &ws.snippets;
         if (s.file.empty()) {

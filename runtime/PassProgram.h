@@ -28,7 +28,8 @@ struct PassProgramSource {
 // fragment shader are reported; returns nullopt when the program cannot be assembled.
 std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const Pass& pass,
                                                      const std::vector<std::string>& defines,
-                                                     Diagnostics& diagnostics);
+                                                     Diagnostics& diagnostics,
+                                                     const std::vector<std::string>& declarations = {});
 
 std::string passLabel(const Pass& pass);  // <pass name="…">
 

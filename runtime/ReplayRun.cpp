@@ -41,8 +41,12 @@ CaseRender renderReplayCase(const ReplayCase& c) {
     checkTargets(c, ws, out.diagnostics);
     if (!out.ok()) return out;
 
+    // Only what the compares read is computed, as rmfx render would for each target.
+    ExecutorOptions options;
+    for (const ReplayCompare& compare : c.compares)
+        options.outputs.push_back(compare.target.empty() ? ws.outputTargetName() : compare.target);
     Diagnostics rendering;
-    auto executor = runHeadless(ws, c.run, rendering);
+    auto executor = runHeadless(ws, c.run, rendering, options);
     add(out.diagnostics, rendering);
     if (!executor) return out;
     std::vector<Image> images;

@@ -182,6 +182,10 @@ PreprocessedShader preprocessShader(const ShaderInput& input, Diagnostics& diagn
         out.code += "#define " + define + "\n";
         out.lineOrigins.push_back(versionWhere);
     }
+    for (const std::string& declaration : input.declarations) {
+        out.code += declaration + "\n";
+        out.lineOrigins.push_back(versionWhere);
+    }
     for (size_t i = 0; i < lines.size(); ++i) {
         if (i == versionLine) {
             out.code += "\n";  // the #version already went first

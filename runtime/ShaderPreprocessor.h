@@ -26,6 +26,7 @@ struct ShaderInput {
     std::filesystem::path folder;   // where includes of the top-level text resolve first
     std::filesystem::path root;     // includes may not leave this folder
     std::vector<std::string> defines;  // "NAME" or "NAME VALUE", inserted after #version
+    std::vector<std::string> declarations;  // lines inserted after the defines ("uniform bool x;")
     const std::vector<CodeSnippet>* snippets = nullptr;  // found by name before any file
 };
 

@@ -3,7 +3,9 @@
 #include <map>
 #include <set>
 
+#include "runtime/EffectSelection.h"
 #include "runtime/GlslangCheck.h"
+#include "runtime/PassGraph.h"
 #include "runtime/PassProgram.h"
 #include "runtime/UniformBinding.h"
 
@@ -20,7 +22,10 @@ public:
         checkTextures();
         checkTargets();
         checkOutput();
+        checkEffects();
         for (const Pass& pass : ws_.passes) checkPass(pass);
+        Diagnostics order = checkPassOrder(ws_);
+        out_.insert(out_.end(), order.begin(), order.end());
     }
 
 private:
@@ -110,6 +115,37 @@ private:
         if (ws_.passes.empty()) error({ws_.path.string(), 0}, "<workspace>", "no <pass>: nothing to render");
     }
 
+    void checkEffects() {
+        unique(ws_.effects, "effect", [](const Effect&) { return "effect"; });
+        std::map<std::string, const Effect*> owner;
+        for (const Effect& e : ws_.effects) {
+            std::string element = "<effect name=\"" + e.name + "\">";
+            for (const std::string& p : e.passes) {
+                if (!ws_.findPass(p)) {
+                    error(e.where, element, "pass '" + p + "' is not declared");
+                    continue;
+                }
+                auto [it, fresh] = owner.emplace(p, &e);
+                if (!fresh)
+                    error(e.where, element, "pass '" + p + "' already belongs to effect '" + it->second->name + "' (" +
+                                                at(it->second->where) + "): a pass belongs to one effect");
+            }
+            for (const std::string& name : e.switches) {
+                const Variable* v = ws_.findVariable(name);
+                if (!v)
+                    error(e.where, element, "switch '" + name + "' is not a declared variable");
+                else if (v->value.type != ValueType::Bool && v->value.type != ValueType::Int &&
+                         v->value.type != ValueType::Float)
+                    error(e.where, element, "switch '" + name + "' (" + at(v->where) + ") is a " +
+                                                valueTypeName(v->value.type) + "; a switch is a bool, int or float");
+            }
+        }
+        if (ws_.output.effects)
+            for (const std::string& name : *ws_.output.effects)
+                if (!ws_.findEffect(name))
+                    error(ws_.output.where, "<output>", "effects: no effect named '" + name + "' is declared");
+    }
+
     void checkPass(const Pass& pass) {
         std::string label = passLabel(pass);
         if (!pass.target.empty() && !ws_.findTarget(pass.target) &&
@@ -155,13 +191,18 @@ private:
             error(pass.draw.where, "<draw>", "model file '" + pass.draw.file + "' not found (looked for " +
                                                  (ws_.folder / pass.draw.file).string() + ")");
 
-        auto program = assemblePassProgram(ws_, pass, {}, out_);
+        // Every effect asked for, switches deciding: the form that keeps every read of the shader.
+        std::set<std::string> all;
+        for (const Effect& e : ws_.effects) all.insert(e.name);
+        ShaderPrelude prelude = effectPrelude(ws_, all);
+        auto program = assemblePassProgram(ws_, pass, prelude.defines, out_, prelude.declarations);
         if (!program || !options_.compileShaders) return;
         auto uniforms = checkPassProgram(*program, label, out_);
         if (!uniforms) return;
         std::set<std::string> active;
         for (const ActiveUniform& u : *uniforms) {
             active.insert(u.name);
+            if (u.name.rfind("rmfx_effect_", 0) == 0 && ws_.findEffect(u.name.substr(12))) continue;
             UniformSource source = resolveUniform(ws_, pass, u.name);
             std::string why = bindingMismatch(ws_, source, u.name, u.type, u.arraySize);
             if (why.empty()) continue;

@@ -19,6 +19,19 @@ const Texture* Workspace::findTexture(std::string_view name) const { return find
 const RenderTarget* Workspace::findTarget(std::string_view name) const { return findByName(targets, name); }
 const Pass* Workspace::findPass(std::string_view name) const { return findByName(passes, name); }
 
+const Effect* Workspace::findEffect(std::string_view name) const {
+    for (const Effect& e : effects)
+        if (e.name == name) return &e;
+    return nullptr;
+}
+
+const Effect* Workspace::effectOfPass(std::string_view passName) const {
+    for (const Effect& e : effects)
+        for (const std::string& p : e.passes)
+            if (p == passName) return &e;
+    return nullptr;
+}
+
 std::string Workspace::outputTargetName() const {
     return output.target.empty() ? std::string(implicitOutputName) : output.target;
 }

@@ -161,8 +161,22 @@ struct Pass {
     SourceLocation where;
 };
 
+// A named group of passes that a scene asks for or leaves out (<effect>). Shaders see
+// RMFX_EFFECT_<name>: false when the effect is left out, else true, or a uniform bool that follows
+// its switch variables when it has any.
+struct Effect {
+    std::string name;
+    std::vector<std::string> passes;
+    // Variables that switch it off at run time: it runs while any of them is true or non-zero.
+    std::vector<std::string> switches;
+    std::string description;
+    SourceLocation where;
+};
+
 struct Output {
     std::string target;  // empty: the implicit target named "output"
+    // The effects this workspace asks for (<output effects="…">); nullopt: every declared effect.
+    std::optional<std::vector<std::string>> effects;
     TargetFormat format = TargetFormat::RGBA16F;  // of the implicit target
     DisplayTransform transform = DisplayTransform::Srgb;
     SourceLocation where;
@@ -189,6 +203,7 @@ struct Workspace {
     std::vector<Texture> textures;
     std::vector<RenderTarget> targets;
     std::vector<Pass> passes;  // run in this order
+    std::vector<Effect> effects;
     Output output;
     OrbitCameraSettings camera;
 
@@ -199,6 +214,8 @@ struct Workspace {
     const Texture* findTexture(std::string_view name) const;
     const RenderTarget* findTarget(std::string_view name) const;
     const Pass* findPass(std::string_view name) const;
+    const Effect* findEffect(std::string_view name) const;
+    const Effect* effectOfPass(std::string_view passName) const;  // null: the pass belongs to no effect
     // The name of the target the output comes from: output.target or the implicit one.
     std::string outputTargetName() const;
     // The target a pass writes, resolved: "" → the output target.

@@ -1,6 +1,7 @@
 #include "runtime/WorkspaceParser.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
@@ -44,9 +45,11 @@ public:
                 if (auto t = parseTarget(e)) ws.targets.push_back(std::move(*t));
             } else if (tag == "pass") {
                 ws.passes.push_back(parsePass(e));
+            } else if (tag == "effect") {
+                if (auto effect = parseEffect(e)) ws.effects.push_back(std::move(*effect));
             } else if (tag == "output") {
                 if (ws.output.where.line > 0) {
-                    ElementReader(e, file_, diagnostics_, {"target", "format", "transform"})
+                    ElementReader(e, file_, diagnostics_, {"target", "format", "transform", "effects"})
                         .error("a second <output> (the first is at line " + std::to_string(ws.output.where.line) +
                                "): a workspace has one");
                     continue;
@@ -55,7 +58,7 @@ public:
             } else {
                 unexpected(e, "unknown element <" + std::string(tag) +
                                   "> in <workspace> (expected description, camera, code, float, int, bool, vec2, vec3, "
-                                  "vec4, color, mat4, texture, cubemap, target, pass, output)");
+                                  "vec4, color, mat4, texture, cubemap, target, pass, effect, output)");
             }
         }
         if (ws.passes.empty()) r.error("no <pass>: nothing to render");
@@ -547,8 +550,56 @@ private:
         noChildren(e);
     }
 
+    // Names separated by spaces or commas; each must be an identifier.
+    std::optional<std::vector<std::string>> nameList(const ElementReader& r, const char* attribute) {
+        auto text = r.string(attribute);
+        if (!text) return std::nullopt;
+        std::vector<std::string> names;
+        std::string current;
+        bool ok = true;
+        auto flush = [&] {
+            if (current.empty()) return;
+            bool identifier = !std::isdigit(static_cast<unsigned char>(current[0]));
+            for (char c : current) identifier = identifier && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+            if (!identifier) {
+                r.error("attribute '" + std::string(attribute) + "': '" + current + "' is not a name");
+                ok = false;
+            }
+            names.push_back(current);
+            current.clear();
+        };
+        for (char c : *text) {
+            if (c == ' ' || c == ',' || c == '\t' || c == '\n' || c == '\r') flush();
+            else current += c;
+        }
+        flush();
+        if (!ok) return std::nullopt;
+        return names;
+    }
+
+    std::optional<Effect> parseEffect(const XMLElement* e) {
+        ElementReader r(e, file_, diagnostics_, {"name", "passes", "switch", "description"});
+        auto name = r.identifier("name");
+        if (!name) return std::nullopt;
+        Effect effect;
+        effect.name = *name;
+        effect.where = r.where();
+        effect.description = r.string("description").value_or("");
+        auto passes = nameList(r, "passes");
+        if (!passes || passes->empty()) {
+            if (!r.has("passes")) r.error("attribute 'passes' is required: the passes of the effect, in any order");
+            else if (passes) r.error("attribute 'passes' names no pass");
+            return std::nullopt;
+        }
+        effect.passes = std::move(*passes);
+        effect.switches = nameList(r, "switch").value_or(std::vector<std::string>{});
+        noChildren(e);
+        return effect;
+    }
+
     void parseOutput(const XMLElement* e, Output& o) {
-        ElementReader r(e, file_, diagnostics_, {"target", "format", "transform"});
+        ElementReader r(e, file_, diagnostics_, {"target", "format", "transform", "effects"});
+        if (r.has("effects")) o.effects = nameList(r, "effects").value_or(std::vector<std::string>{});
         o.where = r.where();
         o.target = r.string("target").value_or("");
         if (auto format = r.string("format")) {

@@ -86,11 +86,11 @@ void replaceSceneWithLight(Workspace& ws, const std::string& scenePass, glm::ive
     found->shaders = {fragment};
 }
 
-GlRun runWorkspace(std::unique_ptr<Workspace> ws, const RunSettings& settings) {
+GlRun runWorkspace(std::unique_ptr<Workspace> ws, const RunSettings& settings, const ExecutorOptions& options) {
     GlRun run;
     run.ws = std::move(ws);
     if (!run.ws) return run;
-    run.exec = runHeadless(*run.ws, settings, run.diagnostics);
+    run.exec = runHeadless(*run.ws, settings, run.diagnostics, options);
     if (!run.exec || hasErrors(run.diagnostics))
         ADD_FAILURE() << "runHeadless failed:\n" << formatAll(run.diagnostics);
     return run;

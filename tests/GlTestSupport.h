@@ -48,8 +48,8 @@ struct GlRun {
 };
 
 // Renders `settings.frames` frames (frame i at time i·dt) with runHeadless. Adds a test failure
-// with the diagnostics when it fails.
-GlRun runWorkspace(std::unique_ptr<Workspace> ws, const RunSettings& settings);
+// with the diagnostics when it fails. Default options: every target is an output (readable).
+GlRun runWorkspace(std::unique_ptr<Workspace> ws, const RunSettings& settings, const ExecutorOptions& options = {});
 GlRun runWorkspace(const std::string& xml, const RunSettings& settings);
 
 // readTarget, adding a test failure (and returning an empty image) on error.

@@ -13,13 +13,14 @@ namespace {
 class MultiFrameGLTest : public GlTest {};
 
 // "acc" accumulates (dt, 1, time, 0) per frame from its initial value. "after" copies acc as the
-// accumulate pass left it this frame; "before" reads acc before this frame's accumulate pass.
+// accumulate pass left it this frame; "before" reads acc as the last frame left it (a pass may not
+// read a target before the frame writes it without saying frame="previous").
 const char* accumulateWorkspace = R"(<workspace version="1" name="accumulate" size="4x4">
   <target name="acc" format="rgba32f" size="1x1" initial="0.5 -3 0 1"/>
   <target name="before" format="rgba32f" size="1x1" initial="7 7 7 7"/>
   <target name="after" format="rgba32f" size="1x1"/>
   <pass name="before" target="before">
-    <sampler name="acc" target="acc" filter="nearest"/>
+    <sampler name="acc" target="acc" frame="previous" filter="nearest"/>
     <shader stage="fragment"><![CDATA[
 #version 450 core
 uniform sampler2D acc;
