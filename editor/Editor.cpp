@@ -9,7 +9,7 @@
 
 #include "editor/CameraControl.h"
 #include "editor/EditorWindow.h"
-#include "editor/EffectSession.h"
+#include "runtime/LiveWorkspace.h"
 #include "editor/ErrorPanel.h"
 #include "editor/TargetBrowser.h"
 #include "editor/TextureBlit.h"
@@ -23,7 +23,7 @@ namespace {
 
 class Editor {
 public:
-    Editor(EditorWindow& window, EffectSession& session, TextureBlit& blit)
+    Editor(EditorWindow& window, LiveWorkspace& session, TextureBlit& blit)
         : window_(window), session_(session), blit_(blit), camera_(session.workspace().camera) {}
 
     // One frame: input, reload, the effect's frame, the panel, presentation (not the swap).
@@ -92,12 +92,35 @@ private:
         ImGui::TextDisabled("%dx%d, frame %d, t %.2f s, %.0f fps", executor.viewport().x, executor.viewport().y,
                             executor.frameIndex(), clock.time, ImGui::GetIO().Framerate);
         ImGui::TextDisabled("%s", window_.description().c_str());
-        drawErrorPanel(session_.errors(), frameErrors_);
+        drawReloadStatus();
+        drawErrorPanel(session_.errors(), frameErrors_, session_.warnings());
         if (ImGui::CollapsingHeader("Variables", ImGuiTreeNodeFlags_DefaultOpen)) variables_.draw(session_);
         if (ImGui::CollapsingHeader("Camera")) drawCamera();
         if (ImGui::CollapsingHeader("Render targets", ImGuiTreeNodeFlags_DefaultOpen)) targets_.draw(executor);
         if (ImGui::CollapsingHeader("Timing", ImGuiTreeNodeFlags_DefaultOpen)) timing_.draw();
         ImGui::End();
+    }
+
+    void drawReloadStatus() {
+        const size_t watched = session_.watchedFiles().size();
+        const ReloadReport& r = session_.lastReload();
+        if (r.changedFiles.empty()) {
+            ImGui::TextDisabled("hot reload: watching %zu files", watched);
+            return;
+        }
+        std::string what = r.failed ? "failed" : r.workspaceRebuilt ? "rebuilt the workspace" : "";
+        auto list = [&](const char* label, const std::vector<std::string>& names) {
+            if (names.empty() || r.workspaceRebuilt) return;
+            what += (what.empty() ? "" : "; ") + std::string(label);
+            for (size_t i = 0; i < names.size(); ++i) what += (i ? ", " : " ") + names[i];
+        };
+        list("recompiled", r.recompiledPasses);
+        list("reloaded", r.reloadedTextures);
+        list("reloaded", r.reloadedModels);
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+        ImGui::TextWrapped("hot reload: watching %zu files; last reload %.0f ms after the write: %s", watched,
+                           session_.lastReloadMilliseconds(), what.c_str());
+        ImGui::PopStyleColor();
     }
 
     // Viewers open below the effect when there is room, else over it; never over the panel.
@@ -142,7 +165,7 @@ private:
     }
 
     EditorWindow& window_;
-    EffectSession& session_;
+    LiveWorkspace& session_;
     TextureBlit& blit_;
     OrbitCamera camera_;
     bool dragging_[3] = {false, false, false};
@@ -180,7 +203,8 @@ int runEditor(const EditorOptions& options) {
         return 2;
     }
     Diagnostics diagnostics;
-    auto session = EffectSession::open(options.workspace, effect, options.overrides, diagnostics);
+    // The size asked for, else 0: the workspace's, which a reload may change.
+    auto session = LiveWorkspace::open(options.workspace, options.size, options.overrides, diagnostics);
     if (!session) {
         std::cerr << formatAll(diagnostics);
         return 2;

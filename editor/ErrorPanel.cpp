@@ -7,10 +7,23 @@
 
 namespace rmfx::editor {
 
-void drawErrorPanel(const Diagnostics& reloadErrors, const Diagnostics& frameErrors) {
+namespace {
+
+void drawWarnings(const Diagnostics& warnings) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.85f, 0.4f, 1.0f));
+    ImGui::PushTextWrapPos(0.0f);
+    for (const Diagnostic& d : warnings) ImGui::TextUnformatted(d.format().c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::PopStyleColor();
+}
+
+}  // namespace
+
+void drawErrorPanel(const Diagnostics& reloadErrors, const Diagnostics& frameErrors, const Diagnostics& reloadWarnings) {
+    drawWarnings(reloadWarnings);
     if (reloadErrors.empty() && frameErrors.empty()) return;
     std::vector<std::string> lines;
-    if (!reloadErrors.empty()) lines.push_back("The workspace did not reload; the last good build keeps running:");
+    if (!reloadErrors.empty()) lines.push_back("The reload failed; the last good build keeps running:");
     for (const Diagnostic& d : reloadErrors) lines.push_back(d.format());
     for (const Diagnostic& d : frameErrors) lines.push_back(d.format());
 

@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "editor/WidgetChoice.h"
+#include "runtime/VariableValueWriter.h"
 
 namespace rmfx::editor {
 namespace {
@@ -91,11 +92,6 @@ void tooltip(const Variable& v) {
     ImGui::EndTooltip();
 }
 
-// Until runtime/VariableValueWriter lands (branch save-values).
-Result<bool> saveVariableValuesTo(const std::filesystem::path&, const std::map<std::string, Value>&) {
-    return Error{"saving is not built yet"};
-}
-
 std::string clockTime() {
     std::time_t now = std::time(nullptr);
     char text[16] = "";
@@ -105,7 +101,7 @@ std::string clockTime() {
 
 }  // namespace
 
-void VariablesPanel::draw(EffectSession& session) {
+void VariablesPanel::draw(LiveWorkspace& session) {
     const Workspace& ws = session.workspace();
     GlExecutor& executor = session.executor();
     if (ws.variables.empty()) {
@@ -153,15 +149,14 @@ void VariablesPanel::draw(EffectSession& session) {
     }
 }
 
-void VariablesPanel::save(EffectSession& session) {
+void VariablesPanel::save(LiveWorkspace& session) {
     std::map<std::string, Value> values;
     for (const Variable& v : session.workspace().variables)
         if (const Value* current = session.executor().variable(v.name)) values.emplace(v.name, *current);
-    Result<bool> saved = saveVariableValuesTo(session.workspace().path, values);
+    const std::string file = session.workspace().path.filename().string();
+    Result<bool> saved = saveVariableValues(session.workspace().path, values);
     statusIsError_ = !saved;
-    status_ = saved ? "saved " + std::to_string(values.size()) + " values to " + session.workspace().path.filename().string() +
-                          " at " + clockTime()
-                    : "not saved: " + saved.error();
+    status_ = saved ? "saved the values to " + file + " at " + clockTime() : "not saved: " + saved.error();
 }
 
 }  // namespace rmfx::editor

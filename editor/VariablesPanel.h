@@ -5,16 +5,16 @@
 
 #include <string>
 
-#include "editor/EffectSession.h"
+#include "runtime/LiveWorkspace.h"
 
 namespace rmfx::editor {
 
 class VariablesPanel {
 public:
-    void draw(EffectSession& session);
+    void draw(LiveWorkspace& session);
 
 private:
-    void save(EffectSession& session);
+    void save(LiveWorkspace& session);
     std::string status_;
     bool statusIsError_ = false;
 };
