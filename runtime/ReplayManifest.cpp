@@ -32,7 +32,7 @@ struct LimitAttributes {
     std::optional<bool> half;
 };
 
-constexpr std::initializer_list<const char*> kCaseAttributes = {"name", "workspace", "size", "frames", "dt"};
+constexpr std::initializer_list<const char*> kCaseAttributes = {"name", "workspace", "size", "frames", "dt", "effects"};
 constexpr std::initializer_list<const char*> kCompareAttributes = {
     "target", "reference", "error", "floor", "max", "mean", "pixel", "fail-fraction", "store"};
 constexpr std::initializer_list<const char*> kDefaultsAttributes = {
@@ -149,6 +149,19 @@ private:
             named = false;
         }
         auto workspace = r.string("workspace", true);
+        if (auto effects = r.string("effects")) {
+            std::vector<std::string> names;
+            std::string name;
+            for (char ch : *effects + " ") {
+                if (ch == ' ' || ch == ',' || ch == '\t' || ch == '\n') {
+                    if (!name.empty()) names.push_back(name);
+                    name.clear();
+                } else {
+                    name += ch;
+                }
+            }
+            c.effects = names;
+        }
         RunAttributes run = readRun(r);
         if (auto size = run.size ? run.size : defaultRun_.size) c.run.size = {size->first, size->second};
         c.run.frames = run.frames.value_or(defaultRun_.frames.value_or(1));

@@ -40,6 +40,7 @@ struct ReplayCase {
     std::string workspaceText;          // as written in the manifest
     std::filesystem::path workspace;    // resolved against the manifest's folder, normalised
     RunSettings run;                    // size {0, 0}: the workspace's own size
+    std::optional<std::vector<std::string>> effects;  // as --effects; nullopt: the workspace's choice
     std::vector<ReplaySet> sets;
     std::vector<ReplayCompare> compares;  // at least one
 

@@ -43,6 +43,7 @@ CaseRender renderReplayCase(const ReplayCase& c) {
 
     // Only what the compares read is computed, as rmfx render would for each target.
     ExecutorOptions options;
+    options.effects = c.effects;
     for (const ReplayCompare& compare : c.compares)
         options.outputs.push_back(compare.target.empty() ? ws.outputTargetName() : compare.target);
     Diagnostics rendering;

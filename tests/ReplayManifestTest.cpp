@@ -287,3 +287,27 @@ TEST(ReplayManifest, ReadsFilesAndResolvesInTheirFolder) {
 
 }  // namespace
 }  // namespace rmfx
+
+namespace rmfx {
+namespace {
+
+TEST(ReplayManifest, EffectsOfACaseAreAList) {
+    ReplayManifest m = parsedOk(manifest({
+        "  <case name=\"some\" workspace=\"a.xml\" effects=\"glare, streak ghost\">",
+        "    <compare reference=\"refs/some.exr\"/>",
+        "  </case>",
+        "  <case name=\"none\" workspace=\"a.xml\" effects=\"\">",
+        "    <compare reference=\"refs/none.exr\"/>",
+        "  </case>",
+        "  <case name=\"default\" workspace=\"a.xml\">",
+        kCompare,
+        "  </case>",
+    }));
+    ASSERT_EQ(m.cases.size(), 3u);
+    EXPECT_EQ(m.cases[0].effects, (std::vector<std::string>{"glare", "streak", "ghost"}));
+    EXPECT_EQ(m.cases[1].effects, std::vector<std::string>{});
+    EXPECT_FALSE(m.cases[2].effects.has_value());
+}
+
+}  // namespace
+}  // namespace rmfx

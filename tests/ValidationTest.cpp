@@ -755,3 +755,53 @@ TEST(Validation, OverrideErrorsNameTheVariable) {
 }
 
 }  // namespace rmfx
+
+namespace rmfx {
+
+TEST(Validation, EffectsNameDeclaredPassesAndScalarSwitches) {
+    test::ScratchDir dir;
+    auto l = load(dir, lines({
+                           "<workspace version=\"1\">",
+                           "  <vec3 name=\"Tint\" value=\"1 1 1\"/>",
+                           "  <float name=\"Gain\" value=\"1\"/>",
+                           "  <effect name=\"a\" passes=\"p q\" switch=\"Gain\"/>",
+                           "  <effect name=\"b\" passes=\"p\" switch=\"Tint Missing\"/>",
+                           "  <pass name=\"p\">",
+                           kPlainShader,
+                           "  </pass>",
+                           "  <output effects=\"a c\"/>",
+                           "</workspace>",
+                       }));
+    EXPECT_EQ(l.errors, (Lines{
+                            l.path + ":4: error: <effect name=\"a\">: pass 'q' is not declared",
+                            l.path + ":5: error: <effect name=\"b\">: pass 'p' already belongs to effect 'a' (line 4): a "
+                                     "pass belongs to one effect",
+                            l.path + ":5: error: <effect name=\"b\">: switch 'Tint' (line 2) is a vec3; a switch is a "
+                                     "bool, int or float",
+                            l.path + ":5: error: <effect name=\"b\">: switch 'Missing' is not a declared variable",
+                            l.path + ":9: error: <output>: effects: no effect named 'c' is declared",
+                        }));
+}
+
+TEST(Validation, ACycleOfPassesIsAnErrorNamingThem) {
+    test::ScratchDir dir;
+    auto l = load(dir, lines({
+                           "<workspace version=\"1\">",
+                           "  <target name=\"a\" format=\"rgba8\"/>",
+                           "  <target name=\"b\" format=\"rgba8\"/>",
+                           "  <pass name=\"pa\" target=\"a\">",
+                           "    <sampler name=\"s\" target=\"b\"/>",
+                           "    <shader stage=\"fragment\">uniform sampler2D s; out vec4 c; void main() { c = texture(s, vec2(0.5)); }</shader>",
+                           "  </pass>",
+                           "  <pass name=\"pb\" target=\"b\">",
+                           "    <sampler name=\"s\" target=\"a\"/>",
+                           "    <shader stage=\"fragment\">uniform sampler2D s; out vec4 c; void main() { c = texture(s, vec2(0.5)); }</shader>",
+                           "  </pass>",
+                           "</workspace>",
+                       }));
+    EXPECT_EQ(l.errors, (Lines{l.path + ":5: error: <sampler name=\"s\">: passes form a cycle: 'pa' reads 'b' from 'pb', "
+                                        "'pb' reads 'a' from 'pa'; read one of them with frame=\"previous\" to take last "
+                                        "frame's contents"}));
+}
+
+}  // namespace rmfx

@@ -1,6 +1,6 @@
 // The sample's final pass: blue shift under low light, tone mapping (Tone_Map_Operator: 0 none,
 // 1 the sample's per-channel operator, 2 Reinhard et al.'s photographic operator), then the star
-// and the bloom, already in display range, added on top.
+// and the bloom, already in display range, added on top when their effects run.
 #include "hdr_filter.glsl"
 #include "tonemap.glsl"
 #include "blue_shift.glsl"
@@ -30,7 +30,7 @@ void main() {
         c = toneMapPhotographic(c, Middle_Gray, adapted, white);
     }
     // Quarter and eighth texels cover 4x4 and 8x8 scene pixels exactly (see hdr_filter.glsl).
-    c += Star_Scale * bilinearHDROrBlack(Star, gl_FragCoord.xy / 4.0);
-    c += Bloom_Scale * bilinearHDROrBlack(Bloom, gl_FragCoord.xy / 8.0);
+    if (RMFX_EFFECT_star) c += Star_Scale * bilinearHDROrBlack(Star, gl_FragCoord.xy / 4.0);
+    if (RMFX_EFFECT_bloom) c += Bloom_Scale * bilinearHDROrBlack(Bloom, gl_FragCoord.xy / 8.0);
     fragColor = vec4(c, 1.0);
 }
