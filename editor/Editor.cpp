@@ -37,7 +37,7 @@ public:
         frameErrors_ = executor.renderFrame(clock);
         timing_.record(executor);
         targets_.setOutput(session_.workspace().outputTargetName(), session_.workspace().output.transform);
-        targets_.updateThumbnails(executor, blit_);
+        targets_.updateThumbnails(executor, session_.workspace(), blit_);
         drawPanel(clock);
         drawViewers();
         ImGui::Render();
@@ -97,7 +97,10 @@ private:
         if (ImGui::CollapsingHeader("Variables", ImGuiTreeNodeFlags_DefaultOpen)) variables_.draw(session_);
         if (ImGui::CollapsingHeader("Camera")) drawCamera();
         if (ImGui::CollapsingHeader("Render targets", ImGuiTreeNodeFlags_DefaultOpen)) targets_.draw(executor);
-        if (ImGui::CollapsingHeader("Timing", ImGuiTreeNodeFlags_DefaultOpen)) timing_.draw();
+        if (ImGui::CollapsingHeader("Timing", ImGuiTreeNodeFlags_DefaultOpen)) {
+            drawEffectSwitches();
+            timing_.draw();
+        }
         ImGui::End();
     }
 
@@ -133,6 +136,15 @@ private:
             targets_.drawViewers(session_.executor(), {8.0f, effect.y + 8.0f}, {width, below});
         else
             targets_.drawViewers(session_.executor(), {8.0f, 8.0f}, {width, std::min(480.0f, window.y - 16.0f)});
+    }
+
+    // Which passes ran: effects switched off by their switch variables run none of theirs.
+    void drawEffectSwitches() {
+        const GlExecutor& executor = session_.executor();
+        std::string off;
+        for (const std::string& e : executor.switchedOffEffects()) off += (off.empty() ? "" : ", ") + e;
+        ImGui::TextDisabled("%zu passes ran%s%s", executor.passesRun().size(), off.empty() ? "" : "; effects switched off: ",
+                            off.c_str());
     }
 
     void drawCamera() {

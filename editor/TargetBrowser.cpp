@@ -27,7 +27,10 @@ DisplayTransform TargetBrowser::transformOf(const std::string& target) const {
     return target == output_ ? outputTransform_ : DisplayTransform::Srgb;
 }
 
-void TargetBrowser::updateThumbnails(const GlExecutor& executor, TextureBlit& blit) {
+void TargetBrowser::updateThumbnails(const GlExecutor& executor, const Workspace& ws, TextureBlit& blit) {
+    written_.clear();
+    for (const std::string& pass : executor.passesRun())
+        if (const Pass* p = ws.findPass(pass)) written_.insert(ws.passTargetName(*p));
     std::vector<std::string> names = executor.targetNames();
     std::vector<Thumbnail> updated;
     for (const std::string& name : names) {
@@ -57,15 +60,21 @@ void TargetBrowser::draw(const GlExecutor& executor) {
         ImVec2 shown(static_cast<float>(size.x), static_cast<float>(size.y));
         float padX = (static_cast<float>(thumbnailSize) - shown.x) * 0.5f;
         ImGui::SetCursorPosX(ImGui::GetCursorPosX() + padX);
-        if (ImGui::ImageButton(t.texture->imguiTexture(), shown, ImVec2(0, 1), ImVec2(1, 0))) open(t.target);
+        const bool written = written_.count(t.target) > 0;
+        // Targets the frame did not write are dimmed: they hold what an earlier frame left.
+        const ImVec4 tint = written ? ImVec4(1, 1, 1, 1) : ImVec4(0.35f, 0.35f, 0.35f, 1.0f);
+        if (ImGui::ImageButton(t.texture->imguiTexture(), shown, ImVec2(0, 1), ImVec2(1, 0), -1, ImVec4(0, 0, 0, 0), tint))
+            open(t.target);
         ImGui::SetCursorPosX(ImGui::GetCursorPosX() - padX);
         if (ImGui::IsItemHovered()) {
             glm::ivec2 full = executor.targetSize(t.target);
-            ImGui::SetTooltip("%s: %dx%d %s; click to view", t.target.c_str(), full.x, full.y,
-                              targetFormatName(executor.targetFormat(t.target)));
+            ImGui::SetTooltip("%s: %dx%d %s%s; click to view", t.target.c_str(), full.x, full.y,
+                              targetFormatName(executor.targetFormat(t.target)),
+                              written ? "" : "; not written by the last frame (its passes are switched off)");
         }
         ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + cell);
-        ImGui::TextUnformatted(t.target.c_str());
+        if (written) ImGui::TextUnformatted(t.target.c_str());
+        else ImGui::TextDisabled("%s (off)", t.target.c_str());
         ImGui::PopTextWrapPos();
         ImGui::EndGroup();
         ImGui::PopID();
@@ -88,7 +97,7 @@ void TargetBrowser::drawViewers(const GlExecutor& executor, glm::vec2 firstPosit
         bool exists = std::find(names.begin(), names.end(), v.target()) != names.end();
         if (exists && v.target() == focus_) ImGui::SetNextWindowFocus();
         glm::vec2 position = firstPosition + glm::vec2(24.0f) * static_cast<float>(i);
-        if (!exists || !v.draw(executor, position, firstSize)) viewers_.erase(viewers_.begin() + static_cast<long>(i));
+        if (!exists || !v.draw(executor, position, firstSize, written_.count(v.target()) > 0)) viewers_.erase(viewers_.begin() + static_cast<long>(i));
         else ++i;
     }
     focus_.clear();

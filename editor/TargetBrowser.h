@@ -3,6 +3,7 @@
 // texture drawn down into a small texture, sRGB), and a large viewer window for each one clicked.
 
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -21,8 +22,9 @@ class TargetBrowser {
 public:
     // The output target is shown with the workspace's output transform, the others with sRGB.
     void setOutput(const std::string& target, DisplayTransform transform);
-    // After a frame: draws every target's thumbnail (GL; leaves framebuffer 0 bound).
-    void updateThumbnails(const GlExecutor& executor, TextureBlit& blit);
+    // After a frame: draws every target's thumbnail (GL; leaves framebuffer 0 bound) and notes
+    // the targets no pass of that frame wrote (their effect switched off, say).
+    void updateThumbnails(const GlExecutor& executor, const Workspace& ws, TextureBlit& blit);
     // The section's contents: the thumbnails; a click opens (or focuses) the target's viewer.
     void draw(const GlExecutor& executor);
     // The open viewers' windows; new ones appear near `firstPosition`, `firstSize` large.
@@ -38,6 +40,7 @@ private:
     std::vector<Thumbnail> thumbnails_;
     std::vector<std::unique_ptr<TargetViewer>> viewers_;
     std::string focus_;
+    std::set<std::string> written_;  // by the last frame
     std::string output_;
     DisplayTransform outputTransform_ = DisplayTransform::Srgb;
     DisplayTransform transformOf(const std::string& target) const;

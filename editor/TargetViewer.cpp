@@ -7,7 +7,7 @@
 
 namespace rmfx::editor {
 
-bool TargetViewer::draw(const GlExecutor& executor, glm::vec2 firstPosition, glm::vec2 firstSize) {
+bool TargetViewer::draw(const GlExecutor& executor, glm::vec2 firstPosition, glm::vec2 firstSize, bool written) {
     const std::string title = target_ + " (render target)";
     ImGui::SetNextWindowPos(ImVec2(firstPosition.x, firstPosition.y), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(firstSize.x, firstSize.y), ImGuiCond_FirstUseEver);
@@ -25,6 +25,11 @@ bool TargetViewer::draw(const GlExecutor& executor, glm::vec2 firstPosition, glm
     texture_.resize(size);
     texture_.upload(displayPixels(*image, decode_, exposureStops_, srgb_ ? DisplayTransform::Srgb : DisplayTransform::None));
 
+    if (!written) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.85f, 0.4f, 1.0f));
+        ImGui::TextWrapped("not written by the last frame (its passes are switched off): what an earlier frame left");
+        ImGui::PopStyleColor();
+    }
     ImGui::Text("%dx%d %s", size.x, size.y, targetFormatName(executor.targetFormat(target_)));
     ImGui::SameLine();
     ImGui::Checkbox("sRGB", &srgb_);

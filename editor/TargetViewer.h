@@ -20,8 +20,9 @@ public:
     const std::string& target() const { return target_; }
 
     // Reads the target, updates the picture and draws the window, first placed at `firstPosition`
-    // with `firstSize` (window coordinates). Returns false once the user closed the window.
-    bool draw(const GlExecutor& executor, glm::vec2 firstPosition, glm::vec2 firstSize);
+    // with `firstSize` (window coordinates). `written`: whether the last frame wrote the target.
+    // Returns false once the user closed the window.
+    bool draw(const GlExecutor& executor, glm::vec2 firstPosition, glm::vec2 firstSize, bool written);
 
 private:
     std::string target_;
