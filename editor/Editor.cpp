@@ -24,7 +24,7 @@ namespace {
 class Editor {
 public:
     Editor(EditorWindow& window, LiveWorkspace& session, TextureBlit& blit)
-        : window_(window), session_(session), blit_(blit), camera_(session.workspace().camera) {}
+        : window_(window), session_(session), blit_(blit) {}
 
     // One frame: input, reload, the effect's frame, the panel, presentation (not the swap).
     void frame(const FrameClock& clock, bool userInput) {
@@ -33,7 +33,6 @@ public:
         handleMouse();
         GlExecutor& executor = session_.executor();
         executor.setTimingEnabled(true);
-        executor.camera() = camera_;
         frameErrors_ = executor.renderFrame(clock);
         timing_.record(executor);
         targets_.setOutput(session_.workspace().outputTargetName(), session_.workspace().output.transform);
@@ -70,10 +69,12 @@ private:
         }
         const glm::vec2 delta(io.MouseDelta.x, io.MouseDelta.y);
         const glm::vec2 scale = window_.framebufferScale();
-        if (dragging_[ImGuiMouseButton_Left]) orbitByDrag(camera_, delta);
+        // The executor's camera: LiveWorkspace carries it over reloads (docs/hot-reload.md).
+        OrbitCamera& camera = session_.executor().camera();
+        if (dragging_[ImGuiMouseButton_Left]) orbitByDrag(camera, delta);
         if (dragging_[ImGuiMouseButton_Right] || dragging_[ImGuiMouseButton_Middle])
-            panByDrag(camera_, delta * scale, session_.executor().viewport().y);
-        if (over && io.MouseWheel != 0.0f) zoomByWheel(camera_, io.MouseWheel);
+            panByDrag(camera, delta * scale, session_.executor().viewport().y);
+        if (over && io.MouseWheel != 0.0f) zoomByWheel(camera, io.MouseWheel);
     }
 
     void drawPanel(const FrameClock& clock) {
@@ -148,13 +149,14 @@ private:
     }
 
     void drawCamera() {
-        const OrbitCameraSettings& s = camera_.settings();
+        OrbitCamera& camera = session_.executor().camera();
+        const OrbitCameraSettings& s = camera.settings();
         ImGui::Text("target %.2f %.2f %.2f, distance %.2f", s.target.x, s.target.y, s.target.z, s.distance);
         ImGui::Text("yaw %.1f, pitch %.1f, fov %.0f", s.yawDegrees, s.pitchDegrees, s.fovYDegrees);
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
         ImGui::TextWrapped("over the effect: left drag orbits, right or middle drag pans, the wheel zooms");
         ImGui::PopStyleColor();
-        if (ImGui::Button("Reset camera")) camera_.reset(session_.workspace().camera);
+        if (ImGui::Button("Reset camera")) camera.reset(session_.workspace().camera);
     }
 
     // The effect's output, texel for pixel, at the framebuffer's top-left corner.
@@ -179,7 +181,6 @@ private:
     EditorWindow& window_;
     LiveWorkspace& session_;
     TextureBlit& blit_;
-    OrbitCamera camera_;
     bool dragging_[3] = {false, false, false};
     Diagnostics frameErrors_;
     VariablesPanel variables_;
