@@ -64,6 +64,14 @@ Names withPrefix(const GlRun& run, const std::string& prefix) {
     return names;
 }
 
+// shader_5 with the glare alone: the scene, the six glare levels, the screen and the composite.
+Names glarePasses(const GlRun& run) {
+    Names names{"environment", "teapot"};
+    for (const std::string& p : withPrefix(run, "glare_")) names.push_back(p);
+    names.insert(names.end(), {"screen", "combine"});
+    return names;
+}
+
 // Pixels that differ in any bit, and the largest difference.
 void expectSameBits(const Image& a, const Image& b, const std::string& what) {
     ASSERT_EQ(a.pixels.size(), b.pixels.size()) << what;
@@ -81,9 +89,7 @@ void expectSameBits(const Image& a, const Image& b, const std::string& what) {
 TEST_F(PassCullingGLTest, EffectsLeftOutNeverDrawAndHoldNoMemory) {
     GlRun run = shader5(outputOnly(Names{"glare"}));
     ASSERT_TRUE(run.exec);
-    Names expected{"environment", "teapot"};
-    for (const std::string& p : withPrefix(run, "glare_")) expected.push_back(p);
-    expected.insert(expected.end(), {"screen", "combine"});
+    Names expected = glarePasses(run);
     EXPECT_EQ(run.exec->passesRun(), expected);
     EXPECT_EQ(primitivesOfFrame(*run.exec), primitivesOf(expected));
 
@@ -114,7 +120,8 @@ TEST_F(PassCullingGLTest, AskingForOneTargetRunsOnlyItsChain) {
     // The same target from the full workspace.
     GlRun full = shader5({});
     ASSERT_TRUE(full.exec);
-    expectSameBits(readBack(*run.exec, "glare_2"), readBack(*full.exec, "glare_2"), "glare_2 alone vs in the full frame");
+    expectSameBits(readBack(*run.exec, "glare_2"), readBack(*full.exec, "glare_2"),
+                   "glare_2 alone vs in the full frame");
 }
 
 struct Switch {
@@ -164,17 +171,17 @@ TEST_F(PassCullingGLTest, SwitchingAnEffectOffAndOnMatchesTheWorkspaceWithoutAnd
         EXPECT_EQ(live.exec->passesRun(), allPasses);
         expectSameBits(readBack(*live.exec, "output"), allOn, s.effect + " switched back on");
     }
-    for (const Pass& p : live.ws->passes) EXPECT_EQ(live.exec->passProgram(p.name), programs[p.name]) << p.name << " recompiled";
-    for (const std::string& t : live.exec->targetNames()) EXPECT_EQ(live.exec->targetTexture(t), textures[t]) << t << " reallocated";
+    for (const Pass& p : live.ws->passes)
+        EXPECT_EQ(live.exec->passProgram(p.name), programs[p.name]) << p.name << " recompiled";
+    for (const std::string& t : live.exec->targetNames())
+        EXPECT_EQ(live.exec->targetTexture(t), textures[t]) << t << " reallocated";
     EXPECT_EQ(live.exec->allocatedTextureCount(), textureCount);
 }
 
 TEST_F(PassCullingGLTest, AnEffectSwitchedOffDrawsNothingOfIt) {
     GlRun run = shader5(outputOnly(), {{"Streak_Factor", "0"}, {"Ghost_Factor", "0"}});
     ASSERT_TRUE(run.exec);
-    Names expected{"environment", "teapot"};
-    for (const std::string& p : withPrefix(run, "glare_")) expected.push_back(p);
-    expected.insert(expected.end(), {"screen", "combine"});
+    Names expected = glarePasses(run);
     EXPECT_EQ(run.exec->passesRun(), expected);
     EXPECT_EQ(primitivesOfFrame(*run.exec), primitivesOf(expected));
 }
@@ -189,7 +196,8 @@ TEST_F(PassCullingGLTest, SharingMemoryChangesNoPixel) {
     ASSERT_TRUE(pooled.exec && unpooled.exec && kept.exec);
     EXPECT_LT(pooled.exec->allocatedTextureCount(), unpooled.exec->allocatedTextureCount());
     expectSameBits(readBack(*pooled.exec, "output"), readBack(*unpooled.exec, "output"), "shader_5 pooled vs not");
-    expectSameBits(readBack(*pooled.exec, "output"), readBack(*kept.exec, "output"), "shader_5 pooled vs every target kept");
+    expectSameBits(readBack(*pooled.exec, "output"), readBack(*kept.exec, "output"),
+                   "shader_5 pooled vs every target kept");
 
     // HDRLighting: 45 passes, carried adaptation and luminance targets, several frames.
     RunSettings frames{{kSize, kSize}, 4, 0.1f};
@@ -285,9 +293,9 @@ TEST_F(PassCullingGLTest, AnUnguardedReadOfALeftOutEffectIsAnErrorAndAGuardedOne
 
 TEST_F(PassCullingGLTest, ExplainPrintsTheScheduleTargetsAndPeakMemory) {
     ScratchDir dir;
-    CommandResult r = runRmfx("render " + shellQuoted(sourceDir() / "effects/shader_5.xml") +
-                                  " --explain --effects glare --size 64x64",
-                              dir.path());
+    CommandResult r = runRmfx(
+        "render " + shellQuoted(sourceDir() / "effects/shader_5.xml") + " --explain --effects glare --size 64x64",
+        dir.path());
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("passes: 10 of 20 run"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("targets: 8 of 18 allocated, in 5 textures"), std::string::npos) << r.out;

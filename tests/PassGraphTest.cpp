@@ -15,6 +15,8 @@
 namespace rmfx {
 namespace {
 
+using test::passXml;
+
 using Names = std::vector<std::string>;
 
 std::unique_ptr<Workspace> parse(const std::string& xml) {
@@ -22,20 +24,6 @@ std::unique_ptr<Workspace> parse(const std::string& xml) {
     EXPECT_FALSE(hasErrors(parsed.diagnostics)) << formatAll(parsed.diagnostics);
     if (!parsed.workspace) return nullptr;
     return std::make_unique<Workspace>(std::move(*parsed.workspace));
-}
-
-// A pass writing `target` (empty: the output) and sampling `reads`; `extra` goes inside <pass>.
-std::string pass(const std::string& name, const std::string& target, const Names& reads, const std::string& extra = "") {
-    std::string xml = "  <pass name=\"" + name + "\"" + (target.empty() ? "" : " target=\"" + target + "\"") + ">\n";
-    for (size_t i = 0; i < reads.size(); ++i) {
-        std::string read = reads[i];
-        bool previous = read.back() == '\'';
-        if (previous) read.pop_back();
-        xml += "    <sampler name=\"s" + std::to_string(i) + "\" target=\"" + read + "\"" +
-               (previous ? " frame=\"previous\"" : "") + "/>\n";
-    }
-    xml += extra + "    <shader stage=\"fragment\">out vec4 c; void main() { c = vec4(1.0); }</shader>\n  </pass>\n";
-    return xml;
 }
 
 std::string workspace(const std::string& body, const Names& targets) {
@@ -59,11 +47,13 @@ PassGraph build(const Workspace& ws, FrameRequest request = {}) {
     return g;
 }
 
-const PassNode& node(const PassGraph& g, const std::string& name) { return g.nodes[static_cast<size_t>(g.passIndex(name))]; }
+const PassNode& node(const PassGraph& g, const std::string& name) {
+    return g.nodes[static_cast<size_t>(g.passIndex(name))];
+}
 
 TEST(PassGraph, OnlyThePassesTheOutputNeedsRunInDocumentOrder) {
-    auto ws = parse(workspace(pass("a", "ta", {}) + pass("unused", "tu", {}) + pass("b", "tb", {"ta"}) +
-                                  pass("c", "tc", {"tu"}) + pass("final", "", {"tb", "ta"}),
+    auto ws = parse(workspace(passXml("a", "ta", {}) + passXml("unused", "tu", {}) + passXml("b", "tb", {"ta"}) +
+                                  passXml("c", "tc", {"tu"}) + passXml("final", "", {"tb", "ta"}),
                               {"ta", "tb", "tc", "tu"}));
     PassGraph g = build(*ws);
     EXPECT_EQ(scheduled(g), (Names{"a", "b", "final"}));
@@ -81,9 +71,10 @@ TEST(PassGraph, OnlyThePassesTheOutputNeedsRunInDocumentOrder) {
 }
 
 TEST(PassGraph, AWriteReplacedBeforeAnyReadIsCulledAndABlendKeepsItsPredecessor) {
-    auto ws = parse(workspace(pass("dead", "t", {}) + pass("replace", "t", {}) +
-                                  pass("blend", "t", {}, "    <blend mode=\"add\"/>\n") + pass("final", "", {"t"}),
-                              {"t"}));
+    auto ws =
+        parse(workspace(passXml("dead", "t", {}) + passXml("replace", "t", {}) +
+                            passXml("blend", "t", {}, "    <blend mode=\"add\"/>\n") + passXml("final", "", {"t"}),
+                        {"t"}));
     PassGraph g = build(*ws);
     EXPECT_EQ(scheduled(g), (Names{"replace", "blend", "final"}));
     EXPECT_EQ(node(g, "dead").why, "'replace' replaces 't' before anything reads it");
@@ -93,10 +84,11 @@ TEST(PassGraph, AWriteReplacedBeforeAnyReadIsCulledAndABlendKeepsItsPredecessor)
 }
 
 TEST(PassGraph, AMeshWithoutClearLoadsItsTargetAndAClearDoesNot) {
-    auto ws = parse(workspace(pass("sky", "t", {}) + pass("model", "t", {}, "    <draw mesh=\"teapot\"/>\n") +
-                                  pass("cleared", "u", {}, "    <clear color=\"0 0 0 1\"/>\n    <draw mesh=\"teapot\"/>\n") +
-                                  pass("final", "", {"t", "u"}),
-                              {"t", "u"}));
+    auto ws = parse(
+        workspace(passXml("sky", "t", {}) + passXml("model", "t", {}, "    <draw mesh=\"teapot\"/>\n") +
+                      passXml("cleared", "u", {}, "    <clear color=\"0 0 0 1\"/>\n    <draw mesh=\"teapot\"/>\n") +
+                      passXml("final", "", {"t", "u"}),
+                  {"t", "u"}));
     PassGraph g = build(*ws);
     EXPECT_EQ(scheduled(g), (Names{"sky", "model", "cleared", "final"}));
     EXPECT_TRUE(node(g, "model").loadsTarget);
@@ -105,8 +97,9 @@ TEST(PassGraph, AMeshWithoutClearLoadsItsTargetAndAClearDoesNot) {
 }
 
 TEST(PassGraph, APreviousFrameReadNeedsTheTargetsLastWriterAndCarriesIt) {
-    auto ws = parse(workspace(pass("measure", "m", {}) + pass("show", "", {"acc'", "m"}) + pass("adapt", "acc", {"acc'", "m"}),
-                              {"m", "acc"}));
+    auto ws = parse(workspace(
+        passXml("measure", "m", {}) + passXml("show", "", {"acc'", "m"}) + passXml("adapt", "acc", {"acc'", "m"}),
+        {"m", "acc"}));
     PassGraph g = build(*ws);
     // adapt comes after the output's writer, but the output reads what it leaves for the next frame.
     EXPECT_EQ(scheduled(g), (Names{"measure", "show", "adapt"}));
@@ -115,10 +108,11 @@ TEST(PassGraph, APreviousFrameReadNeedsTheTargetsLastWriterAndCarriesIt) {
 }
 
 TEST(PassGraph, DisabledPassesAreCulledAndTheirReadersFail) {
-    auto ws = parse(workspace(pass("a", "t", {}) + "  <pass name=\"off\" target=\"u\" enabled=\"false\">\n"
+    auto ws = parse(workspace(passXml("a", "t", {}) +
+                                  "  <pass name=\"off\" target=\"u\" enabled=\"false\">\n"
                                   "    <shader stage=\"fragment\">out vec4 c; void main() { c = vec4(1.0); }</shader>\n"
                                   "  </pass>\n" +
-                                  pass("final", "", {"t"}) + pass("other", "v", {"u"}),
+                                  passXml("final", "", {"t"}) + passXml("other", "v", {"u"}),
                               {"t", "u", "v"}));
     PassGraph g = build(*ws);
     EXPECT_EQ(node(g, "off").fate, PassFate::Disabled);
@@ -127,12 +121,13 @@ TEST(PassGraph, DisabledPassesAreCulledAndTheirReadersFail) {
     Diagnostics d;
     buildPassGraph(*ws, {{"v"}, {}, {}}, d);
     ASSERT_EQ(d.size(), 1u);
-    EXPECT_EQ(d[0].format(), "graph.xml:16: error: <sampler name=\"s0\">: pass 'other' reads target 'u', which no running "
-                             "pass wrote earlier in the frame");
+    EXPECT_EQ(d[0].format(),
+              "graph.xml:16: error: <sampler name=\"s0\">: pass 'other' reads target 'u', which no running "
+              "pass wrote earlier in the frame");
 }
 
 TEST(PassGraph, AnOutputNothingWritesIsAnError) {
-    auto ws = parse(workspace(pass("a", "t", {}) + pass("final", "", {"t"}), {"t", "never"}));
+    auto ws = parse(workspace(passXml("a", "t", {}) + passXml("final", "", {"t"}), {"t", "never"}));
     Diagnostics d;
     buildPassGraph(*ws, {{"never", "nope"}, {}, {}}, d);
     ASSERT_EQ(d.size(), 2u);
@@ -208,7 +203,8 @@ TEST(PassGraph, TheShaderPreludeFollowsTheSelection) {
     auto ws = shader5();
     ASSERT_TRUE(ws);
     ShaderPrelude p = effectPrelude(*ws, {"glare"});
-    EXPECT_EQ(p.defines, (Names{"RMFX_EFFECT_glare rmfx_effect_glare", "RMFX_EFFECT_streak false", "RMFX_EFFECT_ghost false"}));
+    EXPECT_EQ(p.defines,
+              (Names{"RMFX_EFFECT_glare rmfx_effect_glare", "RMFX_EFFECT_streak false", "RMFX_EFFECT_ghost false"}));
     EXPECT_EQ(p.declarations, (Names{"uniform bool rmfx_effect_glare;"}));
 }
 
@@ -228,17 +224,19 @@ TEST(PassGraph, UnknownEffectNamesAreErrorsListingTheDeclaredOnes) {
 // ---- validation: order ----
 
 TEST(PassOrder, ATwoPassCycleNamesBothPassesAndTheTargets) {
-    auto ws = parse(workspace(pass("a", "ta", {"tb"}) + pass("b", "tb", {"ta"}) + pass("final", "", {"tb"}), {"ta", "tb"}));
+    auto ws = parse(workspace(passXml("a", "ta", {"tb"}) + passXml("b", "tb", {"ta"}) + passXml("final", "", {"tb"}),
+                              {"ta", "tb"}));
     Diagnostics d = checkPassOrder(*ws);
     ASSERT_EQ(d.size(), 1u) << formatAll(d);
-    EXPECT_EQ(d[0].format(), "graph.xml:5: error: <sampler name=\"s0\">: passes form a cycle: 'a' reads 'tb' from 'b', "
-                             "'b' reads 'ta' from 'a'; read one of them with frame=\"previous\" to take last frame's "
-                             "contents");
+    EXPECT_EQ(d[0].format(),
+              "graph.xml:5: error: <sampler name=\"s0\">: passes form a cycle: 'a' reads 'tb' from 'b', "
+              "'b' reads 'ta' from 'a'; read one of them with frame=\"previous\" to take last frame's "
+              "contents");
 }
 
 TEST(PassOrder, AThreePassCycleIsWalkedInOrder) {
-    auto ws = parse(workspace(pass("a", "ta", {"tc"}) + pass("b", "tb", {"ta"}) + pass("c", "tc", {"tb"}) +
-                                  pass("final", "", {"tc"}),
+    auto ws = parse(workspace(passXml("a", "ta", {"tc"}) + passXml("b", "tb", {"ta"}) + passXml("c", "tc", {"tb"}) +
+                                  passXml("final", "", {"tc"}),
                               {"ta", "tb", "tc"}));
     Diagnostics d = checkPassOrder(*ws);
     ASSERT_EQ(d.size(), 1u) << formatAll(d);
@@ -247,26 +245,28 @@ TEST(PassOrder, AThreePassCycleIsWalkedInOrder) {
               std::string::npos)
         << d[0].message;
     // Reading last frame's tc breaks it.
-    auto fixed = parse(workspace(pass("a", "ta", {"tc'"}) + pass("b", "tb", {"ta"}) + pass("c", "tc", {"tb"}) +
-                                     pass("final", "", {"tc"}),
+    auto fixed = parse(workspace(passXml("a", "ta", {"tc'"}) + passXml("b", "tb", {"ta"}) + passXml("c", "tc", {"tb"}) +
+                                     passXml("final", "", {"tc"}),
                                  {"ta", "tb", "tc"}));
     EXPECT_TRUE(checkPassOrder(*fixed).empty()) << formatAll(checkPassOrder(*fixed));
 }
 
 TEST(PassOrder, AReadBeforeTheWriteNamesTheLaterWriter) {
-    auto ws = parse(workspace(pass("early", "te", {"t"}) + pass("write", "t", {}) + pass("final", "", {"te"}), {"t", "te"}));
+    auto ws = parse(workspace(passXml("early", "te", {"t"}) + passXml("write", "t", {}) + passXml("final", "", {"te"}),
+                              {"t", "te"}));
     Diagnostics d = checkPassOrder(*ws);
     ASSERT_EQ(d.size(), 1u);
-    EXPECT_EQ(d[0].message, "pass 'early' reads target 't' before any pass writes it in the frame ('write' writes it "
-                            "later); move the pass after it, or read last frame's contents with frame=\"previous\"");
+    EXPECT_EQ(d[0].message,
+              "pass 'early' reads target 't' before any pass writes it in the frame ('write' writes it "
+              "later); move the pass after it, or read last frame's contents with frame=\"previous\"");
 }
 
 TEST(PassOrder, ATargetNothingWritesIsAnErrorUnlessReadAsLastFrames) {
-    auto ws = parse(workspace(pass("final", "", {"ghost"}), {"ghost"}));
+    auto ws = parse(workspace(passXml("final", "", {"ghost"}), {"ghost"}));
     Diagnostics d = checkPassOrder(*ws);
     ASSERT_EQ(d.size(), 1u);
     EXPECT_NE(d[0].message.find("pass 'final' reads target 'ghost', which no pass writes"), std::string::npos);
-    EXPECT_TRUE(checkPassOrder(*parse(workspace(pass("final", "", {"ghost'"}), {"ghost"}))).empty());
+    EXPECT_TRUE(checkPassOrder(*parse(workspace(passXml("final", "", {"ghost'"}), {"ghost"}))).empty());
 }
 
 TEST(PassOrder, EveryProjectWorkspaceIsInOrder) {

@@ -6,9 +6,12 @@
 #include <gtest/gtest.h>
 
 #include "runtime/WorkspaceParser.h"
+#include "tests/TestSupport.h"
 
 namespace rmfx {
 namespace {
+
+using test::passXml;
 
 using Names = std::vector<std::string>;
 
@@ -34,38 +37,28 @@ Planned planText(const std::string& xml, FrameRequest request = {}, bool pool = 
     return p;
 }
 
-std::string pass(const std::string& name, const std::string& target, const Names& reads, const std::string& extra = "") {
-    std::string xml = "  <pass name=\"" + name + "\"" + (target.empty() ? "" : " target=\"" + target + "\"") + ">\n";
-    for (size_t i = 0; i < reads.size(); ++i) {
-        std::string read = reads[i];
-        bool previous = read.back() == '\'';
-        if (previous) read.pop_back();
-        xml += "    <sampler name=\"s" + std::to_string(i) + "\" target=\"" + read + "\"" +
-               (previous ? " frame=\"previous\"" : "") + "/>\n";
-    }
-    return xml + extra + "    <shader stage=\"fragment\">out vec4 c; void main() { c = vec4(1.0); }</shader>\n  </pass>\n";
-}
-
 // Targets as "name format [size]" lines; the workspace is 8x8.
 std::string workspace(const std::string& targets, const std::string& passes) {
     return "<workspace version=\"1\" name=\"plan\" size=\"8x8\">\n" + targets + passes + "</workspace>\n";
 }
 
 std::string target(const std::string& name, const std::string& format = "rgba16f", const std::string& size = "") {
-    return "  <target name=\"" + name + "\" format=\"" + format + "\"" + (size.empty() ? "" : " size=\"" + size + "\"") + "/>\n";
+    return "  <target name=\"" + name + "\" format=\"" + format + "\"" +
+           (size.empty() ? "" : " size=\"" + size + "\"") + "/>\n";
 }
 
 Names sharing(const TargetPlan& plan, const std::string& name) {
     Names names;
     const PlannedTarget& t = plan.targets[static_cast<size_t>(plan.find(name))];
-    for (int k : plan.resources[static_cast<size_t>(t.resource)].targets) names.push_back(plan.targets[static_cast<size_t>(k)].name);
+    for (int k : plan.resources[static_cast<size_t>(t.resource)].targets)
+        names.push_back(plan.targets[static_cast<size_t>(k)].name);
     return names;
 }
 
 TEST(TargetPlan, AChainPingPongsBetweenTwoTexturesAndTheOutputReusesOne) {
     Planned p = planText(workspace(target("ta") + target("tb") + target("tc") + target("td"),
-                                   pass("a", "ta", {}) + pass("b", "tb", {"ta"}) + pass("c", "tc", {"tb"}) +
-                                       pass("d", "td", {"tc"}) + pass("final", "", {"td"})));
+                                   passXml("a", "ta", {}) + passXml("b", "tb", {"ta"}) + passXml("c", "tc", {"tb"}) +
+                                       passXml("d", "td", {"tc"}) + passXml("final", "", {"td"})));
     // Lifetimes (pass indices): ta 0..1, tb 1..2, tc 2..3, td 3..4, output 4..end.
     EXPECT_EQ(p.plan.resources.size(), 2u);
     EXPECT_EQ(sharing(p.plan, "ta"), (Names{"ta", "tc", "output"}));
@@ -77,10 +70,11 @@ TEST(TargetPlan, AChainPingPongsBetweenTwoTexturesAndTheOutputReusesOne) {
     EXPECT_EQ(output.firstUse, 4);
     EXPECT_EQ(output.lastUse, 5) << "an output lives to the end of the frame";
 
-    Planned unpooled = planText(workspace(target("ta") + target("tb") + target("tc") + target("td"),
-                                          pass("a", "ta", {}) + pass("b", "tb", {"ta"}) + pass("c", "tc", {"tb"}) +
-                                              pass("d", "td", {"tc"}) + pass("final", "", {"td"})),
-                                {}, false);
+    Planned unpooled =
+        planText(workspace(target("ta") + target("tb") + target("tc") + target("td"),
+                           passXml("a", "ta", {}) + passXml("b", "tb", {"ta"}) + passXml("c", "tc", {"tb"}) +
+                               passXml("d", "td", {"tc"}) + passXml("final", "", {"td"})),
+                 {}, false);
     EXPECT_EQ(unpooled.plan.resources.size(), 5u);
     EXPECT_EQ(unpooled.plan.allocatedBytes, 5 * one);
 }
@@ -88,9 +82,10 @@ TEST(TargetPlan, AChainPingPongsBetweenTwoTexturesAndTheOutputReusesOne) {
 TEST(TargetPlan, OnlySameSizeFormatAndDepthShare) {
     Planned p = planText(workspace(target("half") + target("full32", "rgba32f") + target("small", "rgba16f", "4x4") +
                                        target("deep") + target("late"),
-                                   pass("a", "half", {}) + pass("b", "full32", {"half"}) + pass("c", "small", {"full32"}) +
-                                       pass("d", "deep", {"small"}, "    <clear depth=\"1\"/>\n") +
-                                       pass("e", "late", {"deep"}) + pass("final", "", {"late"})));
+                                   passXml("a", "half", {}) + passXml("b", "full32", {"half"}) +
+                                       passXml("c", "small", {"full32"}) +
+                                       passXml("d", "deep", {"small"}, "    <clear depth=\"1\"/>\n") +
+                                       passXml("e", "late", {"deep"}) + passXml("final", "", {"late"})));
     EXPECT_EQ(sharing(p.plan, "half"), (Names{"half", "late"}));  // deep has a depth buffer, half has not
     EXPECT_EQ(sharing(p.plan, "full32"), (Names{"full32"}));
     EXPECT_EQ(sharing(p.plan, "small"), (Names{"small"}));
@@ -100,10 +95,11 @@ TEST(TargetPlan, OnlySameSizeFormatAndDepthShare) {
 
 TEST(TargetPlan, CarriedTargetsGetMemoryOfTheirOwn) {
     // acc is read as last frame's (two buffers); blendOnly is drawn over before anything writes it.
-    Planned p = planText(workspace(target("m") + target("acc") + target("blendOnly") + target("later"),
-                                   pass("measure", "m", {}) + pass("adapt", "acc", {"acc'", "m"}) +
-                                       pass("glow", "blendOnly", {"acc"}, "    <blend mode=\"add\"/>\n") +
-                                       pass("after", "later", {"blendOnly"}) + pass("final", "", {"later", "acc"})));
+    Planned p =
+        planText(workspace(target("m") + target("acc") + target("blendOnly") + target("later"),
+                           passXml("measure", "m", {}) + passXml("adapt", "acc", {"acc'", "m"}) +
+                               passXml("glow", "blendOnly", {"acc"}, "    <blend mode=\"add\"/>\n") +
+                               passXml("after", "later", {"blendOnly"}) + passXml("final", "", {"later", "acc"})));
     const PlannedTarget& acc = p.plan.targets[static_cast<size_t>(p.plan.find("acc"))];
     EXPECT_TRUE(acc.history);
     EXPECT_TRUE(acc.carried);
@@ -115,8 +111,9 @@ TEST(TargetPlan, CarriedTargetsGetMemoryOfTheirOwn) {
 }
 
 TEST(TargetPlan, TargetsOfCulledPassesGetNoMemory) {
-    Planned p = planText(workspace(target("used") + target("unused"),
-                                   pass("a", "used", {}) + pass("b", "unused", {}) + pass("final", "", {"used"})));
+    Planned p =
+        planText(workspace(target("used") + target("unused"),
+                           passXml("a", "used", {}) + passXml("b", "unused", {}) + passXml("final", "", {"used"})));
     const PlannedTarget& unused = p.plan.targets[static_cast<size_t>(p.plan.find("unused"))];
     EXPECT_FALSE(unused.used);
     EXPECT_EQ(unused.resource, -1);
@@ -127,9 +124,9 @@ TEST(TargetPlan, TargetsOfCulledPassesGetNoMemory) {
 TEST(TargetPlan, OnePlanForSeveralGraphsCoversEveryLifetime) {
     // With the effect on, t1 lives 0..2 (read by "use"); with it off, "use" reads nothing and
     // the plan of both must still keep t1 and t2 apart.
-    std::string xml = workspace(target("t1") + target("t2"),
-                                "  <effect name=\"fx\" passes=\"b\"/>\n" + pass("a", "t1", {}) + pass("b", "t2", {}) +
-                                    pass("use", "", {"t1", "t2"}));
+    std::string xml =
+        workspace(target("t1") + target("t2"), "  <effect name=\"fx\" passes=\"b\"/>\n" + passXml("a", "t1", {}) +
+                                                   passXml("b", "t2", {}) + passXml("use", "", {"t1", "t2"}));
     ParsedWorkspace parsed = parseWorkspaceText(xml, "plan.xml", ".");
     ASSERT_TRUE(parsed.workspace) << formatAll(parsed.diagnostics);
     Workspace& ws = *parsed.workspace;

@@ -75,4 +75,17 @@ std::filesystem::path ScratchDir::write(const std::string& name, const std::stri
     return file;
 }
 
+std::string passXml(const std::string& name, const std::string& target, const std::vector<std::string>& reads,
+                    const std::string& extra) {
+    std::string xml = "  <pass name=\"" + name + "\"" + (target.empty() ? "" : " target=\"" + target + "\"") + ">\n";
+    for (size_t i = 0; i < reads.size(); ++i) {
+        std::string read = reads[i];
+        bool previous = !read.empty() && read.back() == '\'';
+        if (previous) read.pop_back();
+        xml += "    <sampler name=\"s" + std::to_string(i) + "\" target=\"" + read + "\"" +
+               (previous ? " frame=\"previous\"" : "") + "/>\n";
+    }
+    return xml + extra + "    <shader stage=\"fragment\">out vec4 c; void main() { c = vec4(1.0); }</shader>\n  </pass>\n";
+}
+
 }  // namespace rmfx::test

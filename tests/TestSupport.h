@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace rmfx::test {
 
@@ -19,6 +20,11 @@ std::string readText(const std::filesystem::path& file);
 
 // A path in single quotes, for a shell command line.
 std::string shellQuoted(const std::filesystem::path& path);
+
+// A <pass> that writes `target` (empty: the output) with a trivial shader and one sampler per
+// entry of `reads` (a trailing ' reads it with frame="previous"); `extra` goes inside the pass.
+std::string passXml(const std::string& name, const std::string& target, const std::vector<std::string>& reads,
+                    const std::string& extra = "");
 
 struct CommandResult {
     int status = -1;  // the exit status; -1 when the process did not exit normally
