@@ -9,5 +9,6 @@ namespace rmfx::cli {
 int renderCommand(const std::vector<std::string>& args);
 int validateCommand(const std::vector<std::string>& args);
 int replayCommand(const std::vector<std::string>& args);
+int editCommand(const std::vector<std::string>& args);
 
 }  // namespace rmfx::cli

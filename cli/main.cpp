@@ -17,6 +17,8 @@ usage:
   rmfx validate WORKSPACE...          check workspaces (structure, references, shaders) without GL
   rmfx replay MANIFEST [options]      regression tests: render the manifest's cases and compare them
                                       with their reference images (docs/replay.md)
+  rmfx edit WORKSPACE [options]       open the editor: the running effect beside a panel of its
+                                      variables, render targets and timing (docs/editor.md)
   rmfx --help | --version
 
 WORKSPACE is an rmfx workspace file (docs/workspace-format.md); without one, render uses the
@@ -48,9 +50,22 @@ replay options:
   --update               store the renders as the references instead of comparing
   -q, --quiet            print only failing cases and errors
 
-exit status: render, validate: 0 success, 1 invalid workspace or arguments, 2 rendering or GL
-failure. replay: 0 every case passed, 1 a case failed (comparison, workspace or rendering
-error) or the manifest or arguments are invalid, 2 no GL context.
+edit options:
+  --size WxH             viewport size (default: the workspace's size); the effect is shown 1:1
+                         at the window's top-left corner
+  --set NAME=VALUE       override a variable's starting value (repeatable), as for render
+  --view TARGET          open the viewer of a render target from the start (repeatable)
+  --frames N             render N frames at a fixed step, write the screenshots, exit
+                         (the mouse is ignored meanwhile)
+  --dt SECONDS           the step of --frames runs (default 1/60)
+  --screenshot FILE      with --frames: write the whole window to FILE (PNG)
+  --output-screenshot FILE
+                         with --frames: write the effect's output to FILE, as render would
+
+exit status: render, validate, edit: 0 success, 1 invalid workspace or arguments, 2 rendering or
+GL failure (edit: also no window, or an rmfx built without the editor). replay: 0 every case
+passed, 1 a case failed (comparison, workspace or rendering error) or the manifest or arguments
+are invalid, 2 no GL context.
 )";
 
 }  // namespace
@@ -70,6 +85,7 @@ int main(int argc, char** argv) {
     if (command == "render") return rmfx::cli::renderCommand(args);
     if (command == "validate") return rmfx::cli::validateCommand(args);
     if (command == "replay") return rmfx::cli::replayCommand(args);
+    if (command == "edit") return rmfx::cli::editCommand(args);
     std::cerr << "rmfx: unknown command '" << command << "' (try rmfx --help)\n";
     return 1;
 }

@@ -853,10 +853,7 @@ const std::vector<PassTiming>& GlExecutor::passTimings() const {
     return impl_->timings;
 }
 
-double GlExecutor::frameGpuMilliseconds() const {
-    impl_->collectTimings(false);
-    return impl_->frameMilliseconds;
-}
+double GlExecutor::frameGpuMilliseconds() const { return impl_->frameMilliseconds; }
 
 Result<Image> GlExecutor::readTarget(const std::string& name) const {
     const Impl& s = *impl_;

@@ -73,7 +73,9 @@ public:
     // schedule order, and is empty until one has completed.
     void setTimingEnabled(bool enabled);
     const std::vector<PassTiming>& passTimings() const;
-    double frameGpuMilliseconds() const;  // first pass start to last pass end of that frame
+    // First pass start to last pass end of the frame passTimings() last returned (it does not look
+    // for a newer one, so the two always describe the same frame).
+    double frameGpuMilliseconds() const;
 
     OrbitCamera& camera() { return camera_; }
     glm::ivec2 viewport() const { return viewport_; }

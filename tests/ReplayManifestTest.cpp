@@ -181,7 +181,7 @@ TEST(ReplayManifest, UnknownAttributesListTheKnownOnes) {
         (Lines{at + "2: error: <defaults>: unknown attribute 'tolerance' (expected one of: size, frames, dt, error, "
                     "floor, max, mean, pixel, fail-fraction, store)",
                at + "3: error: <case name=\"a\">: unknown attribute 'frame' (expected one of: name, workspace, size, "
-                    "frames, dt)",
+                    "frames, dt, effects)",
                at + "4: error: <set name=\"x\">: unknown attribute 'val' (expected one of: name, value)",
                at + "4: error: <set name=\"x\">: missing attribute 'value'",
                at + "5: error: <compare>: unknown attribute 'output' (expected one of: target, reference, error, "

@@ -1,0 +1,29 @@
+#pragma once
+// `rmfx edit` arguments.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+namespace rmfx::editor {
+
+struct EditorOptions {
+    std::filesystem::path workspace;
+    glm::ivec2 size{0};  // 0: the workspace's size
+    std::vector<std::pair<std::string, std::string>> overrides;  // --set NAME=VALUE, as rmfx render
+    std::vector<std::string> viewTargets;  // --view TARGET: viewer windows open from the start
+    // --frames N: render N frames at a fixed step (--dt), write the screenshots asked for, exit.
+    std::optional<int> frames;
+    float deltaTime = 1.0f / 60.0f;  // --dt: the step of those frames
+    std::optional<std::filesystem::path> screenshot;        // the whole window, PNG
+    std::optional<std::filesystem::path> outputScreenshot;  // the effect's output, as rmfx render writes it
+};
+
+// On an error returns nullopt and sets *error to a sentence naming the option.
+std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& args, std::string* error);
+
+}  // namespace rmfx::editor

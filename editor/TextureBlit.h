@@ -1,0 +1,40 @@
+#pragma once
+// Draws a texture into the bound framebuffer's viewport with a display transform: how the editor
+// shows the effect's output in the window (1:1, texel for pixel, with the workspace's output
+// transform, so the window shows what `rmfx render` writes to a PNG) and makes the thumbnails of
+// render targets (filtered down, sRGB). Its own sampler object makes any target texture complete
+// whatever its filter state. Needs a current GL 4.5 context.
+
+#include <memory>
+#include <string>
+
+#include <glm/vec2.hpp>
+
+#include "runtime/Image.h"
+#include "runtime/Result.h"
+
+namespace rmfx::editor {
+
+class TextureBlit {
+public:
+    static Result<std::unique_ptr<TextureBlit>> create();
+    ~TextureBlit();
+    TextureBlit(const TextureBlit&) = delete;
+    TextureBlit& operator=(const TextureBlit&) = delete;
+
+    // Texel (0, 0) of `texture` lands on framebuffer pixel `origin` (GL's bottom-left origin) and
+    // each texel on one pixel: the viewport must be the texture's size at `origin`.
+    void drawExact(unsigned texture, glm::ivec2 origin, DisplayTransform transform);
+    // The whole texture stretched over the viewport (bilinear down, nearest up), × 2^exposureStops.
+    void drawFiltered(unsigned texture, float exposureStops, DisplayTransform transform);
+
+private:
+    TextureBlit() = default;
+    void draw(unsigned texture, unsigned sampler, bool exact, glm::ivec2 origin, float scale, DisplayTransform transform);
+    unsigned program_ = 0;
+    unsigned vertexArray_ = 0;
+    unsigned nearest_ = 0, linear_ = 0;
+    int exactLocation_ = -1, originLocation_ = -1, scaleLocation_ = -1, srgbLocation_ = -1;
+};
+
+}  // namespace rmfx::editor

@@ -1,0 +1,52 @@
+#include "editor/TimingPanel.h"
+
+#include <algorithm>
+#include <string>
+
+#include <imgui.h>
+
+namespace rmfx::editor {
+
+void TimingPanel::record(const GlExecutor& executor) {
+    const std::vector<PassTiming>& passes = executor.passTimings();
+    history_.add(passes, executor.frameGpuMilliseconds());
+}
+
+void TimingPanel::draw() {
+    if (history_.size() == 0) {
+        ImGui::TextDisabled("waiting for the first timed frame");
+        return;
+    }
+    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
+    if (ImGui::BeginTable("passes", 3, flags)) {
+        ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthStretch, 2.0f);
+        ImGui::TableSetupColumn("GPU ms", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+        ImGui::TableSetupColumn("average", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+        ImGui::TableHeadersRow();
+        for (const TimingHistory::Row& r : history_.rows()) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(r.pass.c_str());
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", r.lastMilliseconds);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", r.averageMilliseconds);
+        }
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted("frame");
+        ImGui::TableNextColumn();
+        ImGui::Text("%.3f", history_.lastFrameMilliseconds());
+        ImGui::TableNextColumn();
+        ImGui::Text("%.3f", history_.averageFrameMilliseconds());
+        ImGui::EndTable();
+    }
+    std::vector<float> totals = history_.frameTotals();
+    float top = *std::max_element(totals.begin(), totals.end());
+    std::string overlay = "frame GPU ms over " + std::to_string(totals.size()) + " frames, max " +
+                          std::to_string(top).substr(0, std::to_string(top).find('.') + 3);
+    ImGui::PlotLines("##frames", totals.data(), static_cast<int>(totals.size()), 0, overlay.c_str(), 0.0f, top * 1.1f,
+                     ImVec2(ImGui::GetContentRegionAvail().x, 60.0f));
+}
+
+}  // namespace rmfx::editor

@@ -1,0 +1,46 @@
+#include "editor/EditorOptions.h"
+
+#include <gtest/gtest.h>
+
+namespace rmfx::editor {
+namespace {
+
+std::string rejection(const std::vector<std::string>& args) {
+    std::string error;
+    EXPECT_FALSE(parseEditorOptions(args, &error).has_value());
+    return error;
+}
+
+}  // namespace
+
+TEST(EditorOptions, ParsesEveryOption) {
+    std::string error;
+    auto o = parseEditorOptions({"fx.xml", "--size", "256x128", "--set", "Exposure_Level=2", "--set", "Tint=1 0 0",
+                                 "--frames", "5", "--screenshot", "w.png", "--output-screenshot", "o.png", "--view", "scene", "--dt", "0.5"},
+                                &error);
+    ASSERT_TRUE(o) << error;
+    EXPECT_EQ(o->workspace, "fx.xml");
+    EXPECT_EQ(o->size, glm::ivec2(256, 128));
+    ASSERT_EQ(o->overrides.size(), 2u);
+    EXPECT_EQ(o->overrides[1], (std::pair<std::string, std::string>{"Tint", "1 0 0"}));
+    EXPECT_EQ(o->frames, 5);
+    EXPECT_EQ(o->screenshot, std::filesystem::path("w.png"));
+    EXPECT_EQ(o->outputScreenshot, std::filesystem::path("o.png"));
+    EXPECT_EQ(o->viewTargets, std::vector<std::string>{"scene"});
+    EXPECT_EQ(o->deltaTime, 0.5f);
+}
+
+TEST(EditorOptions, RejectsWhatItCannotUse) {
+    EXPECT_NE(rejection({}).find("which workspace"), std::string::npos);
+    EXPECT_NE(rejection({"a.xml", "b.xml"}).find("one workspace"), std::string::npos);
+    EXPECT_NE(rejection({"a.xml", "--size", "12"}).find("--size"), std::string::npos);
+    EXPECT_NE(rejection({"a.xml", "--frames", "0"}).find("--frames"), std::string::npos);
+    EXPECT_NE(rejection({"a.xml", "--set", "=3"}).find("NAME=VALUE"), std::string::npos);
+    EXPECT_NE(rejection({"a.xml", "--screenshot", "x.png"}).find("--frames"), std::string::npos);
+    EXPECT_NE(rejection({"a.xml", "--dt", "0.1"}).find("--frames"), std::string::npos);
+    EXPECT_NE(rejection({"a.xml", "--frames", "2", "--dt", "-1"}).find("--dt"), std::string::npos);
+    EXPECT_NE(rejection({"a.xml", "--bogus"}).find("'--bogus'"), std::string::npos);
+    EXPECT_NE(rejection({"a.xml", "--size"}).find("needs a value"), std::string::npos);
+}
+
+}  // namespace rmfx::editor
