@@ -305,6 +305,8 @@ std::string markdownSummary(const std::map<std::string, Summary>& runs, const st
 
     if (!rows.str().empty())
         out << "### shader_5: frame time per subset of effects\n\n"
+            << "Frame ms: renderFrame + glFinish, the median and min–max of the repetitions. GPU ms: the frame's "
+               "span in timer queries, the median of 8 frames after the timed loop.\n\n"
             << "| effects asked for | passes run | target memory allocated (MiB) | declared (MiB) | frame ms "
                "(renderFrame + glFinish) | min–max | GPU ms (timer queries) |\n"
             << "|---|---:|---:|---:|---:|---:|---:|\n"
