@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "cli/Commands.h"
+#include "runtime/EffectSelection.h"
 #include "runtime/FrameExplanation.h"
 #include "runtime/GlContext.h"
 #include "runtime/HeadlessRun.h"
@@ -66,19 +67,9 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
             } else if (arg == "--target") {
                 a.target = *value;
             } else if (arg == "--effects") {
-                std::vector<std::string> names;
-                std::string name;
-                for (char c : *value + ",") {
-                    if (c != ',') {
-                        name += c;
-                    } else if (!name.empty()) {
-                        names.push_back(name);
-                        name.clear();
-                    }
-                }
                 if (value->find_first_not_of(", ") == std::string::npos && !value->empty())
                     return fail("--effects: expected names separated by commas, got '" + *value + "'");
-                a.executor.effects = names;
+                a.executor.effects = splitNameList(*value);
             } else {
                 if (*value == "none") a.transform = DisplayTransform::None;
                 else if (*value == "srgb") a.transform = DisplayTransform::Srgb;

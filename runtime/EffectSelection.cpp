@@ -2,6 +2,21 @@
 
 namespace rmfx {
 
+std::vector<std::string> splitNameList(std::string_view text) {
+    std::vector<std::string> names;
+    std::string name;
+    for (char c : text) {
+        if (c == ',' || c == ' ' || c == '\t' || c == '\n' || c == '\r') {
+            if (!name.empty()) names.push_back(name);
+            name.clear();
+        } else {
+            name += c;
+        }
+    }
+    if (!name.empty()) names.push_back(name);
+    return names;
+}
+
 std::string joinNames(const std::set<std::string>& names) {
     std::string out;
     for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;

@@ -9,6 +9,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "runtime/Result.h"
@@ -38,6 +39,10 @@ struct ShaderPrelude {
     std::vector<std::string> declarations;  // "uniform bool rmfx_effect_glare;", …
 };
 ShaderPrelude effectPrelude(const Workspace& ws, const std::set<std::string>& asked);
+
+// "glare, streak ghost" → {glare, streak, ghost}: names separated by commas or white space, as
+// --effects, <output effects> and a replay case's effects give them.
+std::vector<std::string> splitNameList(std::string_view text);
 
 // "glare, streak" (or "none").
 std::string joinNames(const std::set<std::string>& names);

@@ -1,5 +1,7 @@
 #include "runtime/ReplayManifest.h"
 
+#include "runtime/EffectSelection.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -149,19 +151,7 @@ private:
             named = false;
         }
         auto workspace = r.string("workspace", true);
-        if (auto effects = r.string("effects")) {
-            std::vector<std::string> names;
-            std::string name;
-            for (char ch : *effects + " ") {
-                if (ch == ' ' || ch == ',' || ch == '\t' || ch == '\n') {
-                    if (!name.empty()) names.push_back(name);
-                    name.clear();
-                } else {
-                    name += ch;
-                }
-            }
-            c.effects = names;
-        }
+        if (auto effects = r.string("effects")) c.effects = splitNameList(*effects);
         RunAttributes run = readRun(r);
         if (auto size = run.size ? run.size : defaultRun_.size) c.run.size = {size->first, size->second};
         c.run.frames = run.frames.value_or(defaultRun_.frames.value_or(1));

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "runtime/BuiltinMeshes.h"
+#include "runtime/EffectSelection.h"
 #include "runtime/XmlElementReader.h"
 
 namespace rmfx {
@@ -554,25 +555,16 @@ private:
     std::optional<std::vector<std::string>> nameList(const ElementReader& r, const char* attribute) {
         auto text = r.string(attribute);
         if (!text) return std::nullopt;
-        std::vector<std::string> names;
-        std::string current;
+        std::vector<std::string> names = splitNameList(*text);
         bool ok = true;
-        auto flush = [&] {
-            if (current.empty()) return;
-            bool identifier = !std::isdigit(static_cast<unsigned char>(current[0]));
-            for (char c : current) identifier = identifier && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+        for (const std::string& name : names) {
+            bool identifier = !std::isdigit(static_cast<unsigned char>(name[0]));
+            for (char c : name) identifier = identifier && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
             if (!identifier) {
-                r.error("attribute '" + std::string(attribute) + "': '" + current + "' is not a name");
+                r.error("attribute '" + std::string(attribute) + "': '" + name + "' is not a name");
                 ok = false;
             }
-            names.push_back(current);
-            current.clear();
-        };
-        for (char c : *text) {
-            if (c == ' ' || c == ',' || c == '\t' || c == '\n' || c == '\r') flush();
-            else current += c;
         }
-        flush();
         if (!ok) return std::nullopt;
         return names;
     }
