@@ -310,11 +310,9 @@ struct GlExecutor::Impl {
         for (const RenderTarget& t : ws.targets) {
             if (t.formatVariable.empty()) continue;
             auto it = values.find(t.formatVariable);
-            if (!selectTargetFormat(t, it == values.end() ? nullptr : &it->second)) {
-                error(d, t.where, "<target name=\"" + t.name + "\">",
-                      "variable '" + t.formatVariable + "' = " +
-                          (it == values.end() ? std::string("?") : std::to_string(it->second.asInt())) +
-                          " picks none of the " + std::to_string(t.formats.size()) + " formats of target '" + t.name + "'");
+            const Value* value = it == values.end() ? nullptr : &it->second;
+            if (!selectTargetFormat(t, value)) {
+                error(d, t.where, "<target name=\"" + t.name + "\">", formatChoiceError(t, value));
                 return false;
             }
         }
@@ -823,9 +821,7 @@ std::string GlExecutor::setVariable(const std::string& name, const Value& value)
     bool formats = false;
     for (const RenderTarget& t : s.ws.targets) {
         if (t.formatVariable != name) continue;
-        if (!selectTargetFormat(t, &value))
-            return "variable '" + name + "' = " + std::to_string(value.asInt()) + " picks none of the " +
-                   std::to_string(t.formats.size()) + " formats of target '" + t.name + "'";
+        if (!selectTargetFormat(t, &value)) return formatChoiceError(t, &value);
         formats = formats || *selectTargetFormat(t, &value) != *selectTargetFormat(t, &it->second);
     }
     it->second = value;

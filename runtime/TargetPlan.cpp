@@ -34,9 +34,7 @@ Result<TargetPlan> planTargets(const Workspace& ws, const std::vector<const Pass
         const Value* value = nullptr;
         if (auto it = values.find(t.formatVariable); it != values.end()) value = &it->second;
         auto format = selectTargetFormat(t, value);
-        if (!format)
-            return Error{"variable '" + t.formatVariable + "' = " + (value ? std::to_string(value->asInt()) : "?") +
-                         " picks none of the " + std::to_string(t.formats.size()) + " formats of target '" + t.name + "'"};
+        if (!format) return Error{formatChoiceError(t, value)};
         p.format = *format;
         p.size = resolveTargetSize(t.size, viewport);
         p.mipmaps = t.mipmaps;

@@ -90,6 +90,11 @@ std::optional<TargetFormat> selectTargetFormat(const RenderTarget& target, const
     return target.formats[static_cast<size_t>(index)];
 }
 
+std::string formatChoiceError(const RenderTarget& target, const Value* value) {
+    return "variable '" + target.formatVariable + "' = " + (value ? std::to_string(value->asInt()) : "?") +
+           " picks none of the " + std::to_string(target.formats.size()) + " formats of target '" + target.name + "'";
+}
+
 glm::ivec2 resolveTargetSize(const TargetSize& size, glm::ivec2 viewport) {
     if (!size.relative) return {size.width, size.height};
     // The small epsilon keeps exact products (256 × 0.25) from rounding up through float noise.

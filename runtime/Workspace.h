@@ -232,6 +232,8 @@ int targetFormatBytesPerPixel(TargetFormat format);
 // The format a target is allocated with when its format variable (if any) has `value`; nullopt
 // when the value picks none of its formats.
 std::optional<TargetFormat> selectTargetFormat(const RenderTarget& target, const Value* value);
+// "variable 'V' = 7 picks none of the 6 formats of target 'T'": why selectTargetFormat gave none.
+std::string formatChoiceError(const RenderTarget& target, const Value* value);
 
 // Viewport-relative sizes round up, never below 1: ceil(viewport × scale), so a chain of
 // half-size targets covers every source pixel (5 → 3 → 2 → 1).
