@@ -38,7 +38,8 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
             return args[++i];
         };
         if (arg == "-o" || arg == "--output" || arg == "--size" || arg == "--frames" || arg == "--dt" ||
-            arg == "--set" || arg == "--target" || arg == "--transform" || arg == "--effects") {
+            arg == "--set" || arg == "--target" || arg == "--transform" || arg == "--effects" ||
+            arg == "--memory-budget") {
             auto value = next();
             if (!value) return fail(arg + " needs a value");
             if (arg == "-o" || arg == "--output") {
@@ -66,6 +67,12 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
                 a.overrides.emplace_back(value->substr(0, eq), value->substr(eq + 1));
             } else if (arg == "--target") {
                 a.target = *value;
+            } else if (arg == "--memory-budget") {
+                char* end = nullptr;
+                double mib = std::strtod(value->c_str(), &end);
+                if (*end || !std::isfinite(mib) || mib <= 0 || mib > 1048576)
+                    return fail("--memory-budget: expected MiB of render-target memory (up to 1048576), got '" + *value + "'");
+                a.executor.memoryBudget = static_cast<std::size_t>(mib * 1048576.0);
             } else if (arg == "--effects") {
                 if (value->find_first_not_of(", ") == std::string::npos && !value->empty())
                     return fail("--effects: expected names separated by commas, got '" + *value + "'");

@@ -40,6 +40,8 @@ render options:
                          with size, format, bytes and shared memory, and the peak GPU memory;
                          writes an image only when -o is given
   --no-pool              give every target memory of its own (no sharing between lifetimes)
+  --memory-budget MiB    the most render-target memory a frame may hold (default 4096); a
+                         workspace that needs more fails before anything is allocated
   -q, --quiet            print nothing but errors
 
 replay options:

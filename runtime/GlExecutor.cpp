@@ -127,6 +127,7 @@ struct TimerFrame {
 struct GlExecutor::Impl {
     const Workspace& ws;
     ExecutorOptions options;
+    ResourceLimits limits;
     glm::ivec2 viewport{1};
     std::map<std::string, Value> values;
     std::set<std::string> askedEffects;
@@ -325,6 +326,10 @@ struct GlExecutor::Impl {
         auto planned = planTargets(ws, all, viewport, values, options.poolTargets && !options.outputs.empty());
         if (!planned) {
             error(d, {ws.path.string(), 0}, "", planned.error());
+            return false;
+        }
+        if (Diagnostics over = checkPlanLimits(*planned, limits, {ws.path.string(), 0}); !over.empty()) {
+            d.insert(d.end(), over.begin(), over.end());
             return false;
         }
         releaseResources();
@@ -713,11 +718,16 @@ std::unique_ptr<GlExecutor> GlExecutor::create(const Workspace& ws, glm::ivec2 v
     }
     auto impl = std::make_unique<Impl>(ws);
     impl->options = options;
+    impl->limits = {queryMaxTargetSize(), options.memoryBudget};
+    if (Diagnostics over = checkViewportLimits(viewport, impl->limits, {ws.path.string(), 0}); !over.empty()) {
+        d.insert(d.end(), over.begin(), over.end());
+        return nullptr;
+    }
     impl->viewport = viewport;
     for (const Variable& v : ws.variables) impl->values[v.name] = v.value;
     if (!impl->buildGraphs(d)) return nullptr;
-    bool ok = impl->allocateTargets(d);
-    ok = impl->loadTextures(d) && ok;
+    const bool allocated = impl->allocateTargets(d);
+    bool ok = impl->loadTextures(d) && allocated;
     std::set<int> runnable;  // every pass some combination of switches runs
     for (auto& [off, g] : impl->graphs) runnable.insert(g.schedule.begin(), g.schedule.end());
     for (int index : runnable) {
@@ -729,7 +739,8 @@ std::unique_ptr<GlExecutor> GlExecutor::create(const Workspace& ws, glm::ivec2 v
         gp->mesh = impl->meshFor(pass.draw, d);
         gp->model = modelMatrix(pass.draw);
         gp->program = impl->compileProgram(pass, d);
-        if (!gp->target || !gp->target->resource) {
+        // Without memory (the targets failed to allocate: already reported) or not declared at all.
+        if (allocated && (!gp->target || !gp->target->resource)) {
             impl->error(d, pass.where, passLabel(pass), "target '" + ws.passTargetName(pass) + "' is not declared");
             ok = false;
         }

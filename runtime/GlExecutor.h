@@ -16,6 +16,7 @@
 #include "runtime/Image.h"
 #include "runtime/OrbitCamera.h"
 #include "runtime/PassGraph.h"
+#include "runtime/ResourceLimits.h"
 #include "runtime/Result.h"
 #include "runtime/TargetPlan.h"
 #include "runtime/Workspace.h"
@@ -36,6 +37,9 @@ struct ExecutorOptions {
     // The effects asked for (--effects); nullopt: the workspace's <output effects>, else all.
     std::optional<std::vector<std::string>> effects;
     bool poolTargets = true;
+    // The most render-target memory a frame may hold (--memory-budget); a workspace that needs
+    // more fails before anything is allocated.
+    std::size_t memoryBudget = kDefaultMemoryBudget;
 };
 
 struct FrameClock {
