@@ -5,6 +5,7 @@
 #include "cli/Commands.h"
 #include "runtime/EffectSelection.h"
 #include "runtime/FrameExplanation.h"
+#include "runtime/FrameWatchdog.h"
 #include "runtime/GlContext.h"
 #include "runtime/HeadlessRun.h"
 #include "runtime/ImageIO.h"
@@ -27,6 +28,7 @@ struct RenderArguments {
 
 std::optional<RenderArguments> parseArguments(const std::vector<std::string>& args) {
     RenderArguments a;
+    a.run.frameBudgetSeconds = kDefaultFrameBudgetSeconds;
     auto fail = [](const std::string& message) -> std::optional<RenderArguments> {
         std::cerr << "rmfx render: " << message << "\n";
         return std::nullopt;
@@ -39,7 +41,7 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
         };
         if (arg == "-o" || arg == "--output" || arg == "--size" || arg == "--frames" || arg == "--dt" ||
             arg == "--set" || arg == "--target" || arg == "--transform" || arg == "--effects" ||
-            arg == "--memory-budget") {
+            arg == "--memory-budget" || arg == "--frame-budget") {
             auto value = next();
             if (!value) return fail(arg + " needs a value");
             if (arg == "-o" || arg == "--output") {
@@ -67,6 +69,12 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
                 a.overrides.emplace_back(value->substr(0, eq), value->substr(eq + 1));
             } else if (arg == "--target") {
                 a.target = *value;
+            } else if (arg == "--frame-budget") {
+                char* end = nullptr;
+                double seconds = std::strtod(value->c_str(), &end);
+                if (*end || !std::isfinite(seconds) || seconds < 0)
+                    return fail("--frame-budget: expected seconds ≥ 0 (0: no limit), got '" + *value + "'");
+                a.run.frameBudgetSeconds = seconds;
             } else if (arg == "--memory-budget") {
                 char* end = nullptr;
                 double mib = std::strtod(value->c_str(), &end);

@@ -3,12 +3,15 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <optional>
 
 #include "cli/Commands.h"
+#include "runtime/FrameWatchdog.h"
 #include "runtime/GlContext.h"
 #include "runtime/ImageIO.h"
 #include "runtime/JUnitReport.h"
@@ -27,6 +30,7 @@ struct ReplayArguments {
     std::vector<std::string> cases;
     bool update = false;
     bool quiet = false;
+    double frameBudget = kDefaultFrameBudgetSeconds;
 };
 
 std::optional<ReplayArguments> parseArguments(const std::vector<std::string>& args) {
@@ -37,12 +41,18 @@ std::optional<ReplayArguments> parseArguments(const std::vector<std::string>& ar
     };
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];
-        if (arg == "--out" || arg == "--junit" || arg == "--case") {
+        if (arg == "--out" || arg == "--junit" || arg == "--case" || arg == "--frame-budget") {
             if (i + 1 >= args.size() || args[i + 1].empty()) return fail(arg + " needs a value");
             const std::string& value = args[++i];
             if (arg == "--out") a.out = value;
             else if (arg == "--junit") a.junit = value;
-            else a.cases.push_back(value);
+            else if (arg == "--case") a.cases.push_back(value);
+            else {
+                char* end = nullptr;
+                a.frameBudget = std::strtod(value.c_str(), &end);
+                if (*end || !std::isfinite(a.frameBudget) || a.frameBudget < 0)
+                    return fail("--frame-budget: expected seconds ≥ 0 (0: no limit), got '" + value + "'");
+            }
         } else if (arg == "--update") {
             a.update = true;
         } else if (arg == "-q" || arg == "--quiet") {
@@ -207,7 +217,23 @@ int replayCommand(const std::vector<std::string>& args) {
         std::string progress = "[" + std::to_string(i + 1) + "/" + std::to_string(cases->size()) + "] " + c.name + " ... ";
         if (!a->quiet) std::cout << progress << std::flush;
         auto caseStarted = Clock::now();
-        CaseOutcome o = runner.run(c);
+        // A frame past its budget cannot be interrupted: record the case as an error, write the
+        // report so far, and stop.
+        ReplayCase budgeted = c;
+        budgeted.run.frameBudgetSeconds = a->frameBudget;
+        budgeted.run.onFrameBudget = [&](const std::string& message) {
+            double seconds = std::chrono::duration<double>(Clock::now() - caseStarted).count();
+            if (a->quiet) std::cout << progress;
+            std::cout << "FAILED\n  " << message << "\n" << std::flush;
+            suite.cases.push_back({c.name, "replay." + manifest.path.stem().string(), seconds,
+                                   JUnitTestCase::Outcome::Error, message, message});
+            suite.seconds = std::chrono::duration<double>(Clock::now() - started).count();
+            if (a->junit) (void)writeJUnit(*a->junit, suite);
+            std::cerr << "rmfx replay: error: case '" << c.name << "': " << message
+                      << "; stopping, the cases after it did not run\n" << std::flush;
+            std::_Exit(kExitFrameBudget);
+        };
+        CaseOutcome o = runner.run(budgeted);
         double seconds = std::chrono::duration<double>(Clock::now() - caseStarted).count();
         bool passed = o.passed();
         char time[32];

@@ -42,6 +42,8 @@ render options:
   --no-pool              give every target memory of its own (no sharing between lifetimes)
   --memory-budget MiB    the most render-target memory a frame may hold (default 4096); a
                          workspace that needs more fails before anything is allocated
+  --frame-budget SECONDS stop with exit status 3 when a frame (GPU work included) takes longer
+                         (default 60; 0: no limit): a shader that loops too long ends the run
   -q, --quiet            print nothing but errors
 
 replay options:
@@ -50,6 +52,8 @@ replay options:
   --junit FILE           also write a JUnit XML report, one testcase per case
   --case NAME            replay only this case (repeatable)
   --update               store the renders as the references instead of comparing
+  --frame-budget SECONDS as for render: the case past its budget is reported (and written to the
+                         JUnit report) as an error, and replay stops with exit status 3
   -q, --quiet            print only failing cases and errors
 
 edit options:
