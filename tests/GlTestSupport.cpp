@@ -86,6 +86,20 @@ void replaceSceneWithLight(Workspace& ws, const std::string& scenePass, glm::ive
     found->shaders = {fragment};
 }
 
+void replaceSceneWithPattern(Workspace& ws, const std::string& target, const std::string& pattern) {
+    for (Pass& pass : ws.passes)
+        if (pass.target == target) pass.enabled = false;
+    Pass replacement;
+    replacement.name = "test_pattern";
+    replacement.target = target;
+    ShaderSource fragment;
+    fragment.stage = ShaderStage::Fragment;
+    fragment.code = "#version 450 core\nout vec4 fragColor;\n" + pattern;
+    replacement.shaders.push_back(fragment);
+    replacement.draw.mesh = BuiltinMesh::FullscreenTriangle;
+    ws.passes.insert(ws.passes.begin(), replacement);
+}
+
 GlRun runWorkspace(std::unique_ptr<Workspace> ws, const RunSettings& settings, const ExecutorOptions& options) {
     GlRun run;
     run.ws = std::move(ws);

@@ -41,6 +41,10 @@ std::unique_ptr<Workspace> effectWorkspace(const std::string& file, const Overri
 // other pass drawing into the same target is disabled. Adds a test failure when there is no such pass.
 void replaceSceneWithLight(Workspace& ws, const std::string& scenePass, glm::ivec2 from, glm::ivec2 to);
 
+// Replaces every pass that draws into `target` by one full-screen pass running `pattern` (a
+// fragment shader body writing `out vec4 fragColor` from gl_FragCoord), inserted first.
+void replaceSceneWithPattern(Workspace& ws, const std::string& target, const std::string& pattern);
+
 struct GlRun {
     std::unique_ptr<Workspace> ws;     // declared first: the executor refers to it and dies first
     std::unique_ptr<GlExecutor> exec;  // null when creation or a frame failed
