@@ -32,9 +32,9 @@ TEST_F(ArticlePipelineHardCasesGLTest, SinglePixelAtTheEdgesReachesTheQuarterIma
         glm::ivec2 size, pixel;
     };
     std::vector<Case> cases;
-    for (glm::ivec2 size : {glm::ivec2(1, 1), glm::ivec2(3, 5)})
-        for (glm::ivec2 pixel : {glm::ivec2(size.x - 1, size.y / 2), glm::ivec2(size.x / 2, size.y - 1), size - 1})
-            cases.push_back({size, pixel});
+    cases.push_back({{1, 1}, {0, 0}});
+    for (glm::ivec2 pixel : {glm::ivec2(2, 2), glm::ivec2(1, 4), glm::ivec2(2, 4)})  // last column, last row, corner
+        cases.push_back({{3, 5}, pixel});
     // The large size once; (1919, 1079) is under the last quarter column's and row's fetch.
     cases.push_back({{1921, 1081}, {1919, 1079}});
     int reached = 0;
@@ -65,7 +65,7 @@ TEST_F(ArticlePipelineHardCasesGLTest, SinglePixelAtTheEdgesReachesTheQuarterIma
         std::printf("  %dx%d pixel %d,%d: quarter total %.6g, model %.6g\n", c.size.x, c.size.y, c.pixel.x, c.pixel.y,
                     got, expected);
     }
-    EXPECT_GE(reached, 4) << "most cases put the pixel under a fetch, so a lost edge would show";
+    EXPECT_GE(reached, 3) << "1x1, the 3x5 last row and the 1921x1081 corner put the pixel under a fetch";
 }
 
 }  // namespace

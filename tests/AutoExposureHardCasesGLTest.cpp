@@ -32,9 +32,9 @@ TEST_F(AutoExposureHardCasesGLTest, SinglePixelInTheLastRowOrColumnIsCountedAtEv
         glm::ivec2 size, pixel;
     };
     std::vector<Case> cases;
-    for (glm::ivec2 size : {glm::ivec2(1, 1), glm::ivec2(3, 5)})
-        for (glm::ivec2 pixel : {glm::ivec2(size.x - 1, size.y / 2), glm::ivec2(size.x / 2, size.y - 1), size - 1})
-            cases.push_back({size, pixel});
+    cases.push_back({{1, 1}, {0, 0}});
+    for (glm::ivec2 pixel : {glm::ivec2(2, 2), glm::ivec2(1, 4), glm::ivec2(2, 4)})  // last column, last row, corner
+        cases.push_back({{3, 5}, pixel});
     cases.push_back({{1921, 1081}, {1920, 1080}});  // the large size once: the corner is both edges
     for (const Case& c : cases) {
         SCOPED_TRACE(std::to_string(c.size.x) + "x" + std::to_string(c.size.y) + ", pixel " + std::to_string(c.pixel.x) +

@@ -62,16 +62,24 @@ TargetCheck check(const Image& image, bool eightBit) {
     return c;
 }
 
+// Each case renders its frames at exposure 0, then the same executor renders them again at 1e4
+// (setVariable: no recompile), as a user dragging the slider would.
 TEST_F(ExposureHardCasesGLTest, ExposureZeroAnd1e4GiveFiniteTargetsAndABlackOutputAtZero) {
     for (const ExposureCase& kase : exposureCases()) {
-        for (const char* exposure : {"0", "1e4"}) {
-            Overrides overrides = kase.extra;
-            overrides.push_back({kase.variable, exposure});
-            std::string label = kase.file + " " + kase.variable + "=" + exposure;
-            for (const auto& [name, v] : kase.extra) label += " " + name + "=" + v;
-            SCOPED_TRACE(label);
-            GlRun run = runWorkspace(effectWorkspace(kase.file, overrides), {{64, 64}, kase.frames, 1.0f / 60.0f});
-            ASSERT_TRUE(run.exec);
+        std::string label = kase.file + " " + kase.variable;
+        for (const auto& [name, v] : kase.extra) label += " " + name + "=" + v;
+        SCOPED_TRACE(label);
+        Overrides overrides = kase.extra;
+        overrides.push_back({kase.variable, "0"});
+        GlRun run = runWorkspace(effectWorkspace(kase.file, overrides), {{64, 64}, 0, 1.0f / 60.0f});
+        ASSERT_TRUE(run.exec);
+        for (float exposure : {0.0f, 1e4f}) {
+            SCOPED_TRACE(kase.variable + "=" + std::to_string(exposure));
+            ASSERT_EQ(run.exec->setVariable(kase.variable, Value::ofFloat(exposure)), "");
+            for (int i = 0; i < kase.frames; ++i) {
+                Diagnostics d = run.exec->renderFrame({static_cast<float>(run.exec->frameIndex()) / 60.0f, 1.0f / 60.0f});
+                ASSERT_TRUE(d.empty()) << formatAll(d);
+            }
             std::vector<std::pair<std::string, bool>> targets = {{"output", false}};
             for (const RenderTarget& t : run.ws->targets)
                 targets.push_back({t.name, run.exec->targetFormat(t.name) == TargetFormat::RGBA8});
@@ -84,12 +92,48 @@ TEST_F(ExposureHardCasesGLTest, ExposureZeroAnd1e4GiveFiniteTargetsAndABlackOutp
                 EXPECT_EQ(c.outsideUnit, 0) << name << ": outside 0..1 in an 8-bit target";
                 if (name == "output") outputLargest = c.largest;
             }
-            if (std::string(exposure) == "0") {
+            if (exposure == 0.0f) {
                 EXPECT_EQ(outputLargest, 0.0) << "exposure 0: a black output";
             } else {
                 EXPECT_GT(outputLargest, 0.0) << "exposure 1e4: light reaches the output";
             }
         }
+    }
+}
+
+// llvmpipe clamps float -> half writes to 65504 itself (other drivers write Inf), which would hide
+// a pass that does not clamp: here the half-float targets those passes write are made rgba32f, so
+// what the shader writes is seen as it is. At exposure 1e4 the sky (2000 x 1e4) must arrive as
+// 65504 exactly: the scene passes (sky, teapot) and auto_exposure's screen (65504 x its exposure)
+// clamp what they write; so does the article's tone map, at 1e9.
+TEST_F(ExposureHardCasesGLTest, PassesWritingHalfFloatTargetsClampAt65504) {
+    struct Case {
+        std::string file, variable;
+        Overrides extra;
+        std::string target;  // the half-float target the clamp protects ("output": the screen)
+        std::string exposure = "1e4";
+    };
+    std::vector<Case> cases = {
+        {"shader_1.xml", "Exposure_Level", {{"Environment_Format", "1"}}, "scene"},
+        {"auto_exposure.xml", "Exposure_Level", {{"Environment_Format", "1"}, {"Initial_Exposure", "16"}}, "output"},
+        // The article's output reaches only 6000 at 1e4 (2000^0.55 x 1e4^0.55): its clamp needs 1e9.
+        {"article_pipeline.xml", "fExposureLevel", {}, "output", "1e9"},
+    };
+    for (const Case& kase : cases) {
+        SCOPED_TRACE(kase.file);
+        Overrides overrides = kase.extra;
+        overrides.push_back({kase.variable, kase.exposure});
+        auto ws = effectWorkspace(kase.file, overrides);
+        ASSERT_TRUE(ws);
+        ws->output.format = TargetFormat::RGBA32F;
+        for (RenderTarget& t : ws->targets)
+            if (t.name == "scene") t.format = TargetFormat::RGBA32F;
+        GlRun run = runWorkspace(std::move(ws), {{64, 64}, 1, 1.0f / 60.0f});
+        ASSERT_TRUE(run.exec);
+        TargetCheck c = check(readBack(*run.exec, kase.target), false);
+        EXPECT_EQ(c.nonFinite, 0);
+        EXPECT_EQ(c.aboveHalf, 0) << kase.target << " largest " << c.largest;
+        EXPECT_EQ(c.largest, 65504.0) << "saturated at the clamp";
     }
 }
 

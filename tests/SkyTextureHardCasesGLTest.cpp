@@ -4,13 +4,16 @@
 // finite and non-negative (finiteNonNegative, effects/glsl/finite.glsl, on the bits) before
 // anything else sees it, so:
 //   - no target holds a NaN or Inf;
-//   - every texel of every target that the bad texels cannot reach is bit-identical to the render
-//     with those texels replaced by 0 (which texels they reach is found by a third render with
-//     them replaced by 1e30: a texel that differs there is reachable);
-//   - a reachable texel lies between 0 and the zero-texel render's value (+1e-6 relative for the
-//     order of float sums): a filtered sample that touched a bad texel becomes 0 (NaN, ±Inf) or
-//     smaller (a negative weight), never larger, and every pass downstream is monotonic;
-//   - the bad texels are in view, and reach at most 25 % of the output's pixels.
+//   - every texel of the scene (the first target written from the sky) that the bad texels cannot
+//     reach is bit-identical to the render with those texels replaced by 0 (which texels they
+//     reach is found by a third render with them replaced by 1e30: a texel that differs there is
+//     reachable), and they reach at most 5 % of it (the bilinear and mip footprints of 1 texel in
+//     1024), but some of it (they are in view);
+//   - every texel of every target lies between 0 and the zero-texel render's value (+1e-6
+//     relative for the order of float sums): a filtered sample that touched a bad texel becomes 0
+//     (NaN, ±Inf) or smaller (a negative weight), never larger, and every pass after it is
+//     monotonic (non-negative weights, thresholds that keep or drop, clamps). Downstream blurs
+//     spread the 1e30 markers too far for a mask, so only this bound is checked there.
 // auto_exposure divides by the average, which the bad texels lower, so only its scene follows the
 // rules above; its other targets must be finite.
 
@@ -97,8 +100,9 @@ TEST_F(SkyTextureHardCasesGLTest, BadTexelsAreSanitisedInTheFirstPassThatReadsTh
     }
 
     std::vector<Case> cases;
-    for (std::string file : {"shader_1", "shader_2", "shader_3", "shader_4", "shader_5", "exercise_1"})
-        cases.push_back({file + ".xml", {{"Environment_Format", "1"}}});
+    // shader_2, 3, 4 and exercise_1 draw their scene with the same sky and teapot passes as
+    // shader_5, whose glare, streaks and ghosts are theirs combined.
+    for (std::string file : {"shader_1", "shader_5"}) cases.push_back({file + ".xml", {{"Environment_Format", "1"}}});
     cases.push_back({"article_pipeline.xml", {}});
     cases.push_back({"auto_exposure.xml", {{"Environment_Format", "1"}}, 2, false});
 
@@ -113,26 +117,25 @@ TEST_F(SkyTextureHardCasesGLTest, BadTexelsAreSanitisedInTheFirstPassThatReadsTh
             ASSERT_EQ(b.pixels.size(), z.pixels.size());
             ASSERT_EQ(b.pixels.size(), m.pixels.size());
             int nonFinite = 0, changedUnreached = 0, outOfRange = 0, reached = 0;
+            const bool first = name == "scene";
             for (size_t i = 0; i < b.pixels.size(); ++i) {
                 if (!std::isfinite(b.pixels[i])) ++nonFinite;
-                if (!kase.monotonic && name != "scene") continue;
+                if (!kase.monotonic && !first) continue;
                 if (static_cast<int>(i % b.channels) >= 3) continue;  // colour only
-                if (bits(m.pixels[i]) == bits(z.pixels[i])) {
-                    changedUnreached += bits(b.pixels[i]) != bits(z.pixels[i]);
-                } else {
-                    ++reached;
-                    const float v = b.pixels[i], ref = z.pixels[i];
-                    outOfRange += !(v >= 0.0f && v <= ref + 1e-6f * std::fabs(ref));
-                }
+                const float v = b.pixels[i], ref = z.pixels[i];
+                outOfRange += !(v >= 0.0f && v <= ref + 1e-6f * std::fabs(ref));
+                if (!first) continue;
+                if (bits(m.pixels[i]) == bits(ref)) changedUnreached += bits(v) != bits(ref);
+                else ++reached;
             }
             EXPECT_EQ(nonFinite, 0) << name << ": NaN or Inf";
-            EXPECT_EQ(changedUnreached, 0) << name << ": differs where no bad texel reaches";
             EXPECT_EQ(outOfRange, 0) << name << ": outside [0, the zero-texel render]";
-            if (name == "output" && kase.monotonic) {
+            if (first) {
                 const int colours = static_cast<int>(b.pixels.size() / b.channels) * 3;
+                EXPECT_EQ(changedUnreached, 0) << "differs where no bad texel reaches";
                 EXPECT_GT(reached, 0) << "the bad texels are in view";
-                EXPECT_LE(reached, colours / 4) << "they stay local";
-                std::printf("  %s: %d of %d output colour values reached by bad texels\n", kase.file.c_str(), reached,
+                EXPECT_LE(reached, colours / 20) << "they stay local";
+                std::printf("  %s: %d of %d scene colour values reached by bad texels\n", kase.file.c_str(), reached,
                             colours);
             }
         }
