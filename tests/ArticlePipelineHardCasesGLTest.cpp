@@ -22,28 +22,14 @@ class ArticlePipelineHardCasesGLTest : public GlTest {};
 
 constexpr double kPixel = 100.0;
 
-std::string singlePixelPattern(glm::ivec2 pixel) {
-    return "void main() { fragColor = vec4(ivec2(gl_FragCoord.xy) == ivec2(" + std::to_string(pixel.x) + ", " +
-           std::to_string(pixel.y) + ") ? vec3(" + glslFloat(kPixel) + ") : vec3(0.0), 1.0); }\n";
-}
-
 TEST_F(ArticlePipelineHardCasesGLTest, SinglePixelAtTheEdgesReachesTheQuarterImageAsTheModelSays) {
-    struct Case {
-        glm::ivec2 size, pixel;
-    };
-    std::vector<Case> cases;
-    cases.push_back({{1, 1}, {0, 0}});
-    for (glm::ivec2 pixel : {glm::ivec2(2, 2), glm::ivec2(1, 4), glm::ivec2(2, 4)})  // last column, last row, corner
-        cases.push_back({{3, 5}, pixel});
-    // The large size once; (1919, 1079) is under the last quarter column's and row's fetch.
-    cases.push_back({{1921, 1081}, {1919, 1079}});
     int reached = 0;
-    for (const Case& c : cases) {
-        SCOPED_TRACE(std::to_string(c.size.x) + "x" + std::to_string(c.size.y) + ", pixel " + std::to_string(c.pixel.x) +
-                     "," + std::to_string(c.pixel.y));
+    // The large size once; (1919, 1079) is under the last quarter column's and row's fetch.
+    for (const EdgePixelCase& c : edgePixelCases({1919, 1079})) {
+        SCOPED_TRACE(c.name());
         auto ws = effectWorkspace("article_pipeline.xml");
         ASSERT_TRUE(ws);
-        replaceSceneWithPattern(*ws, "scene", singlePixelPattern(c.pixel));
+        replaceSceneWithPattern(*ws, "scene", singlePixelPattern(c.pixel, kPixel));
         GlRun run = runWorkspace(std::move(ws), {c.size, 1, 1.0f / 60.0f});
         ASSERT_TRUE(run.exec);
         for (const std::string& name : {"scene", "downsampled", "blurX", "blurY", "output"})

@@ -28,17 +28,8 @@ double chainTolerance(glm::ivec2 size) {
 }
 
 TEST_F(AutoExposureHardCasesGLTest, SinglePixelInTheLastRowOrColumnIsCountedAtEverySize) {
-    struct Case {
-        glm::ivec2 size, pixel;
-    };
-    std::vector<Case> cases;
-    cases.push_back({{1, 1}, {0, 0}});
-    for (glm::ivec2 pixel : {glm::ivec2(2, 2), glm::ivec2(1, 4), glm::ivec2(2, 4)})  // last column, last row, corner
-        cases.push_back({{3, 5}, pixel});
-    cases.push_back({{1921, 1081}, {1920, 1080}});  // the large size once: the corner is both edges
-    for (const Case& c : cases) {
-        SCOPED_TRACE(std::to_string(c.size.x) + "x" + std::to_string(c.size.y) + ", pixel " + std::to_string(c.pixel.x) +
-                     "," + std::to_string(c.pixel.y));
+    for (const EdgePixelCase& c : edgePixelCases()) {
+        SCOPED_TRACE(c.name());
         auto ws = effectWorkspace("auto_exposure.xml");
         ASSERT_TRUE(ws);
         replaceSceneWithLight(*ws, "environment", c.pixel, c.pixel + 1);

@@ -56,19 +56,6 @@ double maxChannel(const RefImage& image) {
     return m;
 }
 
-// Largest |gl - ref| - (relative · |ref| + absolute) over rgb: <= 0 passes.
-double worstExcess(const RefImage& gl, const RefImage& ref, double relative, double absolute) {
-    if (gl.width != ref.width || gl.height != ref.height) return INFINITY;
-    double worst = -INFINITY;
-    for (size_t i = 0; i < gl.texels.size(); ++i)
-        for (int c = 0; c < 3; ++c) {
-            double d = std::fabs(gl.texels[i][c] - ref.texels[i][c]);
-            if (std::isnan(d)) return INFINITY;
-            worst = std::max(worst, d - (relative * std::fabs(ref.texels[i][c]) + absolute));
-        }
-    return worst;
-}
-
 const double kHalfStep = std::ldexp(1.0, -10);
 // One rounding to half plus the float32 arithmetic of a pass (a few 1e-6 relative).
 const double kHalfTolerance = kHalfStep + 1e-5;

@@ -23,24 +23,6 @@ class HdrLightingHardCasesGLTest : public GlTest {};
 const double kHalfTolerance = std::ldexp(1.0, -10) + 1e-5;  // one rounding to half + float32 sums
 constexpr double kPixel = 30000.0;                           // the bright pixel, grey, inside half range
 
-std::string singlePixelPattern(glm::ivec2 pixel) {
-    return "void main() { fragColor = vec4(ivec2(gl_FragCoord.xy) == ivec2(" + std::to_string(pixel.x) + ", " +
-           std::to_string(pixel.y) + ") ? vec3(" + glslFloat(kPixel) + ") : vec3(0.0), 1.0); }\n";
-}
-
-// Largest |gl - ref| - (relative · |ref| + absolute) over rgb; <= 0 passes. +Inf on a size mismatch or NaN.
-double worstExcess(const RefImage& gl, const RefImage& ref, double relative, double absolute) {
-    if (gl.width != ref.width || gl.height != ref.height) return INFINITY;
-    double worst = -INFINITY;
-    for (size_t i = 0; i < gl.texels.size(); ++i)
-        for (int c = 0; c < 3; ++c) {
-            double d = std::fabs(gl.texels[i][c] - ref.texels[i][c]);
-            if (std::isnan(d)) return INFINITY;
-            worst = std::max(worst, d - (relative * std::fabs(ref.texels[i][c]) + absolute));
-        }
-    return worst;
-}
-
 int nonFiniteValues(const Image& image) {
     int n = 0;
     for (float v : image.pixels) n += !std::isfinite(v);
@@ -59,21 +41,12 @@ double total(const RefImage& image) {
 // final exp (3 ulps): 2e-6 of Lavg. The pixel moves Lavg above delta by what the reference says;
 // the test requires that move to be over 20 times the tolerance, so a lost pixel fails.
 TEST_F(HdrLightingHardCasesGLTest, SinglePixelInTheLastRowOrColumnReachesEveryReduction) {
-    struct Case {
-        glm::ivec2 size, pixel;
-    };
-    std::vector<Case> cases;
-    cases.push_back({{1, 1}, {0, 0}});
-    for (glm::ivec2 pixel : {glm::ivec2(2, 2), glm::ivec2(1, 4), glm::ivec2(2, 4)})  // last column, last row, corner
-        cases.push_back({{3, 5}, pixel});
-    cases.push_back({{1921, 1081}, {1920, 1080}});  // the large size once: the corner is both edges
     int bloomed = 0;
-    for (const Case& c : cases) {
-        SCOPED_TRACE(std::to_string(c.size.x) + "x" + std::to_string(c.size.y) + ", pixel " + std::to_string(c.pixel.x) +
-                     "," + std::to_string(c.pixel.y));
+    for (const EdgePixelCase& c : edgePixelCases()) {
+        SCOPED_TRACE(c.name());
         auto ws = effectWorkspace("hdr_lighting.xml", {{"Light_Adaptation", "false"}});
         ASSERT_TRUE(ws);
-        replaceSceneWithPattern(*ws, "scene", singlePixelPattern(c.pixel));
+        replaceSceneWithPattern(*ws, "scene", singlePixelPattern(c.pixel, kPixel));
         ExecutorOptions bloomOnly;  // the star is no reduction chain; leaving it out saves compiling 25 passes
         bloomOnly.effects = std::vector<std::string>{"bloom"};
         GlRun run = runWorkspace(std::move(ws), {c.size, 1, 1.0f / 60.0f}, bloomOnly);
