@@ -104,8 +104,8 @@ TEST_F(ExposureHardCasesGLTest, ExposureZeroAnd1e4GiveFiniteTargetsAndABlackOutp
 // llvmpipe clamps float -> half writes to 65504 itself (other drivers write Inf), which would hide
 // a pass that does not clamp: here the half-float targets those passes write are made rgba32f, so
 // what the shader writes is seen as it is. At exposure 1e4 the sky (2000 x 1e4) must arrive as
-// 65504 exactly: the scene passes (sky, teapot) and auto_exposure's screen (65504 x its exposure)
-// clamp what they write; so does the article's tone map, at 1e9.
+// 65504 exactly: the scene passes (sky, teapot), the streak and ghost passes and auto_exposure's
+// screen (65504 x its exposure) clamp what they write; so does the article's tone map, at 1e9.
 TEST_F(ExposureHardCasesGLTest, PassesWritingHalfFloatTargetsClampAt65504) {
     struct Case {
         std::string file, variable;
@@ -115,6 +115,9 @@ TEST_F(ExposureHardCasesGLTest, PassesWritingHalfFloatTargetsClampAt65504) {
     };
     std::vector<Case> cases = {
         {"shader_1.xml", "Exposure_Level", {{"Environment_Format", "1"}}, "scene"},
+        // The streak passes gain up to 3.77, the ghost passes 4 x Glow_Factor (masked: 0.93 of 4 at 64x64).
+        {"shader_3.xml", "Exposure_Level", {{"Environment_Format", "1"}}, "streak_dl_4"},
+        {"shader_4.xml", "Exposure_Level", {{"Environment_Format", "1"}, {"Glow_Factor", "2"}}, "ghost_1"},
         {"auto_exposure.xml", "Exposure_Level", {{"Environment_Format", "1"}, {"Initial_Exposure", "16"}}, "output"},
         // The article's output reaches only 6000 at 1e4 (2000^0.55 x 1e4^0.55): its clamp needs 1e9.
         {"article_pipeline.xml", "fExposureLevel", {}, "output", "1e9"},
@@ -127,7 +130,7 @@ TEST_F(ExposureHardCasesGLTest, PassesWritingHalfFloatTargetsClampAt65504) {
         ASSERT_TRUE(ws);
         ws->output.format = TargetFormat::RGBA32F;
         for (RenderTarget& t : ws->targets)
-            if (t.name == "scene") t.format = TargetFormat::RGBA32F;
+            if (t.name == "scene" || t.name == kase.target) t.format = TargetFormat::RGBA32F;
         GlRun run = runWorkspace(std::move(ws), {{64, 64}, 1, 1.0f / 60.0f});
         ASSERT_TRUE(run.exec);
         TargetCheck c = check(readBack(*run.exec, kase.target), false);
