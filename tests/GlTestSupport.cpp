@@ -86,6 +86,34 @@ void replaceSceneWithLight(Workspace& ws, const std::string& scenePass, glm::ive
     found->shaders = {fragment};
 }
 
+void replaceSceneWithPattern(Workspace& ws, const std::string& target, const std::string& pattern) {
+    for (Pass& pass : ws.passes)
+        if (pass.target == target) pass.enabled = false;
+    Pass replacement;
+    replacement.name = "test_pattern";
+    replacement.target = target;
+    ShaderSource fragment;
+    fragment.stage = ShaderStage::Fragment;
+    fragment.code = "#version 450 core\nout vec4 fragColor;\n" + pattern;
+    replacement.shaders.push_back(fragment);
+    replacement.draw.mesh = BuiltinMesh::FullscreenTriangle;
+    ws.passes.insert(ws.passes.begin(), replacement);
+}
+
+std::string singlePixelPattern(glm::ivec2 pixel, double value) {
+    return "void main() { fragColor = vec4(ivec2(gl_FragCoord.xy) == ivec2(" + std::to_string(pixel.x) + ", " +
+           std::to_string(pixel.y) + ") ? vec3(" + glslFloat(value) + ") : vec3(0.0), 1.0); }\n";
+}
+
+std::string EdgePixelCase::name() const {
+    return std::to_string(size.x) + "x" + std::to_string(size.y) + ", pixel " + std::to_string(pixel.x) + "," +
+           std::to_string(pixel.y);
+}
+
+std::vector<EdgePixelCase> edgePixelCases(glm::ivec2 largePixel) {
+    return {{{1, 1}, {0, 0}}, {{3, 5}, {2, 2}}, {{3, 5}, {1, 4}}, {{3, 5}, {2, 4}}, {{1921, 1081}, largePixel}};
+}
+
 GlRun runWorkspace(std::unique_ptr<Workspace> ws, const RunSettings& settings, const ExecutorOptions& options) {
     GlRun run;
     run.ws = std::move(ws);

@@ -41,6 +41,22 @@ std::unique_ptr<Workspace> effectWorkspace(const std::string& file, const Overri
 // other pass drawing into the same target is disabled. Adds a test failure when there is no such pass.
 void replaceSceneWithLight(Workspace& ws, const std::string& scenePass, glm::ivec2 from, glm::ivec2 to);
 
+// Replaces every pass that draws into `target` by one full-screen pass running `pattern` (a
+// fragment shader body writing `out vec4 fragColor` from gl_FragCoord), inserted first.
+void replaceSceneWithPattern(Workspace& ws, const std::string& target, const std::string& pattern);
+
+// A pattern for replaceSceneWithPattern: `value` in rgb at `pixel` (x, y from the bottom), black
+// elsewhere, alpha 1.
+std::string singlePixelPattern(glm::ivec2 pixel, double value);
+
+// The reduction-chain sizes with a single pixel at the far edges: 1x1; 3x5 with the pixel
+// in the last column, the last row and the corner; 1921x1081 once (it is slow) at `largePixel`.
+struct EdgePixelCase {
+    glm::ivec2 size, pixel;
+    std::string name() const;
+};
+std::vector<EdgePixelCase> edgePixelCases(glm::ivec2 largePixel = {1920, 1080});
+
 struct GlRun {
     std::unique_ptr<Workspace> ws;     // declared first: the executor refers to it and dies first
     std::unique_ptr<GlExecutor> exec;  // null when creation or a frame failed

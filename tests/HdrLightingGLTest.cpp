@@ -30,22 +30,6 @@ std::unique_ptr<Workspace> loadHdrLighting(const Overrides& overrides = {}) {
     return effectWorkspace("hdr_lighting.xml", overrides);
 }
 
-// Replaces every pass that draws the scene by one full-screen pass running `pattern` (a fragment
-// shader writing fragColor from gl_FragCoord).
-void replaceScene(Workspace& ws, const std::string& pattern) {
-    for (Pass& pass : ws.passes)
-        if (pass.target == "scene") pass.enabled = false;
-    Pass replacement;
-    replacement.name = "test_pattern";
-    replacement.target = "scene";
-    ShaderSource fragment;
-    fragment.stage = ShaderStage::Fragment;
-    fragment.code = "#version 450 core\nout vec4 fragColor;\n" + pattern;
-    replacement.shaders.push_back(fragment);
-    replacement.draw.mesh = BuiltinMesh::FullscreenTriangle;
-    ws.passes.insert(ws.passes.begin(), replacement);
-}
-
 // Disables every pass after `last` (the ones a test does not look at, for speed).
 void stopAfter(Workspace& ws, const std::string& last) {
     bool after = false;
@@ -70,19 +54,6 @@ double maxChannel(const RefImage& image) {
     double m = 0.0;
     for (const glm::dvec4& t : image.texels) m = std::max({m, t.r, t.g, t.b});
     return m;
-}
-
-// Largest |gl - ref| - (relative · |ref| + absolute) over rgb: <= 0 passes.
-double worstExcess(const RefImage& gl, const RefImage& ref, double relative, double absolute) {
-    if (gl.width != ref.width || gl.height != ref.height) return INFINITY;
-    double worst = -INFINITY;
-    for (size_t i = 0; i < gl.texels.size(); ++i)
-        for (int c = 0; c < 3; ++c) {
-            double d = std::fabs(gl.texels[i][c] - ref.texels[i][c]);
-            if (std::isnan(d)) return INFINITY;
-            worst = std::max(worst, d - (relative * std::fabs(ref.texels[i][c]) + absolute));
-        }
-    return worst;
 }
 
 const double kHalfStep = std::ldexp(1.0, -10);
@@ -118,7 +89,7 @@ LuminanceRun measure(glm::ivec2 size, double peak, bool floatScene) {
     LuminanceRun out;
     auto ws = loadHdrLighting();
     if (!ws) return out;
-    replaceScene(*ws, logAveragePattern(peak));
+    replaceSceneWithPattern(*ws, "scene", logAveragePattern(peak));
     if (floatScene) {
         setFormat(*ws, "scene", TargetFormat::RGBA32F);
         setFormat(*ws, "quarter", TargetFormat::RGBA32F);
@@ -194,7 +165,7 @@ AdaptationRun adapt(int frames, float dt, double initial, TargetFormat format = 
     AdaptationRun out;
     auto ws = loadHdrLighting();
     if (!ws) return out;
-    replaceScene(*ws, uniformPattern(0.05));
+    replaceSceneWithPattern(*ws, "scene", uniformPattern(0.05));
     stopAfter(*ws, "adaptation");
     for (RenderTarget& t : ws->targets)
         if (t.name == "adapted") {
@@ -278,7 +249,7 @@ const char* kGlarePattern = R"(void main() {
 GlRun renderGlare(const Overrides& overrides, glm::ivec2 size = {128, 96}) {
     auto ws = loadHdrLighting(overrides);
     if (!ws) return {};
-    replaceScene(*ws, kGlarePattern);
+    replaceSceneWithPattern(*ws, "scene", kGlarePattern);
     return runWorkspace(std::move(ws), {size, 1, 1.0f / 60.0f});
 }
 
@@ -321,7 +292,7 @@ TEST_F(HdrLightingGLTest, BrightPassBloomAndStarSourcesMatchFloat64) {
 TEST_F(HdrLightingGLTest, StarLineResponseToASingleTexelIsItsTapWeights) {
     auto ws = loadHdrLighting({{"Star_Type", "3"}, {"Chromatic_Aberration", "1"}});
     ASSERT_TRUE(ws);
-    replaceScene(*ws, uniformPattern(0.1));
+    replaceSceneWithPattern(*ws, "scene", uniformPattern(0.1));
     for (Pass& pass : ws->passes) {
         if (pass.name == "star_source") {
             pass.shaders = {ShaderSource{}};

@@ -1,5 +1,7 @@
 // The article's tone mapping: 40 % of the blurred highlights over the original, a vignette of
-// (1 - r^2)^4 around the centre, the exposure, and a gamma of 0.55.
+// (1 - r^2)^4 around the centre, the exposure, and a gamma of 0.55; clamped to the largest half
+// float so that a large exposure does not write Inf to the rgba16f output.
+#include "finite.glsl"
 uniform sampler2D FullSampler;
 uniform sampler2D BlurSampler;
 uniform float fExposureLevel;
@@ -14,5 +16,5 @@ void main() {
     float vignette = 1.0 - dot(fromCentre, fromCentre);
     color *= pow(vignette, 4.0);
     color *= fExposureLevel;
-    fragColor = vec4(pow(max(color.rgb, 0.0), vec3(0.55)), 1.0);
+    fragColor = vec4(clampToHalfFloat(pow(finiteNonNegative(color.rgb), vec3(0.55))), 1.0);
 }

@@ -2,9 +2,11 @@
 // "Brightness" of an HDR colour for automatic exposure: Rec.709 luminance of the colour after
 // NaN and negative channels become 0 and +Inf becomes 65504 (the largest half float, what the
 // rgba16f scene can hold), so one bad pixel cannot turn the average into NaN or Inf.
+#include "finite.glsl"
+
 float sanitisedChannel(float c) {
-    if (isnan(c) || c < 0.0) return 0.0;
-    return min(c, 65504.0);
+    if (!isFiniteFloat(c)) return floatBitsToUint(c) == 0x7F800000u ? 65504.0 : 0.0;  // +Inf, or NaN / -Inf
+    return c > 0.0 ? min(c, 65504.0) : 0.0;
 }
 
 float brightness(vec3 color) {

@@ -2,6 +2,7 @@
 // Filters over images read with loadHDR (decode first, then filter). Coordinates are in texels of
 // the image read: texel (i, j) covers [i, i+1) x [j, j+1), its centre at (i + 0.5, j + 0.5).
 #include "hdr_storage.glsl"
+#include "finite.glsl"
 
 // A texel, or black outside the image: the DirectX sample keeps a one-texel black border around
 // its glare textures so that blurs and star lines fade out at the edges instead of smearing them.
@@ -19,14 +20,6 @@ vec3 bilinearHDROrBlack(sampler2D image, vec2 position) {
     vec3 bottom = mix(loadHDROrBlack(image, i), loadHDROrBlack(image, i + ivec2(1, 0)), f.x);
     vec3 top = mix(loadHDROrBlack(image, i + ivec2(0, 1)), loadHDROrBlack(image, i + ivec2(1, 1)), f.x);
     return mix(bottom, top, f.y);
-}
-
-// NaN, ±Inf and negative channels as 0, tested on the bits (GLSL's min/max need not drop a NaN,
-// and a compiler may assume isnan is false): one bad texel would otherwise spread through every
-// average, blur and the log-average luminance.
-vec3 finiteNonNegative(vec3 c) {
-    bvec3 finite = notEqual(floatBitsToUint(c) & 0x7F800000u, uvec3(0x7F800000u));
-    return vec3(finite.x && c.x > 0.0 ? c.x : 0.0, finite.y && c.y > 0.0 ? c.y : 0.0, finite.z && c.z > 0.0 ? c.z : 0.0);
 }
 
 // Exact mean of the texels of the block [block * n, block * n + n) that lie inside the image,

@@ -2,7 +2,8 @@
 // offsetFactor * i texels (of the target being rendered) along `direction` and weighs
 // blurFactor^(offsetFactor * i). The weights are not normalised, as in the chapter: a pass gains
 // 1 + 0.96 + 0.96^2 + 0.96^3 = 3.77 with offsetFactor 1 and 1 + 0.96^4 + 0.96^8 + 0.96^12 = 3.18
-// with offsetFactor 4, 12 in all.
+// with offsetFactor 4, 12 in all; so the sum is clamped to the largest half float (finite.glsl).
+#include "finite.glsl"
 uniform sampler2D Texture0;
 uniform vec2 rm_InvTargetSize;
 uniform vec2 direction;      // pass constant: (+-1, +-1) in texture space (+y up)
@@ -22,5 +23,5 @@ void main() {
     for (int i = 0; i < 4; i++)
         color += pow(blurFactor, offsetFactor * samples[i].w) *
                  texture(Texture0, vTexCoord + offsetFactor * samples[i].xy * direction * rm_InvTargetSize);
-    fragColor = color;
+    fragColor = vec4(clampToHalfFloat(color.rgb), color.a);
 }

@@ -144,4 +144,16 @@ double maxRelativeDifference(const RefImage& a, const RefImage& b, double floor,
     return worst;
 }
 
+double worstExcess(const RefImage& gl, const RefImage& ref, double relative, double absolute) {
+    if (gl.width != ref.width || gl.height != ref.height) return INFINITY;
+    double worst = -INFINITY;
+    for (size_t i = 0; i < gl.texels.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            double d = std::fabs(gl.texels[i][c] - ref.texels[i][c]);
+            if (std::isnan(d)) return INFINITY;
+            worst = std::max(worst, d - (relative * std::fabs(ref.texels[i][c]) + absolute));
+        }
+    return worst;
+}
+
 }  // namespace rmfx::test

@@ -30,6 +30,10 @@ struct RefImage {
 // 0 (rgb) or 1 (alpha), one channel fills rgb.
 RefImage fromImage(const Image& image);
 
+// Largest |gl - ref| - (relative · |ref| + absolute) over rgb: <= 0 passes. +Inf when the sizes
+// differ or a difference is NaN.
+double worstExcess(const RefImage& gl, const RefImage& ref, double relative, double absolute);
+
 // Texel fetch with clamp-to-edge addressing.
 glm::dvec4 fetchClamped(const RefImage& image, int x, int y);
 
