@@ -24,19 +24,6 @@ vec3 bilinearHDROrBlack(sampler2D image, vec2 position, int encoding) {
 }
 vec3 bilinearHDROrBlack(sampler2D image, vec2 position) { return bilinearHDROrBlack(image, position, HDR_Encoding); }
 
-// Bilinear interpolation at `position` (in texels) with GL_CLAMP_TO_EDGE addressing: beyond the
-// outermost texel centres the edge texels extend.
-vec3 bilinearHDRClamped(sampler2D image, vec2 position, int encoding) {
-    ivec2 last = textureSize(image, 0) - 1;
-    vec2 p = position - 0.5;
-    ivec2 i = ivec2(floor(p));
-    vec2 f = p - vec2(i);
-    ivec2 i0 = clamp(i, ivec2(0), last), i1 = clamp(i + 1, ivec2(0), last);
-    vec3 bottom = mix(loadHDR(image, i0, encoding), loadHDR(image, ivec2(i1.x, i0.y), encoding), f.x);
-    vec3 top = mix(loadHDR(image, ivec2(i0.x, i1.y), encoding), loadHDR(image, i1, encoding), f.x);
-    return mix(bottom, top, f.y);
-}
-
 // NaN, ±Inf and negative channels as 0, tested on the bits (GLSL's min/max need not drop a NaN,
 // and a compiler may assume isnan is false): one bad texel would otherwise spread through every
 // average, blur and the log-average luminance.
