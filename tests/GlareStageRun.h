@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -110,6 +111,34 @@ inline double rgbSum(const RefImage& image) {
     double sum = 0.0;
     for (const auto& t : image.texels) sum += t.r + t.g + t.b;
     return sum;
+}
+
+// Renders `effect` of the stage workspace `file` with Target_Format 0 and then 1..5, and expects
+// each result within strength * (writes * quantisation(F, peak) + filterTolerance * peak) of the
+// rgba32f one, peak the largest value of `down`: every pass averages with non-negative weights
+// summing to at most 1, so an error a write makes never grows later and no value exceeds the peak;
+// filterTolerance covers the shader's bilinear (encoded formats) against the hardware's (float).
+inline void expectFormatsWithinQuantisation(const std::string& file, const RefImage& input, const std::string& effect,
+                                            Overrides overrides, int writes, double strength, double filterTolerance) {
+    overrides.push_back({"Target_Format", "0"});
+    GlRun reference = renderStage(file, input, effect, overrides);
+    ASSERT_TRUE(reference.exec);
+    RefImage expected = readRef(reference, "result");
+    double peak = maxColorChannel(readRef(reference, "down"));
+    std::printf("%-13s", effect.c_str());
+    for (int format = 1; format <= 5; ++format) {
+        SCOPED_TRACE(effect + " Target_Format " + std::to_string(format));
+        overrides.back().second = std::to_string(format);
+        GlRun run = renderStage(file, input, effect, overrides);
+        ASSERT_TRUE(run.exec);
+        RefImage result = readRef(run, "result");
+        ASSERT_TRUE(allFinite(result));
+        double bound = strength * (writes * quantisation(format, peak) + filterTolerance * peak);
+        double error = maxRgbDifference(result, expected);
+        std::printf("  %d: %.3g of %.3g", format, error, bound);
+        expectWithin(effect + " format " + std::to_string(format), error, bound);
+    }
+    std::printf("\n");
 }
 
 }  // namespace rmfx::test
