@@ -10,5 +10,14 @@
 
 vec4 storeHDR(vec3 color) { return encodeHDR(color); }
 
+// A pipeline whose targets use only some encodings may define HDR_DECODE(texel, encoding) before
+// including this file, so that its shaders compile only those decoders: every filter tap inlines
+// one, and RGB32's double maths alone costs llvmpipe about a second per shader.
+#ifndef HDR_DECODE
+#define HDR_DECODE(texel, encoding) decodeHDR(texel, encoding)
+#endif
+
 // Texel `texel` of an image written with storeHDR, decoded; the caller keeps it inside the image.
-vec3 loadHDR(sampler2D image, ivec2 texel) { return decodeHDR(texelFetch(image, texel, 0)); }
+// The overload with `encoding` serves pipelines whose selector is not HDR_Encoding.
+vec3 loadHDR(sampler2D image, ivec2 texel, int encoding) { return HDR_DECODE(texelFetch(image, texel, 0), encoding); }
+vec3 loadHDR(sampler2D image, ivec2 texel) { return loadHDR(image, texel, HDR_Encoding); }
