@@ -41,6 +41,7 @@ struct BenchArguments {
     std::vector<std::string> stages;
     std::vector<std::string> variants;  // substrings
     fs::path out = "bench-out";
+    TimeSource ranked = TimeSource::Gpu;
     bool quiet = false;
 };
 
@@ -61,7 +62,7 @@ std::optional<BenchArguments> parseArguments(const std::vector<std::string>& arg
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];
         if (arg == "--input" || arg == "--size" || arg == "--frames" || arg == "--warmup" || arg == "--stage" ||
-            arg == "--variant" || arg == "--out") {
+            arg == "--variant" || arg == "--out" || arg == "--time") {
             if (i + 1 >= args.size() || args[i + 1].empty()) return fail(arg + " needs a value");
             const std::string& value = args[++i];
             if (arg == "--input") {
@@ -79,6 +80,9 @@ std::optional<BenchArguments> parseArguments(const std::vector<std::string>& arg
                 a.stages.push_back(value);
             } else if (arg == "--variant") {
                 a.variants.push_back(value);
+            } else if (arg == "--time") {
+                if (value != "gpu" && value != "wall") return fail("--time: expected gpu or wall, got '" + value + "'");
+                a.ranked = value == "gpu" ? TimeSource::Gpu : TimeSource::Wall;
             } else {
                 a.out = value;
             }
@@ -166,7 +170,13 @@ std::optional<std::vector<BenchInput>> gatherInputs(const BenchArguments& a, con
     for (const auto& [name, file] : files) {
         auto image = readInput(file);
         if (!image) {
-            std::cerr << "rmfx bench: input '" << name << "': " << image.error() << "\n";
+            bool sceneFile = std::any_of(manifest.scenes.begin(), manifest.scenes.end(),
+                                         [&](const SceneSpec& s) { return s.file == file; });
+            std::cerr << "rmfx bench: input '" << name << "': " << image.error()
+                      << (sceneFile && !fs::exists(file) ? " (the build writes the sample media: cmake --build BUILD "
+                                                           "--target rmfx_sample_media; or --no-scenes)"
+                                                         : "")
+                      << "\n";
             return std::nullopt;
         }
         inputs.push_back({uniqueName(name, inputs), file, std::move(*image)});
@@ -288,6 +298,7 @@ int benchCommand(const std::vector<std::string>& args) {
     results.warmup = a->counts.warmup;
     results.date = utcNow();
     results.command = commandLine(args);
+    results.ranked = a->ranked;
 
     size_t total = 0, done = 0;
     for (const StagePlan& plan : *plans) total += plan.variants.size() * inputs->size();
@@ -314,12 +325,12 @@ int benchCommand(const std::vector<std::string>& args) {
                     return 2;
                 }
                 BenchRow row{input.name, stage.name, variant.name, variant.effect, variant.settingsText(),
-                             measured->time, *metrics, false};
+                             measured->time, measured->wall, *metrics, false};
                 if (!a->quiet)
                     std::cout << "[" << done << "/" << total << "] " << input.name << " " << stage.name << " "
-                              << variant.name << ": " << fixedText(row.time.median, 3) << " ms (p10 "
-                              << fixedText(row.time.p10, 3) << ", p90 " << fixedText(row.time.p90, 3)
-                              << "), mean rel. error " << numberText(row.error.meanRelative, 3) << ", max "
+                              << variant.name << ": GPU " << fixedText(row.time.median, 3) << " ms (p10 "
+                              << fixedText(row.time.p10, 3) << ", p90 " << fixedText(row.time.p90, 3) << "), wall "
+                              << fixedText(row.wall.median, 3) << " ms, mean rel. error " << numberText(row.error.meanRelative, 3) << ", max "
                               << numberText(row.error.maxRelative, 3) << ", PSNR " << fixedText(row.error.psnrDb, 2)
                               << " dB" << std::endl;
                 results.rows.push_back(std::move(row));
@@ -331,7 +342,8 @@ int benchCommand(const std::vector<std::string>& args) {
 
     std::string table = "<!-- " + results.command + " -->\n\nMeasured on " + results.device + ", inputs " +
                         results.size + ", median of " + std::to_string(results.frames) + " frames after " +
-                        std::to_string(results.warmup) + " warm-up frames, " + results.date + ". Inputs: ";
+                        std::to_string(results.warmup) + " warm-up frames (" + timeSourceTitle(results.ranked) + "), " +
+                        results.date + ". Inputs: ";
     for (size_t i = 0; i < inputs->size(); ++i) table += (i ? ", " : "") + (*inputs)[i].name;
     table += ". Times and mean errors are means over the inputs, max error the largest, PSNR the smallest; "
              "**bold**: on the Pareto front (no variant both faster and more accurate).\n" +

@@ -121,7 +121,8 @@ TEST_F(CliBenchGLTest, MeasuresEveryVariantOnEveryInputAndWritesTheResultFiles) 
     Image input = testInput();
     ASSERT_TRUE(writeImage(dir / "input.exr", input));
 
-    CommandResult cli = runRmfx("bench m.xml --input input.exr --size 32x32 --frames 2 --warmup 1 --out out", dir.path());
+    CommandResult cli =
+        runRmfx("bench m.xml --input input.exr --size 32x32 --frames 2 --warmup 1 --time wall --out out", dir.path());
     ASSERT_EQ(cli.status, 0) << cli.err << cli.out;
     EXPECT_NE(cli.out.find("[6/6] input bloom box Gain=2: "), std::string::npos) << cli.out;
     EXPECT_TRUE(std::filesystem::exists(dir / "out/inputs/tiny.exr"));
@@ -137,15 +138,18 @@ TEST_F(CliBenchGLTest, MeasuresEveryVariantOnEveryInputAndWritesTheResultFiles) 
     EXPECT_NE((*json)["device"].string.find("4.5"), std::string::npos);
     EXPECT_EQ((*json)["frames"].number, 2);
     EXPECT_EQ((*json)["warmup"].number, 1);
+    EXPECT_EQ((*json)["ranked_time"].string, "wall");
     const auto& rows = (*json)["rows"].array;
     ASSERT_EQ(rows.size(), 9u);
     const JsonValue* copyOnInput = nullptr;
     for (const JsonValue& row : rows) {
-        for (const char* key : {"median_ms", "p10_ms", "p90_ms", "min_ms", "max_ms", "max_rel_error", "mean_rel_error"}) {
+        for (const char* key : {"median_ms", "p10_ms", "p90_ms", "min_ms", "max_ms", "max_rel_error", "mean_rel_error",
+                                "wall_median_ms", "wall_p10_ms", "wall_p90_ms"}) {
             ASSERT_EQ(row[key].kind, JsonValue::Kind::Number) << key << " of " << row["variant"].string;
             EXPECT_TRUE(std::isfinite(row[key].number)) << key;
         }
         EXPECT_GT(row["median_ms"].number, 0.0);
+        EXPECT_GT(row["wall_median_ms"].number, 0.0);
         EXPECT_LE(row["p10_ms"].number, row["p90_ms"].number);
         EXPECT_EQ(row["frames"].number, 2);
         EXPECT_TRUE(row["psnr_db"].kind == JsonValue::Kind::Null || std::isfinite(row["psnr_db"].number));

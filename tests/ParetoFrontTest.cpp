@@ -64,6 +64,22 @@ TEST(ParetoFront, MarkedPerInputAndStageAndOnTheSummaryOverInputs) {
     EXPECT_TRUE(fastAll.pareto && r.rows[6].pareto);       // 0.175 at 1 ms against 0.1 at 2 ms
 }
 
+TEST(ParetoFront, RanksByTheWallClockWhenAskedTo) {
+    BenchResults r;
+    BenchRow a, b;
+    a.input = b.input = "x";
+    a.stage = b.stage = "bloom";
+    a.variant = "a", b.variant = "b";
+    a.time.median = 1.0, a.wall.median = 20.0, a.error.meanRelative = 0.2;  // fast on the timer only
+    b.time.median = 2.0, b.wall.median = 10.0, b.error.meanRelative = 0.1;
+    r.rows = {a, b};
+    markParetoFronts(r);
+    EXPECT_TRUE(r.rows[0].pareto && r.rows[1].pareto);
+    r.ranked = TimeSource::Wall;
+    markParetoFronts(r);
+    EXPECT_TRUE(!r.rows[0].pareto && r.rows[1].pareto);
+}
+
 TEST(TimeSummary, PercentilesInterpolateBetweenSortedSamples) {
     TimeSummary t = summariseTimes({5, 1, 4, 2, 3, 10, 6, 7, 9, 8, 11});  // 1..11
     EXPECT_EQ(t.frames, 11);

@@ -84,14 +84,16 @@ std::string tickLabel(double v) {
     return t;
 }
 
-std::string panel(const std::vector<const BenchRow*>& rows, const std::string& stage, double top, int inputs) {
+std::string panel(const BenchResults& results, const std::vector<const BenchRow*>& rows, const std::string& stage,
+                  double top, int inputs) {
+    auto timeOf = [&](const BenchRow* r) -> const TimeSummary& { return rankedTime(results, *r); };
     std::string svg = "<g transform=\"translate(0," + num(top) + ")\">\n";
     svg += text(kPlotLeft, 24, stage + (inputs > 1 ? " (mean over " + std::to_string(inputs) + " inputs)" : ""),
                 "font-size=\"16\" font-weight=\"bold\"");
 
     double tLow = INFINITY, tHigh = 0, eLow = INFINITY, eHigh = 0;
     for (const BenchRow* r : rows) {
-        for (double t : {r->time.p10, r->time.p90, r->time.median})
+        for (double t : {timeOf(r).p10, timeOf(r).p90, timeOf(r).median})
             if (t > 0 && std::isfinite(t)) tLow = std::min(tLow, t), tHigh = std::max(tHigh, t);
         double e = r->error.meanRelative;
         if (e > 0 && std::isfinite(e)) eLow = std::min(eLow, e), eHigh = std::max(eHigh, e);
@@ -115,7 +117,7 @@ std::string panel(const std::vector<const BenchRow*>& rows, const std::string& s
         svg += line(kPlotLeft - 5, py, kPlotLeft, py, "stroke=\"black\"");
         svg += text(kPlotLeft - 8, py + 4, tickLabel(v), "font-size=\"11\" text-anchor=\"end\"");
     }
-    svg += text((kPlotLeft + kPlotRight) / 2, kPlotBottom + 40, "median GPU time per frame, ms (log scale)",
+    svg += text((kPlotLeft + kPlotRight) / 2, kPlotBottom + 40, std::string(timeSourceTitle(results.ranked)) + " (log scale)",
                 "font-size=\"13\" text-anchor=\"middle\"");
     svg += "<text font-size=\"13\" text-anchor=\"middle\" transform=\"translate(22," + num((kPlotTop + kPlotBottom) / 2) +
            ") rotate(-90)\">mean relative luminance error (log scale)</text>\n";
@@ -124,14 +126,14 @@ std::string panel(const std::vector<const BenchRow*>& rows, const std::string& s
     std::vector<const BenchRow*> front;
     for (const BenchRow* r : rows)
         if (r->pareto) front.push_back(r);
-    std::sort(front.begin(), front.end(), [](const BenchRow* a, const BenchRow* b) {
-        return a->time.median < b->time.median ||
-               (a->time.median == b->time.median && a->error.meanRelative > b->error.meanRelative);
+    std::sort(front.begin(), front.end(), [&](const BenchRow* a, const BenchRow* b) {
+        return timeOf(a).median < timeOf(b).median ||
+               (timeOf(a).median == timeOf(b).median && a->error.meanRelative > b->error.meanRelative);
     });
     if (!front.empty()) {
         std::string points;
         for (size_t i = 0; i < front.size(); ++i) {
-            double px = x.at(front[i]->time.median), py = y.at(front[i]->error.meanRelative);
+            double px = x.at(timeOf(front[i]).median), py = y.at(front[i]->error.meanRelative);
             if (i > 0) points += num(px) + "," + num(y.at(front[i - 1]->error.meanRelative)) + " ";
             points += num(px) + "," + num(py) + " ";
         }
@@ -144,8 +146,8 @@ std::string panel(const std::vector<const BenchRow*>& rows, const std::string& s
         double e = r.error.meanRelative;
         clipped = clipped || !(e > 0) || !std::isfinite(e);
         double py = y.at(std::isfinite(e) ? e : y.high());
-        svg += line(x.at(r.time.p10), py, x.at(r.time.p90), py, "stroke=\"#5070b0\" stroke-width=\"2\"");
-        double px = x.at(r.time.median);
+        svg += line(x.at(timeOf(&r).p10), py, x.at(timeOf(&r).p90), py, "stroke=\"#5070b0\" stroke-width=\"2\"");
+        double px = x.at(timeOf(&r).median);
         svg += "<circle cx=\"" + num(px) + "\" cy=\"" + num(py) + "\" r=\"4.5\" stroke=\"" +
                std::string(r.pareto ? "#c03020" : "#203060") + "\" fill=\"" + (r.pareto ? "#c03020" : "white") +
                "\" stroke-width=\"1.5\"/>\n";
@@ -184,17 +186,18 @@ std::string accuracyPlotSvg(const BenchResults& results, const std::string& inpu
                       num(kPanelWidth) + "\" height=\"" + num(height) + "\" viewBox=\"0 0 " + num(kPanelWidth) + " " +
                       num(height) + "\" font-family=\"DejaVu Sans, Arial, sans-serif\">\n";
     svg += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    svg += text(20, 24, "rmfx bench: error against GPU time per variant", "font-size=\"18\" font-weight=\"bold\"");
+    svg += text(20, 24, "rmfx bench: error against time per variant", "font-size=\"18\" font-weight=\"bold\"");
     svg += text(20, 46,
-                results.device + " · " + results.size + " · median of " + std::to_string(results.frames) +
-                    " frames after " + std::to_string(results.warmup) + " warm-up · " + results.date,
+                results.device + " · " + results.size + " · " + timeSourceName(results.ranked) + " time, median of " +
+                    std::to_string(results.frames) + " frames after " + std::to_string(results.warmup) + " warm-up · " +
+                    results.date,
                 "font-size=\"12\" fill=\"#444\"");
     int inputCount = input == kAllInputs ? static_cast<int>(inputs.size()) : 1;
     for (size_t s = 0; s < stages.size(); ++s) {
         std::vector<const BenchRow*> rows;
         for (const BenchRow& r : results.rows)
             if (r.stage == stages[s] && r.input == input) rows.push_back(&r);
-        svg += panel(rows, stages[s], kHeaderHeight + kPanelHeight * static_cast<double>(s), inputCount);
+        svg += panel(results, rows, stages[s], kHeaderHeight + kPanelHeight * static_cast<double>(s), inputCount);
     }
     svg += "</svg>\n";
     return svg;

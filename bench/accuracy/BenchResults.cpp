@@ -7,6 +7,25 @@
 
 namespace rmfx::accuracy {
 
+const char* timeSourceName(TimeSource source) { return source == TimeSource::Gpu ? "gpu" : "wall"; }
+
+const char* timeSourceTitle(TimeSource source) {
+    return source == TimeSource::Gpu ? "median GPU time per frame (timer queries), ms"
+                                     : "median wall time per frame (renderFrame + glFinish), ms";
+}
+
+namespace {
+
+void addMean(TimeSummary& sum, const TimeSummary& t, double n) {
+    sum.median += t.median / n;
+    sum.p10 += t.p10 / n;
+    sum.p90 += t.p90 / n;
+    sum.min += t.min / n;
+    sum.max += t.max / n;
+}
+
+}  // namespace
+
 void addSummaryRows(BenchResults& results) {
     std::vector<std::pair<std::string, std::string>> order;
     std::map<std::pair<std::string, std::string>, std::vector<const BenchRow*>> groups;
@@ -22,15 +41,14 @@ void addSummaryRows(BenchResults& results) {
         BenchRow s = *rows.front();
         s.input = kAllInputs;
         s.time = {};
+        s.wall = {};
         s.time.frames = rows.front()->time.frames;
+        s.wall.frames = rows.front()->wall.frames;
         s.error = {0.0, 0.0, rows.front()->error.psnrDb};
         double n = static_cast<double>(rows.size());
         for (const BenchRow* r : rows) {
-            s.time.median += r->time.median / n;
-            s.time.p10 += r->time.p10 / n;
-            s.time.p90 += r->time.p90 / n;
-            s.time.min += r->time.min / n;
-            s.time.max += r->time.max / n;
+            addMean(s.time, r->time, n);
+            addMean(s.wall, r->wall, n);
             s.error.meanRelative += r->error.meanRelative / n;
             s.error.maxRelative = std::max(s.error.maxRelative, r->error.maxRelative);
             s.error.psnrDb = std::min(s.error.psnrDb, r->error.psnrDb);
@@ -46,7 +64,7 @@ void markParetoFronts(BenchResults& results) {
         groups[{results.rows[i].input, results.rows[i].stage}].push_back(i);
     for (const auto& [key, indices] : groups) {
         std::vector<TimeError> points;
-        for (size_t i : indices) points.push_back({results.rows[i].time.median, results.rows[i].error.meanRelative});
+        for (size_t i : indices) points.push_back({rankedTime(results, results.rows[i]).median, results.rows[i].error.meanRelative});
         std::vector<bool> front = paretoFront(points);
         for (size_t k = 0; k < indices.size(); ++k) results.rows[indices[k]].pareto = front[k];
     }

@@ -54,14 +54,15 @@ std::vector<std::string> stagesInOrder(const BenchResults& results) {
 std::string resultsCsv(const BenchResults& results) {
     std::string out =
         "input,stage,variant,effects,settings,frames,median_ms,p10_ms,p90_ms,min_ms,max_ms,max_rel_error,"
-        "mean_rel_error,psnr_db,pareto\n";
+        "mean_rel_error,psnr_db,pareto,wall_median_ms,wall_p10_ms,wall_p90_ms\n";
     for (const BenchRow& r : results.rows) {
         out += csvField(r.input) + "," + csvField(r.stage) + "," + csvField(r.variant) + "," + csvField(r.effects) + "," +
                csvField(r.settings) + "," + std::to_string(r.time.frames) + "," + fixedText(r.time.median, 4) + "," +
                fixedText(r.time.p10, 4) + "," + fixedText(r.time.p90, 4) + "," + fixedText(r.time.min, 4) + "," +
                fixedText(r.time.max, 4) + "," + numberText(r.error.maxRelative) + "," +
                numberText(r.error.meanRelative) + "," + fixedText(r.error.psnrDb, 3) + "," +
-               (r.pareto ? "1" : "0") + "\n";
+               (r.pareto ? "1" : "0") + "," + fixedText(r.wall.median, 4) + "," + fixedText(r.wall.p10, 4) + "," +
+               fixedText(r.wall.p90, 4) + "\n";
     }
     return out;
 }
@@ -74,6 +75,7 @@ std::string resultsJson(const BenchResults& results) {
     out += "  \"warmup\": " + std::to_string(results.warmup) + ",\n";
     out += "  \"date\": " + jsonString(results.date) + ",\n";
     out += "  \"command\": " + jsonString(results.command) + ",\n";
+    out += "  \"ranked_time\": " + jsonString(timeSourceName(results.ranked)) + ",\n";
     out += "  \"rows\": [";
     for (size_t i = 0; i < results.rows.size(); ++i) {
         const BenchRow& r = results.rows[i];
@@ -85,7 +87,9 @@ std::string resultsJson(const BenchResults& results) {
                ", \"min_ms\": " + jsonNumber(r.time.min) + ", \"max_ms\": " + jsonNumber(r.time.max) +
                ", \"max_rel_error\": " + jsonNumber(r.error.maxRelative) +
                ", \"mean_rel_error\": " + jsonNumber(r.error.meanRelative) +
-               ", \"psnr_db\": " + jsonNumber(r.error.psnrDb) + ", \"pareto\": " + (r.pareto ? "true" : "false") + "}";
+               ", \"psnr_db\": " + jsonNumber(r.error.psnrDb) + ", \"pareto\": " + (r.pareto ? "true" : "false") +
+               ", \"wall_median_ms\": " + jsonNumber(r.wall.median) + ", \"wall_p10_ms\": " + jsonNumber(r.wall.p10) +
+               ", \"wall_p90_ms\": " + jsonNumber(r.wall.p90) + "}";
     }
     out += "\n  ]\n}\n";
     return out;
@@ -95,13 +99,15 @@ std::string resultsMarkdown(const BenchResults& results, const std::string& inpu
     std::string out;
     for (const std::string& stage : stagesInOrder(results)) {
         out += "\n**" + stage + "**\n\n";
-        out += "| variant | settings | median ms | p10–p90 ms | max rel. error | mean rel. error | PSNR dB |\n";
+        out += std::string("| variant | settings | ") + (results.ranked == TimeSource::Gpu ? "GPU" : "wall") +
+               " median ms | p10–p90 ms | max rel. error | mean rel. error | PSNR dB |\n";
         out += "| --- | --- | ---: | ---: | ---: | ---: | ---: |\n";
         for (const BenchRow& r : results.rows) {
             if (r.stage != stage || r.input != input) continue;
             std::string name = r.pareto ? "**" + r.variant + "**" : r.variant;
-            out += "| " + name + " | " + r.settings + " | " + fixedText(r.time.median, 3) + " | " +
-                   fixedText(r.time.p10, 3) + "–" + fixedText(r.time.p90, 3) + " | " +
+            const TimeSummary& t = rankedTime(results, r);
+            out += "| " + name + " | " + r.settings + " | " + fixedText(t.median, 3) + " | " + fixedText(t.p10, 3) +
+                   "–" + fixedText(t.p90, 3) + " | " +
                    numberText(r.error.maxRelative, 3) + " | " + numberText(r.error.meanRelative, 3) + " | " +
                    fixedText(r.error.psnrDb, 2) + " |\n";
         }

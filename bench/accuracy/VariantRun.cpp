@@ -1,6 +1,7 @@
 #include "bench/accuracy/VariantRun.h"
 
 #include <algorithm>
+#include <chrono>
 
 #include <epoxy/gl.h>
 
@@ -37,19 +38,25 @@ Result<VariantMeasurement> measureVariant(const Workspace& stageWorkspace, const
 
     executor->setTimingEnabled(true);
     FrameClock clock{0.0f, 1.0f / 60.0f};
-    std::vector<double> milliseconds;
+    std::vector<double> milliseconds, wallMilliseconds;
     for (int i = 0; i < counts.warmup + counts.frames; ++i) {
+        auto started = std::chrono::steady_clock::now();
         if (Diagnostics failed = executor->renderFrame(clock); hasErrors(failed)) return Error{what + formatAll(failed)};
         glFinish();  // this frame's queries are complete: passTimings collects this very frame
+        double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
         executor->passTimings();
-        if (i >= counts.warmup) milliseconds.push_back(executor->frameGpuMilliseconds());
+        if (i >= counts.warmup) {
+            milliseconds.push_back(executor->frameGpuMilliseconds());
+            wallMilliseconds.push_back(wall);
+        }
         clock.time += clock.deltaTime;
     }
     executor->setTimingEnabled(false);
 
     auto output = executor->readTarget(stage.output);
     if (!output) return Error{what + output.error()};
-    return VariantMeasurement{summariseTimes(std::move(milliseconds)), std::move(*output)};
+    return VariantMeasurement{summariseTimes(std::move(milliseconds)), summariseTimes(std::move(wallMilliseconds)),
+                              std::move(*output)};
 }
 
 }  // namespace rmfx::accuracy

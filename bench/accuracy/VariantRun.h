@@ -1,7 +1,7 @@
 #pragma once
 // Measuring one variant of a stage on one input: its stage workspace with texture `Input` reading
-// the input, the variant's effect and settings, GPU time per frame from timer queries after
-// warm-up frames, and the output target read back. Needs a current GL context.
+// the input, the variant's effect and settings, GPU time per frame from timer queries (and the
+// wall clock of renderFrame + glFinish) after warm-up frames, and the output target read back. Needs a current GL context.
 
 #include <filesystem>
 #include <string>
@@ -19,7 +19,8 @@
 namespace rmfx::accuracy {
 
 struct VariantMeasurement {
-    TimeSummary time;
+    TimeSummary time;  // GPU timer queries
+    TimeSummary wall;  // wall clock of renderFrame + glFinish
     Image output;
 };
 
