@@ -41,7 +41,7 @@ struct BenchArguments {
     std::vector<std::string> stages;
     std::vector<std::string> variants;  // substrings
     fs::path out = "bench-out";
-    TimeSource ranked = TimeSource::Gpu;
+    std::optional<TimeSource> ranked;  // nullopt: auto
     bool quiet = false;
 };
 
@@ -81,8 +81,10 @@ std::optional<BenchArguments> parseArguments(const std::vector<std::string>& arg
             } else if (arg == "--variant") {
                 a.variants.push_back(value);
             } else if (arg == "--time") {
-                if (value != "gpu" && value != "wall") return fail("--time: expected gpu or wall, got '" + value + "'");
-                a.ranked = value == "gpu" ? TimeSource::Gpu : TimeSource::Wall;
+                if (value != "gpu" && value != "wall" && value != "auto")
+                    return fail("--time: expected gpu, wall or auto, got '" + value + "'");
+                if (value == "auto") a.ranked.reset();
+                else a.ranked = value == "gpu" ? TimeSource::Gpu : TimeSource::Wall;
             } else {
                 a.out = value;
             }
@@ -298,7 +300,10 @@ int benchCommand(const std::vector<std::string>& args) {
     results.warmup = a->counts.warmup;
     results.date = utcNow();
     results.command = commandLine(args);
-    results.ranked = a->ranked;
+    // Mesa's software rasterisers answer timer queries per thread (TimeSource in BenchResults.h).
+    bool software = results.device.find("llvmpipe") != std::string::npos ||
+                    results.device.find("softpipe") != std::string::npos;
+    results.ranked = a->ranked.value_or(software ? TimeSource::Wall : TimeSource::Gpu);
 
     size_t total = 0, done = 0;
     for (const StagePlan& plan : *plans) total += plan.variants.size() * inputs->size();

@@ -75,10 +75,10 @@ bench options:
   --stage NAME           only this stage (repeatable)
   --variant TEXT         only variants whose name contains TEXT (repeatable)
   --out DIR              where accuracy.csv, .json, .svg and .md go (default bench-out)
-  --time gpu|wall        the time the table, plot and Pareto front use: GPU timer queries
-                         (default) or the wall clock of each frame with glFinish (use it on
-                         llvmpipe, whose timer queries miss most of the rasterising); CSV and
-                         JSON always hold both
+  --time gpu|wall|auto   the time the table, plot and Pareto front use: GPU timer queries, or
+                         the wall clock of each frame with glFinish; auto (default): wall on
+                         Mesa's llvmpipe/softpipe (their timer queries miss most of the
+                         rasterising), else gpu. CSV and JSON always hold both
   -q, --quiet            print only errors, no progress line per variant
 
 exit status: render, validate, edit: 0 success, 1 invalid workspace or arguments, 2 rendering or
