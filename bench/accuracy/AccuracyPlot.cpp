@@ -11,10 +11,10 @@ namespace rmfx::accuracy {
 namespace {
 
 constexpr double kPsnrCap = 100.0;
-constexpr double kPanelWidth = 1000, kPanelHeight = 470;
+constexpr double kPanelWidth = 1160, kPanelHeight = 470;
 constexpr double kPlotLeft = 80, kPlotRight = 600, kPlotTop = 40, kPlotBottom = 400;
 constexpr double kLegendLeft = 630;
-constexpr double kHeaderHeight = 60;
+constexpr double kHeaderHeight = 76;
 
 std::string num(double v) {
     char text[32];
@@ -187,8 +187,9 @@ std::string accuracyPlotSvg(const BenchResults& results, const std::string& inpu
                       num(height) + "\" font-family=\"DejaVu Sans, Arial, sans-serif\">\n";
     svg += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
     svg += text(20, 24, "rmfx bench: error against time per variant", "font-size=\"18\" font-weight=\"bold\"");
-    svg += text(20, 46,
-                results.device + " · " + results.size + " · " + timeSourceName(results.ranked) + " time, median of " +
+    svg += text(20, 44, results.device, "font-size=\"12\" fill=\"#444\"");
+    svg += text(20, 60,
+                "inputs " + results.size + " · " + timeSourceName(results.ranked) + " time, median of " +
                     std::to_string(results.frames) + " frames after " + std::to_string(results.warmup) + " warm-up · " +
                     results.date,
                 "font-size=\"12\" fill=\"#444\"");
