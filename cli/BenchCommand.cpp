@@ -278,6 +278,11 @@ int benchCommand(const std::vector<std::string>& args) {
     const VariantManifest& manifest = *parsed.manifest;
     auto plans = planStages(*a, manifest);
     if (!plans) return 1;
+    for (const fs::path& file : a->inputs)
+        if (!fs::exists(file)) {
+            std::cerr << "rmfx bench: input '" << file.stem().string() << "': " << file.string() << ": no such file\n";
+            return 1;
+        }
 
     auto context = GlContext::createHeadless();
     if (!context) {

@@ -27,7 +27,7 @@ const char* kStage = R"(<?xml version="1.0" encoding="UTF-8"?>
   <float name="Bloom_Strength" value="0.5"/>
   <float name="Bloom_Sigma" value="0.03125"/>
   <float name="Gain" value="1"/>
-  <texture name="Input" file="input.exr" mipmaps="false"/>
+  <texture name="Input" file="placeholder.exr" mipmaps="false"/>
   <target name="result" format="rgba32f" scale="1"/>
   <code name="clean.glsl"><![CDATA[
 uniform sampler2D Input;
@@ -92,6 +92,9 @@ const char* kManifest = R"(<bench-variants>
 </bench-variants>
 )";
 
+// What the stage workspace names as its input: the bench must replace it.
+Image placeholder() { return Image{4, 4, 4, true, 32, std::vector<float>(4 * 4 * 4, 0.5f)}; }
+
 Image testInput() {
     Image image{24, 16, 4, true, 32, std::vector<float>(24 * 16 * 4, 1.0f)};
     for (int y = 0; y < 16; ++y)
@@ -118,6 +121,7 @@ TEST_F(CliBenchGLTest, MeasuresEveryVariantOnEveryInputAndWritesTheResultFiles) 
     dir.write("stage.xml", kStage);
     dir.write("scene.xml", kScene);
     dir.write("m.xml", kManifest);
+    ASSERT_TRUE(writeImage(dir / "placeholder.exr", placeholder()));
     Image input = testInput();
     ASSERT_TRUE(writeImage(dir / "input.exr", input));
 
@@ -172,6 +176,7 @@ TEST_F(CliBenchGLTest, BadInputsAndStagesAreErrorsNamingThem) {
     dir.write("stage.xml", kStage);
     dir.write("scene.xml", kScene);
     dir.write("m.xml", kManifest);
+    ASSERT_TRUE(writeImage(dir / "placeholder.exr", placeholder()));
     ASSERT_TRUE(writeImage(dir / "input.exr", testInput()));
 
     CommandResult missing = runRmfx("bench m.xml --no-scenes --input nothing.exr --frames 1", dir.path());
