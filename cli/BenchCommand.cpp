@@ -352,8 +352,8 @@ int benchCommand(const std::vector<std::string>& args) {
 
     std::string table = "<!-- " + results.command + " -->\n\nMeasured on " + results.device + ", inputs " +
                         results.size + ", median of " + std::to_string(results.frames) + " frames after " +
-                        std::to_string(results.warmup) + " warm-up frames (" + timeSourceTitle(results.ranked) + "), " +
-                        results.date + ". Inputs: ";
+                        std::to_string(results.warmup) + " warm-up frames, " + results.date + "; time: " +
+                        timeSourceTitle(results.ranked) + ". Inputs: ";
     for (size_t i = 0; i < inputs->size(); ++i) table += (i ? ", " : "") + (*inputs)[i].name;
     table += ". Times and mean errors are means over the inputs, max error the largest, PSNR the smallest; "
              "**bold**: on the Pareto front (no variant both faster and more accurate).\n" +
