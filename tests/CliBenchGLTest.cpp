@@ -116,14 +116,19 @@ std::vector<std::string> csvLines(const std::filesystem::path& file) {
     return out;
 }
 
-TEST_F(CliBenchGLTest, MeasuresEveryVariantOnEveryInputAndWritesTheResultFiles) {
-    ScratchDir dir;
+// The stand-in stage, scene, manifest, placeholder and input.exr (testInput) in `dir`.
+void writeStandIn(const ScratchDir& dir) {
     dir.write("stage.xml", kStage);
     dir.write("scene.xml", kScene);
     dir.write("m.xml", kManifest);
     ASSERT_TRUE(writeImage(dir / "placeholder.exr", placeholder()));
+    ASSERT_TRUE(writeImage(dir / "input.exr", testInput()));
+}
+
+TEST_F(CliBenchGLTest, MeasuresEveryVariantOnEveryInputAndWritesTheResultFiles) {
+    ScratchDir dir;
+    writeStandIn(dir);
     Image input = testInput();
-    ASSERT_TRUE(writeImage(dir / "input.exr", input));
 
     CommandResult cli =
         runRmfx("bench m.xml --input input.exr --size 32x32 --frames 2 --warmup 1 --time wall --out out", dir.path());
@@ -173,11 +178,7 @@ TEST_F(CliBenchGLTest, MeasuresEveryVariantOnEveryInputAndWritesTheResultFiles) 
 
 TEST_F(CliBenchGLTest, BadInputsAndStagesAreErrorsNamingThem) {
     ScratchDir dir;
-    dir.write("stage.xml", kStage);
-    dir.write("scene.xml", kScene);
-    dir.write("m.xml", kManifest);
-    ASSERT_TRUE(writeImage(dir / "placeholder.exr", placeholder()));
-    ASSERT_TRUE(writeImage(dir / "input.exr", testInput()));
+    writeStandIn(dir);
 
     CommandResult missing = runRmfx("bench m.xml --no-scenes --input nothing.exr --frames 1", dir.path());
     EXPECT_EQ(missing.status, 1);
