@@ -10,5 +10,6 @@ int renderCommand(const std::vector<std::string>& args);
 int validateCommand(const std::vector<std::string>& args);
 int replayCommand(const std::vector<std::string>& args);
 int editCommand(const std::vector<std::string>& args);
+int benchCommand(const std::vector<std::string>& args);
 
 }  // namespace rmfx::cli

@@ -19,6 +19,9 @@ usage:
                                       with their reference images (docs/replay.md)
   rmfx edit WORKSPACE [options]       open the editor: the running effect beside a panel of its
                                       variables, render targets and timing (docs/editor.md)
+  rmfx bench [MANIFEST] [options]     measure each variant of the stages (default manifest
+                                      bench/variants.xml): GPU time and error against a float64
+                                      ideal; CSV, JSON, SVG plot, table (docs/accuracy-vs-time.md)
   rmfx --help | --version
 
 WORKSPACE is an rmfx workspace file (docs/workspace-format.md); without one, render uses the
@@ -68,10 +71,27 @@ edit options:
   --output-screenshot FILE
                          with --frames: write the effect's output to FILE, as render would
 
+bench options:
+  --input FILE.exr       also measure on this image (repeatable); its size is the viewport
+  --scenes, --no-scenes  include the manifest's scenes (default) or not; workspace scenes are
+                         rendered at --size into DIR/inputs/NAME.exr
+  --size WxH             size of the rendered scenes (default 512x512)
+  --frames N             timed frames per variant (default 20); the median, p10, p90, min, max
+  --warmup N             frames before timing (default 5)
+  --stage NAME           only this stage (repeatable)
+  --variant TEXT         only variants whose name contains TEXT (repeatable)
+  --out DIR              where accuracy.csv, .json, .svg and .md go (default bench-out)
+  --time gpu|wall|auto   the time the table, plot and Pareto front use: GPU timer queries, or
+                         the wall clock of each frame with glFinish; auto (default): wall on
+                         Mesa's llvmpipe/softpipe (their timer queries miss most of the
+                         rasterising), else gpu. CSV and JSON always hold both
+  -q, --quiet            print only errors, no progress line per variant
+
 exit status: render, validate, edit: 0 success, 1 invalid workspace or arguments, 2 rendering or
 GL failure (edit: also no window, or an rmfx built without the editor). replay: 0 every case
 passed, 1 a case failed (comparison, workspace or rendering error) or the manifest or arguments
-are invalid, 2 no GL context.
+are invalid, 2 no GL context. bench: 0 success, 1 invalid manifest, arguments, input or workspace,
+2 no GL context or a variant failed to render.
 )";
 
 }  // namespace
@@ -92,6 +112,7 @@ int main(int argc, char** argv) {
     if (command == "validate") return rmfx::cli::validateCommand(args);
     if (command == "replay") return rmfx::cli::replayCommand(args);
     if (command == "edit") return rmfx::cli::editCommand(args);
+    if (command == "bench") return rmfx::cli::benchCommand(args);
     std::cerr << "rmfx: unknown command '" << command << "' (try rmfx --help)\n";
     return 1;
 }
