@@ -61,7 +61,7 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
     }
     auto add = [&](const ShaderSource& s) {
         ShaderInput input;
-        input.root = ws.folder;
+        input.root = ws.includeFolder();
         input.defines = defines;
         input.declarations = declarations;
         input.folder = ws.folder;
@@ -97,7 +97,8 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
         ShaderInput input;
         input.code = fullscreen ? builtinFullscreenVertexShader() : builtinModelVertexShader();
         input.start = {fullscreen ? "<built-in fullscreen vertex shader>" : "<built-in model vertex shader>", 1};
-        input.root = input.folder = ws.folder;
+        input.root = ws.includeFolder();
+        input.folder = ws.folder;
         PassStage stage{ShaderStage::Vertex, preprocessShader(input, diagnostics), pass.where, true};
         program.stages.push_back(std::move(stage));
     }

@@ -195,6 +195,7 @@ struct OrbitCameraSettings {
 struct Workspace {
     std::filesystem::path path;  // the file it came from ("<built-in>" for embedded text)
     std::filesystem::path folder;  // shader, texture and model paths are relative to it
+    std::filesystem::path includeRoot;  // #include may not leave it; empty: `folder` (see includeFolder)
     std::string name;
     std::string description;
     int width = 512, height = 512;  // default viewport size
@@ -224,6 +225,9 @@ struct Workspace {
     bool canReadTarget(std::string_view name) const;
     // For messages about a target that is not there: "it has: a, b; the output is 'output'".
     std::string describeTargets() const;
+
+    // The folder #include may not leave: the workspace folder, or the ancestor <workspace include-root> names.
+    const std::filesystem::path& includeFolder() const { return includeRoot.empty() ? folder : includeRoot; }
 };
 
 const char* targetFormatName(TargetFormat format);

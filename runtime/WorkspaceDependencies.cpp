@@ -50,7 +50,7 @@ public:
         input.code = code;
         input.start = start;
         input.folder = folder;
-        input.root = ws.folder;
+        input.root = ws.includeFolder();
         input.snippets = &ws.snippets;
         Diagnostics ignored;  // validation and the executor report them
         PreprocessedShader shader = preprocessShader(input, ignored);

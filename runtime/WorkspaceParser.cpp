@@ -20,7 +20,7 @@ public:
     Parser(std::string file, Diagnostics& diagnostics) : file_(std::move(file)), diagnostics_(diagnostics) {}
 
     void parseWorkspace(const XMLElement* root, Workspace& ws) {
-        ElementReader r(root, file_, diagnostics_, {"version", "name", "size"});
+        ElementReader r(root, file_, diagnostics_, {"version", "name", "size", "include-root"});
         auto version = r.string("version", true);
         if (version && *version != "1")
             r.error("unsupported version '" + *version + "': this rmfx reads version 1");
@@ -28,6 +28,19 @@ public:
         if (auto wh = r.size("size")) {
             ws.width = wh->first;
             ws.height = wh->second;
+        }
+        if (auto root = r.string("include-root")) {
+            // An ancestor of the workspace folder ("..", "../.."), so that workspaces in subfolders of
+            // a shader library can include its shared files; nothing sideways or absolute.
+            std::filesystem::path relative(*root);
+            bool upOnly = !relative.empty() && relative.is_relative();
+            for (const auto& part : relative) upOnly = upOnly && (part == ".." || part.empty());  // "../" too
+            if (!upOnly)
+                r.error("include-root '" + *root + "' must be an ancestor of the workspace folder: \"..\", \"../..\", ...");
+            else {
+                ws.includeRoot = (ws.folder / relative).lexically_normal();
+                if (!ws.includeRoot.has_filename()) ws.includeRoot = ws.includeRoot.parent_path();  // "a/b/.." is "a/"
+            }
         }
         for (const XMLElement* e = root->FirstChildElement(); e; e = e->NextSiblingElement()) {
             std::string_view tag = e->Name();

@@ -484,6 +484,34 @@ TEST(Validation, IncludeOutsideTheWorkspaceFolder) {
                                (dir.path() / "ws").string()}));
 }
 
+// A workspace in a subfolder of a shader library (effects/variants/ beside effects/glsl/) names the
+// library's folder as its include root; the root must be an ancestor, and includes may not leave it.
+TEST(Validation, IncludeRootWidensTheIncludeFolderToAnAncestor) {
+    test::ScratchDir dir;
+    dir.write("lib/x.glsl", "float x;\n");
+    dir.write("y.glsl", "float y;\n");
+    auto workspace = [](const std::string& root, const std::string& include) {
+        return lines({
+            "<workspace version=\"1\" include-root=\"" + root + "\">",
+            "  <pass name=\"p\">",
+            "    <shader stage=\"fragment\"><![CDATA[",
+            "out vec4 c; void main() { c = vec4(x); }",
+            "#include \"" + include + "\"",
+            "]]></shader>",
+            "  </pass>",
+            "</workspace>",
+        });
+    };
+    auto good = load(dir, workspace("..", "../x.glsl"), "lib/ws");
+    EXPECT_EQ(good.errors, Lines{});
+    auto outside = load(dir, workspace("..", "../../y.glsl"), "lib/ws");
+    EXPECT_EQ(outside.errors, (Lines{outside.path + ":5: error: #include: \"../../y.glsl\" lies outside the workspace folder " +
+                                     (dir.path() / "lib").string()}));
+    auto sideways = load(dir, workspace("../other", "../x.glsl"), "lib/ws");
+    EXPECT_EQ(sideways.errors, (Lines{sideways.path + ":1: error: <workspace>: include-root '../other' must be an ancestor "
+                                                      "of the workspace folder: \"..\", \"../..\", ..."}));
+}
+
 // ---- shaders ----
 
 TEST(Validation, CompileErrorInAnIncludedFileIsLocatedThere) {
