@@ -495,8 +495,8 @@ TEST(Validation, IncludeRootWidensTheIncludeFolderToAnAncestor) {
             "<workspace version=\"1\" include-root=\"" + root + "\">",
             "  <pass name=\"p\">",
             "    <shader stage=\"fragment\"><![CDATA[",
-            "out vec4 c; void main() { c = vec4(x); }",
             "#include \"" + include + "\"",
+            "out vec4 c; void main() { c = vec4(x); }",
             "]]></shader>",
             "  </pass>",
             "</workspace>",
@@ -505,7 +505,7 @@ TEST(Validation, IncludeRootWidensTheIncludeFolderToAnAncestor) {
     auto good = load(dir, workspace("..", "../x.glsl"), "lib/ws");
     EXPECT_EQ(good.errors, Lines{});
     auto outside = load(dir, workspace("..", "../../y.glsl"), "lib/ws");
-    EXPECT_EQ(outside.errors, (Lines{outside.path + ":5: error: #include: \"../../y.glsl\" lies outside the workspace folder " +
+    EXPECT_EQ(outside.errors, (Lines{outside.path + ":4: error: #include: \"../../y.glsl\" lies outside the workspace folder " +
                                      (dir.path() / "lib").string()}));
     auto sideways = load(dir, workspace("../other", "../x.glsl"), "lib/ws");
     EXPECT_EQ(sideways.errors, (Lines{sideways.path + ":1: error: <workspace>: include-root '../other' must be an ancestor "
