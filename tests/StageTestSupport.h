@@ -7,6 +7,8 @@
 
 #include "tests/GlTestSupport.h"
 #include "tests/TestSupport.h"
+#include "runtime/HdrEncoding.h"
+#include "tests/reference/HdrEncodingReference.h"
 #include "tests/reference/LuminanceVariantsReference.h"
 
 namespace rmfx::test {
@@ -43,13 +45,17 @@ inline glm::dvec2 readLuminance(const GlRun& run) {
 
 inline double relativeError(double actual, double expected) { return std::abs(actual - expected) / std::abs(expected); }
 
-// luminance.xml's `downsampled` image (Target_Format 0 rgba32f or 1 rgba16f) checked against the
-// exact box average of `input` by `factor`: within float rounding of the sum of factor² positive
-// terms and the division (factor² + 2 ulps), plus for
-// rgba16f the clamp at 65504 and one step of half (llvmpipe converts to half toward zero, GPUs to
-// nearest: both are allowed). Returns the image read back, from which the chain's Lavg follows.
+// luminance.xml's `downsampled` image checked against the exact box average of `input` by
+// `factor`: within float rounding of the sum of factor² positive terms and the division
+// (factor² + 2 ulps), plus what Target_Format keeps: rgba16f and r11g11b10f clamp to their largest
+// value and round within a whole step (llvmpipe converts toward zero, GPUs to nearest: both are
+// allowed), the encodings within their own bound (tests/reference/HdrEncodingReference.h).
+// Returns the image read back (decoded), from which the chain's Lavg follows.
 inline RefImage checkedDownsampled(const GlRun& run, const RefImage& input, int factor, int format) {
+    constexpr HdrEncoding encodings[] = {HdrEncoding::Float, HdrEncoding::Float, HdrEncoding::Float,
+                                         HdrEncoding::Rgba8x64, HdrEncoding::Rgbe8, HdrEncoding::Rgb9e5};
     RefImage gpu = readRef(run, "downsampled");
+    for (glm::dvec4& t : gpu.texels) t = glm::dvec4(glm::dvec3(decodeHdr(encodings[format], glm::vec4(t))), 1.0);
     RefImage box = boxDownsampled(input, factor);
     EXPECT_EQ(gpu.width, box.width);
     EXPECT_EQ(gpu.height, box.height);
@@ -58,14 +64,19 @@ inline RefImage checkedDownsampled(const GlRun& run, const RefImage& input, int 
     for (size_t i = 0; i < box.texels.size(); ++i)
         for (int c = 0; c < 3; ++c) {
             double exact = box.texels[i][c], bound = (factor * factor + 2) * 0x1p-24 * exact;
-            if (format == 1) {
-                exact = std::min(exact, 65504.0);
-                bound += exact < 0x1p-14 ? 0x1p-24 : std::exp2(std::floor(std::log2(exact)) - 10.0);
+            if (format == 1 || format == 2) {
+                const double largest = format == 1 ? 65504.0 : c == 2 ? 64512.0 : 65024.0;
+                const int mantissa = format == 1 ? 10 : c == 2 ? 5 : 6;
+                exact = std::min(exact, largest);
+                bound += exact < 0x1p-14 ? 0x1p-14 * std::exp2(-mantissa) : std::exp2(std::floor(std::log2(exact)) - mantissa);
+            } else if (format > 2) {
+                exact = referenceEncode(encodings[format], glm::dvec3(box.texels[i])).decoded[c];
+                bound += referenceErrorBound(encodings[format], glm::dvec3(box.texels[i])) + 0x1p-23 * exact;
             }
             double error = std::abs(gpu.texels[i][c] - exact);
             if (error > bound) {
-                ADD_FAILURE() << "downsampled texel " << i << " channel " << c << ": " << gpu.texels[i][c] << ", box average "
-                              << box.texels[i][c];
+                ADD_FAILURE() << "downsampled texel " << i << " channel " << c << ": " << gpu.texels[i][c] << ", expected "
+                              << exact << " (box average " << box.texels[i][c] << ")";
                 return gpu;
             }
             if (bound > 0.0) worst = std::max(worst, error / bound);
