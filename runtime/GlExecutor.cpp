@@ -307,12 +307,18 @@ struct GlExecutor::Impl {
     bool allocateTargets(Diagnostics& d) {
         std::vector<const PassGraph*> all;
         for (auto& [off, g] : graphs) all.push_back(&g);
+        auto valueOf = [&](const std::string& name) -> const Value* {
+            auto it = values.find(name);
+            return it == values.end() ? nullptr : &it->second;
+        };
         for (const RenderTarget& t : ws.targets) {
-            if (t.formatVariable.empty()) continue;
-            auto it = values.find(t.formatVariable);
-            const Value* value = it == values.end() ? nullptr : &it->second;
-            if (!selectTargetFormat(t, value)) {
-                error(d, t.where, "<target name=\"" + t.name + "\">", formatChoiceError(t, value));
+            std::string element = "<target name=\"" + t.name + "\">";
+            if (!selectTargetFormat(t, valueOf(t.formatVariable))) {
+                error(d, t.where, element, formatChoiceError(t, valueOf(t.formatVariable)));
+                return false;
+            }
+            if (!selectTargetSize(t, valueOf(t.scaleVariable))) {
+                error(d, t.where, element, scaleChoiceError(t, valueOf(t.scaleVariable)));
                 return false;
             }
         }
@@ -818,17 +824,22 @@ std::string GlExecutor::setVariable(const std::string& name, const Value& value)
     if (it->second.type != value.type)
         return "variable '" + name + "' is a " + valueTypeName(it->second.type) + " (" +
                std::to_string(componentCount(it->second.type)) + " values), not a " + valueTypeName(value.type);
-    bool formats = false;
+    bool reallocate = false;
     for (const RenderTarget& t : s.ws.targets) {
-        if (t.formatVariable != name) continue;
-        if (!selectTargetFormat(t, &value)) return formatChoiceError(t, &value);
-        formats = formats || *selectTargetFormat(t, &value) != *selectTargetFormat(t, &it->second);
+        if (t.formatVariable == name) {
+            if (!selectTargetFormat(t, &value)) return formatChoiceError(t, &value);
+            reallocate = reallocate || *selectTargetFormat(t, &value) != *selectTargetFormat(t, &it->second);
+        }
+        if (t.scaleVariable == name) {
+            if (!selectTargetSize(t, &value)) return scaleChoiceError(t, &value);
+            reallocate = reallocate || value.asInt() != it->second.asInt();
+        }
     }
     it->second = value;
     s.variablesChanged = true;
-    // A new format changes which targets can share memory: the plan and its memory start over
-    // (every target back to its initial value). Effect switches take effect at the next frame.
-    if (formats) {
+    // A new format or size changes which targets can share memory: the plan and its memory start
+    // over (every target back to its initial value). Effect switches take effect at the next frame.
+    if (reallocate) {
         Diagnostics d;
         if (!s.allocateTargets(d)) return d.empty() ? "cannot allocate the targets" : d.front().message;
     }

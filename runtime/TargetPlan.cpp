@@ -36,7 +36,11 @@ Result<TargetPlan> planTargets(const Workspace& ws, const std::vector<const Pass
         auto format = selectTargetFormat(t, value);
         if (!format) return Error{formatChoiceError(t, value)};
         p.format = *format;
-        p.size = resolveTargetSize(t.size, viewport);
+        const Value* scaleValue = nullptr;
+        if (auto it = values.find(t.scaleVariable); it != values.end()) scaleValue = &it->second;
+        auto size = selectTargetSize(t, scaleValue);
+        if (!size) return Error{scaleChoiceError(t, scaleValue)};
+        p.size = resolveTargetSize(*size, viewport);
         p.mipmaps = t.mipmaps;
         p.initial = t.initial;
         p.where = t.where;

@@ -84,28 +84,42 @@ private:
 
     void checkTargets() {
         for (const RenderTarget& t : ws_.targets) {
-            if (t.formatVariable.empty()) continue;
-            std::string element = "<target name=\"" + t.name + "\">";
-            const Variable* v = ws_.findVariable(t.formatVariable);
-            if (!v) {
-                error(t.where, element, "format-by names '" + t.formatVariable + "', which is not a declared variable");
-                continue;
-            }
-            if (v->value.type != ValueType::Int) {
-                error(t.where, element, "format-by variable '" + v->name + "' (" + at(v->where) + ") is a " +
-                                            valueTypeName(v->value.type) + "; it must be an int");
-                continue;
-            }
-            std::string count = std::to_string(t.formats.size());
-            if (!v->options.empty() && v->options.size() != t.formats.size())
-                error(t.where, element, "format lists " + count + " formats, but variable '" + v->name + "' (" +
-                                            at(v->where) + ") has " + std::to_string(v->options.size()) +
-                                            " options: give one format per option");
-            else if (!selectTargetFormat(t, &v->value))
-                error(t.where, element, "variable '" + v->name + "' = " + std::to_string(v->value.asInt()) +
-                                            " picks none of the " + count + " formats (values 0 to " +
-                                            std::to_string(t.formats.size() - 1) + ")");
+            if (!t.formatVariable.empty())
+                checkChoiceVariable(t, "format-by", t.formatVariable, t.formats.size(), "format",
+                                    selectTargetFormat(t, valueOf(t.formatVariable)).has_value());
+            if (!t.scaleVariable.empty())
+                checkChoiceVariable(t, "scale-by", t.scaleVariable, t.scales.size(), "scale",
+                                    selectTargetSize(t, valueOf(t.scaleVariable)).has_value());
         }
+    }
+
+    const Value* valueOf(const std::string& name) const {
+        const Variable* v = ws_.findVariable(name);
+        return v ? &v->value : nullptr;
+    }
+
+    // format-by / scale-by: an int variable with one option per choice, whose value picks one.
+    void checkChoiceVariable(const RenderTarget& t, const char* attribute, const std::string& variable, size_t choices,
+                             const std::string& noun, bool picksOne) {
+        std::string element = "<target name=\"" + t.name + "\">";
+        const Variable* v = ws_.findVariable(variable);
+        if (!v) {
+            error(t.where, element, std::string(attribute) + " names '" + variable + "', which is not a declared variable");
+            return;
+        }
+        if (v->value.type != ValueType::Int) {
+            error(t.where, element, std::string(attribute) + " variable '" + v->name + "' (" + at(v->where) + ") is a " +
+                                        valueTypeName(v->value.type) + "; it must be an int");
+            return;
+        }
+        std::string count = std::to_string(choices);
+        if (!v->options.empty() && v->options.size() != choices)
+            error(t.where, element, noun + " lists " + count + " " + noun + "s, but variable '" + v->name + "' (" +
+                                        at(v->where) + ") has " + std::to_string(v->options.size()) + " options: give one " +
+                                        noun + " per option");
+        else if (!picksOne)
+            error(t.where, element, "variable '" + v->name + "' = " + std::to_string(v->value.asInt()) + " picks none of the " +
+                                        count + " " + noun + "s (values 0 to " + std::to_string(choices - 1) + ")");
     }
 
     void checkOutput() {

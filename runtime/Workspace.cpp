@@ -95,6 +95,19 @@ std::string formatChoiceError(const RenderTarget& target, const Value* value) {
            " picks none of the " + std::to_string(target.formats.size()) + " formats of target '" + target.name + "'";
 }
 
+std::optional<TargetSize> selectTargetSize(const RenderTarget& target, const Value* value) {
+    if (target.scaleVariable.empty()) return target.size;
+    if (!value || value->type != ValueType::Int) return std::nullopt;
+    int index = value->asInt();
+    if (index < 0 || index >= static_cast<int>(target.scales.size())) return std::nullopt;
+    return target.scales[static_cast<size_t>(index)];
+}
+
+std::string scaleChoiceError(const RenderTarget& target, const Value* value) {
+    return "variable '" + target.scaleVariable + "' = " + (value ? std::to_string(value->asInt()) : "?") +
+           " picks none of the " + std::to_string(target.scales.size()) + " scales of target '" + target.name + "'";
+}
+
 glm::ivec2 resolveTargetSize(const TargetSize& size, glm::ivec2 viewport) {
     if (!size.relative) return {size.width, size.height};
     // The small epsilon keeps exact products (256 × 0.25) from rounding up through float noise.

@@ -63,7 +63,11 @@ struct RenderTarget {
     // chosen by a variable or --set); empty: the format is fixed.
     std::string formatVariable;
     std::vector<TargetFormat> formats;
-    TargetSize size;
+    TargetSize size;  // with scaleVariable: scales[0]
+    // scale-by: the int variable whose value i picks scales[i] (a downsample factor chosen by a
+    // variable or --set); empty: the size is fixed.
+    std::string scaleVariable;
+    std::vector<TargetSize> scales;
     bool mipmaps = false;
     glm::vec4 initial{0.0f};  // contents before the first frame writes it (seen by frame="previous")
     SourceLocation where;
@@ -238,6 +242,12 @@ int targetFormatBytesPerPixel(TargetFormat format);
 std::optional<TargetFormat> selectTargetFormat(const RenderTarget& target, const Value* value);
 // "variable 'V' = 7 picks none of the 6 formats of target 'T'": why selectTargetFormat gave none.
 std::string formatChoiceError(const RenderTarget& target, const Value* value);
+
+// The size a target is allocated with when its scale variable (if any) has `value`; nullopt when
+// the value picks none of its scales.
+std::optional<TargetSize> selectTargetSize(const RenderTarget& target, const Value* value);
+// "variable 'V' = 7 picks none of the 3 scales of target 'T'": why selectTargetSize gave none.
+std::string scaleChoiceError(const RenderTarget& target, const Value* value);
 
 // Viewport-relative sizes round up, never below 1: ceil(viewport × scale), so a chain of
 // half-size targets covers every source pixel (5 → 3 → 2 → 1).

@@ -279,7 +279,7 @@ private:
     }
 
     std::optional<RenderTarget> parseTarget(const XMLElement* e) {
-        ElementReader r(e, file_, diagnostics_, {"name", "format", "format-by", "size", "scale", "mipmaps", "initial"});
+        ElementReader r(e, file_, diagnostics_, {"name", "format", "format-by", "size", "scale", "scale-by", "mipmaps", "initial"});
         RenderTarget t;
         t.where = r.where();
         auto name = r.identifier("name");
@@ -312,22 +312,44 @@ private:
                 t.size.height = wh->second;
             }
         } else if (scale) {
-            auto parts = std::stringstream(*scale);
+            std::string spaced = *scale;
+            std::replace(spaced.begin(), spaced.end(), ',', ' ');
+            auto parts = std::stringstream(spaced);
             std::vector<std::string> words;
             for (std::string w; parts >> w;) words.push_back(w);
-            std::optional<double> sx, sy;
-            if (words.size() == 1 || words.size() == 2) {
-                sx = parseFraction(words[0]);
-                sy = words.size() == 2 ? parseFraction(words[1]) : sx;
-            }
-            if (!sx || !sy || *sx <= 0 || *sy <= 0 || *sx > 16 || *sy > 16)
-                r.error("attribute 'scale': expected one or two fractions of the viewport in (0, 16] such as 1/4 or "
-                        "\"1/2 1/4\", got '" + *scale + "'");
-            else {
-                t.size.scaleX = *sx;
-                t.size.scaleY = *sy;
+            auto inRange = [](std::optional<double> f) { return f && *f > 0 && *f <= 16; };
+            if (auto by = r.identifier("scale-by", false)) {
+                // A list of choices, each one fraction for both axes.
+                t.scaleVariable = *by;
+                for (const std::string& w : words) {
+                    auto f = parseFraction(w);
+                    if (!inRange(f)) {
+                        r.error("attribute 'scale': expected fractions of the viewport in (0, 16] such as \"1/2 1/4 1/8\" "
+                                "(one per value of '" + *by + "'), got '" + w + "'");
+                        continue;
+                    }
+                    TargetSize choice;
+                    choice.scaleX = choice.scaleY = *f;
+                    t.scales.push_back(choice);
+                }
+                if (words.empty()) r.error("attribute 'scale' is empty");
+                if (!t.scales.empty()) t.size = t.scales[0];
+            } else {
+                std::optional<double> sx, sy;
+                if (words.size() == 1 || words.size() == 2) {
+                    sx = parseFraction(words[0]);
+                    sy = words.size() == 2 ? parseFraction(words[1]) : sx;
+                }
+                if (!inRange(sx) || !inRange(sy))
+                    r.error("attribute 'scale': expected one or two fractions of the viewport in (0, 16] such as 1/4 or "
+                            "\"1/2 1/4\" (x and y; a list of choices needs scale-by=\"VARIABLE\"), got '" + *scale + "'");
+                else {
+                    t.size.scaleX = *sx;
+                    t.size.scaleY = *sy;
+                }
             }
         }
+        if (r.has("scale-by") && !scale) r.error("attribute 'scale-by' needs 'scale' with one fraction per value");
         t.mipmaps = r.boolean("mipmaps").value_or(false);
         if (auto initial = r.numbers<4>("initial")) t.initial = {(*initial)[0], (*initial)[1], (*initial)[2], (*initial)[3]};
         noChildren(e);

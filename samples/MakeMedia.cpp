@@ -17,6 +17,6 @@ int main(int argc, char** argv) {
         return 1;
     }
     std::cout << "wrote " << (root / "tour").string() << "/{mask.png, sky_cross.exr} and " << (root / "media").string()
-              << "/{sky_cross.exr, sky_cross_alpha64.png, ghost_mask.png}\n";
+              << "/{sky_cross.exr, sky_cross_alpha64.png, ghost_mask.png, hdr_scene.exr}\n";
     return 0;
 }

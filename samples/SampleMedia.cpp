@@ -107,6 +107,51 @@ Image makeGhostMask(int size) {
     return image;
 }
 
+Image makeHdrTestScene(int width, int height) {
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.channels = 3;
+    image.highDynamicRange = true;
+    image.pixels.assign(static_cast<size_t>(width) * height * 3, 0.0f);
+    auto set = [&](int x, int y, glm::vec3 c) {
+        if (x < 0 || y < 0 || x >= width || y >= height) return;
+        for (int k = 0; k < 3; ++k) image.at(x, y, k) = c[k];
+    };
+    // Image rows run top to bottom; v = 0 at the top.
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            float u = (x + 0.5f) / width, v = (y + 0.5f) / height;
+            glm::vec3 c;
+            if (v < 0.55f) {
+                float t = v / 0.55f;
+                c = glm::mix(glm::vec3(0.3f, 0.6f, 2.0f), glm::vec3(1.6f, 1.4f, 1.1f), t * t);
+            } else {
+                float t = (v - 0.55f) / 0.45f;
+                // Fine stripes give the floor detail that blurs and reductions must keep apart.
+                float stripe = 0.75f + 0.25f * std::sin(u * 80.0f);
+                c = glm::mix(glm::vec3(0.05f, 0.045f, 0.04f), glm::vec3(0.002f), t) * stripe;
+            }
+            set(x, y, c);
+        }
+    auto rect = [&](float u0, float v0, float u1, float v1, glm::vec3 c) {
+        for (int y = int(v0 * height); y < int(v1 * height); ++y)
+            for (int x = int(u0 * width); x < int(u1 * width); ++x) set(x, y, c);
+    };
+    rect(0.08f, 0.15f, 0.28f, 0.45f, glm::vec3(20.0f, 19.0f, 17.0f));  // window
+    for (int y = 0; y < height; ++y)                                     // lamp disc
+        for (int x = 0; x < width; ++x) {
+            float dx = (x + 0.5f) / width - 0.62f, dy = (y + 0.5f) / height - 0.3f;
+            if (dx * dx + dy * dy < 0.03f * 0.03f) set(x, y, glm::vec3(200.0f, 150.0f, 90.0f));
+        }
+    int lx = width * 4 / 5, ly = height / 5;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) set(lx + dx, ly + dy, glm::vec3(5000.0f, 4800.0f, 4500.0f));
+    set(width / 3, height * 7 / 10, glm::vec3(60000.0f, 60000.0f, 60000.0f));  // a firefly
+    for (int x = width / 2; x < width * 9 / 10; ++x) set(x, height * 6 / 10, glm::vec3(50.0f, 30.0f, 10.0f));
+    return image;
+}
+
 Result<bool> writeChapterMedia(const std::filesystem::path& folder) {
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
@@ -115,7 +160,8 @@ Result<bool> writeChapterMedia(const std::filesystem::path& folder) {
     half.exrHalf = true;
     if (auto r = writeImage(folder / "sky_cross.exr", sky, half); !r) return r;
     if (auto r = writeImage(folder / "sky_cross_alpha64.png", encodeAlphaIntensity(sky)); !r) return r;
-    return writeImage(folder / "ghost_mask.png", makeGhostMask(128));
+    if (auto r = writeImage(folder / "ghost_mask.png", makeGhostMask(128)); !r) return r;
+    return writeImage(folder / "hdr_scene.exr", makeHdrTestScene(512, 512));
 }
 
 }  // namespace rmfx::samples

@@ -42,9 +42,15 @@ Image makeGhostMask(int size);
 inline const glm::vec3 kChapterSunDirection{-0.35f, 0.12f, -0.93f};
 inline constexpr float kChapterSunIntensity = 2000.0f;
 
+// A flat HDR test image for the stage workspaces of effects/variants/ (float RGB, width x height):
+// a dim floor (0.002 .. 0.05) under a sky gradient (0.3 .. 2), a window of 20, a lamp disc of 200,
+// a 3x3 light of 5000, a one-texel light of 60000 and a thin line of 50, so every stage sees dark
+// detail, bright areas, highlights near the fp16 limit and single-texel fireflies.
+Image makeHdrTestScene(int width, int height);
+
 // Writes the media of the chapter-8 workspaces in effects/ into `folder`: sky_cross.exr (half
 // float, 256-texel faces, range 0.02 .. 2000), sky_cross_alpha64.png (the same sky in the
-// chapter's alpha encoding) and ghost_mask.png.
+// chapter's alpha encoding), ghost_mask.png and hdr_scene.exr (makeHdrTestScene, 512x512, float).
 Result<bool> writeChapterMedia(const std::filesystem::path& folder);
 
 }  // namespace rmfx::samples

@@ -101,6 +101,32 @@ TEST(Validation, FormatByNeedsAnIntVariableWithAFormatPerValue) {
               }));
 }
 
+TEST(Validation, ScaleByNeedsAnIntVariablePickingOneScale) {
+    test::ScratchDir dir;
+    auto l = load(dir, lines({
+                           "<workspace version=\"1\">",
+                           "  <int name=\"D\" value=\"3\"/>",
+                           "  <int name=\"Mode\" value=\"0\" options=\"a, b\"/>",
+                           "  <float name=\"Gain\" value=\"1\"/>",
+                           "  <target name=\"a\" format=\"rgba8\" scale=\"1/2 1/4 1/8\" scale-by=\"D\"/>",
+                           "  <target name=\"b\" format=\"rgba8\" scale=\"1/2 1/4 1/8\" scale-by=\"Mode\"/>",
+                           "  <target name=\"c\" format=\"rgba8\" scale=\"1/2 1/4\" scale-by=\"Gain\"/>",
+                           "  <target name=\"d\" format=\"rgba8\" scale=\"1/2 1/4\" scale-by=\"Nope\"/>",
+                           "  <pass name=\"p\">",
+                           kPlainShader,
+                           "  </pass>",
+                           "</workspace>",
+                       }));
+    EXPECT_EQ(l.errors,
+              (Lines{
+                  l.path + ":5: error: <target name=\"a\">: variable 'D' = 3 picks none of the 3 scales (values 0 to 2)",
+                  l.path + ":6: error: <target name=\"b\">: scale lists 3 scales, but variable 'Mode' (line 3) has 2 "
+                           "options: give one scale per option",
+                  l.path + ":7: error: <target name=\"c\">: scale-by variable 'Gain' (line 4) is a float; it must be an int",
+                  l.path + ":8: error: <target name=\"d\">: scale-by names 'Nope', which is not a declared variable",
+              }));
+}
+
 TEST(Validation, DuplicatePassNamesTheFirstLine) {
     test::ScratchDir dir;
     auto l = load(dir, lines({

@@ -226,7 +226,7 @@ TEST(WorkspaceParser, BadSizeOrScale) {
     EXPECT_EQ(errorsOf(workspace({"  <target name=\"t\" format=\"rgba8\" size=\"0x4\"/>"})),
               (Lines{at + "2: error: <target name=\"t\">: attribute 'size': expected WIDTHxHEIGHT such as 64x64, got '0x4'"}));
     const std::string scaleError = "attribute 'scale': expected one or two fractions of the viewport in (0, 16] such as "
-                                   "1/4 or \"1/2 1/4\", got ";
+                                   "1/4 or \"1/2 1/4\" (x and y; a list of choices needs scale-by=\"VARIABLE\"), got ";
     EXPECT_EQ(errorsOf(workspace({"  <target name=\"t\" format=\"rgba8\" scale=\"1/0\"/>"})),
               (Lines{at + "2: error: <target name=\"t\">: " + scaleError + "'1/0'"}));
     EXPECT_EQ(errorsOf(workspace({"  <target name=\"t\" format=\"rgba8\" scale=\"-1\"/>"})),
@@ -236,6 +236,24 @@ TEST(WorkspaceParser, BadSizeOrScale) {
     EXPECT_EQ(errorsOf(workspace({"  <target name=\"t\" format=\"rgba8\" size=\"4x4\" scale=\"1\"/>"})),
               (Lines{at + "2: error: <target name=\"t\">: give either 'size' (absolute) or 'scale' (relative to the "
                           "viewport), not both"}));
+}
+
+TEST(WorkspaceParser, ScaleByListsOneFractionPerValue) {
+    Workspace ws = parsedOk(workspace({"  <int name=\"D\" value=\"1\"/>",
+                                       "  <target name=\"t\" format=\"rgba8\" scale=\"1/2, 1/4 1/8\" scale-by=\"D\"/>"}));
+    ASSERT_EQ(ws.targets.size(), 1u);
+    const RenderTarget& t = ws.targets[0];
+    EXPECT_EQ(t.scaleVariable, "D");
+    ASSERT_EQ(t.scales.size(), 3u);
+    EXPECT_EQ(t.scales[2].scaleX, 0.125);
+    EXPECT_EQ(t.scales[2].scaleY, 0.125);
+    EXPECT_EQ(t.size.scaleX, 0.5);  // the first choice until a value picks one
+
+    EXPECT_EQ(errorsOf(workspace({"  <target name=\"t\" format=\"rgba8\" scale=\"1/2 0 1/8\" scale-by=\"D\"/>"})),
+              (Lines{at + "2: error: <target name=\"t\">: attribute 'scale': expected fractions of the viewport in (0, 16] "
+                          "such as \"1/2 1/4 1/8\" (one per value of 'D'), got '0'"}));
+    EXPECT_EQ(errorsOf(workspace({"  <target name=\"t\" format=\"rgba8\" size=\"4x4\" scale-by=\"D\"/>"})),
+              (Lines{at + "2: error: <target name=\"t\">: attribute 'scale-by' needs 'scale' with one fraction per value"}));
 }
 
 TEST(WorkspaceParser, MinGreaterThanMax) {
