@@ -43,7 +43,7 @@ TEST_F(LuminanceVariantsGLTest, ExactIsTheFloat64LogAverage) {
 // `sampled64` against the model of its own sampling: box averages to the Downsample size, stored
 // in Target_Format (checked against the exact averages within the format's rounding), then the
 // mean of log(delta + Y) over the stored texels. The downsample factor is read from the target
-// sizes: each of 2, 4, 8 by the target's scale; every Target_Format at 1/4.
+// sizes: each of 2, 4, 8 by Downsample; every Target_Format at 1/4.
 TEST_F(LuminanceVariantsGLTest, Sampled64IsTheLogAverageOfTheDownsampledImage) {
     ScratchDir dir;
     RefImage input = syntheticHdrImage(301, 203, 11, -14.0, 17.0, 0.02);
@@ -53,10 +53,9 @@ TEST_F(LuminanceVariantsGLTest, Sampled64IsTheLogAverageOfTheDownsampledImage) {
             SCOPED_TRACE("factor " + std::to_string(factor) + ", Target_Format " + std::to_string(format));
             std::filesystem::path file = dir / "input.exr";
             writeFloatExr(file, input);
-            auto ws = stageWorkspace("luminance.xml", file, {{"Target_Format", std::to_string(format)}});
+            const std::string downsample = factor == 2 ? "0" : factor == 4 ? "1" : "2";  // 1/2, 1/4, 1/8
+            auto ws = stageWorkspace("luminance.xml", file, {{"Target_Format", std::to_string(format)}, {"Downsample", downsample}});
             ASSERT_TRUE(ws);
-            for (RenderTarget& t : ws->targets)
-                if (t.name == "downsampled") t.size.scaleX = t.size.scaleY = 1.0 / factor;
             ExecutorOptions options;
             options.effects = std::vector<std::string>{"sampled64"};
             GlRun run = runWorkspace(std::move(ws), {{input.width, input.height}, 1}, options);
