@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "runtime/GlContext.h"
+#include "runtime/ImageIO.h"
 #include "runtime/WorkspaceLoader.h"
 #include "runtime/WorkspaceParser.h"
 #include "tests/TestSupport.h"
@@ -61,6 +62,40 @@ std::unique_ptr<Workspace> effectWorkspace(const std::string& file, const Overri
         return nullptr;
     }
     return ws;
+}
+
+std::unique_ptr<Workspace> stageWorkspace(const std::string& file, const std::filesystem::path& input,
+                                          const Overrides& overrides) {
+    const std::filesystem::path folder = sourceDir() / "effects" / "variants";
+    std::string xml = readText(folder / file);
+    const std::string media = "file=\"../../samples/media/hdr_scene.exr\"";
+    size_t at = xml.find(media);
+    if (at == std::string::npos) {
+        ADD_FAILURE() << file << " has no " << media;
+        return nullptr;
+    }
+    xml.replace(at, media.size(), "file=\"" + input.string() + "\"");
+    auto ws = workspaceFromText(xml, folder);
+    if (!ws) return nullptr;
+    if (Diagnostics bad = applyOverrides(*ws, overrides); !bad.empty()) {
+        ADD_FAILURE() << formatAll(bad);
+        return nullptr;
+    }
+    return ws;
+}
+
+void writeFloatExr(const std::filesystem::path& file, const RefImage& image) {
+    Image out;
+    out.width = image.width;
+    out.height = image.height;
+    out.channels = 4;
+    out.highDynamicRange = true;
+    out.pixels.resize(size_t(image.width) * image.height * 4);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            for (int c = 0; c < 4; ++c) out.at(x, image.height - 1 - y, c) = static_cast<float>(image.at(x, y)[c]);
+    auto written = writeImage(file, out);
+    if (!written) ADD_FAILURE() << written.error();
 }
 
 void replaceSceneWithLight(Workspace& ws, const std::string& scenePass, glm::ivec2 from, glm::ivec2 to) {
@@ -140,7 +175,9 @@ Image readBack(const GlExecutor& exec, const std::string& target) {
 RefImage readRef(const GlRun& run, const std::string& target) { return fromImage(readBack(*run.exec, target)); }
 
 void expectWithin(const std::string& what, double error, double tolerance) {
-    ::testing::Test::RecordProperty(what, std::to_string(error) + " of " + std::to_string(tolerance));
+    char text[64];
+    std::snprintf(text, sizeof text, "%.3g of %.3g", error, tolerance);  // to_string would print 1e-7 as 0.000000
+    ::testing::Test::RecordProperty(what, text);
     EXPECT_LE(error, tolerance) << what;
 }
 

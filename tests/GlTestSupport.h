@@ -57,6 +57,16 @@ struct EdgePixelCase {
 };
 std::vector<EdgePixelCase> edgePixelCases(glm::ivec2 largePixel = {1920, 1080});
 
+// A stage workspace of effects/variants/ (e.g. "luminance.xml") whose Input texture reads `input`
+// (an image file anywhere) instead of samples/media/hdr_scene.exr, with overrides applied. Adds a
+// test failure and returns nullptr when it does not load.
+std::unique_ptr<Workspace> stageWorkspace(const std::string& file, const std::filesystem::path& input,
+                                          const Overrides& overrides = {});
+
+// Writes a float64 image (row 0 at the bottom) as a 32-bit float EXR, rgba, so that what the
+// Input texture holds is exactly the image's values rounded to float (NaN and Inf included).
+void writeFloatExr(const std::filesystem::path& file, const RefImage& image);
+
 struct GlRun {
     std::unique_ptr<Workspace> ws;     // declared first: the executor refers to it and dies first
     std::unique_ptr<GlExecutor> exec;  // null when creation or a frame failed
