@@ -2,7 +2,7 @@
 // Input): per texel, the mean of log(delta + Y) over the downsampled texels of its footprint, which
 // partition the image (luminance.glsl), and the largest of their Y.
 #include "stage_input.glsl"
-#include "target_format.glsl"
+#include "variant_target.glsl"
 #include "../../glsl/luminance.glsl"
 uniform sampler2D Downsampled;
 uniform float Luminance_Delta;

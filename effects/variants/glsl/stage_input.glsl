@@ -1,7 +1,7 @@
 #pragma once
 // The stage workspaces' input image and the contract's sanitising and luminance: S is the Input
 // texel with NaN, ±Inf and negative channels as 0; Y is its Rec.709 luminance.
-#include "../../glsl/hdr_filter.glsl"
+#include "../../glsl/finite.glsl"
 
 uniform sampler2D Input;
 

@@ -1,6 +1,6 @@
 // Tone map with the curve computed per pixel and the exact sRGB OETF.
 #include "photographic_tonemap.glsl"
-#include "target_format.glsl"
+#include "variant_target.glsl"
 uniform sampler2D Hdr;
 out vec4 fragColor;
 

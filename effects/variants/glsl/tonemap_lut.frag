@@ -1,7 +1,7 @@
 // Tone map with Ld / L looked up in a table by log2(L), linearly filtered (clamped at its ends),
 // and the exact sRGB OETF.
 #include "photographic_tonemap.glsl"
-#include "target_format.glsl"
+#include "variant_target.glsl"
 uniform sampler2D Hdr;
 uniform sampler2D Curve_Lut;
 out vec4 fragColor;

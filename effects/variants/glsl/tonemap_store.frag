@@ -1,6 +1,6 @@
 // The tone map stage's input: S · Exposure in Target_Format.
 #include "stage_input.glsl"
-#include "target_format.glsl"
+#include "variant_target.glsl"
 uniform float Exposure;
 out vec4 fragColor;
 

@@ -43,6 +43,7 @@ vec4 storeTarget(vec3 rgb) {
 // half a second per copy to compile. (Target_Format is never negative.)
 int unrolledNot(int n) { return Target_Format >= 0 ? n : 0; }
 
+vec3 loadTarget(sampler2D image, ivec2 texel) { return loadHDR(image, texel, targetEncoding()); }
 vec3 loadTargetOrBlack(sampler2D image, ivec2 texel) { return loadHDROrBlack(image, texel, targetEncoding()); }
 
 // Bilinear at `position` (texels) from four texels read by `load`, weighted in a loop.
