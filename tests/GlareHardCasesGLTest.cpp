@@ -31,13 +31,13 @@ std::vector<Variant> allVariants() {
     return all;
 }
 
-// Every variant in the default rgba16f, and the default variants (dual_filter, streak_3pass) in every
+// Every variant in the default rgba16f, and the default variants (tent13, streak_3pass) in every
 // format: each format compiles every shader anew on llvmpipe (about a second each).
 std::vector<std::pair<Variant, int>> variantsAndFormats() {
     std::vector<std::pair<Variant, int>> all;
     for (const Variant& v : allVariants()) all.push_back({v, 1});
     for (int format : {0, 2, 3, 4, 5}) {
-        all.push_back({{"bloom.xml", "dual_filter"}, format});
+        all.push_back({{"bloom.xml", "tent13"}, format});
         all.push_back({{"streak.xml", "streak_3pass"}, format});
     }
     return all;
@@ -93,7 +93,7 @@ TEST_F(GlareHardCasesGLTest, ValuesAboveHalfMaxSaturateInFloat16AndR11G11B10Targ
     RefImage input = black(kSize, kSize);
     for (int y = 8; y < 12; ++y)
         for (int x = 12; x < 16; ++x) input.at(x, y) = glm::dvec4(1e6, 1e6, 1e6, 1.0);
-    for (const Variant& v : {Variant{"bloom.xml", "dual_filter"}, Variant{"streak.xml", "streak_3pass"}})
+    for (const Variant& v : {Variant{"bloom.xml", "tent13"}, Variant{"streak.xml", "streak_3pass"}})
         for (auto [format, largest] : {std::pair{1, 65504.0}, std::pair{2, 65024.0}}) {
             SCOPED_TRACE(label(v, format));
             GlRun run = renderStage(v.file, input, v.effect, {{"Target_Format", std::to_string(format)}});
@@ -142,9 +142,9 @@ void expectCornerPixelContributes(glm::ivec2 size) {
     input.at(size.x - 1, size.y - 1) = glm::dvec4(101.0, 51.0, 21.0, 1.0);
     glm::ivec2 reduced = reducedSize(size, 4);
     int n = reductionFactor(size, reduced);
-    RefImage bloom = bloomStage(input, BloomBlur::DualFilter, {}, n).result;
+    RefImage bloom = bloomStage(input, BloomBlur::Tent13, {}, n).result;
     RefImage streak = streakStage(input, 3, {}, n).result;
-    for (auto [file, effect, expected] : {std::tuple{"bloom.xml", "dual_filter", &bloom}, std::tuple{"streak.xml", "streak_3pass", &streak}}) {
+    for (auto [file, effect, expected] : {std::tuple{"bloom.xml", "tent13", &bloom}, std::tuple{"streak.xml", "streak_3pass", &streak}}) {
         SCOPED_TRACE(effect);
         GlRun run = renderStage(file, input, effect, {{"Target_Format", "0"}});
         ASSERT_TRUE(run.exec);
