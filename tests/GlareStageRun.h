@@ -18,45 +18,15 @@
 
 namespace rmfx::test {
 
-// A float RGBA image as a file stores it (row 0 at the top).
-inline Image toImage(const RefImage& ref) {
-    Image image;
-    image.width = ref.width;
-    image.height = ref.height;
-    image.channels = 4;
-    image.highDynamicRange = true;
-    image.pixels.resize(size_t(ref.width) * ref.height * 4);
-    for (int y = 0; y < ref.height; ++y)
-        for (int x = 0; x < ref.width; ++x)
-            for (int c = 0; c < 4; ++c) image.at(x, ref.height - 1 - y, c) = float(ref.at(x, y)[c]);
-    return image;
-}
-
 // The stage workspace `file` ("bloom.xml", "streak.xml") rendering `effect` on `input` with
 // `overrides` (--set style). Adds a test failure, and returns a run without executor, when anything fails.
 inline GlRun renderStage(const std::string& file, const RefImage& input, const std::string& effect,
                          const Overrides& overrides = {}) {
     ScratchDir dir;
     std::filesystem::path exr = dir / "input.exr";
-    if (auto written = writeImage(exr, toImage(input)); !written) {
-        ADD_FAILURE() << written.error();
-        return {};
-    }
-    std::filesystem::path folder = sourceDir() / "effects" / "variants";
-    std::string xml = readText(folder / file);
-    const std::string scene = "file=\"../../samples/media/hdr_scene.exr\"";
-    size_t at = xml.find(scene);
-    if (at == std::string::npos) {
-        ADD_FAILURE() << file << " does not read " << scene;
-        return {};
-    }
-    xml.replace(at, scene.size(), "file=\"" + exr.string() + "\"");
-    auto ws = workspaceFromText(xml, folder);
+    writeFloatExr(exr, input);
+    auto ws = stageWorkspace(file, exr, overrides);
     if (!ws) return {};
-    if (Diagnostics bad = applyOverrides(*ws, overrides); !bad.empty()) {
-        ADD_FAILURE() << formatAll(bad);
-        return {};
-    }
     ExecutorOptions options;
     options.effects = std::vector<std::string>{effect};
     return runWorkspace(std::move(ws), {{input.width, input.height}, 1, 1.0f / 60.0f}, options);
