@@ -32,7 +32,7 @@ TEST_F(ArticlePipelineHardCasesGLTest, SinglePixelAtTheEdgesReachesTheQuarterIma
         replaceSceneWithPattern(*ws, "scene", singlePixelPattern(c.pixel, kPixel));
         GlRun run = runWorkspace(std::move(ws), {c.size, 1, 1.0f / 60.0f});
         ASSERT_TRUE(run.exec);
-        for (const std::string& name : {"scene", "downsampled", "blurX", "blurY", "output"})
+        for (const char* name : {"scene", "downsampled", "blurX", "blurY", "output"})
             for (float v : readBack(*run.exec, name).pixels) ASSERT_TRUE(std::isfinite(v)) << name;
         RefImage scene = readRef(run, "scene"), quarter = readRef(run, "downsampled");
         ASSERT_EQ(quarter.width, (c.size.x + 3) / 4);
