@@ -53,14 +53,21 @@ std::string workspaceWithTarget(const std::string& target) {
 
 class ResourceLimitsGLTest : public GlTest {};
 
-TEST_F(ResourceLimitsGLTest, ATargetOfOneHundredThousandSquaredFailsAndAllocatesNothing) {
-    auto ws = workspaceFromText(workspaceWithTarget(R"(<target name="big" format="rgba32f" size="100000x100000"/>)"));
-    ASSERT_TRUE(ws);
+// Creating an executor for `target`'s workspace at `viewport` fails without any texture storage;
+// returns its diagnostics.
+Diagnostics failsWithoutStorage(const std::string& target, glm::ivec2 viewport, const ExecutorOptions& options = {}) {
+    auto ws = workspaceFromText(workspaceWithTarget(target));
+    if (!ws) return {};
     TextureStorageCounter storage;
     Diagnostics d;
-    auto exec = runHeadless(*ws, {{64, 64}, 1, 1.0f / 60.0f}, d);
+    auto exec = runHeadless(*ws, {viewport, 1, 1.0f / 60.0f}, d, options);
     EXPECT_FALSE(exec);
     EXPECT_EQ(storage.calls(), 0);
+    return d;
+}
+
+TEST_F(ResourceLimitsGLTest, ATargetOfOneHundredThousandSquaredFailsAndAllocatesNothing) {
+    Diagnostics d = failsWithoutStorage(R"(<target name="big" format="rgba32f" size="100000x100000"/>)", {64, 64});
     ASSERT_EQ(d.size(), 1u) << formatAll(d);
     EXPECT_EQ(d[0].where.line, 3);
     EXPECT_EQ(d[0].element, "<target name=\"big\">");
@@ -73,36 +80,22 @@ TEST_F(ResourceLimitsGLTest, ATargetOfOneHundredThousandSquaredFailsAndAllocates
 
 TEST_F(ResourceLimitsGLTest, AFrameOverTheMemoryBudgetFailsNamingTheLargestTargets) {
     // 1024x1024 rgba32f is 16 MiB; the small target 256 bytes.
-    auto ws = workspaceWithTarget(R"(<target name="big" format="rgba32f" size="1024x1024"/>)");
+    const std::string big = R"(<target name="big" format="rgba32f" size="1024x1024"/>)";
     ExecutorOptions tight;
     tight.memoryBudget = 8u << 20;
-    {
-        auto parsed = workspaceFromText(ws);
-        ASSERT_TRUE(parsed);
-        TextureStorageCounter storage;
-        Diagnostics d;
-        auto exec = runHeadless(*parsed, {{64, 64}, 1, 1.0f / 60.0f}, d, tight);
-        EXPECT_FALSE(exec);
-        EXPECT_EQ(storage.calls(), 0);
-        ASSERT_EQ(d.size(), 1u) << formatAll(d);
-        EXPECT_EQ(d[0].message,
-                  "the render targets need 16.0 MiB, more than the memory budget of 8.0 MiB (largest: 'big' 1024x1024 "
-                  "16.0 MiB, 'small' 8x8 256 B); nothing was allocated (raise it with --memory-budget MiB)");
-    }
+    Diagnostics d = failsWithoutStorage(big, {64, 64}, tight);
+    ASSERT_EQ(d.size(), 1u) << formatAll(d);
+    EXPECT_EQ(d[0].message,
+              "the render targets need 16.0 MiB, more than the memory budget of 8.0 MiB (largest: 'big' 1024x1024 "
+              "16.0 MiB, 'small' 8x8 256 B); nothing was allocated (raise it with --memory-budget MiB)");
     ExecutorOptions roomy;
     roomy.memoryBudget = 17u << 20;
-    GlRun run = runWorkspace(workspaceFromText(ws), {{64, 64}, 1, 1.0f / 60.0f}, roomy);
+    GlRun run = runWorkspace(workspaceFromText(workspaceWithTarget(big)), {{64, 64}, 1, 1.0f / 60.0f}, roomy);
     EXPECT_TRUE(run.exec) << formatAll(run.diagnostics);
 }
 
 TEST_F(ResourceLimitsGLTest, AViewportBeyondTheLimitFailsBeforeAnything) {
-    auto ws = workspaceFromText(workspaceWithTarget(R"(<target name="big" format="rgba8" scale="1"/>)"));
-    ASSERT_TRUE(ws);
-    TextureStorageCounter storage;
-    Diagnostics d;
-    auto exec = runHeadless(*ws, {{100000, 100000}, 1, 1.0f / 60.0f}, d);
-    EXPECT_FALSE(exec);
-    EXPECT_EQ(storage.calls(), 0);
+    Diagnostics d = failsWithoutStorage(R"(<target name="big" format="rgba8" scale="1"/>)", {100000, 100000});
     ASSERT_EQ(d.size(), 1u) << formatAll(d);
     EXPECT_NE(d[0].message.find("viewport size 100000x100000 is larger than this GL allows"), std::string::npos)
         << d[0].message;
