@@ -1,5 +1,6 @@
 #include "runtime/FrameWatchdog.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -16,7 +17,8 @@ std::string secondsText(double seconds) {
 }  // namespace
 
 FrameWatchdog::FrameWatchdog(double budgetSeconds, std::function<void(const std::string&)> onTimeout)
-    : budget_(budgetSeconds), onTimeout_(std::move(onTimeout)) {
+    // At most about 31 years, so that the deadline stays within the clock's range.
+    : budget_(std::min(budgetSeconds, 1e9)), onTimeout_(std::move(onTimeout)) {
     if (!onTimeout_)
         onTimeout_ = [](const std::string& message) {
             std::fprintf(stderr, "rmfx: error: %s\n", message.c_str());
