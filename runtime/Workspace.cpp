@@ -82,30 +82,42 @@ int targetFormatBytesPerPixel(TargetFormat format) {
     return 0;
 }
 
-std::optional<TargetFormat> selectTargetFormat(const RenderTarget& target, const Value* value) {
-    if (target.formatVariable.empty()) return target.format;
+namespace {
+
+// format-by / scale-by: without a variable, the fixed choice; else the choice the variable's int
+// value indexes, or nullopt when it indexes none.
+template <typename T>
+std::optional<T> pickChoice(const std::string& variable, const T& fixed, const std::vector<T>& choices,
+                            const Value* value) {
+    if (variable.empty()) return fixed;
     if (!value || value->type != ValueType::Int) return std::nullopt;
     int index = value->asInt();
-    if (index < 0 || index >= static_cast<int>(target.formats.size())) return std::nullopt;
-    return target.formats[static_cast<size_t>(index)];
+    if (index < 0 || index >= static_cast<int>(choices.size())) return std::nullopt;
+    return choices[static_cast<size_t>(index)];
+}
+
+std::string choiceError(const std::string& variable, const Value* value, size_t choices, const std::string& noun,
+                        const std::string& target) {
+    return "variable '" + variable + "' = " + (value ? std::to_string(value->asInt()) : "?") + " picks none of the " +
+           std::to_string(choices) + " " + noun + " of target '" + target + "'";
+}
+
+}  // namespace
+
+std::optional<TargetFormat> selectTargetFormat(const RenderTarget& target, const Value* value) {
+    return pickChoice(target.formatVariable, target.format, target.formats, value);
 }
 
 std::string formatChoiceError(const RenderTarget& target, const Value* value) {
-    return "variable '" + target.formatVariable + "' = " + (value ? std::to_string(value->asInt()) : "?") +
-           " picks none of the " + std::to_string(target.formats.size()) + " formats of target '" + target.name + "'";
+    return choiceError(target.formatVariable, value, target.formats.size(), "formats", target.name);
 }
 
 std::optional<TargetSize> selectTargetSize(const RenderTarget& target, const Value* value) {
-    if (target.scaleVariable.empty()) return target.size;
-    if (!value || value->type != ValueType::Int) return std::nullopt;
-    int index = value->asInt();
-    if (index < 0 || index >= static_cast<int>(target.scales.size())) return std::nullopt;
-    return target.scales[static_cast<size_t>(index)];
+    return pickChoice(target.scaleVariable, target.size, target.scales, value);
 }
 
 std::string scaleChoiceError(const RenderTarget& target, const Value* value) {
-    return "variable '" + target.scaleVariable + "' = " + (value ? std::to_string(value->asInt()) : "?") +
-           " picks none of the " + std::to_string(target.scales.size()) + " scales of target '" + target.name + "'";
+    return choiceError(target.scaleVariable, value, target.scales.size(), "scales", target.name);
 }
 
 glm::ivec2 resolveTargetSize(const TargetSize& size, glm::ivec2 viewport) {
