@@ -24,6 +24,10 @@ enum class WidgetHint { Auto, Slider, Drag, Color, Checkbox, Combo };
 struct Variable {
     std::string name;
     Value value;  // the default, as written in the file
+    // A value the runtime fills every frame, by RenderMonkey's VARIABLE_SEMANTIC name
+    // ("ViewProjection", "Time0_X", "ViewportWidth"…); empty: the variable holds `value`.
+    std::string semantic;
+    bool editable = true;  // shown as a tweakable (RenderMonkey's ARTIST_EDITABLE)
     std::optional<float> min, max, step;
     WidgetHint widget = WidgetHint::Auto;
     std::vector<std::string> options;  // labels of a combo: value i selects options[i]
@@ -91,6 +95,17 @@ struct Sampler {
 
 enum class ShaderStage { Vertex, Fragment };
 
+// The language a shader is written in. rmfx's own workspaces use Glsl; the others come from
+// RenderMonkey (.rfx) imports.
+enum class ShaderDialect {
+    Glsl,        // GLSL 4.50 core; "#version 450 core" is put first when the code has no #version
+    GlslLegacy,  // desktop GLSL 1.10/1.20 with compatibility built-ins (gl_Vertex, ftransform(),
+                 // gl_ModelViewProjectionMatrix, gl_LightSource…); runs in a compatibility-profile
+                 // context; no #version is added
+    GlslEs100,   // GLSL ES 1.00 (precision qualifiers, attribute/varying), run as "#version 100"
+    Hlsl,        // Direct3D 9 HLSL, compiled through glslang's HLSL front end (entryPoint, profile)
+};
+
 // Shader code kept in the workspace file itself, which `#include "NAME"` finds before any file.
 struct CodeSnippet {
     std::string name;
@@ -101,6 +116,9 @@ struct CodeSnippet {
 
 struct ShaderSource {
     ShaderStage stage = ShaderStage::Fragment;
+    ShaderDialect dialect = ShaderDialect::Glsl;
+    std::string entryPoint;  // Hlsl: the function to compile ("main" when empty)
+    std::string profile;     // Hlsl: the D3D target it was written for ("vs_2_0", "ps_2_0"…)
     std::string file;    // relative to the workspace folder; empty for inline code
     std::string code;    // inline code (CDATA or text)
     int codeLine = 0;    // line of the workspace file where inline code starts
@@ -150,6 +168,17 @@ struct DrawCall {
     SourceLocation where;
 };
 
+// Which mesh data feeds which vertex attribute of a pass (RenderMonkey's RmStreamMap).
+enum class VertexUsage { Position, Normal, TexCoord, Tangent, Binormal, Color };
+
+struct VertexStream {
+    VertexUsage usage = VertexUsage::Position;
+    int usageIndex = 0;     // TEXCOORD1 → 1
+    std::string attribute;  // the attribute it feeds (rm_Vertex, a_position…); empty: the
+                            // compatibility built-in (gl_Vertex, gl_Normal, gl_MultiTexCoordN, gl_Color)
+    SourceLocation where;
+};
+
 struct Pass {
     std::string name;
     std::string target;  // empty: the output
@@ -162,6 +191,9 @@ struct Pass {
     std::vector<Sampler> samplers;
     std::vector<Variable> constants;    // pass-local values, shadowing workspace variables
     DrawCall draw;                      // default: the full-screen triangle
+    // Empty: rmfx's layout (locations 0 position, 1 normal, 2 texcoord). Else these streams,
+    // by attribute name or compatibility built-in.
+    std::vector<VertexStream> streams;
     SourceLocation where;
 };
 
@@ -196,7 +228,12 @@ struct OrbitCameraSettings {
     SourceLocation where;
 };
 
+// Core: rmfx's own workspaces. Compatibility: a compatibility-profile context, for legacy GLSL
+// and the fixed-function matrices and lights it reads (RenderMonkey imports).
+enum class GlProfile { Core, Compatibility };
+
 struct Workspace {
+    GlProfile profile = GlProfile::Core;
     std::filesystem::path path;  // the file it came from ("<built-in>" for embedded text)
     std::filesystem::path folder;  // shader, texture and model paths are relative to it
     std::filesystem::path includeRoot;  // #include may not leave it; empty: `folder` (see includeFolder)
