@@ -23,6 +23,7 @@ public:
         checkTargets();
         checkOutput();
         checkEffects();
+        checkSemantics();
         for (const Pass& pass : ws_.passes) checkPass(pass);
         Diagnostics order = checkPassOrder(ws_);
         out_.insert(out_.end(), order.begin(), order.end());
@@ -160,8 +161,25 @@ private:
                     error(ws_.output.where, "<output>", "effects: no effect named '" + name + "' is declared");
     }
 
+    // An unknown semantic is no error: RenderMonkey knew a few rmfx does not fill.
+    void checkSemantics() {
+        auto check = [&](const Variable& v) {
+            if (v.semantic.empty() || findSemantic(v.semantic)) return;
+            warning(v.where, "<" + std::string(valueTypeName(v.value.type)) + " name=\"" + v.name + "\">",
+                    "variable '" + v.name + "' (" + at(v.where) + ") has semantic '" + v.semantic +
+                        "', which rmfx does not fill: it keeps its stored value " + formatValue(v.value));
+        };
+        for (const Variable& v : ws_.variables) check(v);
+        for (const Pass& p : ws_.passes)
+            for (const Variable& c : p.constants) check(c);
+    }
+
     void checkPass(const Pass& pass) {
         std::string label = passLabel(pass);
+        for (const ShaderSource& s : pass.shaders)
+            if (s.dialect == ShaderDialect::GlslLegacy && ws_.profile != GlProfile::Compatibility)
+                error(s.where, "<shader>", "legacy GLSL (dialect=\"glsl110\") in " + label +
+                                               " needs a compatibility-profile context: <workspace profile=\"compatibility\">");
         if (!pass.target.empty() && !ws_.findTarget(pass.target) &&
             !(pass.target == Workspace::implicitOutputName && ws_.output.target.empty()))
             error(pass.where, label, "target '" + pass.target + "' is not declared");
