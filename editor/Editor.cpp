@@ -210,7 +210,7 @@ int runEditor(const EditorOptions& options) {
         }
     const glm::ivec2 effect = options.size.x > 0 ? options.size : glm::ivec2(checked->width, checked->height);
 
-    auto window = EditorWindow::create("rmfx edit: " + options.workspace.filename().string());
+    auto window = EditorWindow::create("rmfx edit: " + options.workspace.filename().string(), checked->profile);
     if (!window) {
         std::cerr << "rmfx edit: " << window.error() << "\n";
         return 2;
