@@ -124,15 +124,15 @@ private:
         // A semantic variable gets its value every frame; the stored one (default zeros) is what
         // an unknown semantic leaves.
         v.semantic = r.string("semantic").value_or("");
-        auto text = v.semantic.empty() ? r.string("value", true) : r.string("value").value_or(type == ValueType::Bool ? "false" : "0");
-        if (!name || !text) return std::nullopt;
+        auto text = r.string("value", v.semantic.empty());
+        if (!name || (!text && v.semantic.empty())) return std::nullopt;
         v.name = *name;
         if (v.name.rfind("rm_", 0) == 0) {
             r.error("the prefix rm_ is reserved for predefined variables");
             return std::nullopt;
         }
         std::string why;
-        auto value = parseValue(type, *text, &why);
+        auto value = text ? parseValue(type, *text, &why) : Value{type, {}};
         if (!value) {
             r.error("attribute 'value': " + why);
             return std::nullopt;
