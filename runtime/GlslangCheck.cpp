@@ -37,7 +37,8 @@ std::pair<int, EProfile> defaultVersion(ShaderDialect dialect) {
 }  // namespace
 
 std::optional<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSource& program,
-                                                           const std::string& element, Diagnostics& diagnostics) {
+                                                           const std::string& element, Diagnostics& diagnostics,
+                                                           std::vector<std::string>* vertexInputs) {
     initializeGlslangOnce();
     auto messages = static_cast<EShMessages>(EShMsgDefault);
     std::vector<std::unique_ptr<glslang::TShader>> shaders;
@@ -74,6 +75,8 @@ std::optional<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSour
         return std::nullopt;
     }
     linked.buildReflection(EShReflectionDefault);
+    if (vertexInputs)
+        for (int i = 0; i < linked.getNumPipeInputs(); ++i) vertexInputs->push_back(linked.getPipeInput(i).name);
     std::vector<ActiveUniform> uniforms;
     for (int i = 0; i < linked.getNumUniformVariables(); ++i) {
         const glslang::TObjectReflection& u = linked.getUniform(i);

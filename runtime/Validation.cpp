@@ -1,5 +1,6 @@
 #include "runtime/Validation.h"
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -229,8 +230,15 @@ private:
         ShaderPrelude prelude = effectPrelude(ws_, all);
         auto program = assemblePassProgram(ws_, pass, prelude.defines, out_, prelude.declarations);
         if (!program || !options_.compileShaders) return;
-        auto uniforms = checkPassProgram(*program, label, out_);
+        std::vector<std::string> inputs;
+        auto uniforms = checkPassProgram(*program, label, out_, &inputs);
         if (!uniforms) return;
+        // Built-in streams are checked by the GL executor, which sees the driver's list of inputs.
+        for (const VertexStream& stream : pass.streams)
+            if (!stream.attribute.empty() && std::find(inputs.begin(), inputs.end(), stream.attribute) == inputs.end())
+                warning(stream.where, label, "pass '" + pass.name + "': stream to attribute '" + stream.attribute +
+                                                 "' (line " + std::to_string(stream.where.line) +
+                                                 "), which the shaders do not read");
         std::set<std::string> active;
         for (const ActiveUniform& u : *uniforms) {
             active.insert(u.name);

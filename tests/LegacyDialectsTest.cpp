@@ -110,6 +110,16 @@ TEST(LegacyDialects, GlslangAcceptsLegacyBuiltinsAndValidationBindsTheSemantic) 
     EXPECT_FALSE(hasErrors(d)) << formatAll(d);
 }
 
+TEST(LegacyDialects, ValidationWarnsAboutAStreamToAnAttributeTheShadersLack) {
+    std::string xml = kLegacyWorkspace;
+    xml.replace(xml.find("attribute=\"rm_Vertex\""), 21, "attribute=\"rm_Vertexx\"");
+    ParsedWorkspace parsed = parse(xml);
+    ASSERT_TRUE(parsed.workspace) << formatAll(parsed.diagnostics);
+    std::string all = formatAll(validateWorkspace(*parsed.workspace));
+    EXPECT_NE(all.find("legacy.xml:4: warning: <pass name=\"mesh\">: pass 'mesh': stream to attribute 'rm_Vertexx' (line 4)"),
+              std::string::npos) << all;
+}
+
 TEST(LegacyDialects, LegacyGlslInACoreWorkspaceIsAnError) {
     std::string xml = kLegacyWorkspace;
     xml.replace(xml.find(" profile=\"compatibility\""), 24, "");
