@@ -75,6 +75,12 @@ private:
         if (dragging_[ImGuiMouseButton_Right] || dragging_[ImGuiMouseButton_Middle])
             panByDrag(camera, delta * scale, session_.executor().viewport().y);
         if (over && io.MouseWheel != 0.0f) zoomByWheel(camera, io.MouseWheel);
+        // The MouseCoordinate… semantics: the cursor over the effect in its pixels (top-left origin).
+        if (over)
+            session_.executor().setMouse(glm::vec2(io.MousePos.x, io.MousePos.y) * scale,
+                                         glm::ivec3(ImGui::IsMouseDown(ImGuiMouseButton_Left) ? 1 : 0,
+                                                    ImGui::IsMouseDown(ImGuiMouseButton_Middle) ? 1 : 0,
+                                                    ImGui::IsMouseDown(ImGuiMouseButton_Right) ? 1 : 0));
     }
 
     void drawPanel(const FrameClock& clock) {
