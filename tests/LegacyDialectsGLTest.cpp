@@ -12,7 +12,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "runtime/GlContext.h"
+#include "runtime/ImageIO.h"
 #include "tests/GlTestSupport.h"
+#include "tests/TestSupport.h"
 
 namespace rmfx::test {
 namespace {
@@ -232,6 +234,30 @@ void main() { gl_FragColor = vec4(1.0); }
     auto exec = GlExecutor::create(*ws, {kSize, kSize}, d);
     EXPECT_FALSE(exec);
     EXPECT_NE(formatAll(d).find("compatibility-profile context"), std::string::npos) << formatAll(d);
+}
+
+// rmfx render opens the context the workspace asks for: a legacy shader reading light 0 and the
+// material renders there (and would not compile in a core context).
+TEST_F(LegacyDialectsGLTest, RenderCommandOpensACompatibilityContext) {
+    ScratchDir dir;
+    std::filesystem::path file = dir.write("legacy.xml", R"(<workspace version="1" name="legacy" size="4x4" profile="compatibility">
+  <output format="rgba32f"/>
+  <pass name="light">
+    <shader stage="fragment" dialect="glsl110"><![CDATA[
+void main() { gl_FragColor = vec4(gl_LightSource[0].diffuse.g, gl_FrontMaterial.diffuse.g, gl_LightSource[0].position.z, 1.0); }
+]]></shader>
+  </pass>
+</workspace>
+)");
+    std::filesystem::path exr = dir / "legacy.exr";
+    CommandResult cli = runRmfx("render " + shellQuoted(file) + " -o " + shellQuoted(exr), dir.path());
+    ASSERT_EQ(cli.status, 0) << cli.err;
+    auto image = readImage(exr);
+    ASSERT_TRUE(image) << image.error();
+    // The documented defaults: light 0 diffuse 1, material diffuse 0.8, position (0, 0, 1, 0).
+    EXPECT_FLOAT_EQ(image->at(1, 1, 0), 1.0f);
+    EXPECT_FLOAT_EQ(image->at(1, 1, 1), 0.8f);
+    EXPECT_FLOAT_EQ(image->at(1, 1, 2), 1.0f);
 }
 
 }  // namespace
