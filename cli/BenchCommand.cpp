@@ -284,7 +284,11 @@ int benchCommand(const std::vector<std::string>& args) {
             return 1;
         }
 
-    auto context = GlContext::createHeadless();
+    // One context for every stage, so that their timings compare: compatibility when any asks for it.
+    GlProfile profile = GlProfile::Core;
+    for (const auto& plan : *plans)
+        if (plan.workspace.profile == GlProfile::Compatibility) profile = GlProfile::Compatibility;
+    auto context = GlContext::createHeadless(profile);
     if (!context) {
         std::cerr << "rmfx bench: " << context.error() << "\n";
         return 2;

@@ -132,7 +132,7 @@ int renderCommand(const std::vector<std::string>& args) {
     std::string output = a->output.value_or(ws.name + ".png");
     a->executor.outputs = {targetName};
 
-    auto context = GlContext::createHeadless();
+    auto context = GlContext::createHeadless(ws.profile);
     if (!context) {
         std::cerr << "rmfx render: " << context.error() << "\n";
         return 2;

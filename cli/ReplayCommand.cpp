@@ -121,11 +121,11 @@ private:
 
 class ReplayRunner {
 public:
-    explicit ReplayRunner(const ReplayArguments& a) : a_(a) {}
+    ReplayRunner(const ReplayArguments& a, HeadlessContexts& contexts) : a_(a), contexts_(contexts) {}
 
     CaseOutcome run(const ReplayCase& c) {
         CaseOutcome o;
-        CaseRender render = renderReplayCase(c);
+        CaseRender render = renderReplayCase(c, &contexts_);
         for (const Diagnostic& d : render.diagnostics)
             if (d.severity == Diagnostic::Severity::Error || !a_.quiet) o.line(d.format());
         if (!render.ok()) {
@@ -186,6 +186,7 @@ private:
     }
 
     const ReplayArguments& a_;
+    HeadlessContexts& contexts_;
 };
 
 }  // namespace
@@ -200,7 +201,9 @@ int replayCommand(const std::vector<std::string>& args) {
     auto cases = selectCases(manifest, a->cases);
     if (!cases) return 1;
 
-    auto context = GlContext::createHeadless();
+    // Each case runs in the context of its workspace's profile; the core one must open.
+    HeadlessContexts contexts;
+    auto context = contexts.use(GlProfile::Core);
     if (!context) {
         std::cerr << "rmfx replay: " << context.error() << "\n";
         return 2;
@@ -211,7 +214,7 @@ int replayCommand(const std::vector<std::string>& args) {
     JUnitTestSuite suite;
     suite.name = "rmfx replay " + manifest.path.string();
     int casesFailed = 0, comparesPassed = 0, comparesFailed = 0, comparesNotRun = 0, referencesWritten = 0;
-    ReplayRunner runner(*a);
+    ReplayRunner runner(*a, contexts);
     for (size_t i = 0; i < cases->size(); ++i) {
         const ReplayCase& c = *(*cases)[i];
         std::string progress = "[" + std::to_string(i + 1) + "/" + std::to_string(cases->size()) + "] " + c.name + " ... ";

@@ -75,6 +75,12 @@ private:
         if (dragging_[ImGuiMouseButton_Right] || dragging_[ImGuiMouseButton_Middle])
             panByDrag(camera, delta * scale, session_.executor().viewport().y);
         if (over && io.MouseWheel != 0.0f) zoomByWheel(camera, io.MouseWheel);
+        // The MouseCoordinate… semantics: the cursor over the effect in its pixels (top-left origin).
+        if (over)
+            session_.executor().setMouse(glm::vec2(io.MousePos.x, io.MousePos.y) * scale,
+                                         glm::ivec3(ImGui::IsMouseDown(ImGuiMouseButton_Left) ? 1 : 0,
+                                                    ImGui::IsMouseDown(ImGuiMouseButton_Middle) ? 1 : 0,
+                                                    ImGui::IsMouseDown(ImGuiMouseButton_Right) ? 1 : 0));
     }
 
     void drawPanel(const FrameClock& clock) {
@@ -210,7 +216,7 @@ int runEditor(const EditorOptions& options) {
         }
     const glm::ivec2 effect = options.size.x > 0 ? options.size : glm::ivec2(checked->width, checked->height);
 
-    auto window = EditorWindow::create("rmfx edit: " + options.workspace.filename().string());
+    auto window = EditorWindow::create("rmfx edit: " + options.workspace.filename().string(), checked->profile);
     if (!window) {
         std::cerr << "rmfx edit: " << window.error() << "\n";
         return 2;

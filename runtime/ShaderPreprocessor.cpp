@@ -143,6 +143,16 @@ private:
 
 }  // namespace
 
+const char* defaultVersionLine(ShaderDialect dialect) {
+    switch (dialect) {
+        case ShaderDialect::Glsl: return "#version 450 core";
+        case ShaderDialect::GlslEs100: return "#version 100";
+        case ShaderDialect::GlslLegacy:
+        case ShaderDialect::Hlsl: return "";
+    }
+    return "";
+}
+
 SourceLocation PreprocessedShader::origin(int line) const {
     if (lineOrigins.empty()) return {};
     if (line < 1) return lineOrigins.front();
@@ -174,10 +184,11 @@ PreprocessedShader preprocessShader(const ShaderInput& input, Diagnostics& diagn
     SourceLocation versionWhere = versionLine < lines.size() ? body.lineOrigins[versionLine] : input.start;
     if (versionLine < lines.size()) {
         out.code += lines[versionLine] + "\n";
-    } else {
-        out.code += "#version 450 core\n";
+        out.lineOrigins.push_back(versionWhere);
+    } else if (std::string version = defaultVersionLine(input.dialect); !version.empty()) {
+        out.code += version + "\n";
+        out.lineOrigins.push_back(versionWhere);
     }
-    out.lineOrigins.push_back(versionWhere);
     for (const std::string& define : input.defines) {
         out.code += "#define " + define + "\n";
         out.lineOrigins.push_back(versionWhere);

@@ -1,5 +1,6 @@
 #include "runtime/Validation.h"
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -23,6 +24,7 @@ public:
         checkTargets();
         checkOutput();
         checkEffects();
+        checkSemantics();
         for (const Pass& pass : ws_.passes) checkPass(pass);
         Diagnostics order = checkPassOrder(ws_);
         out_.insert(out_.end(), order.begin(), order.end());
@@ -160,8 +162,25 @@ private:
                     error(ws_.output.where, "<output>", "effects: no effect named '" + name + "' is declared");
     }
 
+    // An unknown semantic is no error: RenderMonkey knew a few rmfx does not fill.
+    void checkSemantics() {
+        auto check = [&](const Variable& v) {
+            if (v.semantic.empty() || findSemantic(v.semantic)) return;
+            warning(v.where, "<" + std::string(valueTypeName(v.value.type)) + " name=\"" + v.name + "\">",
+                    "variable '" + v.name + "' (" + at(v.where) + ") has semantic '" + v.semantic +
+                        "', which rmfx does not fill: it keeps its stored value " + formatValue(v.value));
+        };
+        for (const Variable& v : ws_.variables) check(v);
+        for (const Pass& p : ws_.passes)
+            for (const Variable& c : p.constants) check(c);
+    }
+
     void checkPass(const Pass& pass) {
         std::string label = passLabel(pass);
+        for (const ShaderSource& s : pass.shaders)
+            if (s.dialect == ShaderDialect::GlslLegacy && ws_.profile != GlProfile::Compatibility)
+                error(s.where, "<shader>", "legacy GLSL (dialect=\"glsl110\") in " + label +
+                                               " needs a compatibility-profile context: <workspace profile=\"compatibility\">");
         if (!pass.target.empty() && !ws_.findTarget(pass.target) &&
             !(pass.target == Workspace::implicitOutputName && ws_.output.target.empty()))
             error(pass.where, label, "target '" + pass.target + "' is not declared");
@@ -211,8 +230,15 @@ private:
         ShaderPrelude prelude = effectPrelude(ws_, all);
         auto program = assemblePassProgram(ws_, pass, prelude.defines, out_, prelude.declarations);
         if (!program || !options_.compileShaders) return;
-        auto uniforms = checkPassProgram(*program, label, out_);
+        std::vector<std::string> inputs;
+        auto uniforms = checkPassProgram(*program, label, out_, &inputs);
         if (!uniforms) return;
+        // Built-in streams are checked by the GL executor, which sees the driver's list of inputs.
+        for (const VertexStream& stream : pass.streams)
+            if (!stream.attribute.empty() && std::find(inputs.begin(), inputs.end(), stream.attribute) == inputs.end())
+                warning(stream.where, label, "pass '" + pass.name + "': stream to attribute '" + stream.attribute +
+                                                 "' (line " + std::to_string(stream.where.line) +
+                                                 "), which the shaders do not read");
         std::set<std::string> active;
         for (const ActiveUniform& u : *uniforms) {
             active.insert(u.name);

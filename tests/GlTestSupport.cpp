@@ -17,14 +17,21 @@ struct SharedContext {
     std::string error;
 };
 
+SharedContext createContext(GlProfile profile) {
+    SharedContext s;
+    auto created = GlContext::createHeadless(profile);
+    if (created) s.context = std::move(*created);
+    else s.error = created.error();
+    return s;
+}
+
 const SharedContext& sharedContext() {
-    static SharedContext shared = [] {
-        SharedContext s;
-        auto created = GlContext::createHeadless();
-        if (created) s.context = std::move(*created);
-        else s.error = created.error();
-        return s;
-    }();
+    static SharedContext shared = createContext(GlProfile::Core);
+    return shared;
+}
+
+const SharedContext& compatibilityContext() {
+    static SharedContext shared = createContext(GlProfile::Compatibility);
     return shared;
 }
 
@@ -34,6 +41,17 @@ void GlTest::SetUp() {
     const SharedContext& shared = sharedContext();
     ASSERT_TRUE(shared.context) << "no headless GL context: " << shared.error;
     shared.context->makeCurrent();
+}
+
+void CompatibilityGlTest::SetUp() {
+    GlTest::SetUp();  // the core context exists first, so TearDown can return to it
+    const SharedContext& compatibility = compatibilityContext();
+    ASSERT_TRUE(compatibility.context) << "no compatibility-profile GL context: " << compatibility.error;
+    compatibility.context->makeCurrent();
+}
+
+void CompatibilityGlTest::TearDown() {
+    if (sharedContext().context) sharedContext().context->makeCurrent();
 }
 
 std::unique_ptr<Workspace> workspaceFromText(const std::string& xml, const std::filesystem::path& folder) {
