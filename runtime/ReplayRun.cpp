@@ -31,9 +31,11 @@ void checkTargets(const ReplayCase& c, const Workspace& ws, Diagnostics& diagnos
 
 }  // namespace
 
-CaseRender renderReplayCase(const ReplayCase& c) {
+CaseRender renderReplayCase(const ReplayCase& c, const MediaOptions& media) {
     CaseRender out;
-    LoadedWorkspace loaded = loadWorkspace(c.workspace);
+    ValidationOptions options;
+    options.media = media;
+    LoadedWorkspace loaded = loadWorkspace(c.workspace, options);
     out.diagnostics = std::move(loaded.diagnostics);
     if (!loaded.workspace) return out;
     Workspace& ws = *loaded.workspace;
