@@ -116,6 +116,7 @@ std::optional<fs::path> walkIgnoringCase(const fs::path& base, const std::vector
         }
         found /= matches[0];
     }
+    if (!isFile(base / found)) return std::nullopt;  // "a/.." names a folder
     return found;
 }
 

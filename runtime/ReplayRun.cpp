@@ -33,9 +33,9 @@ void checkTargets(const ReplayCase& c, const Workspace& ws, Diagnostics& diagnos
 
 CaseRender renderReplayCase(const ReplayCase& c, const MediaOptions& media) {
     CaseRender out;
-    ValidationOptions options;
-    options.media = media;
-    LoadedWorkspace loaded = loadWorkspace(c.workspace, options);
+    ValidationOptions load;
+    load.media = media;
+    LoadedWorkspace loaded = loadWorkspace(c.workspace, load);
     out.diagnostics = std::move(loaded.diagnostics);
     if (!loaded.workspace) return out;
     Workspace& ws = *loaded.workspace;

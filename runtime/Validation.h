@@ -11,7 +11,7 @@ namespace rmfx {
 
 struct ValidationOptions {
     bool compileShaders = true;  // off: structure and references only
-    MediaOptions media;          // how loadWorkspace resolves file references (search path, sandbox)
+    MediaOptions media{};        // how loadWorkspace resolves file references (search path, sandbox)
 };
 
 Diagnostics validateWorkspace(const Workspace& ws, const ValidationOptions& options = {});

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <fstream>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -17,6 +18,25 @@ namespace {
 
 using namespace test::dds;
 
+// Writes the bytes as `name` and reads the image back: a 4x4 RGBA image.
+Image readDds(const test::ScratchDir& dir, const std::string& name, const Bytes& bytes) {
+    auto image = readImage(writeBytes(dir, name, bytes));
+    EXPECT_TRUE(image) << image.error();
+    if (!image) return {};
+    EXPECT_EQ(image->width, 4);
+    EXPECT_EQ(image->height, 4);
+    EXPECT_EQ(image->channels, 4);
+    return *image;
+}
+
+// One DXT1 block (end points c0, c1 and a 2-bit index per texel) decoded by OpenImageIO.
+Image decodeDxt1(const test::ScratchDir& dir, const std::string& name, uint16_t c0, uint16_t c1,
+                 const std::array<int, 16>& index) {
+    Bytes b = header("DXT1");
+    colorBlock(b, c0, c1, index);
+    return readDds(dir, name, b);
+}
+
 void expectTexel(const Image& image, int x, int y, std::array<int, 4> bytes) {
     for (int c = 0; c < 4; ++c)
         EXPECT_FLOAT_EQ(image.at(x, y, c), bytes[c] / 255.0f) << "texel " << x << "," << y << " channel " << c;
@@ -26,37 +46,28 @@ void expectTexel(const Image& image, int x, int y, std::array<int, 4> bytes) {
 
 TEST(DdsTexture, Dxt1FourColourBlock) {
     test::ScratchDir dir;
-    Bytes b = header("DXT1");
     // c0 = red > c1 = blue: four colours, c2 = (2 c0 + c1) / 3, c3 = (c0 + 2 c1) / 3. Every row
     // holds indices 0 1 2 3.
-    colorBlock(b, kRed, kBlue, {0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3});
-    auto image = readImage(writeBytes(dir, "four.dds", b));
-    ASSERT_TRUE(image) << image.error();
-    ASSERT_EQ(image->width, 4);
-    ASSERT_EQ(image->height, 4);
-    ASSERT_EQ(image->channels, 4);
+    Image image = decodeDxt1(dir, "four.dds", kRed, kBlue, {0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3});
+    ASSERT_FALSE(image.empty());
     for (int y = 0; y < 4; ++y) {
-        expectTexel(*image, 0, y, {255, 0, 0, 255});
-        expectTexel(*image, 1, y, {0, 0, 255, 255});
-        expectTexel(*image, 2, y, {170, 0, 85, 255});  // 2·255/3, 255/3
-        expectTexel(*image, 3, y, {85, 0, 170, 255});
+        expectTexel(image, 0, y, {255, 0, 0, 255});
+        expectTexel(image, 1, y, {0, 0, 255, 255});
+        expectTexel(image, 2, y, {170, 0, 85, 255});  // 2·255/3, 255/3
+        expectTexel(image, 3, y, {85, 0, 170, 255});
     }
 }
 
 TEST(DdsTexture, Dxt1ThreeColourBlockHasTransparentBlack) {
     test::ScratchDir dir;
-    Bytes b = header("DXT1");
-    // c0 = blue ≤ c1 = red: three colours and index 3 is transparent black. Row y holds index
-    // 3 at x = y, else the end points.
-    colorBlock(b, kBlue, kRed, {3, 0, 1, 0, 1, 3, 0, 1, 0, 1, 3, 0, 1, 0, 1, 3});
-    auto image = readImage(writeBytes(dir, "three.dds", b));
-    ASSERT_TRUE(image) << image.error();
-    expectTexel(*image, 0, 0, {0, 0, 0, 0});
-    expectTexel(*image, 1, 0, {0, 0, 255, 255});
-    expectTexel(*image, 2, 0, {255, 0, 0, 255});
-    expectTexel(*image, 1, 1, {0, 0, 0, 0});
-    expectTexel(*image, 3, 3, {0, 0, 0, 0});
-    expectTexel(*image, 0, 3, {255, 0, 0, 255});
+    // c0 = blue ≤ c1 = red: three colours and index 3 is transparent black: at (0, 0), (1, 1),
+    // (2, 2), (3, 3); the end points elsewhere.
+    Image image = decodeDxt1(dir, "three.dds", kBlue, kRed, {3, 0, 1, 0, 1, 3, 0, 1, 0, 1, 3, 0, 1, 0, 1, 3});
+    ASSERT_FALSE(image.empty());
+    const std::array<int, 4> transparent{0, 0, 0, 0}, blue{0, 0, 255, 255}, red{255, 0, 0, 255};
+    for (auto [x, y, expected] : {std::tuple{0, 0, transparent}, {1, 0, blue}, {2, 0, red}, {1, 1, transparent},
+                                  {3, 3, transparent}, {0, 3, red}})
+        expectTexel(image, x, y, expected);
 }
 
 TEST(DdsTexture, Dxt3ExplicitAlpha) {
@@ -65,9 +76,9 @@ TEST(DdsTexture, Dxt3ExplicitAlpha) {
     // Texel i has the 4-bit alpha i (i·17 in 8 bits), then a green colour block.
     for (int pair = 0; pair < 8; ++pair) b.push_back(static_cast<uint8_t>((2 * pair) | ((2 * pair + 1) << 4)));
     colorBlock(b, kGreen, 0, kAllZero);
-    auto image = readImage(writeBytes(dir, "dxt3.dds", b));
-    ASSERT_TRUE(image) << image.error();
-    for (int i = 0; i < 16; ++i) expectTexel(*image, i % 4, i / 4, {0, 255, 0, 17 * i});
+    Image image = readDds(dir, "dxt3.dds", b);
+    ASSERT_FALSE(image.empty());
+    for (int i = 0; i < 16; ++i) expectTexel(image, i % 4, i / 4, {0, 255, 0, 17 * i});
 }
 
 TEST(DdsTexture, Dxt5InterpolatedAlpha) {
@@ -80,10 +91,10 @@ TEST(DdsTexture, Dxt5InterpolatedAlpha) {
     for (int i = 0; i < 16; ++i) bits |= static_cast<uint64_t>(i % 8) << (3 * i);
     for (int i = 0; i < 6; ++i) b.push_back(static_cast<uint8_t>(bits >> (8 * i)));
     colorBlock(b, kWhite, 0, kAllZero);
-    auto image = readImage(writeBytes(dir, "dxt5.dds", b));
-    ASSERT_TRUE(image) << image.error();
+    Image image = readDds(dir, "dxt5.dds", b);
+    ASSERT_FALSE(image.empty());
     const int alpha[8] = {238, 0, 204, 170, 136, 102, 68, 34};
-    for (int i = 0; i < 16; ++i) expectTexel(*image, i % 4, i / 4, {255, 255, 255, alpha[i % 8]});
+    for (int i = 0; i < 16; ++i) expectTexel(image, i % 4, i / 4, {255, 255, 255, alpha[i % 8]});
 }
 
 TEST(DdsTexture, CubeMapInOneFileGivesSixFacesInGlOrder) {

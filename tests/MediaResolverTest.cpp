@@ -66,7 +66,7 @@ TEST(MediaReference, SplitsOnBothSeparatorsAndKnowsWindowsAbsolutePaths) {
 TEST(MediaResolver, BackslashesAndCaseFindTheFileRelativeToTheWorkspace) {
     test::ScratchDir dir;
     dir.write("Media/Textures/Fieldstone.tga", "x");
-    dir.write("GL2/ws.xml", "");
+    dir.write("GL2/ws.xml", "");  // "GL2/.." needs GL2
     MediaResolver r(dir / "GL2", {});
     EXPECT_EQ(resolve(r, "..\\Media\\Textures\\Fieldstone.tga"), "../Media/Textures/Fieldstone.tga");
     // The file's real spelling is what is stored.
@@ -75,8 +75,7 @@ TEST(MediaResolver, BackslashesAndCaseFindTheFileRelativeToTheWorkspace) {
 
 TEST(MediaResolver, TwoNamesThatDifferOnlyInCaseAreAnErrorUnlessSpelledExactly) {
     test::ScratchDir dir;
-    dir.write("ws/tex/a.png", "1");
-    dir.write("ws/tex/A.png", "2");
+    for (const char* name : {"ws/tex/a.png", "ws/tex/A.png"}) dir.write(name, name);
     MediaResolver r(dir / "ws", {});
     EXPECT_EQ(resolve(r, "tex\\A.png"), "tex/A.png");
     EXPECT_EQ(resolve(r, "tex/a.png"), "tex/a.png");
