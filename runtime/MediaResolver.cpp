@@ -186,7 +186,9 @@ MediaResolver::Found MediaResolver::resolve(const std::string& reference, const 
         if (auto found = walkIgnoringCase(folder_, ref.components, &ambiguity))
             return checked(found->lexically_normal(), folder_ / *found, reference, noun);
         if (!ambiguity.empty()) return ambiguous();
-        looked.push_back("for " + (folder_ / joined(ref.components)).lexically_normal().string() + " (ignoring case)");
+        std::error_code ignored;
+        fs::path tried = fs::absolute(folder_ / joined(ref.components), ignored).lexically_normal();
+        looked.push_back("for " + tried.string() + " (ignoring case)");
     }
 
     std::vector<std::string> tail = ref.trailing();
