@@ -9,6 +9,7 @@
 #include "runtime/GlContext.h"
 #include "runtime/HeadlessRun.h"
 #include "runtime/ImageIO.h"
+#include "runtime/MediaArguments.h"
 #include "runtime/WorkspaceLoader.h"
 
 namespace rmfx::cli {
@@ -24,6 +25,7 @@ struct RenderArguments {
     bool quiet = false;
     bool explain = false;
     ExecutorOptions executor;
+    MediaOptions media;
 };
 
 std::optional<RenderArguments> parseArguments(const std::vector<std::string>& args) {
@@ -39,7 +41,9 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
             if (i + 1 >= args.size()) return std::nullopt;
             return args[++i];
         };
-        if (arg == "-o" || arg == "--output" || arg == "--size" || arg == "--frames" || arg == "--dt" ||
+        if (auto media = takeMediaArgument(args, i, a.media)) {
+            if (!media->empty()) return fail(*media);
+        } else if (arg == "-o" || arg == "--output" || arg == "--size" || arg == "--frames" || arg == "--dt" ||
             arg == "--set" || arg == "--target" || arg == "--transform" || arg == "--effects" ||
             arg == "--memory-budget" || arg == "--frame-budget") {
             auto value = next();
@@ -112,7 +116,9 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
 int renderCommand(const std::vector<std::string>& args) {
     auto a = parseArguments(args);
     if (!a) return 1;
-    LoadedWorkspace loaded = a->workspace ? loadWorkspace(*a->workspace) : loadDefaultWorkspace();
+    ValidationOptions options;
+    options.media = a->media;
+    LoadedWorkspace loaded = a->workspace ? loadWorkspace(*a->workspace, options) : loadDefaultWorkspace(options);
     if (!loaded.workspace) {
         std::cerr << formatAll(loaded.diagnostics);
         return 1;

@@ -31,9 +31,11 @@ void checkTargets(const ReplayCase& c, const Workspace& ws, Diagnostics& diagnos
 
 }  // namespace
 
-CaseRender renderReplayCase(const ReplayCase& c, HeadlessContexts* contexts) {
+CaseRender renderReplayCase(const ReplayCase& c, const MediaOptions& media, HeadlessContexts* contexts) {
     CaseRender out;
-    LoadedWorkspace loaded = loadWorkspace(c.workspace);
+    ValidationOptions load;
+    load.media = media;
+    LoadedWorkspace loaded = loadWorkspace(c.workspace, load);
     out.diagnostics = std::move(loaded.diagnostics);
     if (!loaded.workspace) return out;
     Workspace& ws = *loaded.workspace;

@@ -20,7 +20,6 @@ public:
 
     void run() {
         checkUniqueNames();
-        checkTextures();
         checkTargets();
         checkOutput();
         checkEffects();
@@ -70,18 +69,6 @@ private:
                 error(t->where, "<target name=\"output\">",
                       "the name 'output' is taken by the implicit output target; rename the target, or make it the "
                       "output with <output target=\"output\"/>");
-    }
-
-    void checkTextures() {
-        for (const Texture& t : ws_.textures) {
-            for (size_t i = 0; i < t.files.size(); ++i) {
-                std::filesystem::path file = ws_.folder / t.files[i];
-                if (!std::filesystem::is_regular_file(file))
-                    error(i < t.fileLocations.size() ? t.fileLocations[i] : t.where,
-                          std::string(t.kind == TextureKind::Cube ? "<cubemap" : "<texture") + " name=\"" + t.name + "\">",
-                          "image file '" + t.files[i] + "' not found (looked for " + file.string() + ")");
-            }
-        }
     }
 
     void checkTargets() {
@@ -220,10 +207,6 @@ private:
                       "pass constant '" + c.name + "' is a " + typeWithWidth(c.value.type) + " but variable '" +
                           c.name + "' (" + at(v->where) + ") is a " + typeWithWidth(v->value.type));
         }
-        if (!pass.draw.file.empty() && !std::filesystem::is_regular_file(ws_.folder / pass.draw.file))
-            error(pass.draw.where, "<draw>", "model file '" + pass.draw.file + "' not found (looked for " +
-                                                 (ws_.folder / pass.draw.file).string() + ")");
-
         // Every effect asked for, switches deciding: the form that keeps every read of the shader.
         std::set<std::string> all;
         for (const Effect& e : ws_.effects) all.insert(e.name);

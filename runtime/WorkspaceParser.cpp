@@ -41,6 +41,7 @@ public:
                 r.error("include-root '" + *root + "' must be an ancestor of the workspace folder: \"..\", \"../..\", ...");
             else {
                 ws.includeRoot = (ws.folder / relative).lexically_normal();
+                ws.includeRootWhere = r.where();
                 if (!ws.includeRoot.has_filename()) ws.includeRoot = ws.includeRoot.parent_path();  // "a/b/.." is "a/"
             }
         }

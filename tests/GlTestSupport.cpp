@@ -58,7 +58,8 @@ std::unique_ptr<Workspace> workspaceFromText(const std::string& xml, const std::
     ParsedWorkspace parsed = parseWorkspaceText(xml, folder / "test-workspace.xml", folder);
     Diagnostics diagnostics = parsed.diagnostics;
     if (parsed.workspace) {
-        Diagnostics found = validateWorkspace(*parsed.workspace);
+        Diagnostics found = resolveWorkspaceMedia(*parsed.workspace, {});
+        if (!hasErrors(found)) found = validateWorkspace(*parsed.workspace);
         diagnostics.insert(diagnostics.end(), found.begin(), found.end());
     }
     if (!parsed.workspace || hasErrors(diagnostics)) {
