@@ -14,13 +14,29 @@ int validateCommand(const std::vector<std::string>& args) {
         std::cerr << "rmfx validate: name one or more workspace files\n";
         return 1;
     }
-    int status = 0;
-    for (const std::string& path : args) {
-        if (!path.empty() && path[0] == '-') {
-            std::cerr << "rmfx validate: unknown option '" << path << "'\n";
+    WorkspaceLoadOptions load;
+    std::vector<std::string> paths;
+    for (size_t i = 0; i < args.size(); ++i) {
+        if (args[i] == "--effect") {
+            if (i + 1 >= args.size()) {
+                std::cerr << "rmfx validate: --effect needs a value\n";
+                return 1;
+            }
+            load.effect = args[++i];
+        } else if (!args[i].empty() && args[i][0] == '-') {
+            std::cerr << "rmfx validate: unknown option '" << args[i] << "'\n";
             return 1;
+        } else {
+            paths.push_back(args[i]);
         }
-        LoadedWorkspace loaded = loadWorkspace(path);
+    }
+    if (paths.empty()) {
+        std::cerr << "rmfx validate: name one or more workspace files\n";
+        return 1;
+    }
+    int status = 0;
+    for (const std::string& path : paths) {
+        LoadedWorkspace loaded = loadWorkspace(path, {}, load);
         std::cerr << formatAll(loaded.diagnostics);
         if (!loaded.workspace) {
             status = 1;

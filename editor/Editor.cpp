@@ -193,7 +193,7 @@ private:
 int runEditor(const EditorOptions& options) {
     // Checked before any window opens: a broken workspace is reported like rmfx render reports it,
     // and its size sets the window's.
-    LoadedWorkspace loaded = loadWorkspace(options.workspace);
+    LoadedWorkspace loaded = loadWorkspace(options.workspace, {}, {options.effect});
     Workspace* checked = loaded.workspace ? &*loaded.workspace : nullptr;
     if (checked) {
         Diagnostics bad = applyOverrides(*checked, options.overrides);
@@ -217,7 +217,7 @@ int runEditor(const EditorOptions& options) {
     }
     Diagnostics diagnostics;
     // The size asked for, else 0: the workspace's, which a reload may change.
-    auto session = LiveWorkspace::open(options.workspace, options.size, options.overrides, diagnostics);
+    auto session = LiveWorkspace::open(options.workspace, options.size, options.overrides, diagnostics, {options.effect});
     if (!session) {
         std::cerr << formatAll(diagnostics);
         return 2;

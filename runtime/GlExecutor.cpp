@@ -536,6 +536,8 @@ struct GlExecutor::Impl {
                     case UniformType::Vec2: glProgramUniform2fv(gp.program, u.location, 1, data); break;
                     case UniformType::Vec3: glProgramUniform3fv(gp.program, u.location, 1, data); break;
                     case UniformType::Vec4: glProgramUniform4fv(gp.program, u.location, 1, data); break;
+                    case UniformType::Mat2: glProgramUniformMatrix2fv(gp.program, u.location, 1, GL_FALSE, data); break;
+                    case UniformType::Mat3: glProgramUniformMatrix3fv(gp.program, u.location, 1, GL_FALSE, data); break;
                     case UniformType::Mat4: glProgramUniformMatrix4fv(gp.program, u.location, 1, GL_FALSE, data); break;
                     default: break;
                 }

@@ -27,6 +27,7 @@
 #include "runtime/Value.h"
 #include "runtime/Workspace.h"
 #include "runtime/WorkspaceDependencies.h"
+#include "runtime/WorkspaceLoader.h"
 
 namespace rmfx {
 
@@ -47,7 +48,7 @@ public:
     // Returns nullptr with diagnostics when the FIRST build fails (nothing good to keep yet).
     static std::unique_ptr<LiveWorkspace> open(const std::filesystem::path& file, glm::ivec2 viewport,
                                                const std::vector<std::pair<std::string, std::string>>& overrides,
-                                               Diagnostics& diagnostics);
+                                               Diagnostics& diagnostics, const WorkspaceLoadOptions& load = {});
     ~LiveWorkspace();
     LiveWorkspace(const LiveWorkspace&) = delete;
     LiveWorkspace& operator=(const LiveWorkspace&) = delete;
@@ -100,6 +101,7 @@ private:
     std::filesystem::path file_;
     glm::ivec2 requestedViewport_{0};
     std::vector<std::pair<std::string, std::string>> overrides_;
+    WorkspaceLoadOptions loadOptions_;  // the .rfx effect chosen with --effect
 
     std::unique_ptr<Workspace> workspace_;  // before executor_: destroyed after it
     std::unique_ptr<GlExecutor> executor_;
