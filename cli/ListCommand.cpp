@@ -1,11 +1,11 @@
 // rmfx list FILE.rfx: what a RenderMonkey workspace holds and what each effect needs to run.
 
 #include <iostream>
-#include <regex>
 #include <set>
 #include <sstream>
 
 #include "cli/Commands.h"
+#include "runtime/IdentifierSearch.h"
 #include "runtime/RfxImporter.h"
 #include "runtime/Validation.h"
 
@@ -42,14 +42,13 @@ std::string sizeText(const TargetSize& s) {
 }
 
 bool mentions(const Pass& pass, const std::string& name) {
-    std::regex word("\\b" + std::regex_replace(name, std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)") + "\\b");
     for (const ShaderSource& s : pass.shaders)
-        if (std::regex_search(s.code, word)) return true;
+        if (mentionsIdentifier(s.code, name)) return true;
     return false;
 }
 
 void describeVariable(std::ostream& out, const Variable& v, const char* scope) {
-    out << "      " << v.name << " (" << valueTypeName(v.value.type);
+    out << "        " << v.name << " (" << valueTypeName(v.value.type);
     if (!v.semantic.empty()) out << ", semantic " << v.semantic;
     if (v.editable) out << ", editable";
     out << scope << ")\n";
@@ -94,7 +93,7 @@ void describePass(std::ostream& out, const Workspace& ws, const Pass& pass, cons
         if (shown.insert(v.name).second) describeVariable(out, v, ", pass-level");
     for (const Variable& v : ws.variables)
         if (mentions(pass, v.name) && shown.insert(v.name).second) describeVariable(out, v, "");
-    if (shown.empty()) out << "      (none)\n";
+    if (shown.empty()) out << "        (none)\n";
 }
 
 void describeWorkspace(std::ostream& out, const Workspace& ws) {

@@ -105,9 +105,21 @@ ParsedWorkspace importEffect(const RfxEffectEntry& effect, const std::filesystem
         if (!p.runnable && p.pass.enabled)
             diagnostics.push_back({Diagnostic::Severity::Error, p.pass.where, "<pass \"" + p.pass.name + "\">",
                                    "the effect cannot run: " + p.whyNotRunnable + " (disable the pass to run the rest)"});
+        if (!p.runnable && !p.pass.enabled) {
+            diagnostics.push_back({Diagnostic::Severity::Warning, p.pass.where, "<pass \"" + p.pass.name + "\">",
+                                   "disabled, and it could not run: " + p.whyNotRunnable + "; left out of the workspace"});
+            continue;
+        }
         ws.passes.push_back(std::move(p.pass));
         previous = &ws.passes.back();
     }
+    // Texture variables no pass samples are left out: RenderMonkey files keep textures of other
+    // effects at the workspace level, and their missing media must not stop this effect.
+    std::erase_if(ws.textures, [&](const Texture& t) {
+        return std::none_of(ws.passes.begin(), ws.passes.end(), [&](const Pass& p) {
+            return std::any_of(p.samplers.begin(), p.samplers.end(), [&](const Sampler& s) { return s.texture == t.name; });
+        });
+    });
     if (ws.passes.empty())
         diagnostics.push_back({Diagnostic::Severity::Error, {file, effect.element->GetLineNum()}, "<" + std::string(effect.element->Name()) + " NAME=\"" + effect.name + "\">",
                                "the effect has no passes"});

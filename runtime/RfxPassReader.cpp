@@ -1,8 +1,11 @@
 #include "runtime/RfxPassReader.h"
 
+#include <algorithm>
+#include <cctype>
 #include <regex>
 #include <string_view>
 
+#include "runtime/IdentifierSearch.h"
 #include "runtime/RfxPackedColor.h"
 #include "runtime/RfxRenderStates.h"
 #include "runtime/RfxSamplerStates.h"
@@ -34,6 +37,7 @@ public:
         setRenderMonkeyDefaults(out_.pass);
         for (const XMLElement* c = e_.xml()->FirstChildElement(); c; c = c->NextSiblingElement()) child(c);
         bindStreams();
+        checkConstants();
         for (const auto& [sampler, where] : samplersWithoutObject_)
             where.error("sampler '" + sampler + "' has no <RmTextureObject NAME=\"" + sampler +
                         "\"> in the pass to say which texture it reads");
@@ -144,12 +148,22 @@ private:
         }
     }
 
-    void constant(const RfxElement& c) {
-        std::string name = c.name();
-        for (const Variable& v : out_.pass.constants)
-            if (v.name == name) return;
-        if (!scopes_.variable(name) && !scopes_.texture(name))
-            c.error("no variable '" + name + "' is visible from the pass (pass, effect, group or workspace)");
+    // Checked once the pass's shaders are known: RenderMonkey keeps constants that name nothing
+    // (left over from edits); they matter only when a shader uses the name.
+    void constant(const RfxElement& c) { constants_.push_back(c); }
+
+    void checkConstants() {
+        for (const RfxElement& c : constants_) {
+            std::string name = c.name();
+            bool passLevel = std::any_of(out_.pass.constants.begin(), out_.pass.constants.end(),
+                                         [&](const Variable& v) { return v.name == name; });
+            if (passLevel || scopes_.variable(name) || scopes_.texture(name)) continue;
+            bool used = std::any_of(out_.pass.shaders.begin(), out_.pass.shaders.end(),
+                                    [&](const ShaderSource& s) { return mentionsIdentifier(s.code, name); });
+            std::string message = "no variable '" + name + "' is visible from the pass (pass, effect, group or workspace)";
+            if (used) c.error(message);
+            else c.warning(message + "; its shaders do not use it, so it is ignored");
+        }
     }
 
     void sampler(const RfxElement& c) {
@@ -241,7 +255,9 @@ private:
     }
 
     static bool declaresAttribute(const std::string& code, const std::string& name) {
-        if (name.empty()) return false;
+        // Only identifiers go into the pattern: a name with regex syntax in it declares nothing.
+        if (name.empty() || !std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }))
+            return false;
         std::regex declaration("\\b(attribute|in)\\s+(\\w+\\s+)*\\w+\\s+" + name + "\\s*;");
         return std::regex_search(code, declaration);
     }
@@ -254,6 +270,7 @@ private:
     const StreamMapDeclaration* streamMap_ = nullptr;
     bool targetSeen_ = false;
     std::vector<std::pair<std::string, RfxElement>> samplersWithoutObject_;
+    std::vector<RfxElement> constants_;
 };
 
 }  // namespace

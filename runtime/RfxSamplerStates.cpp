@@ -65,10 +65,10 @@ void SamplerStates::applyGl(const RfxElement& state) {
         switch (v) {
             case 0: min_ = Filter::Nearest; mip_ = MipmapMode::None; break;
             case 1: min_ = Filter::Linear; mip_ = MipmapMode::None; break;
-            case 3: min_ = Filter::Nearest; mip_ = MipmapMode::Nearest; break;
-            case 4: min_ = Filter::Nearest; mip_ = MipmapMode::Linear; break;
-            case 5: min_ = Filter::Linear; mip_ = MipmapMode::Nearest; break;
-            case 6: min_ = Filter::Linear; mip_ = MipmapMode::Linear; break;
+            case 3: min_ = Filter::Nearest; mip_ = MipmapMode::Nearest; mipExplicit_ = true; break;
+            case 4: min_ = Filter::Nearest; mip_ = MipmapMode::Linear; mipExplicit_ = true; break;
+            case 5: min_ = Filter::Linear; mip_ = MipmapMode::Nearest; mipExplicit_ = true; break;
+            case 6: min_ = Filter::Linear; mip_ = MipmapMode::Linear; mipExplicit_ = true; break;
             default: badValue(state, v, "a minify filter (0, 1, 3…6)");
         }
         return;
@@ -110,8 +110,8 @@ void SamplerStates::applyD3d(const RfxElement& state) {
         case 6: return filter(min_);              // D3DSAMP_MINFILTER
         case 7:                                   // D3DSAMP_MIPFILTER
             if (v == 0) mip_ = MipmapMode::None;
-            else if (v == 1) mip_ = MipmapMode::Nearest;
-            else if (v == 2) mip_ = MipmapMode::Linear;
+            else if (v == 1) mip_ = MipmapMode::Nearest, mipExplicit_ = true;
+            else if (v == 2) mip_ = MipmapMode::Linear, mipExplicit_ = true;
             else badValue(state, v, "a mip filter (0 none, 1 point, 2 linear)");
             return;
         case 8:  // D3DSAMP_MIPMAPLODBIAS, a float
@@ -134,6 +134,8 @@ void SamplerStates::finish(const RfxElement& textureObject, Sampler& sampler) co
     if (min_ && mag_ && *min_ != *mag_)
         textureObject.warning("minify and magnify filters differ; rmfx samplers have one filter: the magnify one is used");
     sampler.mipmap = hasMipmaps_ ? mip_ : MipmapMode::None;
+    if (!hasMipmaps_ && mipExplicit_ && mip_ != MipmapMode::None)
+        textureObject.warning("it asks for mipmap filtering of a render target without GENERATE_MIPMAPS; sampled without mipmaps");
 }
 
 }  // namespace rmfx::rfx

@@ -35,6 +35,7 @@ private:
     bool wrapRSet_ = false;
     std::optional<Filter> min_, mag_;
     MipmapMode mip_ = MipmapMode::None;
+    bool mipExplicit_ = false;  // set by a state, not a default
     glm::vec4 border_{0.0f};
     Filter default_ = Filter::Linear;
     bool hasMipmaps_ = true;

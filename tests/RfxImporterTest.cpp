@@ -217,7 +217,8 @@ TEST(RfxImporter, VariablesOfEveryTypeWithScopesSemanticsAndRanges) {
 }
 
 TEST(RfxImporter, TexturesKeepFileNamesAsWritten) {
-    Workspace ws = imported("gl_legacy.rfx");
+    Workspace ws = imported("gl_legacy.rfx", "Other");
+    EXPECT_EQ(ws.textures.size(), 2u);  // "Unused", which no pass samples, is left out
     const Texture* noise = ws.findTexture("Noise");
     ASSERT_NE(noise, nullptr);
     EXPECT_EQ(noise->kind, TextureKind::Texture2D);
@@ -226,6 +227,35 @@ TEST(RfxImporter, TexturesKeepFileNamesAsWritten) {
     ASSERT_NE(sky, nullptr);
     EXPECT_EQ(sky->kind, TextureKind::Cube);
     EXPECT_EQ(sky->files, std::vector<std::string>{"C:\\Program Files\\RenderMonkey\\Media\\Textures\\Snow.dds"});
+    EXPECT_EQ(ws.findTexture("Volume"), nullptr);
+    int line = lineOf(rfxDir() / "gl_legacy.rfx", "Rm3DTextureVariable NAME=\"Volume\"");
+    EXPECT_NE(allWarnings("gl_legacy.rfx", "Other").find("gl_legacy.rfx:" + std::to_string(line) +
+                                                         ": warning: <Rm3DTextureVariable NAME=\"Volume\">: rmfx has no 3D textures"),
+              std::string::npos);
+}
+
+TEST(RfxImporter, GlSamplerStatesOfTextureVariables) {
+    Workspace ws = imported("gl_legacy.rfx", "Other");
+    const Pass& only = ws.passes[0];
+    ASSERT_EQ(only.samplers.size(), 2u);
+    const Sampler& noise = only.samplers[0];  // no states: OpenGL's defaults
+    EXPECT_EQ(noise.texture, "Noise");
+    EXPECT_EQ(noise.wrapS, Wrap::Repeat);
+    EXPECT_EQ(noise.wrapT, Wrap::Repeat);
+    EXPECT_EQ(noise.filter, Filter::Linear);
+    EXPECT_EQ(noise.mipmap, MipmapMode::Linear);
+    const Sampler& sky = only.samplers[1];
+    EXPECT_EQ(sky.texture, "Sky");
+    EXPECT_EQ(sky.filter, Filter::Linear);      // magnify 1; minify 4 is NEAREST_MIPMAP_LINEAR
+    EXPECT_EQ(sky.mipmap, MipmapMode::Linear);  // from the minify filter
+    expectColor(sky.border, {0.0f, 0.0f, 1.0f, 1.0f});  // -16776961 = 0xFF0000FF
+    std::string warnings = allWarnings("gl_legacy.rfx", "Other");
+    int line = lineOf(rfxDir() / "gl_legacy.rfx", "<RmTextureObject NAME=\"Sky\"");
+    std::string at = "gl_legacy.rfx:" + std::to_string(line) + ": warning: <RmTextureObject NAME=\"Sky\">: ";
+    EXPECT_NE(warnings.find(at + "minify and magnify filters differ"), std::string::npos) << warnings;
+    EXPECT_NE(warnings.find(at + "its R wrap differs from S"), std::string::npos) << warnings;
+    // 1082130432 = 0x40800000 = 4.0f
+    EXPECT_NE(warnings.find("sampler state GL_TextureMaxAnisotropyEXT = 4 has no equivalent"), std::string::npos) << warnings;
 }
 
 TEST(RfxImporter, RenderableTexturesTakeEveryD3dFormatNumber) {
@@ -275,8 +305,9 @@ TEST(RfxImporter, EffectChosenByDottedPathOrName) {
         EXPECT_EQ(ws.passes[0].draw.file, "");  // no model reference
         // Shadowed: the workspace's 1.0 (the sibling effect's 0.0 is not visible here).
         EXPECT_FLOAT_EQ(variable(ws, "Shadowed").value.asFloat(), 1.0f);
-        EXPECT_EQ(ws.findTexture("Noise"), nullptr);
+        EXPECT_NE(ws.findTexture("Noise"), nullptr);
     }
+    EXPECT_EQ(imported("gl_legacy.rfx").findTexture("Noise"), nullptr);  // the sibling's declarations are not visible
     std::string errors = formatAll(importRfxFile(rfxDir() / "gl_legacy.rfx", {"Nope"}).diagnostics);
     EXPECT_NE(errors.find("error: --effect Nope: no effect 'Nope'; it has: 'Tests.Group.Legacy' (OpenGL, active), "
                           "'Tests.Group.Other' (OpenGL)"),
@@ -309,7 +340,7 @@ TEST(RfxImporter, GlesEffectFeedsNamedAttributes) {
 TEST(RfxImporter, Direct3dEffectWithHlslStatesAndAnAssemblyPass) {
     Workspace ws = imported("d3d_hlsl.rfx");
     EXPECT_EQ(ws.profile, GlProfile::Core);
-    ASSERT_EQ(ws.passes.size(), 3u);
+    ASSERT_EQ(ws.passes.size(), 2u);  // the disabled assembly pass is left out, with a warning
     const Pass& fill = ws.passes[0];
     ASSERT_EQ(fill.shaders.size(), 2u);
     EXPECT_EQ(fill.shaders[0].dialect, ShaderDialect::Hlsl);
@@ -350,8 +381,11 @@ TEST(RfxImporter, Direct3dEffectWithHlslStatesAndAnAssemblyPass) {
     EXPECT_EQ(s.filter, Filter::Nearest);
     EXPECT_EQ(s.mipmap, MipmapMode::None);
 
-    EXPECT_FALSE(ws.passes[2].enabled);
     std::string warnings = allWarnings("d3d_hlsl.rfx");
+    EXPECT_NE(warnings.find("d3d_hlsl.rfx:" + std::to_string(lineOf(rfxDir() / "d3d_hlsl.rfx", "NAME=\"Legacy\"")) +
+                            ": warning: <pass \"Legacy\">: disabled, and it could not run"),
+              std::string::npos)
+        << warnings;
     int line = lineOf(rfxDir() / "d3d_hlsl.rfx", "<RmShader NAME=");
     EXPECT_NE(warnings.find("d3d_hlsl.rfx:" + std::to_string(line) +
                             ": warning: <RmShader NAME=\"Pixel Shader\">: an assembly shader"),
@@ -387,9 +421,18 @@ TEST(RfxImporter, BadInputsAreErrorsWithFileAndLine) {
     EXPECT_NE(errorsOf(glEffect("<RmRenderableTexture NAME=\"rt\" WIDTH=\"0\" HEIGHT=\"4\" FORMAT=\"21\"/>\n"))
                   .find("t.rfx:4: error: <RmRenderableTexture NAME=\"rt\">: attribute WIDTH: 0 is outside 1…16384"),
               std::string::npos);
-    EXPECT_NE(errorsOf(pass("<RmShaderConstant NAME=\"Nope\"/>\n"))
-                  .find("t.rfx:6: error: <RmShaderConstant NAME=\"Nope\">: no variable 'Nope' is visible from the pass"),
+    // A constant naming no variable is an error when a shader uses the name, else a warning.
+    std::string usedFragment = "<RmGLShader NAME=\"F\" PIXEL_SHADER=\"TRUE\"><RmShaderCode><![CDATA[uniform float Nope; "
+                               "void main() { gl_FragColor = vec4(Nope); }]]></RmShaderCode></RmGLShader>\n";
+    EXPECT_NE(errorsOf(glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n<RmShaderConstant NAME=\"Nope\"/>\n" +
+                                usedFragment + "</RmGLPass>\n"))
+                  .find("t.rfx:5: error: <RmShaderConstant NAME=\"Nope\">: no variable 'Nope' is visible from the pass"),
               std::string::npos);
+    ParsedWorkspace unused = importRfxText(pass("<RmShaderConstant NAME=\"light0\"/>\n"), "t.rfx", ".");
+    EXPECT_TRUE(unused.workspace.has_value());
+    EXPECT_NE(formatAll(unused.diagnostics).find("t.rfx:6: warning: <RmShaderConstant NAME=\"light0\">: no variable 'light0' "
+                                                 "is visible from the pass (pass, effect, group or workspace); its shaders do not use it"),
+              std::string::npos) << formatAll(unused.diagnostics);
     EXPECT_NE(errorsOf(pass("<RmTextureObject NAME=\"s\"><RmTextureReference NAME=\"missing\"/></RmTextureObject>\n"))
                   .find("t.rfx:6: error: <RmTextureReference NAME=\"missing\">: no texture variable or renderable texture"),
               std::string::npos);
