@@ -28,10 +28,11 @@ std::optional<E> pick(const RfxElement& state, const char* what, long long value
     return std::nullopt;
 }
 
-// RenderMonkey's OpenGL enumerations.
-constexpr Choice<CompareFunc> glCompare[] = {
+// Compare functions: RenderMonkey's OpenGL enumeration numbers them as D3DCMPFUNC does.
+constexpr Choice<CompareFunc> compareFuncs[] = {
     {1, CompareFunc::Never},   {2, CompareFunc::Less},     {3, CompareFunc::Equal},        {4, CompareFunc::LessEqual},
     {5, CompareFunc::Greater}, {6, CompareFunc::NotEqual}, {7, CompareFunc::GreaterEqual}, {8, CompareFunc::Always}};
+// RenderMonkey's OpenGL enumerations.
 constexpr Choice<BlendFactor> glBlend[] = {
     {1, BlendFactor::Zero},           {2, BlendFactor::One},
     {3, BlendFactor::SrcColor},       {4, BlendFactor::OneMinusSrcColor},
@@ -46,9 +47,6 @@ constexpr Choice<bool> glFrontFace[] = {{1, true}, {2, false}};  // → frontCou
 constexpr Choice<bool> boolean[] = {{0, false}, {1, true}};
 
 // Direct3D 9 enumerations.
-constexpr Choice<CompareFunc> d3dCompare[] = {
-    {1, CompareFunc::Never},   {2, CompareFunc::Less},     {3, CompareFunc::Equal},        {4, CompareFunc::LessEqual},
-    {5, CompareFunc::Greater}, {6, CompareFunc::NotEqual}, {7, CompareFunc::GreaterEqual}, {8, CompareFunc::Always}};
 constexpr Choice<BlendFactor> d3dBlend[] = {
     {1, BlendFactor::Zero},       {2, BlendFactor::One},
     {3, BlendFactor::SrcColor},   {4, BlendFactor::OneMinusSrcColor},
@@ -119,7 +117,7 @@ void applyGlRenderState(const RfxElement& state, Pass& pass) {
     } else if (name == "GL_DepthEnable") {
         set(pass.depth.test, boolean, "boolean");
     } else if (name == "GL_DepthFunction") {
-        set(pass.depth.func, glCompare, "compare function");
+        set(pass.depth.func, compareFuncs, "compare function");
     } else if (name == "GL_WriteMaskDepth") {
         set(pass.depth.write, boolean, "boolean");
     } else if (name == "GL_BlendEnable") {
@@ -158,7 +156,7 @@ void applyD3dRenderState(const RfxElement& state, Pass& pass, bool& separateAlph
             set(pass.depth.test, boolean, "D3DZBUFFERTYPE rmfx supports (0 off, 1 on)");
             break;
         case 14: set(pass.depth.write, boolean, "boolean"); break;        // D3DRS_ZWRITEENABLE
-        case 23: set(pass.depth.func, d3dCompare, "D3DCMPFUNC"); break;   // D3DRS_ZFUNC
+        case 23: set(pass.depth.func, compareFuncs, "D3DCMPFUNC"); break;   // D3DRS_ZFUNC
         case 27: set(pass.blend.enabled, boolean, "boolean"); break;      // D3DRS_ALPHABLENDENABLE
         case 19:                                                          // D3DRS_SRCBLEND
             set(pass.blend.srcColor, d3dBlend, "D3DBLEND rmfx supports");

@@ -479,6 +479,7 @@ TEST(RfxImporter, LoaderDispatchesOnTheExtensionInAnyCase) {
     std::filesystem::path dir = test::binaryDir() / "rfx-loader-test";
     std::filesystem::create_directories(dir);
     std::filesystem::copy_file(rfxDir() / "gles.rfx", dir / "Upper.RFX", std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::copy_file(rfxDir() / "quad.obj", dir / "quad.obj", std::filesystem::copy_options::overwrite_existing);
     ValidationOptions structureOnly;
     structureOnly.compileShaders = false;
     LoadedWorkspace loaded = loadWorkspace(dir / "Upper.RFX", structureOnly);
