@@ -1,8 +1,6 @@
 #include "runtime/RfxPassReader.h"
 
 #include <algorithm>
-#include <cctype>
-#include <regex>
 #include <string_view>
 
 #include "runtime/IdentifierSearch.h"
@@ -248,18 +246,10 @@ private:
         for (const ShaderSource& s : out_.pass.shaders)
             if (s.stage == ShaderStage::Vertex) vertex = &s;
         for (VertexStream stream : streamMap_->streams) {
-            if (api_ == RfxApi::OpenGL && !(vertex && declaresAttribute(vertex->code, stream.attribute)))
+            if (api_ == RfxApi::OpenGL && !(vertex && declaresVertexInput(vertex->code, stream.attribute)))
                 stream.attribute.clear();
             out_.pass.streams.push_back(std::move(stream));
         }
-    }
-
-    static bool declaresAttribute(const std::string& code, const std::string& name) {
-        // Only identifiers go into the pattern: a name with regex syntax in it declares nothing.
-        if (name.empty() || !std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }))
-            return false;
-        std::regex declaration("\\b(attribute|in)\\s+(\\w+\\s+)*\\w+\\s+" + name + "\\s*;");
-        return std::regex_search(code, declaration);
     }
 
     const RfxElement& e_;

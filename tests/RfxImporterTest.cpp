@@ -469,6 +469,30 @@ TEST(RfxImporter, BadInputsAreErrorsWithFileAndLine) {
     EXPECT_NE(errorsOf(glEffect("")).find("t.rfx:3: error: <RmOpenGLEffect NAME=\"E\">: the effect has no passes"), std::string::npos);
 }
 
+// Every prefix of the test files, and copies with bytes overwritten, must give diagnostics or a
+// workspace, never a crash (the fuzz target covers this at scale; this keeps it in the unit run).
+TEST(RfxImporter, TruncatedAndDamagedFilesNeverCrash) {
+    for (const char* name : {"gl_legacy.rfx", "gles.rfx", "d3d_hlsl.rfx"}) {
+        std::string text = test::readText(rfxDir() / name);
+        ASSERT_FALSE(text.empty());
+        for (size_t cut = 0; cut < text.size(); cut += 53) {
+            ParsedWorkspace p = importRfxText(text.substr(0, cut), "t.rfx", ".");
+            EXPECT_TRUE(p.workspace.has_value() || hasErrors(p.diagnostics)) << name << " cut at " << cut;
+        }
+        unsigned seed = 12345;
+        for (int round = 0; round < 300; ++round) {
+            std::string damaged = text;
+            for (int k = 0; k < 4; ++k) {
+                seed = seed * 1103515245u + 12345u;
+                size_t at = (seed >> 8) % damaged.size();
+                damaged[at] = "<>\"=&;]x9-. \n"[(seed >> 4) % 14];
+            }
+            ParsedWorkspace p = importRfxText(damaged, "t.rfx", ".");
+            EXPECT_TRUE(p.workspace.has_value() || hasErrors(p.diagnostics)) << name << " round " << round;
+        }
+    }
+}
+
 TEST(RfxImporter, DoctypeWithItsInternalSubsetKeepsLineNumbers) {
     // gl_legacy.rfx opens with a DTD whose quoted '>' would end tinyxml2's DOCTYPE early.
     Workspace ws = imported("gl_legacy.rfx");
