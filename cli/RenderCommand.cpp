@@ -21,6 +21,7 @@ struct RenderArguments {
     RunSettings run;
     std::vector<std::pair<std::string, std::string>> overrides;
     std::optional<std::string> target;
+    WorkspaceLoadOptions load;  // --effect NAME (.rfx files)
     std::optional<DisplayTransform> transform;
     bool quiet = false;
     bool explain = false;
@@ -45,7 +46,7 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
             if (!media->empty()) return fail(*media);
         } else if (arg == "-o" || arg == "--output" || arg == "--size" || arg == "--frames" || arg == "--dt" ||
             arg == "--set" || arg == "--target" || arg == "--transform" || arg == "--effects" ||
-            arg == "--memory-budget" || arg == "--frame-budget") {
+            arg == "--memory-budget" || arg == "--frame-budget" || arg == "--effect") {
             auto value = next();
             if (!value) return fail(arg + " needs a value");
             if (arg == "-o" || arg == "--output") {
@@ -85,6 +86,8 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
                 if (*end || !std::isfinite(mib) || mib <= 0 || mib > 1048576)
                     return fail("--memory-budget: expected MiB of render-target memory (up to 1048576), got '" + *value + "'");
                 a.executor.memoryBudget = static_cast<std::size_t>(mib * 1048576.0);
+            } else if (arg == "--effect") {
+                a.load.effect = *value;
             } else if (arg == "--effects") {
                 if (value->find_first_not_of(", ") == std::string::npos && !value->empty())
                     return fail("--effects: expected names separated by commas, got '" + *value + "'");
@@ -116,9 +119,13 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
 int renderCommand(const std::vector<std::string>& args) {
     auto a = parseArguments(args);
     if (!a) return 1;
+    if (!a->workspace && !a->load.effect.empty()) {
+        std::cerr << "rmfx render: --effect chooses an effect of a RenderMonkey .rfx file; name the file\n";
+        return 1;
+    }
     ValidationOptions options;
     options.media = a->media;
-    LoadedWorkspace loaded = a->workspace ? loadWorkspace(*a->workspace, options) : loadDefaultWorkspace(options);
+    LoadedWorkspace loaded = a->workspace ? loadWorkspace(*a->workspace, options, a->load) : loadDefaultWorkspace(options);
     if (!loaded.workspace) {
         std::cerr << formatAll(loaded.diagnostics);
         return 1;

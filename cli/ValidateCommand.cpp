@@ -16,12 +16,21 @@ int validateCommand(const std::vector<std::string>& args) {
         return 1;
     }
     ValidationOptions options;
+    WorkspaceLoadOptions load;
     std::vector<std::string> paths;
     for (size_t i = 0; i < args.size(); ++i) {
         if (auto media = takeMediaArgument(args, i, options.media)) {
             if (media->empty()) continue;
             std::cerr << "rmfx validate: " << *media << "\n";
             return 1;
+        }
+        if (args[i] == "--effect") {
+            if (i + 1 >= args.size()) {
+                std::cerr << "rmfx validate: --effect needs a value\n";
+                return 1;
+            }
+            load.effect = args[++i];
+            continue;
         }
         if (!args[i].empty() && args[i][0] == '-') {
             std::cerr << "rmfx validate: unknown option '" << args[i] << "'\n";
@@ -35,7 +44,7 @@ int validateCommand(const std::vector<std::string>& args) {
     }
     int status = 0;
     for (const std::string& path : paths) {
-        LoadedWorkspace loaded = loadWorkspace(path, options);
+        LoadedWorkspace loaded = loadWorkspace(path, options, load);
         std::cerr << formatAll(loaded.diagnostics);
         if (!loaded.workspace) {
             status = 1;

@@ -201,7 +201,7 @@ int runEditor(const EditorOptions& options) {
     // and its size sets the window's.
     ValidationOptions load;
     load.media = options.media;
-    LoadedWorkspace loaded = loadWorkspace(options.workspace, load);
+    LoadedWorkspace loaded = loadWorkspace(options.workspace, load, {options.effect});
     Workspace* checked = loaded.workspace ? &*loaded.workspace : nullptr;
     if (checked) {
         Diagnostics bad = applyOverrides(*checked, options.overrides);
@@ -225,7 +225,8 @@ int runEditor(const EditorOptions& options) {
     }
     Diagnostics diagnostics;
     // The size asked for, else 0: the workspace's, which a reload may change.
-    auto session = LiveWorkspace::open(options.workspace, options.size, options.overrides, diagnostics, options.media);
+    auto session = LiveWorkspace::open(options.workspace, options.size, options.overrides, diagnostics, options.media,
+                                       {options.effect});
     if (!session) {
         std::cerr << formatAll(diagnostics);
         return 2;

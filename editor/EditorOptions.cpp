@@ -20,7 +20,7 @@ std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& 
         if (auto media = takeMediaArgument(args, i, o.media)) {
             if (!media->empty()) return fail(*media);
         } else if (arg == "--size" || arg == "--set" || arg == "--frames" || arg == "--screenshot" || arg == "--output-screenshot" ||
-            arg == "--view" || arg == "--dt") {
+            arg == "--view" || arg == "--dt" || arg == "--effect") {
             if (i + 1 >= args.size()) return fail(arg + " needs a value");
             const std::string& value = args[++i];
             if (arg == "--size") {
@@ -47,6 +47,8 @@ std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& 
                     return fail("--dt: expected seconds >= 0, got '" + value + "'");
                 o.deltaTime = static_cast<float>(dt);
                 dtGiven = true;
+            } else if (arg == "--effect") {
+                o.effect = value;
             } else if (arg == "--view") {
                 o.viewTargets.push_back(value);
             } else if (arg == "--screenshot") {

@@ -15,6 +15,7 @@ namespace rmfx::editor {
 
 struct EditorOptions {
     std::filesystem::path workspace;
+    std::string effect;  // --effect NAME: the effect of a RenderMonkey .rfx file
     glm::ivec2 size{0};  // 0: the workspace's size
     std::vector<std::pair<std::string, std::string>> overrides;  // --set NAME=VALUE, as rmfx render
     std::vector<std::string> viewTargets;  // --view TARGET: viewer windows open from the start

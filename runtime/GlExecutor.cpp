@@ -605,6 +605,8 @@ struct GlExecutor::Impl {
             case UniformType::Vec2: glProgramUniform2fv(program, location, 1, data); break;
             case UniformType::Vec3: glProgramUniform3fv(program, location, 1, data); break;
             case UniformType::Vec4: glProgramUniform4fv(program, location, 1, data); break;
+            case UniformType::Mat2: glProgramUniformMatrix2fv(program, location, 1, GL_FALSE, data); break;
+            case UniformType::Mat3: glProgramUniformMatrix3fv(program, location, 1, GL_FALSE, data); break;
             case UniformType::Mat4: glProgramUniformMatrix4fv(program, location, 1, GL_FALSE, data); break;
             default: break;
         }

@@ -52,7 +52,7 @@ struct Texture {
     SourceLocation where;
 };
 
-enum class TargetFormat { RGBA8, RGBA16F, RGBA32F, R16F, R32F, RG16F, RG32F, RGBA16, R11G11B10F, RGB10A2, R8, RG8 };
+enum class TargetFormat { RGBA8, RGBA16F, RGBA32F, R16F, R32F, RG16F, RG32F, RGBA16, R11G11B10F, RGB10A2, R8, RG8, RG16 };
 
 struct TargetSize {
     bool relative = true;

@@ -1,6 +1,7 @@
 #include "runtime/WorkspaceLoader.h"
 
 #include "runtime/DefaultWorkspace.h"
+#include "runtime/RfxImporter.h"
 #include "runtime/WorkspaceParser.h"
 
 namespace rmfx {
@@ -20,7 +21,16 @@ static LoadedWorkspace validated(ParsedWorkspace parsed, const ValidationOptions
     return out;
 }
 
-LoadedWorkspace loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options) {
+LoadedWorkspace loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options,
+                              const WorkspaceLoadOptions& load) {
+    if (isRfxPath(path)) return validated(importRfxFile(path, {load.effect}), options);
+    if (!load.effect.empty()) {
+        LoadedWorkspace out;
+        out.diagnostics.push_back({Diagnostic::Severity::Error, {path.string(), 0}, "--effect " + load.effect,
+                                   "--effect chooses an effect of a RenderMonkey .rfx file; this is an rmfx workspace "
+                                   "(use --effects to choose its <effect> groups)"});
+        return out;
+    }
     return validated(parseWorkspaceFile(path), options);
 }
 

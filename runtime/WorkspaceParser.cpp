@@ -139,7 +139,7 @@ private:
             return std::nullopt;
         }
         v.value = *value;
-        bool numeric = type != ValueType::Bool && type != ValueType::Mat4;
+        bool numeric = type != ValueType::Bool && type != ValueType::Mat2 && type != ValueType::Mat3 && type != ValueType::Mat4;
         if (numeric) {
             v.min = r.number("min");
             v.max = r.number("max");

@@ -13,6 +13,15 @@ std::string rejection(const std::vector<std::string>& args) {
 
 }  // namespace
 
+TEST(EditorOptions, EffectOfARenderMonkeyFile) {
+    std::string error;
+    auto o = parseEditorOptions({"--effect", "Group.Effect", "fx.rfx"}, &error);
+    ASSERT_TRUE(o) << error;
+    EXPECT_EQ(o->workspace, "fx.rfx");
+    EXPECT_EQ(o->effect, "Group.Effect");
+    EXPECT_EQ(rejection({"fx.rfx", "--effect"}), "--effect needs a value");
+}
+
 TEST(EditorOptions, ParsesEveryOption) {
     std::string error;
     auto o = parseEditorOptions({"fx.xml", "--size", "256x128", "--set", "Exposure_Level=2", "--set", "Tint=1 0 0",
