@@ -34,6 +34,26 @@ const char* usageName(VertexUsage u) {
     return "?";
 }
 
+std::string statesText(const Pass& p) {
+    static const char* compare[] = {"never", "less", "equal", "less-equal", "greater", "not-equal", "greater-equal", "always"};
+    static const char* factor[] = {"zero", "one", "src-color", "one-minus-src-color", "dst-color", "one-minus-dst-color",
+                                   "src-alpha", "one-minus-src-alpha", "dst-alpha", "one-minus-dst-alpha",
+                                   "constant-color", "one-minus-constant-color"};
+    static const char* op[] = {"add", "subtract", "reverse-subtract", "min", "max"};
+    static const char* cull[] = {"none", "back", "front"};
+    std::ostringstream out;
+    out << "depth test " << (p.depth.test ? std::string("on (") + compare[static_cast<int>(p.depth.func)] + ")" : "off")
+        << ", write " << (p.depth.write ? "on" : "off") << "; blend ";
+    if (p.blend.enabled)
+        out << factor[static_cast<int>(p.blend.srcColor)] << " " << op[static_cast<int>(p.blend.colorOp)] << " "
+            << factor[static_cast<int>(p.blend.dstColor)] << " (alpha " << factor[static_cast<int>(p.blend.srcAlpha)] << " "
+            << op[static_cast<int>(p.blend.alphaOp)] << " " << factor[static_cast<int>(p.blend.dstAlpha)] << ")";
+    else
+        out << "off";
+    out << "; cull " << cull[static_cast<int>(p.raster.cull)] << (p.raster.frontCounterClockwise ? "" : ", front clockwise");
+    return out.str();
+}
+
 std::string sizeText(const TargetSize& s) {
     std::ostringstream out;
     if (s.relative) out << s.scaleX << "x" << s.scaleY << " of the viewport";
@@ -70,6 +90,7 @@ void describePass(std::ostream& out, const Workspace& ws, const Pass& pass, cons
         if (s.dialect == ShaderDialect::Hlsl) out << ", entry " << s.entryPoint << ", target " << s.profile;
         out << ", code at line " << s.codeLine << (borrowed ? " (the program of the pass before)" : "") << "\n";
     }
+    out << "      states: " << statesText(pass) << "\n";
     out << "      model: " << (pass.draw.file.empty() ? "none (rmfx's full-screen triangle)" : pass.draw.file) << "\n";
     if (!pass.streams.empty()) {
         out << "      streams:";
