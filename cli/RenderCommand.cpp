@@ -9,6 +9,7 @@
 #include "runtime/GlContext.h"
 #include "runtime/HeadlessRun.h"
 #include "runtime/ImageIO.h"
+#include "runtime/MediaArguments.h"
 #include "runtime/WorkspaceLoader.h"
 
 namespace rmfx::cli {
@@ -25,6 +26,7 @@ struct RenderArguments {
     bool quiet = false;
     bool explain = false;
     ExecutorOptions executor;
+    MediaOptions media;
 };
 
 std::optional<RenderArguments> parseArguments(const std::vector<std::string>& args) {
@@ -40,7 +42,9 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
             if (i + 1 >= args.size()) return std::nullopt;
             return args[++i];
         };
-        if (arg == "-o" || arg == "--output" || arg == "--size" || arg == "--frames" || arg == "--dt" ||
+        if (auto media = takeMediaArgument(args, i, a.media)) {
+            if (!media->empty()) return fail(*media);
+        } else if (arg == "-o" || arg == "--output" || arg == "--size" || arg == "--frames" || arg == "--dt" ||
             arg == "--set" || arg == "--target" || arg == "--transform" || arg == "--effects" ||
             arg == "--memory-budget" || arg == "--frame-budget" || arg == "--effect") {
             auto value = next();
@@ -119,7 +123,9 @@ int renderCommand(const std::vector<std::string>& args) {
         std::cerr << "rmfx render: --effect chooses an effect of a RenderMonkey .rfx file; name the file\n";
         return 1;
     }
-    LoadedWorkspace loaded = a->workspace ? loadWorkspace(*a->workspace, {}, a->load) : loadDefaultWorkspace();
+    ValidationOptions options;
+    options.media = a->media;
+    LoadedWorkspace loaded = a->workspace ? loadWorkspace(*a->workspace, options, a->load) : loadDefaultWorkspace(options);
     if (!loaded.workspace) {
         std::cerr << formatAll(loaded.diagnostics);
         return 1;
@@ -139,7 +145,7 @@ int renderCommand(const std::vector<std::string>& args) {
     std::string output = a->output.value_or(ws.name + ".png");
     a->executor.outputs = {targetName};
 
-    auto context = GlContext::createHeadless();
+    auto context = GlContext::createHeadless(ws.profile);
     if (!context) {
         std::cerr << "rmfx render: " << context.error() << "\n";
         return 2;

@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "cli/Commands.h"
+#include "runtime/MediaArguments.h"
 #include "runtime/WorkspaceLoader.h"
 
 namespace rmfx::cli {
@@ -14,21 +15,28 @@ int validateCommand(const std::vector<std::string>& args) {
         std::cerr << "rmfx validate: name one or more workspace files\n";
         return 1;
     }
+    ValidationOptions options;
     WorkspaceLoadOptions load;
     std::vector<std::string> paths;
     for (size_t i = 0; i < args.size(); ++i) {
+        if (auto media = takeMediaArgument(args, i, options.media)) {
+            if (media->empty()) continue;
+            std::cerr << "rmfx validate: " << *media << "\n";
+            return 1;
+        }
         if (args[i] == "--effect") {
             if (i + 1 >= args.size()) {
                 std::cerr << "rmfx validate: --effect needs a value\n";
                 return 1;
             }
             load.effect = args[++i];
-        } else if (!args[i].empty() && args[i][0] == '-') {
+            continue;
+        }
+        if (!args[i].empty() && args[i][0] == '-') {
             std::cerr << "rmfx validate: unknown option '" << args[i] << "'\n";
             return 1;
-        } else {
-            paths.push_back(args[i]);
         }
+        paths.push_back(args[i]);
     }
     if (paths.empty()) {
         std::cerr << "rmfx validate: name one or more workspace files\n";
@@ -36,7 +44,7 @@ int validateCommand(const std::vector<std::string>& args) {
     }
     int status = 0;
     for (const std::string& path : paths) {
-        LoadedWorkspace loaded = loadWorkspace(path, {}, load);
+        LoadedWorkspace loaded = loadWorkspace(path, options, load);
         std::cerr << formatAll(loaded.diagnostics);
         if (!loaded.workspace) {
             status = 1;

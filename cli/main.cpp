@@ -94,6 +94,15 @@ bench options:
                          rasterising), else gpu. CSV and JSON always hold both
   -q, --quiet            print only errors, no progress line per variant
 
+file options (render, validate, edit, bench, replay; docs/media.md):
+  --media DIR            also look for textures, models and shader files in DIR (repeatable, in
+                         order), by their trailing path components, then by file name; names are
+                         matched ignoring case and "\" separates, as in RenderMonkey files
+  --sandbox              refuse file references and #include roots leading outside the workspace
+                         folder and the --media folders ("..", absolute paths, symbolic links)
+  --no-sandbox           no sandbox: the default, except for replay, which sandboxes unless told
+                         so here or by its manifest (<replay sandbox="false">)
+
 exit status: render, validate, edit: 0 success, 1 invalid workspace or arguments, 2 rendering or
 GL failure (edit: also no window, or an rmfx built without the editor). replay: 0 every case
 passed, 1 a case failed (comparison, workspace or rendering error) or the manifest or arguments

@@ -9,6 +9,8 @@
 
 #include <glm/vec2.hpp>
 
+#include "runtime/MediaResolver.h"
+
 namespace rmfx::editor {
 
 struct EditorOptions {
@@ -22,6 +24,7 @@ struct EditorOptions {
     float deltaTime = 1.0f / 60.0f;  // --dt: the step of those frames
     std::optional<std::filesystem::path> screenshot;        // the whole window, PNG
     std::optional<std::filesystem::path> outputScreenshot;  // the effect's output, as rmfx render writes it
+    MediaOptions media{};  // --media DIR, --sandbox (runtime/MediaArguments.h)
 };
 
 // On an error returns nullopt and sets *error to a sentence naming the option.

@@ -32,10 +32,12 @@ LiveWorkspace::~LiveWorkspace() {
 
 std::unique_ptr<LiveWorkspace> LiveWorkspace::open(const std::filesystem::path& file, glm::ivec2 viewport,
                                                    const std::vector<std::pair<std::string, std::string>>& overrides,
-                                                   Diagnostics& diagnostics, const WorkspaceLoadOptions& load) {
+                                                   Diagnostics& diagnostics, const MediaOptions& media,
+                                                   const WorkspaceLoadOptions& load) {
     std::unique_ptr<LiveWorkspace> live(new LiveWorkspace);
     live->loadOptions_ = load;
     live->file_ = file;
+    live->media_ = media;
     live->requestedViewport_ = viewport;
     live->overrides_ = overrides;
     Diagnostics found;
@@ -56,6 +58,7 @@ std::optional<LiveWorkspace::Build> LiveWorkspace::load(Diagnostics& diagnostics
     // just as glslang's are: that halves the time a reload of the workspace file takes.
     ValidationOptions validation;
     validation.compileShaders = !executor_;
+    validation.media = media_;
     LoadedWorkspace loaded = loadWorkspace(file_, validation, loadOptions_);
     append(diagnostics, loaded.diagnostics);
     if (!loaded.workspace) {

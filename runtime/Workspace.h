@@ -237,6 +237,7 @@ struct Workspace {
     std::filesystem::path path;  // the file it came from ("<built-in>" for embedded text)
     std::filesystem::path folder;  // shader, texture and model paths are relative to it
     std::filesystem::path includeRoot;  // #include may not leave it; empty: `folder` (see includeFolder)
+    SourceLocation includeRootWhere;    // where includeRoot was declared
     std::string name;
     std::string description;
     int width = 512, height = 512;  // default viewport size

@@ -10,6 +10,11 @@ static LoadedWorkspace validated(ParsedWorkspace parsed, const ValidationOptions
     LoadedWorkspace out;
     out.diagnostics = std::move(parsed.diagnostics);
     if (!parsed.workspace) return out;
+    // References are resolved once, here: what validation, the executor and hot reload open.
+    // Until they all resolve nothing reads them (a shader outside the sandbox is not even compiled).
+    Diagnostics unresolved = resolveWorkspaceMedia(*parsed.workspace, options.media);
+    out.diagnostics.insert(out.diagnostics.end(), unresolved.begin(), unresolved.end());
+    if (hasErrors(unresolved)) return out;
     Diagnostics found = validateWorkspace(*parsed.workspace, options);
     out.diagnostics.insert(out.diagnostics.end(), found.begin(), found.end());
     if (!hasErrors(out.diagnostics)) out.workspace = std::move(parsed.workspace);
