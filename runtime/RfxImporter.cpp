@@ -96,7 +96,11 @@ ParsedWorkspace importEffect(const RfxEffectEntry& effect, const std::filesystem
     for (ReadPass& p : passes) {
         if (p.pass.shaders.empty() && p.runnable) {
             if (previous) {
+                // The program comes with what it reads: samplers and streams, unless the pass
+                // names its own.
                 p.pass.shaders = previous->shaders;
+                if (p.pass.samplers.empty()) p.pass.samplers = previous->samplers;
+                if (p.pass.streams.empty()) p.pass.streams = previous->streams;
             } else {
                 diagnostics.push_back({Diagnostic::Severity::Error, p.pass.where, "<pass \"" + p.pass.name + "\">",
                                        "it has no shaders and no pass runs before it to lend its program"});

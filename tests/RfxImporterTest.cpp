@@ -140,6 +140,10 @@ TEST(RfxImporter, ShadersKeepTheirRfxLinesAndDialect) {
     ASSERT_EQ(ws.passes[2].shaders.size(), 2u);
     EXPECT_EQ(ws.passes[2].shaders[1].code, show.shaders[1].code);
     EXPECT_EQ(ws.passes[2].shaders[1].codeLine, show.shaders[1].codeLine);
+    // ...with the samplers and streams that program reads, as it names none of its own.
+    ASSERT_EQ(ws.passes[2].samplers.size(), 1u);
+    EXPECT_EQ(ws.passes[2].samplers[0].target, "Scene");
+    EXPECT_EQ(ws.passes[2].streams.size(), show.streams.size());
 }
 
 TEST(RfxImporter, SamplerStatesAndStreams) {
