@@ -3,6 +3,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "runtime/HlslTranslator.h"
+
 namespace rmfx {
 
 const char* builtinFullscreenVertexShader() {
@@ -85,9 +87,14 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
             input.folder = file.parent_path();
         }
         size_t before = diagnostics.size();
+        auto failed = [&] { return hasErrors(Diagnostics(diagnostics.begin() + static_cast<long>(before), diagnostics.end())); };
         PassStage stage{s.stage, preprocessShader(input, diagnostics), s.where, false};
+        if (s.dialect == ShaderDialect::Hlsl && !failed()) {
+            HlslStage hlsl{s.stage, s.entryPoint, s.profile};
+            if (auto glsl = translateHlsl(stage.shader, hlsl, s.where, passLabel(pass), diagnostics)) stage.shader = std::move(*glsl);
+        }
         if (!s.file.empty()) stage.shader.files.insert(stage.shader.files.begin(), ws.folder / s.file);
-        if (hasErrors(Diagnostics(diagnostics.begin() + static_cast<long>(before), diagnostics.end()))) ok = false;
+        if (failed()) ok = false;
         program.stages.push_back(std::move(stage));
     };
     if (vertex) {
