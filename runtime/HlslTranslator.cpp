@@ -133,8 +133,9 @@ void renameInterface(CrossCompiler& cross, ShaderStage stage) {
 }
 
 // Names the uniform block glslang made of the HLSL globals so flattenGlobals can find it, and
-// drops what plain uniforms cannot have: bindings, and the row_major layout (see the header on
-// matrices). Returns the members' names.
+// drops the bindings plain uniforms cannot have. Returns the members' names. (The block's matrices
+// carry RowMajor; SPIRV-Cross reads plain uniforms the same with or without it, and
+// HlslGLTest checks the resulting convention, see the header.)
 std::vector<std::string> prepareGlobals(CrossCompiler& cross) {
     spvc_compiler c = cross.get();
     std::vector<std::string> members;
@@ -146,8 +147,6 @@ std::vector<std::string> prepareGlobals(CrossCompiler& cross) {
         spvc_compiler_set_name(c, r.base_type_id, kGlobalBlockType);
         spvc_type type = spvc_compiler_get_type_handle(c, r.base_type_id);
         for (unsigned i = 0; i < spvc_type_get_num_member_types(type); ++i) {
-            spvc_compiler_unset_member_decoration(c, r.base_type_id, i, SpvDecorationRowMajor);
-            spvc_compiler_unset_member_decoration(c, r.base_type_id, i, SpvDecorationColMajor);
             members.push_back(spvc_compiler_get_member_name(c, r.base_type_id, i));
         }
     }
