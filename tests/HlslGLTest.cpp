@@ -59,6 +59,14 @@ std::string vertexShaderXml(const std::string& code) {
 
 glm::dvec4 pixel(const RefImage& image, int x, int y) { return image.at(x, y); }
 
+// Renders one frame of hlslWorkspace(xml) and reads target "out" back; an empty image (and a test
+// failure) when it does not run.
+RefImage renderOut(const std::string& xml, const std::filesystem::path& folder = ".") {
+    GlRun run = runWorkspace(hlslWorkspace(xml, folder), RunSettings());
+    if (!run.exec) return {};
+    return readRef(run, "out");
+}
+
 void expectNear(glm::dvec4 got, glm::dvec4 want, double tolerance, const std::string& what) {
     for (int c = 0; c < 4; ++c) EXPECT_NEAR(got[c], want[c], tolerance) << what << " channel " << c;
 }
@@ -89,9 +97,7 @@ float4 main(float2 uv : TEXCOORD0) : COLOR {
 ]]></shader>
   </pass>
 </workspace>)";
-    GlRun run = runWorkspace(hlslWorkspace(xml), RunSettings());
-    ASSERT_TRUE(run.exec);
-    RefImage out = readRef(run, "out");
+    RefImage out = renderOut(xml);
     ASSERT_EQ(out.width, 4);
 
     // rmfx's matrix: the 16 numbers are its columns.
@@ -133,9 +139,7 @@ float4 main(float2 uv : TEXCOORD0) : COLOR { return tex2D(baseMap, uv) * gain; }
 ]]></shader>
   </pass>
 </workspace>)";
-    GlRun run = runWorkspace(hlslWorkspace(xml, dir.path()), RunSettings());
-    ASSERT_TRUE(run.exec);
-    RefImage out = readRef(run, "out");
+    RefImage out = renderOut(xml, dir.path());
     ASSERT_EQ(out.width, 4);
     for (int y = 0; y < 4; ++y)
         for (int x = 0; x < 4; ++x)
@@ -157,9 +161,7 @@ float4 main(float4 position : SV_Position) : COLOR { return float4(position.z, 0
 ]]></shader>
   </pass>
 </workspace>)";
-        GlRun run = runWorkspace(hlslWorkspace(xml), RunSettings());
-        ASSERT_TRUE(run.exec);
-        RefImage out = readRef(run, "out");
+        RefImage out = renderOut(xml);
         ASSERT_EQ(out.width, 2);
         // Direct3D: window depth = z/w = 0.25 (OpenGL without the mapping: (0.25 + 1) / 2 = 0.625).
         EXPECT_NEAR(pixel(out, 1, 1).x, 0.25, 1e-6) << "w = " << w;
