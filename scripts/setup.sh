@@ -9,6 +9,7 @@ packages=(
   libegl-dev libepoxy-dev libegl-mesa0 libgl1-mesa-dri
   libimgui-dev libassimp-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  clang libclang-rt-14-dev
   xvfb xauth
 )
 
