@@ -12,7 +12,7 @@ namespace rmfx::fuzz {
 namespace {
 
 constexpr std::string_view kMarker = "//@@ ";
-constexpr size_t kMaxParts = 16;
+constexpr size_t kMaxParts = 64;
 
 std::filesystem::path* scratch = nullptr;
 

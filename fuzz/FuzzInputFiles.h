@@ -27,7 +27,7 @@ struct FuzzInput {
     std::vector<FuzzPart> parts;
 };
 
-// Splits at lines starting with "//@@ " (at most 16 parts; later markers stay in the text).
+// Splits at lines starting with "//@@ " (at most 64 parts; later markers stay in the text).
 FuzzInput splitFuzzInput(std::string_view bytes);
 
 // An empty folder under the temp folder, the same for the whole process (removed at exit).

@@ -3,6 +3,7 @@
 // so compiler messages ("0:17: …") can be mapped back to the user's file and line.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,10 @@ struct ShaderInput {
     std::vector<std::string> declarations;  // lines inserted after the defines ("uniform bool x;")
     const std::vector<CodeSnippet>* snippets = nullptr;  // found by name before any file
 };
+
+// The text of a shader file; nullopt when it is no regular file (a folder, or a device or FIFO
+// such as /dev/zero, whose reading would never end) or cannot be read.
+std::optional<std::string> readShaderFile(const std::filesystem::path& file);
 
 // Includes resolve to a snippet of that name, then relative to the including file, then to `root`. `#pragma once` is honoured.
 // Without a #version line, "#version 450 core" is put first.
