@@ -45,8 +45,11 @@ TEST(FuzzRegressionTest, EveryFindingRunsCleanThroughItsTarget) {
 TEST(FuzzRegressionTest, EveryRegressionFolderNamesATarget) {
     std::set<std::string> names;
     for (const FuzzEntry& entry : fuzzEntries()) names.insert(entry.name);
-    for (const auto& folder : fs::directory_iterator(regressions()))
-        if (folder.is_directory()) EXPECT_TRUE(names.count(folder.path().filename().string())) << folder.path();
+    for (const auto& folder : fs::directory_iterator(regressions())) {
+        if (folder.is_directory()) {
+            EXPECT_TRUE(names.count(folder.path().filename().string())) << folder.path();
+        }
+    }
 }
 
 TEST(FuzzInputFilesTest, SplitsAtMarkerLinesAndWritesOnlyPlainRelativeNames) {
