@@ -138,8 +138,8 @@ for t in $targets; do
     -artifact_prefix="$artifacts" "$corpus" >"$log" 2>&1 || status=$?
   outcome=$(outcome_of "$status" "$log")
   input=$(sed -n 's/.*Test unit written to \(.*\)$/\1/p' "$log" | tail -1)
-  coverage=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | cut -d' ' -f2)
-  features=$(grep -o 'ft: [0-9]*' "$log" | tail -1 | cut -d' ' -f2)
+  coverage=$({ grep -o 'cov: [0-9]*' "$log" || true; } | tail -1 | cut -d' ' -f2)
+  features=$({ grep -o 'ft: [0-9]*' "$log" || true; } | tail -1 | cut -d' ' -f2)
   row=("$t" "$seconds" "$(final_stat number_of_executed_units "$log")" "$(final_stat average_exec_per_sec "$log")"
        "$(ls "$corpus" | wc -l)" "$(final_stat new_units_added "$log")" "${coverage:-}" "${features:-}"
        "$(final_stat peak_rss_mb "$log")" "$outcome" "${input:-}")
