@@ -303,7 +303,9 @@ Result<std::unique_ptr<HandWrittenShader5>> HandWrittenShader5::create(const Wor
     auto program = [&](const char* vertexFile, const char* builtinVertex, const char* fragmentFile) -> Result<GLuint> {
         return s->program(ws, vertexFile, builtinVertex, fragmentFile);
     };
-    const char* fullscreenVertex = builtinFullscreenVertexShader();
+    const std::string fullscreenVertexText = builtinFullscreenVertexShader();
+    const std::string modelVertexText = builtinModelVertexShader();
+    const char* fullscreenVertex = fullscreenVertexText.c_str();
     std::vector<Result<bool>> added;
     // One program per pass, as the executor compiles them: the driver sees the same objects.
     auto check = [&](Result<GLuint> p) -> GLuint {
@@ -319,7 +321,7 @@ Result<std::unique_ptr<HandWrittenShader5>> HandWrittenShader5::create(const Wor
                            {inverseViewProjection, exposure, cameraPosition, environmentFormat},
                            {{"Environment", skyAlpha64, linear}, {"Environment_Float", skyFloat, linear}}));
     added.push_back(s->add("teapot", sceneFb, viewport,
-                           check(program(nullptr, builtinModelVertexShader(), "glsl/teapot.frag")), *s->teapot,
+                           check(program(nullptr, modelVertexText.c_str(), "glsl/teapot.frag")), *s->teapot,
                            depthTested,
                            {{"rm_Model", K::Mat4, &v.model}, {"rm_ViewProjection", K::Mat4, &v.viewProjection},
                             {"rm_NormalMatrix", K::Mat3, &v.normalMatrix}, exposure, cameraPosition, environmentFormat},

@@ -23,6 +23,7 @@
 #include "runtime/GlContext.h"
 #include "runtime/HeadlessRun.h"
 #include "runtime/ImageIO.h"
+#include "runtime/MediaArguments.h"
 #include "runtime/WorkspaceLoader.h"
 #include "runtime/XmlElementReader.h"
 
@@ -43,6 +44,7 @@ struct BenchArguments {
     fs::path out = "bench-out";
     std::optional<TimeSource> ranked;  // nullopt: auto
     bool quiet = false;
+    ValidationOptions load;  // --media, --sandbox
 };
 
 std::optional<BenchArguments> parseArguments(const std::vector<std::string>& args) {
@@ -61,7 +63,9 @@ std::optional<BenchArguments> parseArguments(const std::vector<std::string>& arg
     };
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];
-        if (arg == "--input" || arg == "--size" || arg == "--frames" || arg == "--warmup" || arg == "--stage" ||
+        if (auto media = takeMediaArgument(args, i, a.load.media)) {
+            if (!media->empty()) return fail(*media);
+        } else if (arg == "--input" || arg == "--size" || arg == "--frames" || arg == "--warmup" || arg == "--stage" ||
             arg == "--variant" || arg == "--out" || arg == "--time") {
             if (i + 1 >= args.size() || args[i + 1].empty()) return fail(arg + " needs a value");
             const std::string& value = args[++i];
@@ -120,9 +124,10 @@ std::string uniqueName(std::string name, const std::vector<BenchInput>& inputs) 
 }
 
 // Renders a scene workspace's target at `size` into DIR/inputs/NAME.exr.
-Result<fs::path> renderScene(const SceneSpec& scene, glm::ivec2 size, const fs::path& folder) {
+Result<fs::path> renderScene(const SceneSpec& scene, glm::ivec2 size, const fs::path& folder,
+                             const ValidationOptions& load) {
     std::string what = "scene '" + scene.name + "': ";
-    LoadedWorkspace loaded = loadWorkspace(scene.workspace);
+    LoadedWorkspace loaded = loadWorkspace(scene.workspace, load);
     if (!loaded.workspace) return Error{what + formatAll(loaded.diagnostics)};
     if (!loaded.workspace->canReadTarget(scene.target))
         return Error{what + scene.workspace.string() + " has no target '" + scene.target + "' (" +
@@ -160,7 +165,7 @@ std::optional<std::vector<BenchInput>> gatherInputs(const BenchArguments& a, con
                 files.emplace_back(scene.name, scene.file);
                 continue;
             }
-            auto rendered = renderScene(scene, a.size, folder);
+            auto rendered = renderScene(scene, a.size, folder, a.load);
             if (!rendered) {
                 std::cerr << "rmfx bench: " << rendered.error() << "\n";
                 return std::nullopt;
@@ -215,7 +220,7 @@ std::optional<std::vector<StagePlan>> planStages(const BenchArguments& a, const 
             if (wanted) plan.variants.push_back(std::move(v));
         }
         if (plan.variants.empty()) continue;
-        LoadedWorkspace loaded = loadWorkspace(stage.workspace);
+        LoadedWorkspace loaded = loadWorkspace(stage.workspace, a.load);
         if (!loaded.workspace) {
             std::cerr << "rmfx bench: stage " << stage.name << " (" << stage.where.file << ":" << stage.where.line
                       << "):\n" << formatAll(loaded.diagnostics);
@@ -284,7 +289,11 @@ int benchCommand(const std::vector<std::string>& args) {
             return 1;
         }
 
-    auto context = GlContext::createHeadless();
+    // One context for every stage, so that their timings compare: compatibility when any asks for it.
+    GlProfile profile = GlProfile::Core;
+    for (const auto& plan : *plans)
+        if (plan.workspace.profile == GlProfile::Compatibility) profile = GlProfile::Compatibility;
+    auto context = GlContext::createHeadless(profile);
     if (!context) {
         std::cerr << "rmfx bench: " << context.error() << "\n";
         return 2;

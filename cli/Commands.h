@@ -11,5 +11,6 @@ int validateCommand(const std::vector<std::string>& args);
 int replayCommand(const std::vector<std::string>& args);
 int editCommand(const std::vector<std::string>& args);
 int benchCommand(const std::vector<std::string>& args);
+int listCommand(const std::vector<std::string>& args);
 
 }  // namespace rmfx::cli

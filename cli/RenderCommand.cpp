@@ -9,6 +9,7 @@
 #include "runtime/GlContext.h"
 #include "runtime/HeadlessRun.h"
 #include "runtime/ImageIO.h"
+#include "runtime/MediaArguments.h"
 #include "runtime/WorkspaceLoader.h"
 
 namespace rmfx::cli {
@@ -20,10 +21,12 @@ struct RenderArguments {
     RunSettings run;
     std::vector<std::pair<std::string, std::string>> overrides;
     std::optional<std::string> target;
+    WorkspaceLoadOptions load;  // --effect NAME (.rfx files)
     std::optional<DisplayTransform> transform;
     bool quiet = false;
     bool explain = false;
     ExecutorOptions executor;
+    MediaOptions media;
 };
 
 std::optional<RenderArguments> parseArguments(const std::vector<std::string>& args) {
@@ -39,9 +42,11 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
             if (i + 1 >= args.size()) return std::nullopt;
             return args[++i];
         };
-        if (arg == "-o" || arg == "--output" || arg == "--size" || arg == "--frames" || arg == "--dt" ||
+        if (auto media = takeMediaArgument(args, i, a.media)) {
+            if (!media->empty()) return fail(*media);
+        } else if (arg == "-o" || arg == "--output" || arg == "--size" || arg == "--frames" || arg == "--dt" ||
             arg == "--set" || arg == "--target" || arg == "--transform" || arg == "--effects" ||
-            arg == "--memory-budget" || arg == "--frame-budget") {
+            arg == "--memory-budget" || arg == "--frame-budget" || arg == "--effect") {
             auto value = next();
             if (!value) return fail(arg + " needs a value");
             if (arg == "-o" || arg == "--output") {
@@ -81,6 +86,8 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
                 if (*end || !std::isfinite(mib) || mib <= 0 || mib > 1048576)
                     return fail("--memory-budget: expected MiB of render-target memory (up to 1048576), got '" + *value + "'");
                 a.executor.memoryBudget = static_cast<std::size_t>(mib * 1048576.0);
+            } else if (arg == "--effect") {
+                a.load.effect = *value;
             } else if (arg == "--effects") {
                 if (value->find_first_not_of(", ") == std::string::npos && !value->empty())
                     return fail("--effects: expected names separated by commas, got '" + *value + "'");
@@ -112,7 +119,13 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
 int renderCommand(const std::vector<std::string>& args) {
     auto a = parseArguments(args);
     if (!a) return 1;
-    LoadedWorkspace loaded = a->workspace ? loadWorkspace(*a->workspace) : loadDefaultWorkspace();
+    if (!a->workspace && !a->load.effect.empty()) {
+        std::cerr << "rmfx render: --effect chooses an effect of a RenderMonkey .rfx file; name the file\n";
+        return 1;
+    }
+    ValidationOptions options;
+    options.media = a->media;
+    LoadedWorkspace loaded = a->workspace ? loadWorkspace(*a->workspace, options, a->load) : loadDefaultWorkspace(options);
     if (!loaded.workspace) {
         std::cerr << formatAll(loaded.diagnostics);
         return 1;
@@ -132,7 +145,7 @@ int renderCommand(const std::vector<std::string>& args) {
     std::string output = a->output.value_or(ws.name + ".png");
     a->executor.outputs = {targetName};
 
-    auto context = GlContext::createHeadless();
+    auto context = GlContext::createHeadless(ws.profile);
     if (!context) {
         std::cerr << "rmfx render: " << context.error() << "\n";
         return 2;

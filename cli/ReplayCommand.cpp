@@ -15,6 +15,7 @@
 #include "runtime/GlContext.h"
 #include "runtime/ImageIO.h"
 #include "runtime/JUnitReport.h"
+#include "runtime/MediaArguments.h"
 #include "runtime/ReplayManifest.h"
 #include "runtime/ReplayRun.h"
 
@@ -31,6 +32,8 @@ struct ReplayArguments {
     bool update = false;
     bool quiet = false;
     double frameBudget = kDefaultFrameBudgetSeconds;
+    std::vector<fs::path> media;   // --media, after the manifest's <media> folders
+    std::optional<bool> sandbox;   // --sandbox / --no-sandbox; nullopt: the manifest's choice (default on)
 };
 
 std::optional<ReplayArguments> parseArguments(const std::vector<std::string>& args) {
@@ -41,7 +44,12 @@ std::optional<ReplayArguments> parseArguments(const std::vector<std::string>& ar
     };
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];
-        if (arg == "--out" || arg == "--junit" || arg == "--case" || arg == "--frame-budget") {
+        MediaOptions media;
+        if (auto taken = takeMediaArgument(args, i, media)) {
+            if (!taken->empty()) return fail(*taken);
+            if (arg == "--media") a.media.push_back(media.searchPath[0]);
+            else a.sandbox = media.sandbox;
+        } else if (arg == "--out" || arg == "--junit" || arg == "--case" || arg == "--frame-budget") {
             if (i + 1 >= args.size() || args[i + 1].empty()) return fail(arg + " needs a value");
             const std::string& value = args[++i];
             if (arg == "--out") a.out = value;
@@ -121,11 +129,12 @@ private:
 
 class ReplayRunner {
 public:
-    explicit ReplayRunner(const ReplayArguments& a) : a_(a) {}
+    ReplayRunner(const ReplayArguments& a, HeadlessContexts& contexts, MediaOptions media)
+        : a_(a), contexts_(contexts), media_(std::move(media)) {}
 
     CaseOutcome run(const ReplayCase& c) {
         CaseOutcome o;
-        CaseRender render = renderReplayCase(c);
+        CaseRender render = renderReplayCase(c, media_, &contexts_);
         for (const Diagnostic& d : render.diagnostics)
             if (d.severity == Diagnostic::Severity::Error || !a_.quiet) o.line(d.format());
         if (!render.ok()) {
@@ -186,6 +195,8 @@ private:
     }
 
     const ReplayArguments& a_;
+    HeadlessContexts& contexts_;
+    MediaOptions media_;
 };
 
 }  // namespace
@@ -200,7 +211,9 @@ int replayCommand(const std::vector<std::string>& args) {
     auto cases = selectCases(manifest, a->cases);
     if (!cases) return 1;
 
-    auto context = GlContext::createHeadless();
+    // Each case runs in the context of its workspace's profile; the core one must open.
+    HeadlessContexts contexts;
+    auto context = contexts.use(GlProfile::Core);
     if (!context) {
         std::cerr << "rmfx replay: " << context.error() << "\n";
         return 2;
@@ -211,7 +224,10 @@ int replayCommand(const std::vector<std::string>& args) {
     JUnitTestSuite suite;
     suite.name = "rmfx replay " + manifest.path.string();
     int casesFailed = 0, comparesPassed = 0, comparesFailed = 0, comparesNotRun = 0, referencesWritten = 0;
-    ReplayRunner runner(*a);
+    MediaOptions media = manifest.media;
+    media.searchPath.insert(media.searchPath.end(), a->media.begin(), a->media.end());
+    media.sandbox = a->sandbox.value_or(media.sandbox);
+    ReplayRunner runner(*a, contexts, std::move(media));
     for (size_t i = 0; i < cases->size(); ++i) {
         const ReplayCase& c = *(*cases)[i];
         std::string progress = "[" + std::to_string(i + 1) + "/" + std::to_string(cases->size()) + "] " + c.name + " ... ";

@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "cli/Commands.h"
+#include "runtime/MediaArguments.h"
 #include "runtime/WorkspaceLoader.h"
 
 namespace rmfx::cli {
@@ -14,13 +15,36 @@ int validateCommand(const std::vector<std::string>& args) {
         std::cerr << "rmfx validate: name one or more workspace files\n";
         return 1;
     }
-    int status = 0;
-    for (const std::string& path : args) {
-        if (!path.empty() && path[0] == '-') {
-            std::cerr << "rmfx validate: unknown option '" << path << "'\n";
+    ValidationOptions options;
+    WorkspaceLoadOptions load;
+    std::vector<std::string> paths;
+    for (size_t i = 0; i < args.size(); ++i) {
+        if (auto media = takeMediaArgument(args, i, options.media)) {
+            if (media->empty()) continue;
+            std::cerr << "rmfx validate: " << *media << "\n";
             return 1;
         }
-        LoadedWorkspace loaded = loadWorkspace(path);
+        if (args[i] == "--effect") {
+            if (i + 1 >= args.size()) {
+                std::cerr << "rmfx validate: --effect needs a value\n";
+                return 1;
+            }
+            load.effect = args[++i];
+            continue;
+        }
+        if (!args[i].empty() && args[i][0] == '-') {
+            std::cerr << "rmfx validate: unknown option '" << args[i] << "'\n";
+            return 1;
+        }
+        paths.push_back(args[i]);
+    }
+    if (paths.empty()) {
+        std::cerr << "rmfx validate: name one or more workspace files\n";
+        return 1;
+    }
+    int status = 0;
+    for (const std::string& path : paths) {
+        LoadedWorkspace loaded = loadWorkspace(path, options, load);
         std::cerr << formatAll(loaded.diagnostics);
         if (!loaded.workspace) {
             status = 1;

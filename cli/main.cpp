@@ -15,6 +15,8 @@ const char* usage = R"(rmfx — runs RenderMonkey-style effect workspaces as Ope
 usage:
   rmfx render [WORKSPACE] [options]   render headless and write an image
   rmfx validate WORKSPACE...          check workspaces (structure, references, shaders) without GL
+  rmfx list FILE.rfx                  list a RenderMonkey file's effects: passes, shaders, targets,
+                                      samplers, models, streams, the variables each pass needs, media
   rmfx replay MANIFEST [options]      regression tests: render the manifest's cases and compare them
                                       with their reference images (docs/replay.md)
   rmfx edit WORKSPACE [options]       open the editor: the running effect beside a panel of its
@@ -24,8 +26,13 @@ usage:
                                       ideal; CSV, JSON, SVG plot, table (docs/accuracy-vs-time.md)
   rmfx --help | --version
 
-WORKSPACE is an rmfx workspace file (docs/workspace-format.md); without one, render uses the
-built-in default workspace.
+WORKSPACE is an rmfx workspace file (docs/workspace-format.md) or a RenderMonkey .rfx file
+(docs/rendermonkey.md); without one, render uses the built-in default workspace.
+
+render, validate and edit option for .rfx files:
+  --effect NAME          the effect to run: its dotted path as `rmfx list` prints it ("Effect
+                         Workspace.Group.Effect", or "Group.Effect"), or a name only one effect
+                         has (default: the file's ACTIVE_EFFECT)
 
 render options:
   -o, --output FILE      image to write: .exr/.hdr keep float data; .png/.jpg/.tga/.bmp get the
@@ -87,6 +94,15 @@ bench options:
                          rasterising), else gpu. CSV and JSON always hold both
   -q, --quiet            print only errors, no progress line per variant
 
+file options (render, validate, edit, bench, replay; docs/media.md):
+  --media DIR            also look for textures, models and shader files in DIR (repeatable, in
+                         order), by their trailing path components, then by file name; names are
+                         matched ignoring case and "\" separates, as in RenderMonkey files
+  --sandbox              refuse file references and #include roots leading outside the workspace
+                         folder and the --media folders ("..", absolute paths, symbolic links)
+  --no-sandbox           no sandbox: the default, except for replay, which sandboxes unless told
+                         so here or by its manifest (<replay sandbox="false">)
+
 exit status: render, validate, edit: 0 success, 1 invalid workspace or arguments, 2 rendering or
 GL failure (edit: also no window, or an rmfx built without the editor). replay: 0 every case
 passed, 1 a case failed (comparison, workspace or rendering error) or the manifest or arguments
@@ -113,6 +129,7 @@ int main(int argc, char** argv) {
     if (command == "replay") return rmfx::cli::replayCommand(args);
     if (command == "edit") return rmfx::cli::editCommand(args);
     if (command == "bench") return rmfx::cli::benchCommand(args);
+    if (command == "list") return rmfx::cli::listCommand(args);
     std::cerr << "rmfx: unknown command '" << command << "' (try rmfx --help)\n";
     return 1;
 }

@@ -75,6 +75,12 @@ private:
         if (dragging_[ImGuiMouseButton_Right] || dragging_[ImGuiMouseButton_Middle])
             panByDrag(camera, delta * scale, session_.executor().viewport().y);
         if (over && io.MouseWheel != 0.0f) zoomByWheel(camera, io.MouseWheel);
+        // The MouseCoordinate… semantics: the cursor over the effect in its pixels (top-left origin).
+        if (over)
+            session_.executor().setMouse(glm::vec2(io.MousePos.x, io.MousePos.y) * scale,
+                                         glm::ivec3(ImGui::IsMouseDown(ImGuiMouseButton_Left) ? 1 : 0,
+                                                    ImGui::IsMouseDown(ImGuiMouseButton_Middle) ? 1 : 0,
+                                                    ImGui::IsMouseDown(ImGuiMouseButton_Right) ? 1 : 0));
     }
 
     void drawPanel(const FrameClock& clock) {
@@ -193,7 +199,9 @@ private:
 int runEditor(const EditorOptions& options) {
     // Checked before any window opens: a broken workspace is reported like rmfx render reports it,
     // and its size sets the window's.
-    LoadedWorkspace loaded = loadWorkspace(options.workspace);
+    ValidationOptions load;
+    load.media = options.media;
+    LoadedWorkspace loaded = loadWorkspace(options.workspace, load, {options.effect});
     Workspace* checked = loaded.workspace ? &*loaded.workspace : nullptr;
     if (checked) {
         Diagnostics bad = applyOverrides(*checked, options.overrides);
@@ -210,14 +218,15 @@ int runEditor(const EditorOptions& options) {
         }
     const glm::ivec2 effect = options.size.x > 0 ? options.size : glm::ivec2(checked->width, checked->height);
 
-    auto window = EditorWindow::create("rmfx edit: " + options.workspace.filename().string());
+    auto window = EditorWindow::create("rmfx edit: " + options.workspace.filename().string(), checked->profile);
     if (!window) {
         std::cerr << "rmfx edit: " << window.error() << "\n";
         return 2;
     }
     Diagnostics diagnostics;
     // The size asked for, else 0: the workspace's, which a reload may change.
-    auto session = LiveWorkspace::open(options.workspace, options.size, options.overrides, diagnostics);
+    auto session = LiveWorkspace::open(options.workspace, options.size, options.overrides, diagnostics, options.media,
+                                       {options.effect});
     if (!session) {
         std::cerr << formatAll(diagnostics);
         return 2;

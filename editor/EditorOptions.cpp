@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "runtime/MediaArguments.h"
+
 namespace rmfx::editor {
 
 std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& args, std::string* error) {
@@ -15,8 +17,10 @@ std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& 
     };
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];
-        if (arg == "--size" || arg == "--set" || arg == "--frames" || arg == "--screenshot" || arg == "--output-screenshot" ||
-            arg == "--view" || arg == "--dt") {
+        if (auto media = takeMediaArgument(args, i, o.media)) {
+            if (!media->empty()) return fail(*media);
+        } else if (arg == "--size" || arg == "--set" || arg == "--frames" || arg == "--screenshot" || arg == "--output-screenshot" ||
+            arg == "--view" || arg == "--dt" || arg == "--effect") {
             if (i + 1 >= args.size()) return fail(arg + " needs a value");
             const std::string& value = args[++i];
             if (arg == "--size") {
@@ -43,6 +47,8 @@ std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& 
                     return fail("--dt: expected seconds >= 0, got '" + value + "'");
                 o.deltaTime = static_cast<float>(dt);
                 dtGiven = true;
+            } else if (arg == "--effect") {
+                o.effect = value;
             } else if (arg == "--view") {
                 o.viewTargets.push_back(value);
             } else if (arg == "--screenshot") {

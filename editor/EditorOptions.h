@@ -9,10 +9,13 @@
 
 #include <glm/vec2.hpp>
 
+#include "runtime/MediaResolver.h"
+
 namespace rmfx::editor {
 
 struct EditorOptions {
     std::filesystem::path workspace;
+    std::string effect;  // --effect NAME: the effect of a RenderMonkey .rfx file
     glm::ivec2 size{0};  // 0: the workspace's size
     std::vector<std::pair<std::string, std::string>> overrides;  // --set NAME=VALUE, as rmfx render
     std::vector<std::string> viewTargets;  // --view TARGET: viewer windows open from the start
@@ -21,6 +24,7 @@ struct EditorOptions {
     float deltaTime = 1.0f / 60.0f;  // --dt: the step of those frames
     std::optional<std::filesystem::path> screenshot;        // the whole window, PNG
     std::optional<std::filesystem::path> outputScreenshot;  // the effect's output, as rmfx render writes it
+    MediaOptions media{};  // --media DIR, --sandbox (runtime/MediaArguments.h)
 };
 
 // On an error returns nullopt and sets *error to a sentence naming the option.

@@ -22,18 +22,21 @@ std::string glfwErrorText() {
 
 }  // namespace
 
-Result<std::unique_ptr<EditorWindow>> EditorWindow::create(const std::string& title) {
+Result<std::unique_ptr<EditorWindow>> EditorWindow::create(const std::string& title, GlProfile profile) {
+    const bool core = profile == GlProfile::Core;
     if (!glfwInit()) return Error{"cannot open a window: " + glfwErrorText()};
     std::unique_ptr<EditorWindow> w(new EditorWindow);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    // Compatibility: legacy GLSL and the fixed-function state it reads (Workspace::profile).
+    glfwWindowHint(GLFW_OPENGL_PROFILE, core ? GLFW_OPENGL_CORE_PROFILE : GLFW_OPENGL_COMPAT_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, core ? GLFW_TRUE : GLFW_FALSE);
     glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
     glfwWindowHint(GLFW_SAMPLES, 0);
     w->window_ = glfwCreateWindow(640, 480, title.c_str(), nullptr, nullptr);
     if (!w->window_) {
-        std::string error = "cannot create a window with an OpenGL 4.5 core context: " + glfwErrorText();
+        std::string error = std::string("cannot create a window with an OpenGL 4.5 ") + (core ? "core" : "compatibility") +
+                            " context: " + glfwErrorText();
         glfwTerminate();
         return Error{error};
     }

@@ -9,6 +9,7 @@
 
 #include "runtime/Image.h"
 #include "runtime/Result.h"
+#include "runtime/Workspace.h"
 
 struct GLFWwindow;
 
@@ -17,7 +18,7 @@ namespace rmfx::editor {
 class EditorWindow {
 public:
     // Creates the window hidden, with its context current; show() once its size is known.
-    static Result<std::unique_ptr<EditorWindow>> create(const std::string& title);
+    static Result<std::unique_ptr<EditorWindow>> create(const std::string& title, GlProfile profile = GlProfile::Core);
     ~EditorWindow();
     EditorWindow(const EditorWindow&) = delete;
     EditorWindow& operator=(const EditorWindow&) = delete;

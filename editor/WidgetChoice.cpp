@@ -36,7 +36,7 @@ WidgetChoice chooseWidget(const Variable& v) {
         c.kind = WidgetKind::Combo;
         return c;
     }
-    if (type == ValueType::Mat4) {
+    if (type == ValueType::Mat2 || type == ValueType::Mat3 || type == ValueType::Mat4) {
         c.kind = WidgetKind::Matrix;
         c.dragSpeed = v.step.value_or(0.01f);
         return c;

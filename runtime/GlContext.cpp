@@ -49,8 +49,10 @@ std::vector<Candidate> candidateDisplays(std::string& tried) {
 
 }  // namespace
 
-Result<std::unique_ptr<GlContext>> GlContext::createHeadless() {
+Result<std::unique_ptr<GlContext>> GlContext::createHeadless(GlProfile profile) {
     std::string tried;
+    const bool core = profile == GlProfile::Core;
+    const char* profileName = core ? "core" : "compatibility";
     for (const Candidate& c : candidateDisplays(tried)) {
         EGLint major = 0, minor = 0;
         if (!eglInitialize(c.display, &major, &minor)) {
@@ -63,7 +65,9 @@ Result<std::unique_ptr<GlContext>> GlContext::createHeadless() {
             continue;
         }
         const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                     EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+                                     EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                     core ? EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT : EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
+                                     EGL_NONE};
         EGLConfig config = EGL_NO_CONFIG_KHR;
         bool noConfig = hasExtension(eglQueryString(c.display, EGL_EXTENSIONS), "EGL_KHR_no_config_context");
         if (!noConfig) {
@@ -77,7 +81,7 @@ Result<std::unique_ptr<GlContext>> GlContext::createHeadless() {
         }
         EGLContext context = eglCreateContext(c.display, config, EGL_NO_CONTEXT, attributes);
         if (context == EGL_NO_CONTEXT) {
-            tried += " " + c.name + ": no OpenGL 4.5 core context (EGL error 0x" +
+            tried += " " + c.name + ": no OpenGL 4.5 " + profileName + " context (EGL error 0x" +
                      [] { char b[16]; std::snprintf(b, sizeof b, "%x", eglGetError()); return std::string(b); }() + ");";
             eglTerminate(c.display);
             continue;
@@ -91,11 +95,12 @@ Result<std::unique_ptr<GlContext>> GlContext::createHeadless() {
         std::unique_ptr<GlContext> gl(new GlContext);
         gl->display_ = c.display;
         gl->context_ = context;
+        gl->profile_ = profile;
         gl->description_ = std::string(reinterpret_cast<const char*>(glGetString(GL_VERSION))) + ", " +
                            reinterpret_cast<const char*>(glGetString(GL_RENDERER)) + " via " + c.name;
         return gl;
     }
-    return Error{"cannot open an EGL display with an OpenGL 4.5 core context:" + tried +
+    return Error{"cannot open an EGL display with an OpenGL 4.5 " + std::string(profileName) + " context:" + tried +
                  " (on a machine without a GPU, install Mesa's EGL and DRI drivers: libegl-mesa0 libgl1-mesa-dri)"};
 }
 

@@ -11,6 +11,7 @@
 
 #include "runtime/BuiltinMeshes.h"
 #include "runtime/EffectSelection.h"
+#include "runtime/FixedFunctionState.h"
 #include "runtime/GlFormats.h"
 #include "runtime/GlMesh.h"
 #include "runtime/GlTexture.h"
@@ -47,6 +48,7 @@ struct UniformSlot {
     UniformSource source;
     std::string effectSwitch;  // rmfx_effect_<name>: whether that effect runs this frame
     const Value* value = nullptr;  // a pass constant's, or the variable's current value
+    std::optional<SemanticInfo> semantic;  // filled every frame (Variable::semantic)
 };
 
 struct SamplerSlot {
@@ -64,6 +66,7 @@ struct GpuPass {
     GpuTarget* target = nullptr;
     const GlMesh* mesh = nullptr;
     glm::mat4 model{1.0f};
+    std::vector<StreamBinding> streams;  // Pass::streams against the program; empty: rmfx's layout
     std::vector<UniformSlot> uniforms;
     std::vector<SamplerSlot> samplers;
 };
@@ -107,6 +110,30 @@ struct FrameCamera {
           position(camera.position()) {}
 };
 
+// <stream usage="texcoord" index="0" attribute="rm_TexCoord0"> (line 12), for messages.
+std::string streamLabel(const VertexStream& stream) {
+    static const char* usages[] = {"position", "normal", "texcoord", "tangent", "binormal", "color"};
+    std::string label = std::string("<stream usage=\"") + usages[static_cast<int>(stream.usage)] + "\"";
+    if (stream.usage == VertexUsage::TexCoord) label += " index=\"" + std::to_string(stream.usageIndex) + "\"";
+    if (!stream.attribute.empty()) label += " attribute=\"" + stream.attribute + "\"";
+    return label + "> (line " + std::to_string(stream.where.line) + ")";
+}
+
+// The compatibility built-in a stream without an attribute feeds; empty for tangents and binormals.
+std::string builtinAttributeName(const VertexStream& stream) {
+    switch (stream.usage) {
+        case VertexUsage::Position: return "gl_Vertex";
+        case VertexUsage::Normal: return "gl_Normal";
+        case VertexUsage::TexCoord: return "gl_MultiTexCoord" + std::to_string(stream.usageIndex);
+        case VertexUsage::Color: return "gl_Color";
+        case VertexUsage::Tangent:
+        case VertexUsage::Binormal: break;
+    }
+    return {};
+}
+
+glm::dmat4 toDouble(const glm::mat4& m) { return glm::dmat4(m); }
+
 glm::mat4 modelMatrix(const DrawCall& draw) {
     glm::mat4 m = glm::translate(glm::mat4(1.0f), draw.translate);
     m = glm::rotate(m, glm::radians(draw.rotateDegrees.z), glm::vec3(0, 0, 1));
@@ -147,6 +174,10 @@ struct GlExecutor::Impl {
     std::map<std::string, std::unique_ptr<GlMesh>> meshes;
     std::vector<std::unique_ptr<GpuPass>> passes;  // compiled: every pass some combination of switches runs
     std::vector<GLuint> samplerObjects;
+
+    bool compatibility = false;  // the workspace's profile, checked against the context in create()
+    glm::dvec2 mouse{0.0};
+    glm::ivec3 mouseButtons{0};
 
     bool timing = false;
     TimerFrame timerFrames[3];
@@ -426,6 +457,8 @@ struct GlExecutor::Impl {
             glDeleteProgram(program);
             return 0;
         }
+        // The built-in vertex shaders' attributes, for dialects without layout qualifiers.
+        for (GLuint a = 0; a < 3; ++a) glBindAttribLocation(program, a, builtinAttributeLocations[a]);
         glLinkProgram(program);
         GLint linked = 0;
         glGetProgramiv(program, GL_LINK_STATUS, &linked);
@@ -440,6 +473,47 @@ struct GlExecutor::Impl {
             return 0;
         }
         return program;
+    }
+
+    // Pass::streams against the linked program: a named attribute by its location, an empty one
+    // to its compatibility built-in. A stream the program does not read is a warning, then skipped.
+    void bindStreams(GpuPass& gp, Diagnostics& d) {
+        gp.streams.clear();
+        const Pass& pass = *gp.pass;
+        if (pass.streams.empty()) return;
+        std::set<std::string> inputs;  // active vertex inputs, built-ins included
+        GLint count = 0;
+        glGetProgramInterfaceiv(gp.program, GL_PROGRAM_INPUT, GL_ACTIVE_RESOURCES, &count);
+        for (GLint i = 0; i < count; ++i) {
+            char name[256] = {};
+            glGetProgramResourceName(gp.program, GL_PROGRAM_INPUT, static_cast<GLuint>(i), sizeof name, nullptr, name);
+            inputs.insert(name);
+        }
+        auto warn = [&](const VertexStream& stream, const std::string& why) {
+            d.push_back({Diagnostic::Severity::Warning, stream.where, passLabel(pass),
+                         "pass '" + pass.name + "': stream " + streamLabel(stream) + " " + why});
+        };
+        for (const VertexStream& stream : pass.streams) {
+            if (!stream.attribute.empty()) {
+                GLint location = glGetAttribLocation(gp.program, stream.attribute.c_str());
+                if (location < 0) {
+                    warn(stream, "feeds attribute '" + stream.attribute + "', which the shaders do not read");
+                    continue;
+                }
+                gp.streams.push_back({stream.usage, stream.usageIndex, location});
+                continue;
+            }
+            std::string builtin = builtinAttributeName(stream);
+            if (builtin.empty()) {
+                warn(stream, "names no attribute, and tangents and binormals have no compatibility built-in");
+            } else if (!compatibility) {
+                warn(stream, "feeds the built-in " + builtin + ", which needs <workspace profile=\"compatibility\">");
+            } else if (!inputs.count(builtin)) {
+                warn(stream, "feeds the built-in " + builtin + ", which the shaders do not read");
+            } else {
+                gp.streams.push_back({stream.usage, stream.usageIndex, -1});
+            }
+        }
     }
 
     bool bindUniforms(GpuPass& gp, Diagnostics& d) {
@@ -496,7 +570,8 @@ struct GlExecutor::Impl {
                 continue;
             }
             UniformSlot slot{values[1], name, type, source, {}};
-            if (const auto* c = std::get_if<BoundConstant>(&source)) slot.value = &c->constant->value;
+            if (const auto* m = std::get_if<BoundSemantic>(&source)) slot.semantic = m->info;
+            else if (const auto* c = std::get_if<BoundConstant>(&source)) slot.value = &c->constant->value;
             else if (const auto* v = std::get_if<BoundVariable>(&source)) slot.value = &this->values.at(v->variable->name);
             gp.uniforms.push_back(std::move(slot));
         }
@@ -521,24 +596,56 @@ struct GlExecutor::Impl {
         return head + ", which no scheduled pass writes";
     }
 
-    void upload(const GpuPass& gp, const FrameClock& clock, int frame, const FrameCamera& camera, glm::ivec2 viewport) {
+    // A value's first components into a uniform of the given type (a vec3 takes a vec4's xyz).
+    static void uploadValue(GLuint program, GLint location, UniformType type, const float* data) {
+        switch (type) {
+            case UniformType::Float: glProgramUniform1f(program, location, data[0]); break;
+            case UniformType::Int:
+            case UniformType::Bool: glProgramUniform1i(program, location, static_cast<GLint>(data[0])); break;
+            case UniformType::Vec2: glProgramUniform2fv(program, location, 1, data); break;
+            case UniformType::Vec3: glProgramUniform3fv(program, location, 1, data); break;
+            case UniformType::Vec4: glProgramUniform4fv(program, location, 1, data); break;
+            case UniformType::Mat2: glProgramUniformMatrix2fv(program, location, 1, GL_FALSE, data); break;
+            case UniformType::Mat3: glProgramUniformMatrix3fv(program, location, 1, GL_FALSE, data); break;
+            case UniformType::Mat4: glProgramUniformMatrix4fv(program, location, 1, GL_FALSE, data); break;
+            default: break;
+        }
+    }
+
+    SemanticInputs semanticInputs(const GpuPass& gp, const FrameClock& clock, int frame, const FrameCamera& camera,
+                                  const OrbitCameraSettings& lens, glm::ivec2 viewport) const {
+        SemanticInputs in;
+        in.world = toDouble(gp.model);
+        in.view = toDouble(camera.view);
+        in.projection = toDouble(camera.projection);
+        in.fovYRadians = glm::radians(static_cast<double>(lens.fovYDegrees));
+        in.nearPlane = lens.nearPlane;
+        in.farPlane = lens.farPlane;
+        in.viewport = viewport;
+        in.time = clock.time;
+        in.deltaTime = clock.deltaTime;
+        in.frame = frame;
+        in.passIndex = gp.index;
+        in.mouse = mouse;
+        in.mouseButtons = mouseButtons;
+        return in;
+    }
+
+    void upload(const GpuPass& gp, const FrameClock& clock, int frame, const FrameCamera& camera,
+                const OrbitCameraSettings& lens, glm::ivec2 viewport) {
+        std::optional<SemanticInputs> semantics;
         for (const UniformSlot& u : gp.uniforms) {
             if (!u.effectSwitch.empty()) {
                 glProgramUniform1i(gp.program, u.location, switchedOff.count(u.effectSwitch) ? 0 : 1);
                 continue;
             }
+            if (u.semantic) {
+                if (!semantics) semantics = semanticInputs(gp, clock, frame, camera, lens, viewport);
+                uploadValue(gp.program, u.location, u.type, semanticValue(*u.semantic, *semantics).data.data());
+                continue;
+            }
             if (u.value) {
-                const float* data = u.value->data.data();
-                switch (u.type) {
-                    case UniformType::Float: glProgramUniform1f(gp.program, u.location, data[0]); break;
-                    case UniformType::Int:
-                    case UniformType::Bool: glProgramUniform1i(gp.program, u.location, static_cast<GLint>(data[0])); break;
-                    case UniformType::Vec2: glProgramUniform2fv(gp.program, u.location, 1, data); break;
-                    case UniformType::Vec3: glProgramUniform3fv(gp.program, u.location, 1, data); break;
-                    case UniformType::Vec4: glProgramUniform4fv(gp.program, u.location, 1, data); break;
-                    case UniformType::Mat4: glProgramUniformMatrix4fv(gp.program, u.location, 1, GL_FALSE, data); break;
-                    default: break;
-                }
+                uploadValue(gp.program, u.location, u.type, u.value->data.data());
                 continue;
             }
             const auto& p = std::get<BoundPredefined>(u.source);
@@ -724,6 +831,17 @@ std::unique_ptr<GlExecutor> GlExecutor::create(const Workspace& ws, glm::ivec2 v
         return nullptr;
     }
     impl->viewport = viewport;
+    impl->compatibility = ws.profile == GlProfile::Compatibility;
+    if (impl->compatibility) {
+        GLint mask = 0;
+        glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &mask);
+        if (!(mask & GL_CONTEXT_COMPATIBILITY_PROFILE_BIT)) {
+            d.push_back({Diagnostic::Severity::Error, {ws.path.string(), 0}, "<workspace>",
+                         "the workspace asks for a compatibility-profile context (legacy GLSL, fixed-function "
+                         "matrices), but the current context is a core profile one"});
+            return nullptr;
+        }
+    }
     for (const Variable& v : ws.variables) impl->values[v.name] = v.value;
     if (!impl->buildGraphs(d)) return nullptr;
     const bool allocated = impl->allocateTargets(d);
@@ -749,6 +867,7 @@ std::unique_ptr<GlExecutor> GlExecutor::create(const Workspace& ws, glm::ivec2 v
             glDeleteProgram(gp->program);
             continue;
         }
+        impl->bindStreams(*gp, d);
         ok = impl->bindUniforms(*gp, d) && ok;
         impl->passes.push_back(std::move(gp));
     }
@@ -787,7 +906,8 @@ Diagnostics GlExecutor::renderFrame(const FrameClock& clock) {
             glDepthMask(pass.depth.write ? GL_TRUE : GL_FALSE);
         }
         glUseProgram(gp.program);
-        s.upload(gp, clock, frame_, camera, viewport_);
+        s.upload(gp, clock, frame_, camera, camera_.settings(), viewport_);
+        if (s.compatibility) loadFixedFunctionState(camera.projection, camera.view * gp.model);
         for (const SamplerSlot& slot : gp.samplers) {
             GLuint texture = slot.texture;
             if (slot.target) {
@@ -802,7 +922,7 @@ Diagnostics GlExecutor::renderFrame(const FrameClock& clock) {
             glBindTextureUnit(static_cast<GLuint>(slot.unit), texture);
             glBindSampler(static_cast<GLuint>(slot.unit), slot.samplerObject);
         }
-        gp.mesh->draw();
+        gp.mesh->draw(gp.streams);
         target.writtenThisFrame = true;
         s.lastFramePasses.push_back(pass.name);
         if (memory.spec.mipmaps) glGenerateTextureMipmap(memory.textures[memory.writeBuffer()]);
@@ -983,6 +1103,7 @@ Diagnostics GlExecutor::recompilePasses(const std::vector<std::string>& passName
             ok = false;
             continue;
         }
+        s.bindStreams(fresh, d);
         ok = s.bindUniforms(fresh, d) && ok;
         rebuilt.emplace_back(old, std::move(fresh));
     }
@@ -1073,6 +1194,11 @@ std::unique_ptr<GlExecutor> GlExecutor::createReusing(const Workspace& ws, glm::
         }
     } donation(previous.impl_.get(), &reusableTextures);
     return create(ws, viewport, diagnostics, previous.impl_->options);
+}
+
+void GlExecutor::setMouse(glm::vec2 pixels, glm::ivec3 buttons) {
+    impl_->mouse = glm::dvec2(pixels);
+    impl_->mouseButtons = buttons;
 }
 
 unsigned GlExecutor::passProgram(const std::string& pass) const {

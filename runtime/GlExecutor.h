@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include "runtime/Diagnostic.h"
 #include "runtime/Image.h"
@@ -82,6 +83,9 @@ public:
     double frameGpuMilliseconds() const;
 
     OrbitCamera& camera() { return camera_; }
+    // The cursor for the MouseCoordinate… and …MouseButton semantics: pixels from the viewport's
+    // top-left corner, and left/middle/right held (1) or not (0). Headless: 0.
+    void setMouse(glm::vec2 pixels, glm::ivec3 buttons = glm::ivec3(0));
     glm::ivec2 viewport() const { return viewport_; }
 
     // Reads a render target (or "output") back as float RGBA, row 0 at the top. An error when the

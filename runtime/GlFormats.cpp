@@ -21,6 +21,7 @@ unsigned internalFormat(TargetFormat format) {
         case TargetFormat::RGB10A2: return GL_RGB10_A2;
         case TargetFormat::R8: return GL_R8;
         case TargetFormat::RG8: return GL_RG8;
+        case TargetFormat::RG16: return GL_RG16;
     }
     return GL_RGBA16F;
 }
@@ -32,7 +33,8 @@ int channelCount(TargetFormat format) {
         case TargetFormat::R8: return 1;
         case TargetFormat::RG16F:
         case TargetFormat::RG32F:
-        case TargetFormat::RG8: return 2;
+        case TargetFormat::RG8:
+        case TargetFormat::RG16: return 2;
         case TargetFormat::R11G11B10F: return 3;
         default: return 4;
     }

@@ -6,6 +6,7 @@
 #include <epoxy/gl.h>
 
 #include "runtime/CubeMapLayout.h"
+#include "runtime/DdsCubeMap.h"
 #include "runtime/GlFormats.h"
 #include "runtime/ImageIO.h"
 
@@ -101,7 +102,9 @@ Result<GlTextureInfo> loadGlTexture(const Workspace& ws, const Texture& texture)
     }
 
     Result<CubeFaces> faces = Error{""};
-    if (texture.layout == CubeLayout::Faces) {
+    if (texture.files.size() == 1 && isDdsFile(texture.files[0])) {
+        faces = readDdsCubeMap(ws.folder / texture.files[0]);
+    } else if (texture.layout == CubeLayout::Faces) {
         std::array<Image, 6> images;
         for (int i = 0; i < 6; ++i) {
             auto image = readImage(ws.folder / texture.files[i]);

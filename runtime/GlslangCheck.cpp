@@ -3,6 +3,8 @@
 #include <memory>
 #include <mutex>
 #include <regex>
+#include <string_view>
+#include <utility>
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
@@ -19,10 +21,24 @@ EShLanguage language(ShaderStage stage) {
     return stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
 }
 
+// The version and profile glslang assumes for a stage without #version: the dialect's default.
+// Versions below 150 have no profile, and glslang gives them the compatibility built-ins
+// (gl_ModelViewProjectionMatrix, gl_LightSource, ftransform()).
+std::pair<int, EProfile> defaultVersion(ShaderDialect dialect) {
+    switch (dialect) {
+        case ShaderDialect::GlslLegacy: return {110, ENoProfile};
+        case ShaderDialect::GlslEs100: return {100, EEsProfile};
+        case ShaderDialect::Glsl:
+        case ShaderDialect::Hlsl: break;  // Hlsl arrives translated to GLSL 4.50
+    }
+    return {450, ECoreProfile};
+}
+
 }  // namespace
 
 std::optional<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSource& program,
-                                                           const std::string& element, Diagnostics& diagnostics) {
+                                                           const std::string& element, Diagnostics& diagnostics,
+                                                           std::vector<std::string>* vertexInputs) {
     initializeGlslangOnce();
     auto messages = static_cast<EShMessages>(EShMsgDefault);
     std::vector<std::unique_ptr<glslang::TShader>> shaders;
@@ -35,7 +51,8 @@ std::optional<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSour
         // No client API: plain GLSL as a GL driver sees it (the OpenGL client means GL_ARB_gl_spirv
         // rules, which demand explicit uniform locations).
         shader->setEnvInput(glslang::EShSourceGlsl, language(stage.stage), glslang::EShClientNone, 0);
-        if (!shader->parse(GetDefaultResources(), 450, ECoreProfile, false, false, messages)) {
+        auto [version, profile] = defaultVersion(stage.dialect);
+        if (!shader->parse(GetDefaultResources(), version, profile, false, false, messages)) {
             SourceLocation fallback = stage.shader.origin(1);
             for (Diagnostic d : mapCompilerLog(shader->getInfoLog(), stage.shader, fallback, element)) {
                 diagnostics.push_back(std::move(d));
@@ -58,9 +75,12 @@ std::optional<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSour
         return std::nullopt;
     }
     linked.buildReflection(EShReflectionDefault);
+    if (vertexInputs)
+        for (int i = 0; i < linked.getNumPipeInputs(); ++i) vertexInputs->push_back(linked.getPipeInput(i).name);
     std::vector<ActiveUniform> uniforms;
     for (int i = 0; i < linked.getNumUniformVariables(); ++i) {
         const glslang::TObjectReflection& u = linked.getUniform(i);
+        if (std::string_view(u.name).substr(0, 3) == "gl_") continue;  // built-in state (compatibility profile)
         ActiveUniform a;
         a.name = u.name;
         a.glType = u.glDefineType;

@@ -20,8 +20,10 @@ struct ActiveUniform {
 };
 
 // Returns the active uniforms, or nullopt (with diagnostics) when a stage fails to compile or link.
+// With `vertexInputs`, also the names of the active vertex shader inputs (attributes).
 std::optional<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSource& program,
-                                                           const std::string& element, Diagnostics& diagnostics);
+                                                           const std::string& element, Diagnostics& diagnostics,
+                                                           std::vector<std::string>* vertexInputs = nullptr);
 
 // Where a uniform is declared, found by scanning the stage texts: the first `uniform TYPE NAME`.
 std::optional<SourceLocation> findUniformDeclaration(const PassProgramSource& program, const std::string& name);

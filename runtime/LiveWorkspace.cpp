@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "runtime/RfxImporter.h"
 #include "runtime/WorkspaceLoader.h"
 #include "runtime/WorkspaceParser.h"
 
@@ -31,9 +32,12 @@ LiveWorkspace::~LiveWorkspace() {
 
 std::unique_ptr<LiveWorkspace> LiveWorkspace::open(const std::filesystem::path& file, glm::ivec2 viewport,
                                                    const std::vector<std::pair<std::string, std::string>>& overrides,
-                                                   Diagnostics& diagnostics) {
+                                                   Diagnostics& diagnostics, const MediaOptions& media,
+                                                   const WorkspaceLoadOptions& load) {
     std::unique_ptr<LiveWorkspace> live(new LiveWorkspace);
+    live->loadOptions_ = load;
     live->file_ = file;
+    live->media_ = media;
     live->requestedViewport_ = viewport;
     live->overrides_ = overrides;
     Diagnostics found;
@@ -54,11 +58,12 @@ std::optional<LiveWorkspace::Build> LiveWorkspace::load(Diagnostics& diagnostics
     // just as glslang's are: that halves the time a reload of the workspace file takes.
     ValidationOptions validation;
     validation.compileShaders = !executor_;
-    LoadedWorkspace loaded = loadWorkspace(file_, validation);
+    validation.media = media_;
+    LoadedWorkspace loaded = loadWorkspace(file_, validation, loadOptions_);
     append(diagnostics, loaded.diagnostics);
     if (!loaded.workspace) {
         // Watch what the broken file names too (a texture it names that is not there yet, say).
-        ParsedWorkspace parsed = parseWorkspaceFile(file_);
+        ParsedWorkspace parsed = isRfxPath(file_) ? importRfxFile(file_, {loadOptions_.effect}) : parseWorkspaceFile(file_);
         if (parsed.workspace) failedDependencies_ = findWorkspaceDependencies(*parsed.workspace);
         return std::nullopt;
     }

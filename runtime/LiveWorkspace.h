@@ -24,9 +24,11 @@
 #include "runtime/Diagnostic.h"
 #include "runtime/FileWatcher.h"
 #include "runtime/GlExecutor.h"
+#include "runtime/MediaResolver.h"
 #include "runtime/Value.h"
 #include "runtime/Workspace.h"
 #include "runtime/WorkspaceDependencies.h"
+#include "runtime/WorkspaceLoader.h"
 
 namespace rmfx {
 
@@ -47,7 +49,8 @@ public:
     // Returns nullptr with diagnostics when the FIRST build fails (nothing good to keep yet).
     static std::unique_ptr<LiveWorkspace> open(const std::filesystem::path& file, glm::ivec2 viewport,
                                                const std::vector<std::pair<std::string, std::string>>& overrides,
-                                               Diagnostics& diagnostics);
+                                               Diagnostics& diagnostics, const MediaOptions& media = {},
+                                               const WorkspaceLoadOptions& load = {});
     ~LiveWorkspace();
     LiveWorkspace(const LiveWorkspace&) = delete;
     LiveWorkspace& operator=(const LiveWorkspace&) = delete;
@@ -100,6 +103,8 @@ private:
     std::filesystem::path file_;
     glm::ivec2 requestedViewport_{0};
     std::vector<std::pair<std::string, std::string>> overrides_;
+    MediaOptions media_;  // every reload resolves file references as the first load did
+    WorkspaceLoadOptions loadOptions_;  // the .rfx effect chosen with --effect
 
     std::unique_ptr<Workspace> workspace_;  // before executor_: destroyed after it
     std::unique_ptr<GlExecutor> executor_;

@@ -3,43 +3,50 @@
 
 namespace rmfx {
 
-const char* builtinFullscreenVertexShader() {
-    return R"(#version 450 core
-layout(location = 0) in vec3 rm_Position;
-layout(location = 2) in vec2 rm_TexCoordIn;
-uniform mat4 rm_InvViewProjection;
-out vec2 vTexCoord;
-out vec3 vWorldPosition;
-out vec3 vWorldNormal;
+namespace {
+
+// The text before main() of a built-in vertex shader: #version, the attributes and the varyings.
+std::string builtinVertexHeader(ShaderDialect dialect, bool normal) {
+    bool modern = dialect != ShaderDialect::GlslLegacy && dialect != ShaderDialect::GlslEs100;
+    std::string in = modern ? "in" : "attribute", out = modern ? "out" : "varying";
+    std::string text = modern ? "#version 450 core\n" : dialect == ShaderDialect::GlslEs100 ? "#version 100\n" : "#version 110\n";
+    auto layout = [&](int location) { return modern ? "layout(location = " + std::to_string(location) + ") " : std::string(); };
+    text += layout(0) + in + " vec3 rm_Position;\n";
+    if (normal) text += layout(1) + in + " vec3 rm_NormalIn;\n";
+    text += layout(2) + in + " vec2 rm_TexCoordIn;\n";
+    for (const char* varying : {"vec2 vTexCoord;", "vec3 vWorldPosition;", "vec3 vWorldNormal;"}) text += out + " " + varying + "\n";
+    return text;
+}
+
+// Legacy fragment shaders read the texture coordinate as gl_TexCoord[0].
+std::string legacyTexCoord(ShaderDialect dialect) {
+    return dialect == ShaderDialect::GlslLegacy ? "    gl_TexCoord[0] = vec4(rm_TexCoordIn, 0.0, 1.0);\n" : "";
+}
+
+}  // namespace
+
+std::string builtinFullscreenVertexShader(ShaderDialect dialect) {
+    return builtinVertexHeader(dialect, false) + R"(uniform mat4 rm_InvViewProjection;
 void main() {
     vTexCoord = rm_TexCoordIn;
     vec4 far = rm_InvViewProjection * vec4(rm_Position.xy, 1.0, 1.0);
     vWorldPosition = far.xyz / far.w;
     vWorldNormal = vec3(0.0, 0.0, 1.0);
     gl_Position = vec4(rm_Position.xy, 0.0, 1.0);
-}
-)";
+)" + legacyTexCoord(dialect) + "}\n";
 }
 
-const char* builtinModelVertexShader() {
-    return R"(#version 450 core
-layout(location = 0) in vec3 rm_Position;
-layout(location = 1) in vec3 rm_NormalIn;
-layout(location = 2) in vec2 rm_TexCoordIn;
-uniform mat4 rm_Model;
+std::string builtinModelVertexShader(ShaderDialect dialect) {
+    return builtinVertexHeader(dialect, true) + R"(uniform mat4 rm_Model;
 uniform mat4 rm_ViewProjection;
 uniform mat3 rm_NormalMatrix;
-out vec2 vTexCoord;
-out vec3 vWorldPosition;
-out vec3 vWorldNormal;
 void main() {
     vec4 world = rm_Model * vec4(rm_Position, 1.0);
     vTexCoord = rm_TexCoordIn;
     vWorldPosition = world.xyz;
     vWorldNormal = rm_NormalMatrix * rm_NormalIn;
     gl_Position = rm_ViewProjection * world;
-}
-)";
+)" + legacyTexCoord(dialect) + "}\n";
 }
 
 std::string passLabel(const Pass& pass) { return "<pass name=\"" + pass.name + "\">"; }
@@ -58,7 +65,16 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
         ok = false;
     }
     auto add = [&](const ShaderSource& s) {
+        if (s.dialect == ShaderDialect::Hlsl) {
+            // The HLSL front end plugs in here: translate s (entryPoint, profile) to GLSL 4.50 and
+            // add it as a Glsl stage. Until then the pass cannot be assembled.
+            diagnostics.push_back({Diagnostic::Severity::Error, s.where, "<shader>",
+                                   "HLSL shaders cannot be compiled yet (dialect=\"hlsl\")"});
+            ok = false;
+            return;
+        }
         ShaderInput input;
+        input.dialect = s.dialect;
         input.root = ws.includeFolder();
         input.defines = defines;
         input.declarations = declarations;
@@ -81,7 +97,7 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
             input.folder = file.parent_path();
         }
         size_t before = diagnostics.size();
-        PassStage stage{s.stage, preprocessShader(input, diagnostics), s.where, false};
+        PassStage stage{s.stage, preprocessShader(input, diagnostics), s.where, false, s.dialect};
         if (!s.file.empty()) stage.shader.files.insert(stage.shader.files.begin(), ws.folder / s.file);
         if (hasErrors(Diagnostics(diagnostics.begin() + static_cast<long>(before), diagnostics.end()))) ok = false;
         program.stages.push_back(std::move(stage));
@@ -90,12 +106,14 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
         add(*vertex);
     } else {
         bool fullscreen = pass.draw.mesh == BuiltinMesh::FullscreenTriangle;
+        ShaderDialect dialect = fragment ? fragment->dialect : ShaderDialect::Glsl;
         ShaderInput input;
-        input.code = fullscreen ? builtinFullscreenVertexShader() : builtinModelVertexShader();
+        input.dialect = dialect;
+        input.code = fullscreen ? builtinFullscreenVertexShader(dialect) : builtinModelVertexShader(dialect);
         input.start = {fullscreen ? "<built-in fullscreen vertex shader>" : "<built-in model vertex shader>", 1};
         input.root = ws.includeFolder();
         input.folder = ws.folder;
-        PassStage stage{ShaderStage::Vertex, preprocessShader(input, diagnostics), pass.where, true};
+        PassStage stage{ShaderStage::Vertex, preprocessShader(input, diagnostics), pass.where, true, dialect};
         program.stages.push_back(std::move(stage));
     }
     if (fragment) add(*fragment);

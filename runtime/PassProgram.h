@@ -18,6 +18,7 @@ struct PassStage {
     PreprocessedShader shader;
     SourceLocation where;  // the <shader> element, or the <pass> for the built-in vertex shader
     bool builtin = false;
+    ShaderDialect dialect = ShaderDialect::Glsl;  // of the code as compiled (Hlsl arrives translated)
 };
 
 struct PassProgramSource {
@@ -33,8 +34,15 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
 
 std::string passLabel(const Pass& pass);  // <pass name="…">
 
-// The built-in vertex shaders. Both write vTexCoord, vWorldPosition and vWorldNormal.
-const char* builtinFullscreenVertexShader();  // clip-space triangle; world position on the far plane
-const char* builtinModelVertexShader();       // rm_Model, rm_ViewProjection, rm_NormalMatrix
+// The built-in vertex shaders, in the dialect of the fragment shader they run with (GlslLegacy:
+// GLSL 1.10, which also sets gl_TexCoord[0]; GlslEs100: GLSL ES 1.00; else GLSL 4.50). Both write
+// vTexCoord, vWorldPosition and vWorldNormal from the attributes rm_Position, rm_NormalIn and
+// rm_TexCoordIn (locations 0, 1, 2: builtinAttributeLocations).
+std::string builtinFullscreenVertexShader(ShaderDialect dialect = ShaderDialect::Glsl);  // clip-space triangle; world position on the far plane
+std::string builtinModelVertexShader(ShaderDialect dialect = ShaderDialect::Glsl);  // rm_Model, rm_ViewProjection, rm_NormalMatrix
+
+// The attribute names of the built-in vertex shaders and rmfx's mesh layout, by location; the GL
+// executor binds them before linking, so that dialects without layout qualifiers get the same.
+inline constexpr const char* builtinAttributeLocations[3] = {"rm_Position", "rm_NormalIn", "rm_TexCoordIn"};
 
 }  // namespace rmfx

@@ -78,9 +78,10 @@ public:
         : file_(std::move(file)), folder_(std::move(folder)), diagnostics_(diagnostics) {}
 
     void parse(const XMLElement* root, ReplayManifest& manifest) {
-        ElementReader r(root, file_, diagnostics_, {"version"});
+        ElementReader r(root, file_, diagnostics_, {"version", "sandbox"});
         auto version = r.string("version", true);
         if (version && *version != "1") r.error("unsupported version '" + *version + "': this rmfx reads version 1");
+        manifest.media.sandbox = r.boolean("sandbox").value_or(true);
         // <defaults> applies to every case, wherever it stands.
         const XMLElement* defaults = nullptr;
         for (const XMLElement* e = root->FirstChildElement("defaults"); e; e = e->NextSiblingElement("defaults")) {
@@ -99,9 +100,13 @@ public:
         for (const XMLElement* e = root->FirstChildElement(); e; e = e->NextSiblingElement()) {
             std::string_view tag = e->Name();
             if (tag == "defaults") continue;
+            if (tag == "media") {
+                parseMedia(e, manifest);
+                continue;
+            }
             if (tag != "case") {
                 xml::errorAt(e, file_, diagnostics_,
-                             "unknown element <" + std::string(tag) + "> in <replay> (expected defaults, case)");
+                             "unknown element <" + std::string(tag) + "> in <replay> (expected defaults, media, case)");
                 continue;
             }
             if (auto c = parseCase(e, manifest)) manifest.cases.push_back(std::move(*c));
@@ -172,6 +177,18 @@ private:
         c.workspaceText = *workspace;
         c.workspace = (folder_ / *workspace).lexically_normal();
         return c;
+    }
+
+    // <media dir="…"/>: a folder of every case's media search path, which the sandbox also allows.
+    void parseMedia(const XMLElement* e, ReplayManifest& manifest) {
+        ElementReader r(e, file_, diagnostics_, {"dir"});
+        auto dir = r.string("dir", true);
+        xml::noChildren(e, file_, diagnostics_);
+        if (!dir) return;
+        fs::path folder = (folder_ / *dir).lexically_normal();
+        std::error_code error;
+        if (!fs::is_directory(folder, error)) return r.error("media folder '" + *dir + "' is not a folder (looked for " + folder.string() + ")");
+        manifest.media.searchPath.push_back(folder);
     }
 
     void parseSet(const XMLElement* e, ReplayCase& c) {

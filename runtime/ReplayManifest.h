@@ -12,6 +12,7 @@
 #include "runtime/Diagnostic.h"
 #include "runtime/HeadlessRun.h"
 #include "runtime/ImageCompare.h"
+#include "runtime/MediaResolver.h"
 
 namespace rmfx {
 
@@ -50,6 +51,9 @@ struct ReplayCase {
 struct ReplayManifest {
     std::filesystem::path path;
     std::filesystem::path folder;  // where relative paths resolve
+    // <media dir> folders, and <replay sandbox>: replay sandboxes its workspaces unless the
+    // manifest says sandbox="false" (or `rmfx replay --no-sandbox`).
+    MediaOptions media{{}, true};
     std::vector<ReplayCase> cases;
 
     const ReplayCase* findCase(std::string_view name) const;

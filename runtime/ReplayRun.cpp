@@ -31,15 +31,22 @@ void checkTargets(const ReplayCase& c, const Workspace& ws, Diagnostics& diagnos
 
 }  // namespace
 
-CaseRender renderReplayCase(const ReplayCase& c) {
+CaseRender renderReplayCase(const ReplayCase& c, const MediaOptions& media, HeadlessContexts* contexts) {
     CaseRender out;
-    LoadedWorkspace loaded = loadWorkspace(c.workspace);
+    ValidationOptions load;
+    load.media = media;
+    LoadedWorkspace loaded = loadWorkspace(c.workspace, load);
     out.diagnostics = std::move(loaded.diagnostics);
     if (!loaded.workspace) return out;
     Workspace& ws = *loaded.workspace;
     applySets(c, ws, out.diagnostics);
     checkTargets(c, ws, out.diagnostics);
     if (!out.ok()) return out;
+    if (contexts)
+        if (auto context = contexts->use(ws.profile); !context) {
+            out.diagnostics.push_back({Diagnostic::Severity::Error, c.where, "<case name=\"" + c.name + "\">", context.error()});
+            return out;
+        }
 
     // Only what the compares read is computed, as rmfx render would for each target.
     ExecutorOptions options;

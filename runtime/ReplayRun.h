@@ -11,6 +11,8 @@
 #include "runtime/ReplayManifest.h"
 #include "runtime/Result.h"
 
+#include "runtime/HeadlessContexts.h"
+
 namespace rmfx {
 
 struct CaseRender {
@@ -24,8 +26,10 @@ struct CaseRender {
 
 // Loads and validates the case's workspace, applies its <set> values, checks that its compares
 // name targets the workspace has, renders the frames and reads the images. Needs a current GL
-// context; the rest of a run is unaffected by a failing case.
-CaseRender renderReplayCase(const ReplayCase& c);
+// context; the rest of a run is unaffected by a failing case. `media`: the manifest's search path
+// and sandbox, with the command line's changes. With `contexts`, the context of the workspace's
+// profile is made current first.
+CaseRender renderReplayCase(const ReplayCase& c, const MediaOptions& media, HeadlessContexts* contexts = nullptr);
 
 // Reads the reference and compares. A reference that cannot be read is a failed comparison
 // whose problem says so.

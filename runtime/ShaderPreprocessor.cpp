@@ -1,5 +1,7 @@
 #include "runtime/ShaderPreprocessor.h"
 
+#include "runtime/MediaResolver.h"
+
 #include <cctype>
 #include <charconv>
 #include <fstream>
@@ -65,12 +67,6 @@ constexpr size_t kMaxIncludes = 4096;
 constexpr size_t kMaxExpandedLines = size_t(1) << 18;
 constexpr size_t kMaxExpandedBytes = size_t(16) << 20;
 
-bool isInside(const std::filesystem::path& file, const std::filesystem::path& folder) {
-    auto f = std::filesystem::weakly_canonical(file), d = std::filesystem::weakly_canonical(folder);
-    auto [end, _] = std::mismatch(d.begin(), d.end(), f.begin(), f.end());
-    return end == d.end();
-}
-
 class Expander {
 public:
     Expander(const ShaderInput& input, Diagnostics& diagnostics, PreprocessedShader& out)
@@ -134,12 +130,25 @@ private:
                 if (snippet.name == name)
                     return enter("<snippet>/" + snippet.name, name, snippet.code,
                                  {snippet.where.file, snippet.codeLine}, folder, depth, where, nullptr);
-        std::filesystem::path candidate = folder / name;
-        if (!std::filesystem::is_regular_file(candidate)) candidate = input_.root / name;
-        if (!std::filesystem::is_regular_file(candidate))
+        // As every file reference: backslashes separate, case is ignored when the exact name is
+        // not there (MediaResolver); an absolute name is taken as it is, for the root check below.
+        MediaReference reference = MediaReference::parse(name);
+        std::filesystem::path candidate;
+        std::string ambiguity;
+        std::vector<std::filesystem::path> bases{folder, input_.root};
+        if (reference.absolute()) bases = {reference.posixAbsolute ? "/" : ""};
+        for (const std::filesystem::path& base : bases) {
+            if (base.empty()) break;
+            if (auto found = walkIgnoringCase(base, reference.components, &ambiguity)) {
+                candidate = base / *found;
+                break;
+            }
+            if (!ambiguity.empty()) return fail(where, "\"" + name + "\" is ambiguous: " + ambiguity);
+        }
+        if (candidate.empty())
             return fail(where, "cannot find \"" + name + "\" (looked in " + folder.string() +
                                    (folder == input_.root ? "" : " and " + input_.root.string()) + ")");
-        if (!isInside(candidate, input_.root))
+        if (!liesInside(candidate, input_.root))
             return fail(where, "\"" + name + "\" lies outside the workspace folder " + input_.root.string());
         std::ifstream in(candidate, std::ios::binary);
         std::stringstream buffer;
@@ -200,6 +209,16 @@ std::optional<std::string> readShaderFile(const std::filesystem::path& file) {
     return buffer.str();
 }
 
+const char* defaultVersionLine(ShaderDialect dialect) {
+    switch (dialect) {
+        case ShaderDialect::Glsl: return "#version 450 core";
+        case ShaderDialect::GlslEs100: return "#version 100";
+        case ShaderDialect::GlslLegacy:
+        case ShaderDialect::Hlsl: return "";
+    }
+    return "";
+}
+
 SourceLocation PreprocessedShader::origin(int line) const {
     if (lineOrigins.empty()) return {};
     if (line < 1) return lineOrigins.front();
@@ -240,10 +259,11 @@ PreprocessedShader preprocessShader(const ShaderInput& input, Diagnostics& diagn
     SourceLocation versionWhere = versionLine < lines.size() ? body.lineOrigins[versionLine] : input.start;
     if (versionLine < lines.size()) {
         out.code += lines[versionLine] + "\n";
-    } else {
-        out.code += "#version 450 core\n";
+        out.lineOrigins.push_back(versionWhere);
+    } else if (std::string version = defaultVersionLine(input.dialect); !version.empty()) {
+        out.code += version + "\n";
+        out.lineOrigins.push_back(versionWhere);
     }
-    out.lineOrigins.push_back(versionWhere);
     for (const std::string& define : input.defines) {
         out.code += "#define " + define + "\n";
         out.lineOrigins.push_back(versionWhere);

@@ -13,7 +13,7 @@
 namespace rmfx {
 
 struct PreprocessedShader {
-    std::string code;                      // ready for the compiler; starts with #version
+    std::string code;                      // ready for the compiler; starts with #version (GlslLegacy: when the shader has one)
     std::vector<SourceLocation> lineOrigins;  // lineOrigins[i]: origin of line i + 1 of code
     std::vector<std::filesystem::path> files;  // every file read (for hot reload)
 
@@ -29,14 +29,21 @@ struct ShaderInput {
     std::vector<std::string> defines;  // "NAME" or "NAME VALUE", inserted after #version
     std::vector<std::string> declarations;  // lines inserted after the defines ("uniform bool x;")
     const std::vector<CodeSnippet>* snippets = nullptr;  // found by name before any file
+    ShaderDialect dialect = ShaderDialect::Glsl;  // decides the #version put first when the code has none
 };
 
 // The text of a shader file; nullopt when it is no regular file (a folder, or a device or FIFO
 // such as /dev/zero, whose reading would never end) or cannot be read.
 std::optional<std::string> readShaderFile(const std::filesystem::path& file);
 
+// The #version line a shader of this dialect gets when it has none: "#version 450 core",
+// "#version 100"; empty for GlslLegacy (no #version means GLSL 1.10) and Hlsl.
+const char* defaultVersionLine(ShaderDialect dialect);
+
 // Includes resolve to a snippet of that name, then relative to the including file, then to `root`. `#pragma once` is honoured.
-// Without a #version line, "#version 450 core" is put first.
+// Without a #version line, the dialect's defaultVersionLine is put first. The defines and
+// declarations follow the #version (or open the text when there is none): plain `#define` and
+// `uniform bool` lines, legal in every dialect.
 PreprocessedShader preprocessShader(const ShaderInput& input, Diagnostics& diagnostics);
 
 // Rewrites a compiler's info log (glslang, Mesa and NVIDIA styles) into diagnostics located in

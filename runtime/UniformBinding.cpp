@@ -5,9 +5,16 @@ namespace rmfx {
 UniformSource resolveUniform(const Workspace& ws, const Pass& pass, const std::string& name) {
     for (size_t i = 0; i < pass.samplers.size(); ++i)
         if (pass.samplers[i].uniform == name) return BoundSampler{&pass.samplers[i], static_cast<int>(i)};
-    for (const Variable& c : pass.constants)
-        if (c.name == name) return BoundConstant{&c};
-    if (const Variable* v = ws.findVariable(name)) return BoundVariable{v};
+    auto semantic = [](const Variable& v) { return v.semantic.empty() ? std::nullopt : findSemantic(v.semantic); };
+    for (const Variable& c : pass.constants) {
+        if (c.name != name) continue;
+        if (auto s = semantic(c)) return BoundSemantic{&c, *s};
+        return BoundConstant{&c};
+    }
+    if (const Variable* v = ws.findVariable(name)) {
+        if (auto s = semantic(*v)) return BoundSemantic{v, *s};
+        return BoundVariable{v};
+    }
     if (auto p = findPredefined(name)) return BoundPredefined{*p};
     return Unbound{};
 }
@@ -37,6 +44,11 @@ std::string bindingMismatch(const Workspace& ws, const UniformSource& source, co
     };
     if (const auto* c = std::get_if<BoundConstant>(&source)) return variableMismatch(*c->constant, "pass constant");
     if (const auto* v = std::get_if<BoundVariable>(&source)) return variableMismatch(*v->variable, "variable");
+    if (const auto* s = std::get_if<BoundSemantic>(&source)) {
+        if (semanticFeeds(s->info, type)) return {};
+        return declared + ", but variable '" + s->variable->name + "' (" + where(s->variable->where) + ") has semantic " +
+               s->info.name + ", a " + uniformTypeName(s->info.type);
+    }
     if (const auto* p = std::get_if<BoundPredefined>(&source)) {
         if (p->info.type == type) return {};
         return declared + ", but the predefined " + p->info.name + " is a " + uniformTypeName(p->info.type);

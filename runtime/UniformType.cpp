@@ -73,6 +73,8 @@ bool uniformAccepts(UniformType uniform, ValueType variable) {
         case ValueType::Color3: return uniform == UniformType::Vec3;
         case ValueType::Vec4:
         case ValueType::Color4: return uniform == UniformType::Vec4;
+        case ValueType::Mat2: return uniform == UniformType::Mat2;
+        case ValueType::Mat3: return uniform == UniformType::Mat3;
         case ValueType::Mat4: return uniform == UniformType::Mat4;
     }
     return false;

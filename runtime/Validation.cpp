@@ -1,5 +1,6 @@
 #include "runtime/Validation.h"
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -19,10 +20,10 @@ public:
 
     void run() {
         checkUniqueNames();
-        checkTextures();
         checkTargets();
         checkOutput();
         checkEffects();
+        checkSemantics();
         for (const Pass& pass : ws_.passes) checkPass(pass);
         Diagnostics order = checkPassOrder(ws_);
         out_.insert(out_.end(), order.begin(), order.end());
@@ -68,18 +69,6 @@ private:
                 error(t->where, "<target name=\"output\">",
                       "the name 'output' is taken by the implicit output target; rename the target, or make it the "
                       "output with <output target=\"output\"/>");
-    }
-
-    void checkTextures() {
-        for (const Texture& t : ws_.textures) {
-            for (size_t i = 0; i < t.files.size(); ++i) {
-                std::filesystem::path file = ws_.folder / t.files[i];
-                if (!std::filesystem::is_regular_file(file))
-                    error(i < t.fileLocations.size() ? t.fileLocations[i] : t.where,
-                          std::string(t.kind == TextureKind::Cube ? "<cubemap" : "<texture") + " name=\"" + t.name + "\">",
-                          "image file '" + t.files[i] + "' not found (looked for " + file.string() + ")");
-            }
-        }
     }
 
     void checkTargets() {
@@ -160,8 +149,25 @@ private:
                     error(ws_.output.where, "<output>", "effects: no effect named '" + name + "' is declared");
     }
 
+    // An unknown semantic is no error: RenderMonkey knew a few rmfx does not fill.
+    void checkSemantics() {
+        auto check = [&](const Variable& v) {
+            if (v.semantic.empty() || findSemantic(v.semantic)) return;
+            warning(v.where, "<" + std::string(valueTypeName(v.value.type)) + " name=\"" + v.name + "\">",
+                    "variable '" + v.name + "' (" + at(v.where) + ") has semantic '" + v.semantic +
+                        "', which rmfx does not fill: it keeps its stored value " + formatValue(v.value));
+        };
+        for (const Variable& v : ws_.variables) check(v);
+        for (const Pass& p : ws_.passes)
+            for (const Variable& c : p.constants) check(c);
+    }
+
     void checkPass(const Pass& pass) {
         std::string label = passLabel(pass);
+        for (const ShaderSource& s : pass.shaders)
+            if (s.dialect == ShaderDialect::GlslLegacy && ws_.profile != GlProfile::Compatibility)
+                error(s.where, "<shader>", "legacy GLSL (dialect=\"glsl110\") in " + label +
+                                               " needs a compatibility-profile context: <workspace profile=\"compatibility\">");
         if (!pass.target.empty() && !ws_.findTarget(pass.target) &&
             !(pass.target == Workspace::implicitOutputName && ws_.output.target.empty()))
             error(pass.where, label, "target '" + pass.target + "' is not declared");
@@ -201,18 +207,21 @@ private:
                       "pass constant '" + c.name + "' is a " + typeWithWidth(c.value.type) + " but variable '" +
                           c.name + "' (" + at(v->where) + ") is a " + typeWithWidth(v->value.type));
         }
-        if (!pass.draw.file.empty() && !std::filesystem::is_regular_file(ws_.folder / pass.draw.file))
-            error(pass.draw.where, "<draw>", "model file '" + pass.draw.file + "' not found (looked for " +
-                                                 (ws_.folder / pass.draw.file).string() + ")");
-
         // Every effect asked for, switches deciding: the form that keeps every read of the shader.
         std::set<std::string> all;
         for (const Effect& e : ws_.effects) all.insert(e.name);
         ShaderPrelude prelude = effectPrelude(ws_, all);
         auto program = assemblePassProgram(ws_, pass, prelude.defines, out_, prelude.declarations);
         if (!program || !options_.compileShaders) return;
-        auto uniforms = checkPassProgram(*program, label, out_);
+        std::vector<std::string> inputs;
+        auto uniforms = checkPassProgram(*program, label, out_, &inputs);
         if (!uniforms) return;
+        // Built-in streams are checked by the GL executor, which sees the driver's list of inputs.
+        for (const VertexStream& stream : pass.streams)
+            if (!stream.attribute.empty() && std::find(inputs.begin(), inputs.end(), stream.attribute) == inputs.end())
+                warning(stream.where, label, "pass '" + pass.name + "': stream to attribute '" + stream.attribute +
+                                                 "' (line " + std::to_string(stream.where.line) +
+                                                 "), which the shaders do not read");
         std::set<std::string> active;
         for (const ActiveUniform& u : *uniforms) {
             active.insert(u.name);

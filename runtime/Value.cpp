@@ -44,6 +44,8 @@ int componentCount(ValueType type) {
         case ValueType::Color3: return 3;
         case ValueType::Vec4:
         case ValueType::Color4: return 4;
+        case ValueType::Mat2: return 4;
+        case ValueType::Mat3: return 9;
         case ValueType::Mat4: return 16;
     }
     return 1;
@@ -59,6 +61,8 @@ const char* valueTypeName(ValueType type) {
         case ValueType::Vec4: return "vec4";
         case ValueType::Color3:
         case ValueType::Color4: return "color";
+        case ValueType::Mat2: return "mat2";
+        case ValueType::Mat3: return "mat3";
         case ValueType::Mat4: return "mat4";
     }
     return "?";
@@ -74,6 +78,8 @@ const char* glslTypeName(ValueType type) {
         case ValueType::Color3: return "vec3";
         case ValueType::Vec4:
         case ValueType::Color4: return "vec4";
+        case ValueType::Mat2: return "mat2";
+        case ValueType::Mat3: return "mat3";
         case ValueType::Mat4: return "mat4";
     }
     return "?";

@@ -9,7 +9,8 @@
 
 namespace rmfx {
 
-enum class ValueType { Float, Int, Bool, Vec2, Vec3, Vec4, Color3, Color4, Mat4 };
+// Mat2 and Mat3 come only from RenderMonkey imports (RmDynamicVariable); matrices are column-major.
+enum class ValueType { Float, Int, Bool, Vec2, Vec3, Vec4, Color3, Color4, Mat2, Mat3, Mat4 };
 
 struct Value {
     ValueType type = ValueType::Float;

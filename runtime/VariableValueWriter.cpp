@@ -10,6 +10,7 @@
 
 #include "runtime/AtomicFile.h"
 #include "runtime/Diagnostic.h"
+#include "runtime/RfxImporter.h"
 #include "runtime/WorkspaceParser.h"
 #include "runtime/XmlTagScanner.h"
 
@@ -172,6 +173,10 @@ Result<std::string> rewriteVariableValues(std::string_view text, const std::stri
 }
 
 Result<bool> saveVariableValues(const std::filesystem::path& workspaceFile, const std::map<std::string, Value>& values) {
+    if (isRfxPath(workspaceFile))
+        return Error{workspaceFile.string() +
+                     ": error: saving tweaked values into a RenderMonkey .rfx file is not supported (rmfx never "
+                     "rewrites .rfx files); pass the values with --set NAME=VALUE, or note them down"};
     auto text = readWholeFile(workspaceFile);
     if (!text) return Error{text.error()};
     const std::string file = workspaceFile.string();

@@ -61,6 +61,7 @@ constexpr FormatInfo formats[] = {
     {TargetFormat::RG32F, "rg32f", 8},         {TargetFormat::RGBA16, "rgba16", 8},
     {TargetFormat::R11G11B10F, "r11g11b10f", 4}, {TargetFormat::RGB10A2, "rgb10a2", 4},
     {TargetFormat::R8, "r8", 1},               {TargetFormat::RG8, "rg8", 2},
+    {TargetFormat::RG16, "rg16", 4},
 };
 }  // namespace
 

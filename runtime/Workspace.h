@@ -52,7 +52,7 @@ struct Texture {
     SourceLocation where;
 };
 
-enum class TargetFormat { RGBA8, RGBA16F, RGBA32F, R16F, R32F, RG16F, RG32F, RGBA16, R11G11B10F, RGB10A2, R8, RG8 };
+enum class TargetFormat { RGBA8, RGBA16F, RGBA32F, R16F, R32F, RG16F, RG32F, RGBA16, R11G11B10F, RGB10A2, R8, RG8, RG16 };
 
 struct TargetSize {
     bool relative = true;
@@ -237,6 +237,7 @@ struct Workspace {
     std::filesystem::path path;  // the file it came from ("<built-in>" for embedded text)
     std::filesystem::path folder;  // shader, texture and model paths are relative to it
     std::filesystem::path includeRoot;  // #include may not leave it; empty: `folder` (see includeFolder)
+    SourceLocation includeRootWhere;    // where includeRoot was declared
     std::string name;
     std::string description;
     int width = 512, height = 512;  // default viewport size

@@ -1,6 +1,7 @@
 #include "runtime/WorkspaceLoader.h"
 
 #include "runtime/DefaultWorkspace.h"
+#include "runtime/RfxImporter.h"
 #include "runtime/WorkspaceParser.h"
 
 namespace rmfx {
@@ -9,13 +10,27 @@ static LoadedWorkspace validated(ParsedWorkspace parsed, const ValidationOptions
     LoadedWorkspace out;
     out.diagnostics = std::move(parsed.diagnostics);
     if (!parsed.workspace) return out;
+    // References are resolved once, here: what validation, the executor and hot reload open.
+    // Until they all resolve nothing reads them (a shader outside the sandbox is not even compiled).
+    Diagnostics unresolved = resolveWorkspaceMedia(*parsed.workspace, options.media);
+    out.diagnostics.insert(out.diagnostics.end(), unresolved.begin(), unresolved.end());
+    if (hasErrors(unresolved)) return out;
     Diagnostics found = validateWorkspace(*parsed.workspace, options);
     out.diagnostics.insert(out.diagnostics.end(), found.begin(), found.end());
     if (!hasErrors(out.diagnostics)) out.workspace = std::move(parsed.workspace);
     return out;
 }
 
-LoadedWorkspace loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options) {
+LoadedWorkspace loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options,
+                              const WorkspaceLoadOptions& load) {
+    if (isRfxPath(path)) return validated(importRfxFile(path, {load.effect}), options);
+    if (!load.effect.empty()) {
+        LoadedWorkspace out;
+        out.diagnostics.push_back({Diagnostic::Severity::Error, {path.string(), 0}, "--effect " + load.effect,
+                                   "--effect chooses an effect of a RenderMonkey .rfx file; this is an rmfx workspace "
+                                   "(use --effects to choose its <effect> groups)"});
+        return out;
+    }
     return validated(parseWorkspaceFile(path), options);
 }
 

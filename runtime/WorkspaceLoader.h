@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "runtime/Diagnostic.h"
 #include "runtime/Validation.h"
@@ -15,7 +16,16 @@ struct LoadedWorkspace {
     Diagnostics diagnostics;             // errors and warnings, in file order per stage
 };
 
-LoadedWorkspace loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options = {});
+// How a file becomes a workspace, beyond validation.
+struct WorkspaceLoadOptions {
+    // RenderMonkey (.rfx) files: the effect to import (dotted path or name); empty: the active one.
+    // An rmfx workspace holds one effect graph, so a non-empty choice is an error for it.
+    std::string effect;
+};
+
+// Dispatches on the extension: .rfx (any case) to the RenderMonkey importer, else the XML format.
+LoadedWorkspace loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options = {},
+                              const WorkspaceLoadOptions& load = {});
 // The built-in default workspace; its relative paths resolve in the current folder.
 LoadedWorkspace loadDefaultWorkspace(const ValidationOptions& options = {});
 

@@ -20,10 +20,12 @@ public:
     Parser(std::string file, Diagnostics& diagnostics) : file_(std::move(file)), diagnostics_(diagnostics) {}
 
     void parseWorkspace(const XMLElement* root, Workspace& ws) {
-        ElementReader r(root, file_, diagnostics_, {"version", "name", "size", "include-root"});
+        ElementReader r(root, file_, diagnostics_, {"version", "name", "size", "include-root", "profile"});
         auto version = r.string("version", true);
         if (version && *version != "1")
             r.error("unsupported version '" + *version + "': this rmfx reads version 1");
+        ws.profile = r.choice<GlProfile>("profile", {{"core", GlProfile::Core}, {"compatibility", GlProfile::Compatibility}})
+                         .value_or(GlProfile::Core);
         ws.name = r.string("name").value_or(ws.path.stem().string());
         if (auto wh = r.size("size")) {
             ws.width = wh->first;
@@ -39,6 +41,7 @@ public:
                 r.error("include-root '" + *root + "' must be an ancestor of the workspace folder: \"..\", \"../..\", ...");
             else {
                 ws.includeRoot = (ws.folder / relative).lexically_normal();
+                ws.includeRootWhere = r.where();
                 if (!ws.includeRoot.has_filename()) ws.includeRoot = ws.includeRoot.parent_path();  // "a/b/.." is "a/"
             }
         }
@@ -115,25 +118,28 @@ private:
     std::optional<Variable> parseVariable(const XMLElement* e) {
         ValueType type = *valueTypeFromElement(e->Name());
         ElementReader r(e, file_, diagnostics_,
-                        {"name", "value", "min", "max", "step", "ui", "options", "hdr", "description"});
+                        {"name", "value", "min", "max", "step", "ui", "options", "hdr", "description", "semantic"});
         Variable v;
         v.where = r.where();
         auto name = r.identifier("name");
-        auto text = r.string("value", true);
-        if (!name || !text) return std::nullopt;
+        // A semantic variable gets its value every frame; the stored one (default zeros) is what
+        // an unknown semantic leaves.
+        v.semantic = r.string("semantic").value_or("");
+        auto text = r.string("value", v.semantic.empty());
+        if (!name || (!text && v.semantic.empty())) return std::nullopt;
         v.name = *name;
         if (v.name.rfind("rm_", 0) == 0) {
             r.error("the prefix rm_ is reserved for predefined variables");
             return std::nullopt;
         }
         std::string why;
-        auto value = parseValue(type, *text, &why);
+        auto value = text ? parseValue(type, *text, &why) : Value{type, {}};
         if (!value) {
             r.error("attribute 'value': " + why);
             return std::nullopt;
         }
         v.value = *value;
-        bool numeric = type != ValueType::Bool && type != ValueType::Mat4;
+        bool numeric = type != ValueType::Bool && type != ValueType::Mat2 && type != ValueType::Mat3 && type != ValueType::Mat4;
         if (numeric) {
             v.min = r.number("min");
             v.max = r.number("max");
@@ -399,11 +405,13 @@ private:
             } else if (tag == "draw") {
                 once(c, drawSeen);
                 parseDraw(c, p.draw);
+            } else if (tag == "stream") {
+                if (auto stream = parseStream(c)) p.streams.push_back(std::move(*stream));
             } else if (valueTypeFromElement(tag)) {
                 if (auto v = parseVariable(c)) p.constants.push_back(std::move(*v));
             } else {
                 unexpected(c, "unknown element <" + std::string(tag) + "> in " + r.label() +
-                                  " (expected clear, blend, depth, cull, shader, sampler, draw, or a value "
+                                  " (expected clear, blend, depth, cull, shader, sampler, draw, stream, or a value "
                                   "element such as float)");
             }
         }
@@ -501,9 +509,18 @@ private:
     }
 
     std::optional<ShaderSource> parseShader(const XMLElement* e) {
-        ElementReader r(e, file_, diagnostics_, {"stage", "file"});
+        ElementReader r(e, file_, diagnostics_, {"stage", "file", "dialect", "entry", "profile"});
         ShaderSource s;
         s.where = r.where();
+        s.dialect = r.choice<ShaderDialect>("dialect", {{"glsl450", ShaderDialect::Glsl},
+                                                        {"glsl110", ShaderDialect::GlslLegacy},
+                                                        {"glsles100", ShaderDialect::GlslEs100},
+                                                        {"hlsl", ShaderDialect::Hlsl}})
+                        .value_or(ShaderDialect::Glsl);
+        s.entryPoint = r.string("entry").value_or("");
+        s.profile = r.string("profile").value_or("");
+        if (s.dialect != ShaderDialect::Hlsl && (r.has("entry") || r.has("profile")))
+            r.error("attributes 'entry' and 'profile' apply to dialect=\"hlsl\"");
         auto stage = r.choice<ShaderStage>("stage", {{"vertex", ShaderStage::Vertex}, {"fragment", ShaderStage::Fragment}});
         if (!r.has("stage")) r.error("missing attribute 'stage' (vertex or fragment)");
         auto file = r.string("file");
@@ -527,6 +544,27 @@ private:
             // The text node's line is where the code begins; tinyxml2 keeps it on the first child node.
             s.codeLine = e->FirstChild() ? e->FirstChild()->GetLineNum() : e->GetLineNum();
         }
+        return s;
+    }
+
+    // <stream usage="texcoord" index="0" attribute="rm_TexCoord0"/>: no attribute feeds the
+    // compatibility built-in (gl_MultiTexCoord0).
+    std::optional<VertexStream> parseStream(const XMLElement* e) {
+        ElementReader r(e, file_, diagnostics_, {"usage", "index", "attribute"});
+        VertexStream s;
+        s.where = r.where();
+        auto usage = r.choice<VertexUsage>("usage", {{"position", VertexUsage::Position}, {"normal", VertexUsage::Normal},
+                                                     {"texcoord", VertexUsage::TexCoord}, {"tangent", VertexUsage::Tangent},
+                                                     {"binormal", VertexUsage::Binormal}, {"color", VertexUsage::Color}});
+        if (!r.has("usage")) r.error("missing attribute 'usage' (position, normal, texcoord, tangent, binormal or color)");
+        s.usageIndex = r.integer("index", 0).value_or(0);
+        if (s.usageIndex > 7) r.error("attribute 'index': texture coordinate sets go from 0 to 7");
+        if (usage && *usage != VertexUsage::TexCoord && s.usageIndex != 0)
+            r.error("attribute 'index' applies to usage=\"texcoord\" (the mesh has one of each other stream)");
+        if (r.has("attribute")) s.attribute = r.identifier("attribute").value_or("");
+        noChildren(e);
+        if (!usage) return std::nullopt;
+        s.usage = *usage;
         return s;
     }
 

@@ -13,10 +13,19 @@ std::string rejection(const std::vector<std::string>& args) {
 
 }  // namespace
 
+TEST(EditorOptions, EffectOfARenderMonkeyFile) {
+    std::string error;
+    auto o = parseEditorOptions({"--effect", "Group.Effect", "fx.rfx"}, &error);
+    ASSERT_TRUE(o) << error;
+    EXPECT_EQ(o->workspace, "fx.rfx");
+    EXPECT_EQ(o->effect, "Group.Effect");
+    EXPECT_EQ(rejection({"fx.rfx", "--effect"}), "--effect needs a value");
+}
+
 TEST(EditorOptions, ParsesEveryOption) {
     std::string error;
     auto o = parseEditorOptions({"fx.xml", "--size", "256x128", "--set", "Exposure_Level=2", "--set", "Tint=1 0 0",
-                                 "--frames", "5", "--screenshot", "w.png", "--output-screenshot", "o.png", "--view", "scene", "--dt", "0.5"},
+                                 "--frames", "5", "--screenshot", "w.png", "--output-screenshot", "o.png", "--view", "scene", "--dt", "0.5", "--media", ".", "--sandbox"},
                                 &error);
     ASSERT_TRUE(o) << error;
     EXPECT_EQ(o->workspace, "fx.xml");
@@ -28,6 +37,8 @@ TEST(EditorOptions, ParsesEveryOption) {
     EXPECT_EQ(o->outputScreenshot, std::filesystem::path("o.png"));
     EXPECT_EQ(o->viewTargets, std::vector<std::string>{"scene"});
     EXPECT_EQ(o->deltaTime, 0.5f);
+    EXPECT_EQ(o->media.searchPath, std::vector<std::filesystem::path>{"."});
+    EXPECT_TRUE(o->media.sandbox);
 }
 
 TEST(EditorOptions, RejectsWhatItCannotUse) {
@@ -41,6 +52,7 @@ TEST(EditorOptions, RejectsWhatItCannotUse) {
     EXPECT_NE(rejection({"a.xml", "--frames", "2", "--dt", "-1"}).find("--dt"), std::string::npos);
     EXPECT_NE(rejection({"a.xml", "--bogus"}).find("'--bogus'"), std::string::npos);
     EXPECT_NE(rejection({"a.xml", "--size"}).find("needs a value"), std::string::npos);
+    EXPECT_NE(rejection({"a.xml", "--media", "no/such/folder"}).find("--media"), std::string::npos);
 }
 
 }  // namespace rmfx::editor

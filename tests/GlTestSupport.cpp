@@ -17,14 +17,21 @@ struct SharedContext {
     std::string error;
 };
 
+SharedContext createContext(GlProfile profile) {
+    SharedContext s;
+    auto created = GlContext::createHeadless(profile);
+    if (created) s.context = std::move(*created);
+    else s.error = created.error();
+    return s;
+}
+
 const SharedContext& sharedContext() {
-    static SharedContext shared = [] {
-        SharedContext s;
-        auto created = GlContext::createHeadless();
-        if (created) s.context = std::move(*created);
-        else s.error = created.error();
-        return s;
-    }();
+    static SharedContext shared = createContext(GlProfile::Core);
+    return shared;
+}
+
+const SharedContext& compatibilityContext() {
+    static SharedContext shared = createContext(GlProfile::Compatibility);
     return shared;
 }
 
@@ -36,11 +43,23 @@ void GlTest::SetUp() {
     shared.context->makeCurrent();
 }
 
+void CompatibilityGlTest::SetUp() {
+    GlTest::SetUp();  // the core context exists first, so TearDown can return to it
+    const SharedContext& compatibility = compatibilityContext();
+    ASSERT_TRUE(compatibility.context) << "no compatibility-profile GL context: " << compatibility.error;
+    compatibility.context->makeCurrent();
+}
+
+void CompatibilityGlTest::TearDown() {
+    if (sharedContext().context) sharedContext().context->makeCurrent();
+}
+
 std::unique_ptr<Workspace> workspaceFromText(const std::string& xml, const std::filesystem::path& folder) {
     ParsedWorkspace parsed = parseWorkspaceText(xml, folder / "test-workspace.xml", folder);
     Diagnostics diagnostics = parsed.diagnostics;
     if (parsed.workspace) {
-        Diagnostics found = validateWorkspace(*parsed.workspace);
+        Diagnostics found = resolveWorkspaceMedia(*parsed.workspace, {});
+        if (!hasErrors(found)) found = validateWorkspace(*parsed.workspace);
         diagnostics.insert(diagnostics.end(), found.begin(), found.end());
     }
     if (!parsed.workspace || hasErrors(diagnostics)) {

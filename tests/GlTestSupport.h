@@ -26,6 +26,14 @@ protected:
     void SetUp() override;
 };
 
+// For workspaces with profile="compatibility" (legacy GLSL, fixed-function state): a second,
+// compatibility-profile context, current during the test; the core one is current again after it.
+class CompatibilityGlTest : public GlTest {
+protected:
+    void SetUp() override;
+    void TearDown() override;
+};
+
 // Parses and validates workspace XML; relative file references resolve in `folder`. Adds a test
 // failure with the diagnostics and returns nullptr when the workspace has errors.
 std::unique_ptr<Workspace> workspaceFromText(const std::string& xml,

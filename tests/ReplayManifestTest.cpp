@@ -160,7 +160,7 @@ TEST(ReplayManifest, NothingToReplay) {
 
 TEST(ReplayManifest, UnknownElements) {
     EXPECT_EQ(errorsOf(manifest({"  <case name=\"a\" workspace=\"a.xml\">", kCompare, "  </case>", "  <cases/>"})),
-              (Lines{at + "5: error: unknown element <cases> in <replay> (expected defaults, case)"}));
+              (Lines{at + "5: error: unknown element <cases> in <replay> (expected defaults, media, case)"}));
     EXPECT_EQ(errorsOf(manifest({"  <case name=\"a\" workspace=\"a.xml\">", "    <sett name=\"x\" value=\"1\"/>",
                                  kCompare, "  </case>"})),
               (Lines{at + "3: error: unknown element <sett> in <case name=\"a\"> (expected set, compare)"}));
@@ -307,6 +307,39 @@ TEST(ReplayManifest, EffectsOfACaseAreAList) {
     EXPECT_EQ(m.cases[0].effects, (std::vector<std::string>{"glare", "streak", "ghost"}));
     EXPECT_EQ(m.cases[1].effects, std::vector<std::string>{});
     EXPECT_FALSE(m.cases[2].effects.has_value());
+}
+
+TEST(ReplayManifest, SandboxIsOnUnlessTheManifestTurnsItOff) {
+    ReplayManifest on = parsedOk(manifest({"  <case name=\"a\" workspace=\"a.xml\">", kCompare, "  </case>"}));
+    EXPECT_TRUE(on.media.sandbox);
+    EXPECT_TRUE(on.media.searchPath.empty());
+    ParsedManifest off = parse("<replay version=\"1\" sandbox=\"false\">\n  <case name=\"a\" workspace=\"a.xml\">\n" +
+                               kCompare + "\n  </case>\n</replay>\n");
+    ASSERT_TRUE(off.manifest) << formatAll(off.diagnostics);
+    EXPECT_FALSE(off.manifest->media.sandbox);
+    EXPECT_EQ(formatAll(parse("<replay version=\"1\" sandbox=\"maybe\">\n  <case name=\"a\" workspace=\"a.xml\">\n" +
+                              kCompare + "\n  </case>\n</replay>\n")
+                            .diagnostics)
+                  .find(at + "1: error: <replay>:"),
+              0u);
+}
+
+TEST(ReplayManifest, MediaFoldersResolveInTheManifestFolderAndMustExist) {
+    test::ScratchDir dir;
+    std::filesystem::create_directories(dir / "samples/media");
+    auto file = dir.write("ci/replay.xml", manifest({"  <media dir=\"../samples/media\"/>", "  <case name=\"a\" workspace=\"a.xml\">",
+                                                     kCompare, "  </case>", "  <media dir=\".\"/>"}));
+    ParsedManifest p = parseReplayManifestFile(file);
+    ASSERT_TRUE(p.manifest) << formatAll(p.diagnostics);
+    EXPECT_EQ(p.manifest->media.searchPath,
+              (std::vector<std::filesystem::path>{dir / "samples/media", dir / "ci/"}));
+    auto bad = dir.write("ci/bad.xml", manifest({"  <media dir=\"nowhere\"/>", "  <media/>", "  <case name=\"a\" workspace=\"a.xml\">",
+                                                 kCompare, "  </case>"}));
+    ParsedManifest q = parseReplayManifestFile(bad);
+    EXPECT_FALSE(q.manifest);
+    EXPECT_EQ(formatAll(q.diagnostics), bad.string() + ":2: error: <media>: media folder 'nowhere' is not a folder (looked for " +
+                                            (dir / "ci/nowhere").string() + ")\n" + bad.string() +
+                                            ":3: error: <media>: missing attribute 'dir'\n");
 }
 
 }  // namespace

@@ -393,10 +393,10 @@ TEST(Validation, MissingImageFiles) {
                            "</workspace>",
                        }));
     EXPECT_EQ(l.errors, (Lines{
-                            l.path + ":2: error: <texture name=\"t\">: image file 'missing.png' not found (looked for " +
-                                l.folder + "missing.png)",
-                            l.path + ":7: error: <cubemap name=\"box\">: image file 'ny.png' not found (looked for " +
-                                l.folder + "ny.png)",
+                            l.path + ":2: error: <texture name=\"t\">: image file 'missing.png' not found: looked for " +
+                                l.folder + "missing.png (ignoring case); no media folders were given (add one with --media DIR)",
+                            l.path + ":7: error: <cubemap name=\"box\">: image file 'ny.png' not found: looked for " +
+                                l.folder + "ny.png (ignoring case); no media folders were given (add one with --media DIR)",
                         }));
 }
 
@@ -410,8 +410,8 @@ TEST(Validation, MissingModelFile) {
                            "  </pass>",
                            "</workspace>",
                        }));
-    EXPECT_EQ(l.errors, (Lines{l.path + ":3: error: <draw>: model file 'models/rock.obj' not found (looked for " +
-                               l.folder + "models/rock.obj)"}));
+    EXPECT_EQ(l.errors, (Lines{l.path + ":3: error: <draw>: model file 'models/rock.obj' not found: looked for " +
+                               l.folder + "models/rock.obj (ignoring case); no media folders were given (add one with --media DIR)"}));
 }
 
 TEST(Validation, MissingShaderFile) {
@@ -423,8 +423,8 @@ TEST(Validation, MissingShaderFile) {
                            "  </pass>",
                            "</workspace>",
                        }));
-    EXPECT_EQ(l.errors, (Lines{l.path + ":3: error: <shader>: cannot open shader file 'p.frag' (looked for " +
-                               l.folder + "p.frag)"}));
+    EXPECT_EQ(l.errors, (Lines{l.path + ":3: error: <shader>: shader file 'p.frag' not found: looked for " +
+                               l.folder + "p.frag (ignoring case); no media folders were given (add one with --media DIR)"}));
 }
 
 TEST(Validation, NoFragmentShader) {
