@@ -1,7 +1,5 @@
 #include "runtime/PassProgram.h"
 
-#include <fstream>
-#include <sstream>
 
 #include "runtime/HlslTranslator.h"
 
@@ -81,16 +79,14 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
             input.start = {ws.path.string(), s.codeLine};
         } else {
             std::filesystem::path file = ws.folder / s.file;
-            std::ifstream in(file, std::ios::binary);
-            if (!in) {
+            std::optional<std::string> text = readShaderFile(file);
+            if (!text) {
                 diagnostics.push_back({Diagnostic::Severity::Error, s.where, "<shader>",
                                        "cannot open shader file '" + s.file + "' (looked for " + file.string() + ")"});
                 ok = false;
                 return;
             }
-            std::stringstream buffer;
-            buffer << in.rdbuf();
-            input.code = buffer.str();
+            input.code = std::move(*text);
             input.start = {file.lexically_normal().string(), 1};
             input.folder = file.parent_path();
         }

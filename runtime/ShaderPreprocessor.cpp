@@ -2,7 +2,10 @@
 
 #include "runtime/MediaResolver.h"
 
+#include <cctype>
+#include <charconv>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <regex>
 #include <set>
@@ -37,6 +40,33 @@ std::string directiveName(std::string_view line) {
     return std::string(line.substr(0, n));
 }
 
+// Whitespace as the C locale (and a regex's \s) has it.
+std::string_view trimSpace(std::string_view s) {
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+    return s;
+}
+
+// NAME of `#include "NAME"`, spaces allowed around each part and a // comment after; nullopt when
+// the line, whose directive is include, has another form. No std::regex: libstdc++'s recurses
+// once per character and overflows the stack on a line of some 40000.
+std::optional<std::string> includedName(std::string_view line) {
+    line = trimSpace(line.substr(line.find('#') + 1));
+    line = trimSpace(line.substr(std::string_view("include").size()));
+    if (line.size() < 3 || line.front() != '"') return std::nullopt;
+    size_t close = line.find('"', 1);
+    if (close == std::string_view::npos || close == 1) return std::nullopt;
+    std::string_view rest = trimSpace(line.substr(close + 1));
+    if (!rest.empty() && rest.substr(0, 2) != "//") return std::nullopt;
+    return std::string(line.substr(1, close - 1));
+}
+
+// What one shader may expand to through its includes: a file or snippet included over and over
+// (each including the next twice, say) would otherwise grow it exponentially.
+constexpr size_t kMaxIncludes = 4096;
+constexpr size_t kMaxExpandedLines = size_t(1) << 18;
+constexpr size_t kMaxExpandedBytes = size_t(16) << 20;
+
 class Expander {
 public:
     Expander(const ShaderInput& input, Diagnostics& diagnostics, PreprocessedShader& out)
@@ -45,8 +75,11 @@ public:
     void expand(const std::string& text, const std::string& file, int firstLine, const std::filesystem::path& folder,
                 int depth) {
         auto lines = splitLines(text);
-        for (size_t i = 0; i < lines.size(); ++i) {
+        for (size_t i = 0; i < lines.size() && !tooLarge_; ++i) {
             SourceLocation where{file, firstLine + static_cast<int>(i)};
+            current_ = where;
+            if (++linesRead_ > kMaxExpandedLines || out_.code.size() + lines[i].size() > kMaxExpandedBytes)
+                return stopGrowing(where);
             std::string directive = directiveName(lines[i]);
             if (directive == "include") {
                 include(lines[i], where, folder, depth);
@@ -58,6 +91,9 @@ public:
             }
         }
     }
+
+    // The line being expanded (an include's, while its file is looked up).
+    const SourceLocation& current() const { return current_; }
 
     // The top-level shader file, so that a file including itself is caught as a cycle.
     void openTopLevel(const std::filesystem::path& file) {
@@ -71,16 +107,23 @@ private:
         out_.lineOrigins.push_back(where);
     }
 
+    void stopGrowing(const SourceLocation& where) {
+        tooLarge_ = true;
+        fail(where, "the shader grows past " + std::to_string(kMaxIncludes) + " includes, " +
+                        std::to_string(kMaxExpandedLines) + " lines or " + std::to_string(kMaxExpandedBytes >> 20) +
+                        " MiB through its includes (is a file included over and over?)");
+    }
+
     void fail(const SourceLocation& where, const std::string& message) {
         diagnostics_.push_back({Diagnostic::Severity::Error, where, "#include", message});
         blank(where);
     }
 
     void include(const std::string& line, const SourceLocation& where, const std::filesystem::path& folder, int depth) {
-        static const std::regex pattern(R"(^\s*#\s*include\s*"([^"]+)\"\s*(//.*)?$)");
-        std::smatch m;
-        if (!std::regex_match(line, m, pattern)) return fail(where, "expected #include \"file\"");
-        std::string name = m[1];
+        if (++includes_ > kMaxIncludes) return stopGrowing(where);
+        std::optional<std::string> included = includedName(line);
+        if (!included) return fail(where, "expected #include \"file\"");
+        const std::string& name = *included;
         if (depth >= 32) return fail(where, "includes nested more than 32 deep (a cycle?) at \"" + name + "\"");
         if (input_.snippets)
             for (const CodeSnippet& snippet : *input_.snippets)
@@ -148,9 +191,23 @@ private:
     std::vector<std::filesystem::path> stack_;  // the files and snippets being included, outermost first
     std::vector<std::string> names_;            // the name each was included by
     std::set<std::filesystem::path> onceFiles_;
+    SourceLocation current_;
+    size_t includes_ = 0;    // #include lines met, whether they expand or fail
+    size_t linesRead_ = 0;   // every line of every text expanded, include lines too
+    bool tooLarge_ = false;  // past kMaxExpandedLines or kMaxExpandedBytes: the rest is dropped
 };
 
 }  // namespace
+
+std::optional<std::string> readShaderFile(const std::filesystem::path& file) {
+    std::error_code unreadable;
+    if (!std::filesystem::is_regular_file(file, unreadable)) return std::nullopt;
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return std::nullopt;
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+}
 
 const char* defaultVersionLine(ShaderDialect dialect) {
     switch (dialect) {
@@ -173,8 +230,17 @@ PreprocessedShader preprocessShader(const ShaderInput& input, Diagnostics& diagn
     PreprocessedShader body;
     Expander expander(input, diagnostics, body);
     // Code read from a shader file starts at its line 1; inline code starts later in the workspace file.
-    if (input.start.line == 1 && std::filesystem::is_regular_file(input.start.file)) expander.openTopLevel(input.start.file);
-    expander.expand(input.code, input.start.file, input.start.line, input.folder, 0);
+    try {
+        std::error_code unreadable;  // an unreadable top-level file is not one the includes can reach
+        if (input.start.line == 1 && std::filesystem::is_regular_file(input.start.file, unreadable))
+            expander.openTopLevel(input.start.file);
+        expander.expand(input.code, input.start.file, input.start.line, input.folder, 0);
+    } catch (const std::filesystem::filesystem_error& e) {
+        // A name the file system refuses (a component over 255 bytes, a symlink loop, a folder it
+        // may not search): the includes stop there with an error, as for a file not found.
+        diagnostics.push_back({Diagnostic::Severity::Error, expander.current(), "#include",
+                               "cannot look up \"" + e.path1().filename().string().substr(0, 64) + "\": " + e.code().message()});
+    }
 
     // #version must come first; defines go right after it, mapped to the #version line.
     PreprocessedShader out;
@@ -225,21 +291,31 @@ Diagnostics mapCompilerLog(const std::string& log, const PreprocessedShader& sha
     static const std::regex glslang(R"(^(ERROR|WARNING):\s*\d+:(\d+):\s*(.*)$)");
     static const std::regex mesa(R"(^\d+:(\d+)\(\d+\):\s*(error|warning):\s*(.*)$)");
     static const std::regex nvidia(R"(^\d+\((\d+)\)\s*:\s*(error|warning)\s*(.*)$)");
+    // Line numbers too large for an int are past the end of the shader: its last line.
+    auto lineNumber = [](const std::string& digits) {
+        int n = 0;
+        auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
+        return ec == std::errc::result_out_of_range ? std::numeric_limits<int>::max() : n;
+    };
     Diagnostics out;
     std::istringstream in(log);
     for (std::string line; std::getline(in, line);) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
+        // libstdc++'s regex recurses once per character: a longer line (a huge identifier quoted
+        // back, say) would overflow the stack. Its message keeps the first 4096 bytes.
+        constexpr size_t kMaxLogLine = 4096;
+        if (line.size() > kMaxLogLine) line = line.substr(0, kMaxLogLine) + "…";
         if (line.find_first_not_of(" \t") == std::string::npos) continue;
         std::smatch m;
         Diagnostic d;
         d.element = element;
         if (std::regex_match(line, m, glslang)) {
             d.severity = m[1] == "ERROR" ? Diagnostic::Severity::Error : Diagnostic::Severity::Warning;
-            d.where = shader.origin(std::stoi(m[2]));
+            d.where = shader.origin(lineNumber(m[2]));
             d.message = m[3];
         } else if (std::regex_match(line, m, mesa) || std::regex_match(line, m, nvidia)) {
             d.severity = m[2] == "error" ? Diagnostic::Severity::Error : Diagnostic::Severity::Warning;
-            d.where = shader.origin(std::stoi(m[1]));
+            d.where = shader.origin(lineNumber(m[1]));
             d.message = m[3];
         } else {
             // glslang's summary lines ("ERROR: 1 compilation errors.  No code generated.") add nothing.

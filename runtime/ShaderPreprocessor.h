@@ -3,6 +3,7 @@
 // so compiler messages ("0:17: …") can be mapped back to the user's file and line.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,10 @@ struct ShaderInput {
     const std::vector<CodeSnippet>* snippets = nullptr;  // found by name before any file
     ShaderDialect dialect = ShaderDialect::Glsl;  // decides the #version put first when the code has none
 };
+
+// The text of a shader file; nullopt when it is no regular file (a folder, or a device or FIFO
+// such as /dev/zero, whose reading would never end) or cannot be read.
+std::optional<std::string> readShaderFile(const std::filesystem::path& file);
 
 // The #version line a shader of this dialect gets when it has none: "#version 450 core",
 // "#version 100"; empty for GlslLegacy (no #version means GLSL 1.10) and Hlsl.

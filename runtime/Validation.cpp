@@ -247,7 +247,14 @@ private:
 
 Diagnostics validateWorkspace(const Workspace& ws, const ValidationOptions& options) {
     Diagnostics out;
-    Validator(ws, options, out).run();
+    try {
+        Validator(ws, options, out).run();
+    } catch (const std::filesystem::filesystem_error& e) {
+        // A file name the file system refuses (a component over 255 bytes, a symlink loop, a folder
+        // it may not search) ends validation with an error naming it, not with a crash.
+        out.push_back({Diagnostic::Severity::Error, {ws.path.string(), 0}, "",
+                       "cannot look up file '" + e.path1().string().substr(0, 300) + "': " + e.code().message()});
+    }
     return out;
 }
 

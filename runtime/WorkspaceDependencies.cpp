@@ -1,8 +1,6 @@
 #include "runtime/WorkspaceDependencies.h"
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include "runtime/ShaderPreprocessor.h"
 
@@ -37,11 +35,9 @@ public:
         }
         std::filesystem::path file = ws.folder / shader.file;
         addName(add(file, DependencyKind::Shader).passes, pass.name);
-        std::ifstream in(file, std::ios::binary);
-        if (!in) return;
-        std::stringstream text;
-        text << in.rdbuf();
-        addIncludes(ws, pass, text.str(), {file.lexically_normal().string(), 1}, file.parent_path());
+        std::optional<std::string> text = readShaderFile(file);
+        if (!text) return;
+        addIncludes(ws, pass, *text, {file.lexically_normal().string(), 1}, file.parent_path());
     }
 
     void addIncludes(const Workspace& ws, const Pass& pass, const std::string& code, const SourceLocation& start,

@@ -10,6 +10,7 @@ packages=(
   libimgui-dev libassimp-dev
   libspirv-cross-c-shared-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  clang libclang-rt-14-dev
   xvfb xauth
 )
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "tests/TestSupport.h"
 
 namespace rmfx {
@@ -220,6 +222,86 @@ TEST(ShaderPreprocessor, UnrecognisedLogLinesFallBackToTheShader) {
                                    mappedShader(), kFallback, "<pass name=\"p\">");
     EXPECT_EQ(formatted(d), (Lines{"fx.xml:27: error: <pass name=\"p\">: Linking failed: something odd",
                                    "fx.xml:27: error: <pass name=\"p\">: Linking fragment stage: missing main"}));
+}
+
+}  // namespace rmfx
+
+namespace rmfx {
+
+// Snippets s0..s{depth-1}, each including the next twice: 2^depth includes from 2 * depth lines.
+static std::vector<CodeSnippet> doublingSnippets(int depth) {
+    std::vector<CodeSnippet> snippets;
+    for (int i = 0; i < depth; ++i) {
+        std::string next = "#include \"s" + std::to_string(i + 1) + "\"";
+        snippets.push_back({"s" + std::to_string(i), lines({next, next}), 10 + 2 * i, {"w.xml", 9 + 2 * i}});
+    }
+    snippets.push_back({"s" + std::to_string(depth), "float x;", 10 + 2 * depth, {"w.xml", 9 + 2 * depth}});
+    return snippets;
+}
+
+TEST(ShaderPreprocessor, IncludesThatGrowTheShaderExponentiallyStopWithOneError) {
+    test::ScratchDir dir;
+    ShaderInput input = inputFor(dir, lines({"#include \"s0\"", "void main() {}"}));
+    // 2^10 = 1024 copies expand in full ...
+    std::vector<CodeSnippet> small = doublingSnippets(10);
+    input.snippets = &small;
+    Diagnostics d;
+    PreprocessedShader out = preprocessShader(input, d);
+    EXPECT_EQ(formatted(d), Lines{});
+    EXPECT_EQ(std::count(out.code.begin(), out.code.end(), 'x'), 1024);
+    // ... 2^30 would be 2^30 lines: the expansion stops at 4096 includes, with one error.
+    std::vector<CodeSnippet> huge = doublingSnippets(30);
+    input.snippets = &huge;
+    d.clear();
+    out = preprocessShader(input, d);
+    ASSERT_EQ(d.size(), 1u) << formatAll(d);
+    EXPECT_NE(d[0].message.find("grows past 4096 includes, 262144 lines or 16 MiB through its includes"), std::string::npos) << d[0].message;
+    EXPECT_EQ(d[0].where.file, "w.xml");  // in a snippet
+    EXPECT_LE(std::count(out.code.begin(), out.code.end(), 'x'), 4096);
+    EXPECT_EQ(static_cast<size_t>(std::count(out.code.begin(), out.code.end(), '\n')), out.lineOrigins.size());
+}
+
+TEST(ShaderPreprocessor, AnIncludeNameTheFileSystemRefusesIsAnErrorOnItsLine) {
+    test::ScratchDir dir;
+    // 300 bytes is past NAME_MAX (255): looking it up fails with ENAMETOOLONG, not "not found".
+    std::string name(300, 'a');
+    ShaderInput input = inputFor(dir, lines({"#version 450 core", "#include \"" + name + "\"", "void main() {}"}));
+    Diagnostics d;
+    PreprocessedShader out = preprocessShader(input, d);
+    ASSERT_EQ(d.size(), 1u) << formatAll(d);
+    EXPECT_EQ(d[0].where.file, "main.frag");
+    EXPECT_EQ(d[0].where.line, 2);
+    EXPECT_NE(d[0].message.find("File name too long"), std::string::npos) << d[0].message;
+}
+
+TEST(ShaderPreprocessor, IncludeLinesOfAnyLengthAreParsedWithoutRecursion) {
+    test::ScratchDir dir;
+    // libstdc++'s std::regex overflowed the stack on an include line of some 40000 bytes.
+    std::string name = std::string(100000, 'b') + "/x.glsl";
+    ShaderInput input = inputFor(dir, lines({"#include \"\"", "# include \"a.glsl\" x", "#include \"" + name + "\"  // long"}));
+    Diagnostics d;
+    preprocessShader(input, d);
+    ASSERT_EQ(d.size(), 3u) << formatAll(d);
+    EXPECT_EQ(d[0].message, "expected #include \"file\"");  // an empty name
+    EXPECT_EQ(d[1].message, "expected #include \"file\"");  // text after the name
+    EXPECT_EQ(d[2].where.line, 3);  // read, then refused by the file system (a component of 100000 bytes)
+    EXPECT_NE(d[2].message.find("File name too long"), std::string::npos) << d[2].message;
+}
+
+TEST(ShaderPreprocessor, CompilerLogLinesPastIntOrVeryLongMapWithoutThrowing) {
+    test::ScratchDir dir;
+    ShaderInput input = inputFor(dir, lines({"float a;", "void main() {}"}));
+    Diagnostics none;
+    PreprocessedShader shader = preprocessShader(input, none);
+    std::string identifier(50000, 'c');
+    Diagnostics d = mapCompilerLog(lines({"ERROR: 0:99999999999: 'x' : undeclared identifier",
+                                          "ERROR: 0:2: '" + identifier + "' : undeclared identifier"}),
+                                   shader, {"main.frag", 1}, "<shader>");
+    ASSERT_EQ(d.size(), 2u);
+    EXPECT_EQ(d[0].where.line, 2);  // past the end: the last line
+    EXPECT_EQ(d[0].message, "'x' : undeclared identifier");
+    EXPECT_EQ(d[1].where.line, 1);  // line 2 of the code is the user's line 1 (#version went first)
+    EXPECT_EQ(d[1].message.size(), 4096 - std::string("ERROR: 0:2: ").size() + std::string("…").size());
 }
 
 }  // namespace rmfx
