@@ -1,9 +1,6 @@
-// Fuzz target "rfx_import" (not built yet): the bytes as a RenderMonkey .rfx file (with the files
-// it names, FuzzInputFiles.h), imported, then checked as the "workspace" target checks a parsed
-// workspace. Written against runtime/RfxImporter.h as the rfx branch had it; to enable it after
-// merging, uncomment its rmfx_add_fuzzer line in fuzz/CMakeLists.txt, adapt the calls below if
-// the importer's API changed, and put the test .rfx files in tests/rfx/ (scripts/fuzz.sh seeds
-// the target from there).
+// Fuzz target "rfx_import": the bytes as a RenderMonkey .rfx file (with the files it names,
+// FuzzInputFiles.h), listed as `rmfx list` lists it, imported, then checked as the "workspace"
+// target checks a parsed workspace (FuzzWorkspace.h). Seeded from tests/rfx/ (scripts/fuzz.sh).
 
 #include "fuzz/FuzzEntries.h"
 #include "fuzz/FuzzInputFiles.h"
