@@ -1,6 +1,6 @@
 // Fuzz target "rfx_import": the bytes as a RenderMonkey .rfx file (with the files it names,
-// FuzzInputFiles.h), listed as `rmfx list` lists it, imported, then checked as the "workspace"
-// target checks a parsed workspace (FuzzWorkspace.h). Seeded from tests/rfx/ (scripts/fuzz.sh).
+// FuzzInputFiles.h), listed, imported, then checked as the "workspace" target checks a parsed
+// workspace. Seeds: tests/rfx/.
 
 #include "fuzz/FuzzEntries.h"
 #include "fuzz/FuzzInputFiles.h"

@@ -1,6 +1,8 @@
 #include "runtime/PassProgram.h"
 
 
+#include "runtime/HlslTranslator.h"
+
 namespace rmfx {
 
 namespace {
@@ -65,14 +67,6 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
         ok = false;
     }
     auto add = [&](const ShaderSource& s) {
-        if (s.dialect == ShaderDialect::Hlsl) {
-            // The HLSL front end plugs in here: translate s (entryPoint, profile) to GLSL 4.50 and
-            // add it as a Glsl stage. Until then the pass cannot be assembled.
-            diagnostics.push_back({Diagnostic::Severity::Error, s.where, "<shader>",
-                                   "HLSL shaders cannot be compiled yet (dialect=\"hlsl\")"});
-            ok = false;
-            return;
-        }
         ShaderInput input;
         input.dialect = s.dialect;
         input.root = ws.includeFolder();
@@ -97,16 +91,23 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
             input.folder = file.parent_path();
         }
         size_t before = diagnostics.size();
+        auto failed = [&] { return hasErrors(Diagnostics(diagnostics.begin() + static_cast<long>(before), diagnostics.end())); };
         PassStage stage{s.stage, preprocessShader(input, diagnostics), s.where, false, s.dialect};
+        if (s.dialect == ShaderDialect::Hlsl && !failed()) {
+            HlslStage hlsl{s.stage, s.entryPoint, s.profile};
+            if (auto glsl = translateHlsl(stage.shader, hlsl, s.where, passLabel(pass), diagnostics)) stage.shader = std::move(*glsl);
+            stage.dialect = ShaderDialect::Glsl;
+        }
         if (!s.file.empty()) stage.shader.files.insert(stage.shader.files.begin(), ws.folder / s.file);
-        if (hasErrors(Diagnostics(diagnostics.begin() + static_cast<long>(before), diagnostics.end()))) ok = false;
+        if (failed()) ok = false;
         program.stages.push_back(std::move(stage));
     };
     if (vertex) {
         add(*vertex);
     } else {
         bool fullscreen = pass.draw.mesh == BuiltinMesh::FullscreenTriangle;
-        ShaderDialect dialect = fragment ? fragment->dialect : ShaderDialect::Glsl;
+        // An HLSL fragment shader arrives as GLSL 4.50, so its built-in vertex shader is GLSL 4.50.
+        ShaderDialect dialect = fragment && fragment->dialect != ShaderDialect::Hlsl ? fragment->dialect : ShaderDialect::Glsl;
         ShaderInput input;
         input.dialect = dialect;
         input.code = fullscreen ? builtinFullscreenVertexShader(dialect) : builtinModelVertexShader(dialect);

@@ -2,7 +2,7 @@
 # Writes the measured part of docs/reliability.md (between its reliability:begin/end markers) from
 # what the last runs left behind:
 #   build/ctest-junit.xml        the normal suite      (cmake --workflow --preset default)
-#   build-asan/ctest-junit.xml   the sanitizer suite   (cmake --workflow --preset asan)
+#   build-asan/sanitizer-junit.xml the sanitizer suite   (cmake --workflow --preset asan)
 #   build-fuzz/fuzz-summary.tsv  the fuzzers           (scripts/fuzz.sh)
 # A missing file is reported as "not run", never invented. RELIABILITY_NORMAL, RELIABILITY_ASAN and
 # RELIABILITY_FUZZ name other files (e.g. a CI run's).
@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 
 doc=docs/reliability.md
 normal=${RELIABILITY_NORMAL:-build/ctest-junit.xml}
-asan=${RELIABILITY_ASAN:-build-asan/ctest-junit.xml}
+asan=${RELIABILITY_ASAN:-build-asan/sanitizer-junit.xml}
 fuzz=${RELIABILITY_FUZZ:-build-fuzz/fuzz-summary.tsv}
 
 # One line per test case: "NAME STATUS" (STATUS: run = passed, fail, notrun/disabled = skipped).

@@ -8,6 +8,7 @@ packages=(
   libopenimageio-dev openimageio-tools
   libegl-dev libepoxy-dev libegl-mesa0 libgl1-mesa-dri
   libimgui-dev libassimp-dev
+  libspirv-cross-c-shared-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev
   xvfb xauth
