@@ -18,8 +18,9 @@ cmake --build --preset fuzz
 
 # Per target: -max_len (bytes), -timeout (s per input), -rss_limit_mb. Workspaces carry the
 # shaders they name, so theirs are the longest inputs.
-declare -A max_len=([workspace]=131072 [shader_preprocessor]=16384 [replay_manifest]=16384 [variable_value_writer]=32768)
-declare -A timeout=([workspace]=10 [shader_preprocessor]=10 [replay_manifest]=10 [variable_value_writer]=10)
+declare -A max_len=([workspace]=131072 [shader_preprocessor]=16384 [replay_manifest]=16384 [variable_value_writer]=32768
+                  [rfx_import]=65536)
+declare -A timeout=([workspace]=10 [shader_preprocessor]=10 [replay_manifest]=10 [variable_value_writer]=10 [rfx_import]=10)
 rss_limit_mb=2048
 
 # A workspace file followed by the files it names as "//@@ NAME" parts (fuzz/FuzzInputFiles.h):
@@ -56,7 +57,7 @@ seed() {  # seed TARGET FILE NAME: adds a seed to the target's working corpus
 
 make_seeds() {
   local t f
-  for t in workspace shader_preprocessor replay_manifest variable_value_writer; do
+  for t in workspace shader_preprocessor replay_manifest variable_value_writer rfx_import; do
     mkdir -p "$build/fuzz-corpus/$t"
   done
   local workspaces replays
@@ -71,11 +72,13 @@ make_seeds() {
   for f in $(find effects tests bench samples docs -name '*.glsl' -o -name '*.frag' -o -name '*.vert' | sort); do
     { cat "$f"; bundle_includes "$f" shaders; } >"$build/fuzz-corpus/shader_preprocessor/seed-${f//\//_}"
   done
-  # Test .rfx files, once the importer's target exists (tests/rfx/).
-  if [ -d tests/rfx ] && [ -x "$build/fuzz/rmfx_fuzz_rfx_import" ]; then
-    mkdir -p "$build/fuzz-corpus/rfx_import"
-    for f in tests/rfx/*.rfx; do [ -f "$f" ] && seed rfx_import "$f" "$(basename "$f")"; done
-  fi
+  # The test .rfx files (tests/rfx/), with the files beside them as parts (a model, say).
+  mkdir -p "$build/fuzz-corpus/rfx_import"
+  for f in tests/rfx/*.rfx; do
+    [ -f "$f" ] || continue
+    { cat "$f"; for g in tests/rfx/*; do case $g in *.rfx) ;; *) printf '\n//@@ %s\n' "$(basename "$g")"; cat "$g" ;; esac; done; } \
+      >"$build/fuzz-corpus/rfx_import/seed-$(basename "$f")"
+  done
   # Every saved finding seeds its target too.
   for t in tests/fuzz-regressions/*/; do
     t=$(basename "$t")
@@ -92,6 +95,7 @@ make_dictionary() {
   mkdir -p "$build/fuzz-dict"
   case $t in
     workspace | variable_value_writer) sources=(runtime/WorkspaceParser.cpp runtime/Value.cpp runtime/BuiltinMeshes.cpp) ;;
+    rfx_import) sources=(runtime/Rfx*.cpp) ;;
     replay_manifest) sources=(runtime/ReplayManifest.cpp runtime/ImageCompare.cpp) ;;
   esac
   {
