@@ -94,6 +94,12 @@ Mesh makePlane() {
     return mesh;
 }
 
+Mesh makeQuad() {
+    Mesh mesh;
+    addQuad(mesh, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1});
+    return mesh;
+}
+
 Mesh makeMesh(BuiltinMesh which) {
     switch (which) {
         case BuiltinMesh::FullscreenTriangle: return makeFullscreenTriangle();
@@ -101,14 +107,15 @@ Mesh makeMesh(BuiltinMesh which) {
         case BuiltinMesh::Sphere: return makeSphere();
         case BuiltinMesh::Plane: return makePlane();
         case BuiltinMesh::Teapot: return makeTeapot();
+        case BuiltinMesh::Quad: return makeQuad();
     }
     return {};
 }
 
 namespace {
 
-constexpr std::array<BuiltinMesh, 5> kAllBuiltins{BuiltinMesh::FullscreenTriangle, BuiltinMesh::Cube,
-                                                  BuiltinMesh::Sphere, BuiltinMesh::Plane, BuiltinMesh::Teapot};
+constexpr std::array<BuiltinMesh, 6> kAllBuiltins{BuiltinMesh::FullscreenTriangle, BuiltinMesh::Cube, BuiltinMesh::Sphere,
+                                                  BuiltinMesh::Plane, BuiltinMesh::Teapot, BuiltinMesh::Quad};
 
 bool equalsIgnoringCase(std::string_view a, std::string_view b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
@@ -131,6 +138,7 @@ const char* builtinMeshName(BuiltinMesh which) {
         case BuiltinMesh::Sphere: return "sphere";
         case BuiltinMesh::Plane: return "plane";
         case BuiltinMesh::Teapot: return "teapot";
+        case BuiltinMesh::Quad: return "quad";
     }
     return "?";
 }

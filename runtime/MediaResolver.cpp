@@ -1,5 +1,7 @@
 #include "runtime/MediaResolver.h"
 
+#include "runtime/BuiltinMeshes.h"
+
 #include <algorithm>
 #include <cctype>
 
@@ -235,7 +237,19 @@ MediaResolver::Found MediaResolver::resolve(const std::string& reference, const 
         message += "looked";
     for (size_t i = 0; i < looked.size(); ++i) message += (i ? "; " : ref.windowsAbsolute ? ": " : " ") + looked[i];
     if (options_.searchPath.empty()) message += "; no media folders were given (add one with --media DIR)";
-    return {std::nullopt, message};
+    return {std::nullopt, message, true};
+}
+
+std::optional<BuiltinMesh> stockModelStandIn(const std::string& reference) {
+    MediaReference ref = MediaReference::parse(reference);
+    if (ref.components.empty()) return std::nullopt;
+    std::string stem = std::filesystem::path(ref.components.back()).stem().string();
+    std::transform(stem.begin(), stem.end(), stem.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (stem == "screenalignedquad") return BuiltinMesh::Quad;
+    if (stem == "teapot") return BuiltinMesh::Teapot;
+    if (stem == "sphere") return BuiltinMesh::Sphere;
+    if (stem == "cube") return BuiltinMesh::Cube;
+    return std::nullopt;
 }
 
 Diagnostics resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options) {
@@ -256,7 +270,20 @@ Diagnostics resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options) {
     for (Pass& pass : ws.passes) {
         for (ShaderSource& shader : pass.shaders)
             if (!shader.file.empty()) resolve(shader.file, shader.where, "<shader>", "shader file");
-        if (!pass.draw.mesh && !pass.draw.file.empty()) resolve(pass.draw.file, pass.draw.where, "<draw>", "model file");
+        if (pass.draw.mesh || pass.draw.file.empty()) continue;
+        MediaResolver::Found found = resolver.resolve(pass.draw.file, "model file");
+        if (found.file) {
+            pass.draw.file = found.file->generic_string();
+        } else if (auto standIn = found.missing ? stockModelStandIn(pass.draw.file) : std::nullopt) {
+            // Effects name RenderMonkey's own media by absolute paths into its install; without
+            // them the usual full-screen quad (and the stock teapot…) would stop every such effect.
+            out.push_back({Diagnostic::Severity::Warning, pass.draw.where, "<draw>",
+                           found.error + "; drawing rmfx's built-in '" + builtinMeshName(*standIn) + "' in its place"});
+            pass.draw.mesh = standIn;
+            pass.draw.file.clear();
+        } else {
+            out.push_back({Diagnostic::Severity::Error, pass.draw.where, "<draw>", found.error});
+        }
     }
     if (options.sandbox && !ws.includeRoot.empty() && !resolver.isAllowed(ws.includeRoot))
         out.push_back({Diagnostic::Severity::Error, ws.includeRootWhere, "<workspace include-root>",

@@ -55,6 +55,10 @@ std::optional<std::filesystem::path> walkIgnoringCase(const std::filesystem::pat
 // Whether `file`, symbolic links resolved, lies in `folder` (also resolved) or below it.
 bool liesInside(const std::filesystem::path& file, const std::filesystem::path& folder);
 
+// RenderMonkey's stock models that rmfx has built in (ScreenAlignedQuad, Teapot, Sphere, Cube), by
+// the reference's file name ignoring case and extension: what stands in for one that is missing.
+std::optional<BuiltinMesh> stockModelStandIn(const std::string& reference);
+
 class MediaResolver {
 public:
     MediaResolver(std::filesystem::path workspaceFolder, MediaOptions options);
@@ -62,6 +66,7 @@ public:
     struct Found {
         std::optional<std::filesystem::path> file;  // relative to the workspace folder when found there, else absolute
         std::string error;                          // why not, when file is empty
+        bool missing = false;                       // not found anywhere (rather than refused)
     };
     // `noun` names the kind of file in messages ("image file", "model file", "shader file").
     Found resolve(const std::string& reference, const std::string& noun);

@@ -3,8 +3,12 @@
 
 #include "runtime/MediaResolver.h"
 
+#include <cmath>
+
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "runtime/BuiltinMeshes.h"
 #include "runtime/MediaArguments.h"
 #include "runtime/WorkspaceDependencies.h"
 #include "runtime/WorkspaceLoader.h"
@@ -140,6 +144,57 @@ TEST(MediaResolver, NotFoundNamesTheReferenceItsLineAndElementAndEveryPlaceLooke
                                         "not found: a Windows absolute path is not taken literally, only its trailing "
                                         "components are searched for in the media folders; no media folders were given "
                                         "(add one with --media DIR)"}));
+}
+
+TEST(MediaResolver, MissingStockRenderMonkeyModelsBecomeBuiltInMeshesWithAWarning) {
+    test::ScratchDir dir;
+    auto drawWorkspace = [](const std::string& model) {
+        return lines({"<workspace version=\"1\">", "  <pass name=\"p\">", kShader,
+                      "    <draw file=\"" + model + "\"/>", "  </pass>", "</workspace>"});
+    };
+    const std::string quad = "C:\\Program Files\\AMD\\RenderMonkey 1.81\\Examples\\Media\\Models\\ScreenAlignedQuad.3ds";
+    fs::path ws = dir.write("ws/quad.xml", drawWorkspace(quad));
+    LoadedWorkspace l = load(ws);
+    ASSERT_TRUE(l.workspace) << formatAll(l.diagnostics);
+    EXPECT_EQ(l.workspace->passes[0].draw.mesh, BuiltinMesh::Quad);
+    EXPECT_EQ(l.workspace->passes[0].draw.file, "");
+    ASSERT_EQ(l.diagnostics.size(), 1u);
+    EXPECT_EQ(l.diagnostics[0].severity, Diagnostic::Severity::Warning);
+    EXPECT_NE(l.diagnostics[0].format().find(":4: warning: <draw>: model file '" + quad + "' not found"), std::string::npos)
+        << l.diagnostics[0].format();
+    EXPECT_NE(l.diagnostics[0].format().find("drawing rmfx's built-in 'quad' in its place"), std::string::npos);
+
+    EXPECT_EQ(load(dir.write("ws/teapot.xml", drawWorkspace("..\\models\\TEAPOT.3DS"))).workspace->passes[0].draw.mesh,
+              BuiltinMesh::Teapot);
+
+    // A stock model that is there is used as it is; any other missing model stays an error.
+    dir.write("ws/Sphere.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    LoadedWorkspace found = load(dir.write("ws/sphere.xml", drawWorkspace("sphere.obj")));
+    ASSERT_TRUE(found.workspace) << formatAll(found.diagnostics);
+    EXPECT_EQ(found.workspace->passes[0].draw.file, "Sphere.obj");
+    EXPECT_FALSE(found.workspace->passes[0].draw.mesh);
+    EXPECT_EQ(errors(load(dir.write("ws/elephant.xml", drawWorkspace("ElephantBody.3ds")))).size(), 1u);
+
+    // Under the sandbox a stock model outside it is refused, not replaced.
+    dir.write("elsewhere/Teapot.3ds", "");
+    EXPECT_EQ(errors(load(dir.write("ws/out.xml", drawWorkspace("../elsewhere/Teapot.3ds")), sandbox())).size(), 1u);
+}
+
+TEST(MediaResolver, MakeQuadSpansClipSpaceFacingTheViewer) {
+    Mesh quad = makeMesh(BuiltinMesh::Quad);
+    ASSERT_EQ(quad.vertexCount(), 4u);
+    ASSERT_EQ(quad.triangleCount(), 2u);
+    for (size_t i = 0; i < 4; ++i) {
+        EXPECT_EQ(std::abs(quad.positions[i].x), 1.0f);
+        EXPECT_EQ(std::abs(quad.positions[i].y), 1.0f);
+        EXPECT_EQ(quad.positions[i].z, 0.0f);
+        EXPECT_EQ(quad.normals[i], glm::vec3(0, 0, 1));
+        EXPECT_EQ(quad.texcoords[i], (glm::vec2(quad.positions[i]) + 1.0f) * 0.5f);  // (0, 0) bottom-left
+    }
+    // Counter-clockwise seen from +Z.
+    glm::vec3 a = quad.positions[quad.indices[0]], b = quad.positions[quad.indices[1]], c = quad.positions[quad.indices[2]];
+    EXPECT_GT(glm::cross(b - a, c - a).z, 0.0f);
+    EXPECT_EQ(builtinMeshFromName("Quad"), BuiltinMesh::Quad);
 }
 
 TEST(MediaResolver, ReferencesAreResolvedOnceAndTheAnswerIsWhatEveryoneOpens) {
