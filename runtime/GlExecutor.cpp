@@ -324,6 +324,13 @@ struct GlExecutor::Impl {
                 continue;
             }
             glClearNamedFramebufferfv(r.framebuffers[i], GL_COLOR, 0, glm::value_ptr(spec.initial));
+            // A depth test before the first depth clear compares against the farthest depth, not
+            // whatever the new storage holds.
+            if (r.depth) {
+                const float farthest = 1.0f;
+                glDepthMask(GL_TRUE);
+                glClearNamedFramebufferfv(r.framebuffers[i], GL_DEPTH, 0, &farthest);
+            }
         }
         if (GLenum e = glGetError(); e != GL_NO_ERROR) {
             error(d, where, element,

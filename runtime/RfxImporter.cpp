@@ -117,6 +117,14 @@ ParsedWorkspace importEffect(const RfxEffectEntry& effect, const std::filesystem
         ws.passes.push_back(std::move(p.pass));
         previous = &ws.passes.back();
     }
+    // RenderMonkey clears its back buffer (colour and depth) before every frame: the first pass
+    // that draws to the output clears what it does not clear itself, to opaque black and depth 1.
+    for (Pass& pass : ws.passes) {
+        if (!pass.enabled || !pass.target.empty()) continue;
+        if (!pass.clear.color) pass.clear.color = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        if (!pass.clear.depth) pass.clear.depth = 1.0f;
+        break;
+    }
     // Texture variables no pass samples are left out: RenderMonkey files keep textures of other
     // effects at the workspace level, and their missing media must not stop this effect.
     std::erase_if(ws.textures, [&](const Texture& t) {

@@ -91,6 +91,12 @@ TEST(RfxImporter, GlEffectPassesRunInPassIndexOrderWithTheirTargetsAndClears) {
 
     EXPECT_EQ(ws.passes[1].target, "");  // no RmRenderTarget: the output
     EXPECT_EQ(ws.passes[2].target, "");  // RENDER_TO_SCREEN
+    // RenderMonkey clears its back buffer every frame: the first pass drawing to the output does,
+    // to opaque black and depth 1; later ones clear only what they ask for.
+    ASSERT_TRUE(ws.passes[1].clear.color.has_value());
+    expectColor(*ws.passes[1].clear.color, {0.0f, 0.0f, 0.0f, 1.0f});
+    ASSERT_TRUE(ws.passes[1].clear.depth.has_value());
+    EXPECT_FLOAT_EQ(*ws.passes[1].clear.depth, 1.0f);
     EXPECT_FALSE(ws.passes[2].clear.color.has_value());
 }
 
