@@ -15,9 +15,13 @@ namespace {
 
 bool haveXvfbRun() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
 
-// Runs rmfx with `arguments` under a fresh Xvfb display (1280x800, 24-bit) in `folder`.
+// Runs rmfx with `arguments` under a fresh Xvfb display (1280x800, 24-bit) in `folder`. Under the
+// sanitizer preset the window's GLX driver, unloaded before exit, leaves 240 bytes that LeakSanitizer
+// can only attribute to "<unknown module>" (no frame of rmfx's), so leak checking is off for this
+// child alone; AddressSanitizer and UBSan still check it.
 CommandResult runUnderXvfb(const std::string& arguments, const std::filesystem::path& folder) {
-    return runRmfx(arguments, folder, "xvfb-run -a -s '-screen 0 1280x800x24'");
+    return runRmfx(arguments, folder,
+                   "xvfb-run -a -s '-screen 0 1280x800x24' env ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:detect_leaks=0\"");
 }
 
 int byteAt(const Image& image, int x, int y, int c) { return static_cast<int>(std::lround(image.at(x, y, c) * 255.0f)); }
