@@ -15,12 +15,13 @@ normal=${RELIABILITY_NORMAL:-build/ctest-junit.xml}
 asan=${RELIABILITY_ASAN:-build-asan/sanitizer-junit.xml}
 fuzz=${RELIABILITY_FUZZ:-build-fuzz/fuzz-summary.tsv}
 
-# One line per test case: "NAME STATUS" (STATUS: run = passed, fail, notrun/disabled = skipped).
+# One line per test case: "STATUS NAME" (STATUS: run = passed, fail, notrun/disabled = skipped;
+# names of parameterised tests may hold spaces, so the status comes first).
 cases() {
   awk '/<testcase /{
          name = $0; sub(/.*<testcase name="/, "", name); sub(/".*/, "", name)
          status = $0; sub(/.*status="/, "", status); sub(/".*/, "", status)
-         print name, status }' "$1"
+         print status, name }' "$1"
 }
 
 # "passed/failed/skipped" counts of the cases whose names match REGEX in FILE.
@@ -28,7 +29,8 @@ tally() {
   local file=$1 regex=$2
   [ -f "$file" ] || { echo "not run"; return; }
   cases "$file" | awk -v re="$regex" '
-    $1 ~ re { n++; if ($2 == "run") p++; else if ($2 == "fail") f++; else s++ }
+    { name = $0; sub(/^[^ ]* /, "", name) }
+    name ~ re { n++; if ($1 == "run") p++; else if ($1 == "fail") f++; else s++ }
     END {
       if (n == 0) { print "none"; exit }
       out = n " tests: " p + 0 " passed"
