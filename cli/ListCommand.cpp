@@ -8,6 +8,7 @@
 #include "runtime/IdentifierSearch.h"
 #include "runtime/RfxImporter.h"
 #include "runtime/Validation.h"
+#include "runtime/VertexUsageName.h"
 
 namespace rmfx::cli {
 namespace {
@@ -18,18 +19,6 @@ const char* dialectName(ShaderDialect d) {
         case ShaderDialect::GlslLegacy: return "GLSL (compatibility)";
         case ShaderDialect::GlslEs100: return "GLSL ES 1.00";
         case ShaderDialect::Hlsl: return "HLSL";
-    }
-    return "?";
-}
-
-const char* usageName(VertexUsage u) {
-    switch (u) {
-        case VertexUsage::Position: return "position";
-        case VertexUsage::Normal: return "normal";
-        case VertexUsage::TexCoord: return "texcoord";
-        case VertexUsage::Tangent: return "tangent";
-        case VertexUsage::Binormal: return "binormal";
-        case VertexUsage::Color: return "color";
     }
     return "?";
 }
@@ -95,7 +84,7 @@ void describePass(std::ostream& out, const Workspace& ws, const Pass& pass, cons
     if (!pass.streams.empty()) {
         out << "      streams:";
         for (const VertexStream& s : pass.streams)
-            out << " " << usageName(s.usage) << s.usageIndex << "→" << (s.attribute.empty() ? "built-in" : s.attribute);
+            out << " " << vertexUsageName(s.usage) << s.usageIndex << "→" << (s.attribute.empty() ? "built-in" : s.attribute);
         out << "\n";
     }
     for (const Sampler& s : pass.samplers) {

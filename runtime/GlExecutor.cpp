@@ -18,6 +18,7 @@
 #include "runtime/ModelLoader.h"
 #include "runtime/PassProgram.h"
 #include "runtime/UniformBinding.h"
+#include "runtime/VertexUsageName.h"
 
 namespace rmfx {
 namespace {
@@ -112,8 +113,7 @@ struct FrameCamera {
 
 // <stream usage="texcoord" index="0" attribute="rm_TexCoord0"> (line 12), for messages.
 std::string streamLabel(const VertexStream& stream) {
-    static const char* usages[] = {"position", "normal", "texcoord", "tangent", "binormal", "color"};
-    std::string label = std::string("<stream usage=\"") + usages[static_cast<int>(stream.usage)] + "\"";
+    std::string label = std::string("<stream usage=\"") + vertexUsageName(stream.usage) + "\"";
     if (stream.usage == VertexUsage::TexCoord) label += " index=\"" + std::to_string(stream.usageIndex) + "\"";
     if (!stream.attribute.empty()) label += " attribute=\"" + stream.attribute + "\"";
     return label + "> (line " + std::to_string(stream.where.line) + ")";
