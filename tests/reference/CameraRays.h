@@ -21,11 +21,14 @@ public:
         glm::dvec3 target(camera.target);
         eye_ = target + double(camera.distance) *
                             glm::dvec3(std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch));
-        glm::dmat4 view = glm::lookAt(eye_, target, glm::dvec3(0, 1, 0));
-        glm::dmat4 projection = glm::perspective(camera.fovYDegrees * degrees, double(width) / height,
-                                                 double(camera.nearPlane), double(camera.farPlane));
-        invViewProjection_ = glm::inverse(projection * view);
+        view_ = glm::lookAt(eye_, target, glm::dvec3(0, 1, 0));
+        projection_ = glm::perspective(camera.fovYDegrees * degrees, double(width) / height,
+                                       double(camera.nearPlane), double(camera.farPlane));
+        invViewProjection_ = glm::inverse(projection_ * view_);
     }
+
+    const glm::dmat4& view() const { return view_; }
+    const glm::dmat4& projection() const { return projection_; }
 
     // Unit ray through the centre of pixel (x, y), y counted from the bottom.
     glm::dvec3 ray(int x, int y) const {
@@ -37,7 +40,7 @@ public:
 private:
     int width_, height_;
     glm::dvec3 eye_;
-    glm::dmat4 invViewProjection_;
+    glm::dmat4 view_, projection_, invViewProjection_;
 };
 
 }  // namespace rmfx::test
