@@ -1,6 +1,8 @@
 #include "runtime/GlContext.h"
 
 #include <cstring>
+#include <mutex>
+#include <set>
 #include <vector>
 
 #include <epoxy/egl.h>
@@ -47,6 +49,19 @@ std::vector<Candidate> candidateDisplays(std::string& tried) {
     return out;
 }
 
+// Displays that have held a context of ours. A failed attempt terminates a display only if it is
+// not one of them: eglTerminate is not counted (it ends the display however often it was
+// initialised), so it would end the display under a living context (a compatibility-profile
+// attempt failing beside the core context). Nor are they terminated when their last context goes:
+// that unloads Mesa's driver, and what the driver never freed turns into leak reports at exit.
+std::mutex displaysInUseMutex;
+std::set<void*> displaysInUse;
+
+void terminateIfUnused(EGLDisplay display) {
+    std::lock_guard lock(displaysInUseMutex);
+    if (!displaysInUse.contains(display)) eglTerminate(display);
+}
+
 }  // namespace
 
 Result<std::unique_ptr<GlContext>> GlContext::createHeadless(GlProfile profile) {
@@ -61,7 +76,7 @@ Result<std::unique_ptr<GlContext>> GlContext::createHeadless(GlProfile profile) 
         }
         if (!eglBindAPI(EGL_OPENGL_API)) {
             tried += " " + c.name + ": no desktop OpenGL;";
-            eglTerminate(c.display);
+            terminateIfUnused(c.display);
             continue;
         }
         const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
@@ -75,7 +90,7 @@ Result<std::unique_ptr<GlContext>> GlContext::createHeadless(GlProfile profile) 
             EGLint count = 0;
             if (!eglChooseConfig(c.display, configAttributes, &config, 1, &count) || count == 0) {
                 tried += " " + c.name + ": no OpenGL config;";
-                eglTerminate(c.display);
+                terminateIfUnused(c.display);
                 continue;
             }
         }
@@ -83,16 +98,20 @@ Result<std::unique_ptr<GlContext>> GlContext::createHeadless(GlProfile profile) 
         if (context == EGL_NO_CONTEXT) {
             tried += " " + c.name + ": no OpenGL 4.5 " + profileName + " context (EGL error 0x" +
                      [] { char b[16]; std::snprintf(b, sizeof b, "%x", eglGetError()); return std::string(b); }() + ");";
-            eglTerminate(c.display);
+            terminateIfUnused(c.display);
             continue;
         }
         if (!eglMakeCurrent(c.display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
             tried += " " + c.name + ": the context cannot be made current without a surface;";
             eglDestroyContext(c.display, context);
-            eglTerminate(c.display);
+            terminateIfUnused(c.display);
             continue;
         }
         std::unique_ptr<GlContext> gl(new GlContext);
+        {
+            std::lock_guard lock(displaysInUseMutex);
+            displaysInUse.insert(c.display);
+        }
         gl->display_ = c.display;
         gl->context_ = context;
         gl->profile_ = profile;
@@ -107,8 +126,7 @@ Result<std::unique_ptr<GlContext>> GlContext::createHeadless(GlProfile profile) 
 GlContext::~GlContext() {
     if (display_) {
         eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-        // No eglTerminate: the display is shared by every context of the process.
-        eglDestroyContext(display_, context_);
+        eglDestroyContext(display_, context_);  // the display stays initialised: see displaysInUse
     }
 }
 
