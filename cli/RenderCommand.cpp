@@ -156,6 +156,7 @@ int renderCommand(const std::vector<std::string>& args) {
         std::cerr << formatAll(diagnostics);
         return 2;
     }
+    if (!a->quiet) std::cerr << formatAll(diagnostics);  // warnings (streams no shader reads…)
     if (a->explain) {
         FrameExplanationInput explained{&ws, &executor->graph(), &executor->targetPlan(), executor->askedEffects(),
                                         executor->switchedOffEffects(), a->executor.poolTargets};

@@ -15,6 +15,7 @@
 #include "runtime/GlFormats.h"
 #include "runtime/GlMesh.h"
 #include "runtime/GlTexture.h"
+#include "runtime/GlslangCheck.h"
 #include "runtime/ModelLoader.h"
 #include "runtime/PassProgram.h"
 #include "runtime/UniformBinding.h"
@@ -70,6 +71,7 @@ struct GpuPass {
     std::vector<StreamBinding> streams;  // Pass::streams against the program; empty: rmfx's layout
     std::vector<UniformSlot> uniforms;
     std::vector<SamplerSlot> samplers;
+    std::set<std::string> initializedUniforms;  // declared with a value: unbound, they keep it
 };
 
 std::string describeGlError(GLenum e) {
@@ -114,7 +116,8 @@ struct FrameCamera {
 // <stream usage="texcoord" index="0" attribute="rm_TexCoord0"> (line 12), for messages.
 std::string streamLabel(const VertexStream& stream) {
     std::string label = std::string("<stream usage=\"") + vertexUsageName(stream.usage) + "\"";
-    if (stream.usage == VertexUsage::TexCoord) label += " index=\"" + std::to_string(stream.usageIndex) + "\"";
+    if (stream.usage == VertexUsage::TexCoord || stream.usageIndex != 0)
+        label += " index=\"" + std::to_string(stream.usageIndex) + "\"";
     if (!stream.attribute.empty()) label += " attribute=\"" + stream.attribute + "\"";
     return label + "> (line " + std::to_string(stream.where.line) + ")";
 }
@@ -433,9 +436,10 @@ struct GlExecutor::Impl {
         return slot.get();
     }
 
-    GLuint compileProgram(const Pass& pass, Diagnostics& d) {
+    GLuint compileProgram(const Pass& pass, Diagnostics& d, std::set<std::string>& initializedUniforms) {
         auto source = assemblePassProgram(ws, pass, prelude.defines, d, prelude.declarations);
         if (!source) return 0;
+        initializedUniforms = uniformsWithInitializers(*source);
         std::string label = passLabel(pass);
         GLuint program = glCreateProgram();
         bool ok = true;
@@ -502,11 +506,10 @@ struct GlExecutor::Impl {
         };
         for (const VertexStream& stream : pass.streams) {
             if (!stream.attribute.empty()) {
+                // Validation warns about attributes the shaders do not read; one the driver's
+                // optimiser dropped as well is no news.
                 GLint location = glGetAttribLocation(gp.program, stream.attribute.c_str());
-                if (location < 0) {
-                    warn(stream, "feeds attribute '" + stream.attribute + "', which the shaders do not read");
-                    continue;
-                }
+                if (location < 0) continue;
                 gp.streams.push_back({stream.usage, stream.usageIndex, location});
                 continue;
             }
@@ -544,6 +547,7 @@ struct GlExecutor::Impl {
                 continue;
             }
             UniformSource source = resolveUniform(ws, pass, name);
+            if (std::holds_alternative<Unbound>(source) && gp.initializedUniforms.count(name)) continue;
             if (std::string why = bindingMismatch(ws, source, name, type, values[2]); !why.empty()) {
                 error(d, pass.where, passLabel(pass), why);
                 ok = false;
@@ -863,7 +867,7 @@ std::unique_ptr<GlExecutor> GlExecutor::create(const Workspace& ws, glm::ivec2 v
         gp->target = impl->findTarget(ws.passTargetName(pass));
         gp->mesh = impl->meshFor(pass.draw, d);
         gp->model = modelMatrix(pass.draw);
-        gp->program = impl->compileProgram(pass, d);
+        gp->program = impl->compileProgram(pass, d, gp->initializedUniforms);
         // Without memory (the targets failed to allocate: already reported) or not declared at all.
         if (allocated && (!gp->target || !gp->target->resource)) {
             impl->error(d, pass.where, passLabel(pass), "target '" + ws.passTargetName(pass) + "' is not declared");
@@ -1105,7 +1109,7 @@ Diagnostics GlExecutor::recompilePasses(const std::vector<std::string>& passName
         fresh.target = old->target;
         fresh.mesh = old->mesh;
         fresh.model = old->model;
-        fresh.program = s.compileProgram(*fresh.pass, d);
+        fresh.program = s.compileProgram(*fresh.pass, d, fresh.initializedUniforms);
         if (!fresh.program) {
             ok = false;
             continue;

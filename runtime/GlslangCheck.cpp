@@ -1,5 +1,6 @@
 #include "runtime/GlslangCheck.h"
 
+#include <cctype>
 #include <memory>
 #include <mutex>
 #include <regex>
@@ -108,6 +109,36 @@ std::optional<SourceLocation> findUniformDeclaration(const PassProgramSource& pr
         }
     }
     return std::nullopt;
+}
+
+std::set<std::string> uniformsWithInitializers(const PassProgramSource& program) {
+    std::set<std::string> out;
+    auto isWordChar = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    for (const PassStage& stage : program.stages) {
+        const std::string& code = stage.shader.code;
+        size_t start = 0;
+        while (start < code.size()) {
+            size_t end = code.find_first_of(";{}", start);
+            if (end == std::string::npos) end = code.size();
+            std::string statement = code.substr(start, end - start);
+            start = end + 1;
+            size_t equals = statement.find('=');
+            size_t keyword = statement.find("uniform");
+            if (equals == std::string::npos || keyword == std::string::npos || keyword > equals) continue;
+            if ((keyword > 0 && isWordChar(statement[keyword - 1])) || isWordChar(statement[keyword + 7])) continue;
+            size_t nameEnd = statement.find_last_not_of(" \t\r\n", equals - 1);
+            if (nameEnd == std::string::npos || nameEnd <= keyword + 7) continue;
+            if (statement[nameEnd] == ']') {  // uniform float w[2] = float[](…)
+                size_t open = statement.rfind('[', nameEnd);
+                if (open == std::string::npos || open <= keyword + 7) continue;
+                nameEnd = statement.find_last_not_of(" \t", open - 1);
+            }
+            size_t nameStart = nameEnd;
+            while (nameStart > 0 && isWordChar(statement[nameStart - 1])) --nameStart;
+            if (isWordChar(statement[nameEnd])) out.insert(statement.substr(nameStart, nameEnd - nameStart + 1));
+        }
+    }
+    return out;
 }
 
 }  // namespace rmfx

@@ -3,6 +3,7 @@
 // portable messages and to list the active uniforms with their types.
 
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -27,5 +28,9 @@ std::optional<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSour
 
 // Where a uniform is declared, found by scanning the stage texts: the first `uniform TYPE NAME`.
 std::optional<SourceLocation> findUniformDeclaration(const PassProgramSource& program, const std::string& name);
+
+// The uniforms the stage texts declare with an initial value (`uniform float k = 0.5;`, which the
+// HLSL translator writes for initialised globals): left unbound, they keep that value.
+std::set<std::string> uniformsWithInitializers(const PassProgramSource& program);
 
 }  // namespace rmfx

@@ -1,7 +1,12 @@
 #include "runtime/HlslTranslator.h"
 
+#include "runtime/HlslGlobalInitializers.h"
+
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
+#include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <set>
@@ -15,9 +20,10 @@
 namespace rmfx {
 namespace {
 
-// The flattened $Global block's instance name; its members become plain uniforms.
-constexpr const char* kGlobalBlock = "rm_hlsl_Global";
-constexpr const char* kGlobalBlockType = "rm_hlsl_GlobalBlock";
+// The uniform blocks glslang makes of the HLSL globals ($Global) and of each cbuffer are renamed
+// rm_hlsl_Block<k> (type rm_hlsl_BlockType<k>) and flattened: their members become plain uniforms.
+std::string blockName(size_t k) { return "rm_hlsl_Block" + std::to_string(k); }
+std::string blockTypeName(size_t k) { return "rm_hlsl_BlockType" + std::to_string(k); }
 
 void initializeGlslangOnce() {
     static std::once_flag flag;
@@ -132,30 +138,29 @@ void renameInterface(CrossCompiler& cross, ShaderStage stage) {
     }
 }
 
-// Names the uniform block glslang made of the HLSL globals so flattenGlobals can find it, and
-// drops the bindings plain uniforms cannot have. Returns the members' names. (The block's matrices
-// carry RowMajor; SPIRV-Cross reads plain uniforms the same with or without it, and
-// HlslGLTest checks the resulting convention, see the header.)
-std::vector<std::string> prepareGlobals(CrossCompiler& cross) {
+// Names the uniform blocks glslang made of the HLSL globals and cbuffers so flattenBlocks can find
+// them, and drops the bindings plain uniforms cannot have. Returns how many blocks there are. (The
+// blocks' matrices carry RowMajor; SPIRV-Cross reads plain uniforms the same with or without it,
+// and HlslGLTest checks the resulting convention, see the header.)
+size_t prepareBlocks(CrossCompiler& cross) {
     spvc_compiler c = cross.get();
-    std::vector<std::string> members;
+    std::set<std::string> members;
+    size_t blocks = 0;
     for (const spvc_reflected_resource& r : cross.resources(SPVC_RESOURCE_TYPE_UNIFORM_BUFFER)) {
         spvc_compiler_unset_decoration(c, r.id, SpvDecorationBinding);
         spvc_compiler_unset_decoration(c, r.id, SpvDecorationDescriptorSet);
-        if (std::string(r.name) != "$Global") continue;
-        spvc_compiler_set_name(c, r.id, kGlobalBlock);
-        spvc_compiler_set_name(c, r.base_type_id, kGlobalBlockType);
+        spvc_compiler_set_name(c, r.id, blockName(blocks).c_str());
+        spvc_compiler_set_name(c, r.base_type_id, blockTypeName(blocks).c_str());
         spvc_type type = spvc_compiler_get_type_handle(c, r.base_type_id);
-        for (unsigned i = 0; i < spvc_type_get_num_member_types(type); ++i) {
-            members.push_back(spvc_compiler_get_member_name(c, r.base_type_id, i));
-        }
+        for (unsigned i = 0; i < spvc_type_get_num_member_types(type); ++i)
+            members.insert(spvc_compiler_get_member_name(c, r.base_type_id, i));
+        ++blocks;
     }
-    // A local variable named like a global would capture the global's uses once the block is
+    // A local variable named like a global would capture the global's uses once the blocks are
     // flattened: give it another name.
-    std::set<std::string> taken(members.begin(), members.end());
     for (unsigned id = 1; id < spvc_compiler_get_current_id_bound(c); ++id) {
         const char* name = spvc_compiler_get_name(c, id);
-        if (name && taken.count(name)) spvc_compiler_set_name(c, id, (std::string(name) + "_local").c_str());
+        if (name && members.count(name)) spvc_compiler_set_name(c, id, (std::string(name) + "_local").c_str());
     }
     for (auto type : {SPVC_RESOURCE_TYPE_SAMPLED_IMAGE, SPVC_RESOURCE_TYPE_SEPARATE_IMAGE}) {
         for (const spvc_reflected_resource& r : cross.resources(type)) {
@@ -163,34 +168,102 @@ std::vector<std::string> prepareGlobals(CrossCompiler& cross) {
             spvc_compiler_unset_decoration(c, r.id, SpvDecorationDescriptorSet);
         }
     }
-    return members;
+    return blocks;
 }
 
-// SPIRV-Cross writes the block as `struct rm_hlsl_GlobalBlock { … }; uniform rm_hlsl_GlobalBlock
-// rm_hlsl_Global;` (plain-uniform mode) and reads members as `rm_hlsl_Global.name`: turn each
-// member into `uniform TYPE name;` and every use into `name`.
-std::string flattenGlobals(std::string glsl) {
-    const std::string structHead = std::string("struct ") + kGlobalBlockType + "\n{\n";
-    size_t start = glsl.find(structHead);
-    if (start != std::string::npos) {
-        size_t bodyEnd = glsl.find("\n};\n", start);
-        std::string body = glsl.substr(start + structHead.size(), bodyEnd - start - structHead.size());
-        std::string uniforms;
-        size_t from = 0;
-        while (from < body.size()) {
-            size_t end = body.find('\n', from);
-            if (end == std::string::npos) end = body.size();
-            std::string line = body.substr(from, end - from);
-            line.erase(0, line.find_first_not_of(" \t"));
-            if (!line.empty()) uniforms += "uniform " + line + "\n";
-            from = end + 1;
-        }
-        glsl.replace(start, bodyEnd + 4 - start, uniforms);
+// Components of a GLSL scalar or vector type ("float" 1, "ivec3" 3…), 0 for anything else.
+int components(const std::string& type) {
+    static const std::map<std::string, int> sizes = {
+        {"float", 1}, {"vec2", 2},  {"vec3", 3},  {"vec4", 4},  {"int", 1},   {"ivec2", 2}, {"ivec3", 3},
+        {"ivec4", 4}, {"uint", 1},  {"uvec2", 2}, {"uvec3", 3}, {"uvec4", 4}, {"bool", 1},  {"bvec2", 2},
+        {"bvec3", 3}, {"bvec4", 4}, {"double", 1}};
+    auto it = sizes.find(type);
+    return it == sizes.end() ? 0 : it->second;
+}
+
+// One component as a GLSL literal of the type's kind.
+std::string literal(const std::string& type, double value) {
+    char text[40];
+    if (type.find("bool") != std::string::npos || type[0] == 'b') return value != 0.0 ? "true" : "false";
+    if (type[0] == 'i' || type == "int") {
+        std::snprintf(text, sizeof text, "%lld", static_cast<long long>(value));
+    } else if (type[0] == 'u') {
+        std::snprintf(text, sizeof text, "%lluu", static_cast<unsigned long long>(std::max(value, 0.0)));
+    } else {
+        std::snprintf(text, sizeof text, "%.9g", value);
+        std::string s = text;
+        if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+        return s;
     }
-    const std::string instance = std::string("uniform ") + kGlobalBlockType + " " + kGlobalBlock + ";\n";
-    if (size_t at = glsl.find(instance); at != std::string::npos) glsl.erase(at, instance.size());
-    const std::string prefix = std::string(kGlobalBlock) + ".";
-    for (size_t at = glsl.find(prefix); at != std::string::npos; at = glsl.find(prefix, at)) glsl.erase(at, prefix.size());
+    return text;
+}
+
+// The GLSL initializer ` = …` of a uniform of `type` from the HLSL initial value, or nullopt with
+// `why` when it cannot be one.
+std::optional<std::string> glslInitializer(const std::string& type, const HlslGlobalInitializer& init, std::string& why) {
+    const int n = components(type);
+    if (n == 0 || init.array) {
+        why = "rmfx carries over the initial values of scalars and vectors only";
+        return std::nullopt;
+    }
+    if (!init.constant) {
+        why = "it is not a list of numbers";
+        return std::nullopt;
+    }
+    const size_t count = init.values.size();
+    if (count != 1 && count != static_cast<size_t>(n)) {
+        why = std::to_string(count) + " values for a " + init.declaredType;
+        return std::nullopt;
+    }
+    if (n == 1) return " = " + literal(type, init.values[0]);
+    std::string out = " = " + type + "(";
+    for (int i = 0; i < n; ++i) out += (i ? ", " : "") + literal(type, init.values[count == 1 ? 0 : i]);
+    return out + ")";
+}
+
+// SPIRV-Cross writes each block as `struct rm_hlsl_BlockType<k> { … }; uniform rm_hlsl_BlockType<k>
+// rm_hlsl_Block<k>;` (plain-uniform mode) and reads members as `rm_hlsl_Block<k>.name`: turn each
+// member into `uniform TYPE name;` (with its HLSL initial value, when it has one rmfx can carry
+// over) and every use into `name`. `unsupported` hears of the initial values left behind.
+std::string flattenBlocks(std::string glsl, size_t blocks, const std::map<std::string, HlslGlobalInitializer>& initial,
+                          const std::function<void(const HlslGlobalInitializer&, const std::string& why)>& unsupported) {
+    for (size_t k = 0; k < blocks; ++k) {
+        const std::string structHead = "struct " + blockTypeName(k) + "\n{\n";
+        size_t start = glsl.find(structHead);
+        if (start != std::string::npos) {
+            size_t bodyEnd = glsl.find("\n};\n", start);
+            std::string body = glsl.substr(start + structHead.size(), bodyEnd - start - structHead.size());
+            std::string uniforms;
+            size_t from = 0;
+            while (from < body.size()) {
+                size_t end = body.find('\n', from);
+                if (end == std::string::npos) end = body.size();
+                std::string line = body.substr(from, end - from);
+                from = end + 1;
+                line.erase(0, line.find_first_not_of(" \t"));
+                if (line.empty()) continue;
+                // "vec4 Tint;", "layout(row_major) mat4 M;", "vec4 List[4];"
+                std::string declaration = line.substr(0, line.find_last_not_of("; ") + 1);
+                size_t nameStart = declaration.find_last_of(" \t") + 1;
+                std::string name = declaration.substr(nameStart, declaration.find('[', nameStart) - nameStart);
+                std::string type = declaration.substr(0, nameStart);  // "layout(row_major) mat4 "
+                type.erase(type.find_last_not_of(" \t") + 1);
+                if (size_t space = type.find_last_of(" \t"); space != std::string::npos) type.erase(0, space + 1);
+                std::string value;
+                if (auto it = initial.find(name); it != initial.end()) {
+                    std::string why;
+                    if (auto v = glslInitializer(type, it->second, why)) value = *v;
+                    else unsupported(it->second, why);
+                }
+                uniforms += "uniform " + declaration + value + ";\n";
+            }
+            glsl.replace(start, bodyEnd + 4 - start, uniforms);
+        }
+        const std::string instance = "uniform " + blockTypeName(k) + " " + blockName(k) + ";\n";
+        if (size_t at = glsl.find(instance); at != std::string::npos) glsl.erase(at, instance.size());
+        const std::string prefix = blockName(k) + ".";
+        for (size_t at = glsl.find(prefix); at != std::string::npos; at = glsl.find(prefix, at)) glsl.erase(at, prefix.size());
+    }
     return glsl;
 }
 
@@ -207,14 +280,19 @@ void nameCombinedSamplers(CrossCompiler& cross) {
     }
 }
 
-std::optional<std::string> spirvToGlsl(const std::vector<unsigned>& spirv, ShaderStage stage, std::string& error) {
+struct Translated {
+    std::string glsl;
+    size_t blocks = 0;
+};
+
+std::optional<Translated> spirvToGlsl(const std::vector<unsigned>& spirv, ShaderStage stage, std::string& error) {
     CrossCompiler cross(spirv);
     if (!cross.ok()) {
         error = cross.error();
         return std::nullopt;
     }
     renameInterface(cross, stage);
-    prepareGlobals(cross);
+    const size_t blocks = prepareBlocks(cross);
     nameCombinedSamplers(cross);
     spvc_compiler_options options = nullptr;
     spvc_compiler_create_compiler_options(cross.get(), &options);
@@ -228,7 +306,7 @@ std::optional<std::string> spirvToGlsl(const std::vector<unsigned>& spirv, Shade
         error = cross.error();
         return std::nullopt;
     }
-    return flattenGlobals(glsl);
+    return Translated{glsl, blocks};
 }
 
 }  // namespace
@@ -297,13 +375,20 @@ std::optional<PreprocessedShader> translateHlsl(const PreprocessedShader& hlsl, 
     glslang::GlslangToSpv(*program.getIntermediate(language), spirv);
 
     std::string error;
-    std::optional<std::string> glsl = spirvToGlsl(spirv, stage.stage, error);
-    if (!glsl) {
+    std::optional<Translated> translated = spirvToGlsl(spirv, stage.stage, error);
+    if (!translated) {
         diagnostics.push_back({Diagnostic::Severity::Error, where, element, "HLSL to GLSL translation failed: " + error});
         return std::nullopt;
     }
+    std::map<std::string, HlslGlobalInitializer> initial;
+    for (HlslGlobalInitializer& init : findHlslGlobalInitializers(code)) initial[init.name] = std::move(init);
+    auto unsupported = [&](const HlslGlobalInitializer& init, const std::string& why) {
+        diagnostics.push_back({Diagnostic::Severity::Warning, hlsl.origin(init.line), element,
+                               "the initial value of HLSL global '" + init.name + "' is not carried over (" + why +
+                                   "): it starts at 0 unless a variable feeds it"});
+    };
     PreprocessedShader out;
-    out.code = std::move(*glsl);
+    out.code = flattenBlocks(std::move(translated->glsl), translated->blocks, initial, unsupported);
     out.files = hlsl.files;
     out.lineOrigins.assign(static_cast<size_t>(std::count(out.code.begin(), out.code.end(), '\n')) + 1, where);
     return out;

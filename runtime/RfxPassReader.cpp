@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string_view>
 
+#include "runtime/HlslTranslator.h"
 #include "runtime/IdentifierSearch.h"
 #include "runtime/RfxPackedColor.h"
 #include "runtime/RfxRenderStates.h"
@@ -240,12 +241,15 @@ private:
 
     // Streams feed named attributes in OpenGL ES, and in OpenGL only when the vertex shader
     // declares an attribute of that name (RenderMonkey feeds gl_Vertex, gl_Normal… otherwise).
+    // In Direct3D they feed the vertex shader's input of that usage (TEXCOORD1, TANGENT0…), which
+    // the HLSL translator names by hlslVertexInputName.
     void bindStreams() {
         if (!streamMap_) return;
         const ShaderSource* vertex = nullptr;
         for (const ShaderSource& s : out_.pass.shaders)
             if (s.stage == ShaderStage::Vertex) vertex = &s;
         for (VertexStream stream : streamMap_->streams) {
+            if (api_ == RfxApi::Direct3D) stream.attribute = hlslVertexInputName(stream.usage, stream.usageIndex);
             if (api_ == RfxApi::OpenGL && !(vertex && declaresVertexInput(vertex->code, stream.attribute)))
                 stream.attribute.clear();
             out_.pass.streams.push_back(std::move(stream));

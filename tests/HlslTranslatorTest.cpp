@@ -90,11 +90,62 @@ TEST(HlslTranslator, UniformsAndSamplersKeepTheirHlslNamesAsPlainUniforms) {
     auto uniforms = linkPair(vertexShader, pixelShader);
     EXPECT_EQ(names(uniforms), (std::vector<std::string>{"WorldViewProjection", "baseMap", "gain", "tint"}));
     for (const ActiveUniform& u : uniforms) {
-        if (u.name == "baseMap") EXPECT_EQ(u.type, UniformType::Sampler2D);
-        if (u.name == "WorldViewProjection") EXPECT_EQ(u.type, UniformType::Mat4);
-        if (u.name == "tint") EXPECT_EQ(u.type, UniformType::Vec4);
-        if (u.name == "gain") EXPECT_EQ(u.type, UniformType::Float);
+        if (u.name == "baseMap") {
+            EXPECT_EQ(u.type, UniformType::Sampler2D);
+        }
+        if (u.name == "WorldViewProjection") {
+            EXPECT_EQ(u.type, UniformType::Mat4);
+        }
+        if (u.name == "tint") {
+            EXPECT_EQ(u.type, UniformType::Vec4);
+        }
+        if (u.name == "gain") {
+            EXPECT_EQ(u.type, UniformType::Float);
+        }
     }
+}
+
+TEST(HlslTranslator, CbufferMembersAreUniformsByNameBesideTheGlobals) {
+    auto uniforms = linkPair(vertexShader, lines({
+                                               "cbuffer Lights : register(b1) { float4 lightColour; float lightGain; };",
+                                               "float4 tint;",
+                                               "float4 main(float2 uv : TEXCOORD1) : COLOR {",
+                                               "    return lightColour * lightGain + tint + float4(uv, 0, 0);",
+                                               "}",
+                                           }));
+    EXPECT_EQ(names(uniforms), (std::vector<std::string>{"WorldViewProjection", "lightColour", "lightGain", "tint"}));
+}
+
+// Direct3D keeps a global's initial value until the application sets it; glslang drops it.
+TEST(HlslTranslator, InitialValuesBecomeUniformInitializersAndTheOthersWarnAtTheirLine) {
+    const std::string pixel = lines({
+        "float4 tint = float4(0.25, 0.5, 0.75, 1);",
+        "float gain = 2;",
+        "int steps = 3;",
+        "float3 axis = 0.5;",
+        "float2x2 turn = { 0, 1, -1, 0 };",
+        "float4 mixed = float4(tint.rgb, 1);",
+        "float4 main(float2 uv : TEXCOORD1) : COLOR {",
+        "    return tint * gain * steps + float4(axis, 0) + float4(mul(uv, turn), 0, 0) + mixed;",
+        "}",
+    });
+    Diagnostics d;
+    auto ps = translate(pixel, ShaderStage::Fragment, d);
+    ASSERT_TRUE(ps) << formatAll(d);
+    for (const char* declaration : {"uniform vec4 tint = vec4(0.25, 0.5, 0.75, 1.0);", "uniform float gain = 2.0;",
+                                    "uniform int steps = 3;", "uniform vec3 axis = vec3(0.5, 0.5, 0.5);"})
+        EXPECT_NE(ps->code.find(declaration), std::string::npos) << declaration << "\n" << ps->code;
+    ASSERT_EQ(d.size(), 2u) << formatAll(d);
+    EXPECT_EQ(d[0].severity, Diagnostic::Severity::Warning);
+    EXPECT_EQ(d[0].where.line, 5);
+    EXPECT_NE(d[0].message.find("'turn' is not carried over (rmfx carries over the initial values of scalars and vectors only)"),
+              std::string::npos)
+        << d[0].message;
+    EXPECT_EQ(d[1].where.line, 6);
+    EXPECT_NE(d[1].message.find("'mixed' is not carried over (it is not a list of numbers)"), std::string::npos)
+        << d[1].message;
+    // The GLSL with its initializers compiles and links.
+    EXPECT_FALSE(linkPair(vertexShader, pixel).empty());
 }
 
 TEST(HlslTranslator, StagesMeetBySemanticAndPositionIsGlPositionWithDepthMapped) {

@@ -80,5 +80,25 @@ TEST_F(RfxCoreRenderGLTest, Direct3DHlslPassesRunThroughGlslang) {
     expectUniformOutput(runWorkspace(std::move(ws), RunSettings{{kSize, kSize}}), expected);
 }
 
+TEST_F(RfxCoreRenderGLTest, Direct3DStreamsInitialValuesAndCbuffersReachTheShaders) {
+    auto ws = loadRfx("d3d_streams.rfx", GlProfile::Core);
+    ASSERT_TRUE(ws);
+    GlRun run = runWorkspace(std::move(ws), RunSettings{{kSize, kSize}});
+    ASSERT_TRUE(run.exec);
+    Image image = readBack(*run.exec, run.ws->outputTargetName());
+    ASSERT_EQ(image.width, kSize);
+    // |tangent| (1, 0, 0) × Scale (the variable's 0.25, not the HLSL 2.0) × 0.5, plus Bias (its
+    // HLSL initial value: no constant binds it) and Offset (a cbuffer member) (0.5, 0.125, 0);
+    // TEXCOORD1 (the quad's coordinates, 0…1 across the screen): v/2 into blue, u into alpha.
+    double worst = 0.0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const double u = (x + 0.5) / kSize, v = (y + 0.5) / kSize;
+            const double expected[4] = {0.25 * 0.5 + 0.125 + 0.5, 0.25 + 0.125, 0.5 * v, u};
+            for (int c = 0; c < 4; ++c) worst = std::max(worst, std::abs(atGl(image, x, y, c) - expected[c]));
+        }
+    expectWithin("max abs error against the effect's maths", worst, 0.5 / 255.0 + 1e-6);
+}
+
 }  // namespace
 }  // namespace rmfx::test

@@ -252,6 +252,30 @@ void main() {
   </pass>
 </workspace>)";
 
+// A uniform declared with a value needs no variable: it keeps the value (the HLSL translator
+// writes initialised globals so). A variable of its name still wins.
+TEST_F(UniformBindingGLTest, UniformWithAnInitialValueKeepsItUnlessAVariableFeedsIt) {
+    GlRun run = runWorkspace(R"(<workspace version="1" name="initial" size="4x4">
+  <float name="Fed" value="0.75"/>
+  <target name="a" format="rgba32f" size="1x1"/>
+  <pass name="initial" target="a">
+    <shader stage="fragment"><![CDATA[
+#version 450 core
+uniform vec3 Tint = vec3(0.25, -2.5, 1e3);
+uniform float Fed = 9.0;
+out vec4 fragColor;
+void main() { fragColor = vec4(Tint, Fed); }
+]]></shader>
+  </pass>
+</workspace>)",
+                             {{4, 4}, 1, 1.0f / 60.0f});
+    ASSERT_TRUE(run.exec);
+    Image a = readBack(*run.exec, "a");
+    ASSERT_EQ(a.width, 1);
+    const float expected[4] = {0.25f, -2.5f, 1000.0f, 0.75f};
+    for (int c = 0; c < 4; ++c) EXPECT_EQ(a.at(0, 0, c), expected[c]) << c;
+}
+
 TEST_F(UniformBindingGLTest, ViewportAndTargetSizes) {
     GlRun run = runWorkspace(predefinedWorkspace, {{48, 32}, 1, 1.0f / 60.0f});
     ASSERT_TRUE(run.exec);

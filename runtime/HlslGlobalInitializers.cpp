@@ -1,0 +1,210 @@
+#include "runtime/HlslGlobalInitializers.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <optional>
+#include <set>
+
+namespace rmfx {
+namespace {
+
+bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// The code with comments, string literals and preprocessor lines turned into spaces (newlines
+// kept, so offsets and line numbers still match the input).
+std::string blanked(const std::string& code) {
+    std::string out = code;
+    size_t i = 0;
+    bool lineStart = true;
+    while (i < out.size()) {
+        char c = out[i];
+        if (c == '\n') {
+            lineStart = true;
+            ++i;
+            continue;
+        }
+        if (lineStart && c == '#') {
+            while (i < out.size() && out[i] != '\n') out[i++] = ' ';
+            continue;
+        }
+        if (!std::isspace(static_cast<unsigned char>(c))) lineStart = false;
+        if (c == '/' && i + 1 < out.size() && out[i + 1] == '/') {
+            while (i < out.size() && out[i] != '\n') out[i++] = ' ';
+        } else if (c == '/' && i + 1 < out.size() && out[i + 1] == '*') {
+            size_t end = out.find("*/", i + 2);
+            end = end == std::string::npos ? out.size() : end + 2;
+            for (; i < end; ++i)
+                if (out[i] != '\n') out[i] = ' ';
+        } else if (c == '"') {
+            out[i++] = ' ';
+            while (i < out.size() && out[i] != '"' && out[i] != '\n') out[i++] = ' ';
+            if (i < out.size() && out[i] == '"') out[i++] = ' ';
+        } else {
+            ++i;
+        }
+    }
+    return out;
+}
+
+std::string trimmed(const std::string& s) {
+    size_t a = s.find_first_not_of(" \t\r\n"), b = s.find_last_not_of(" \t\r\n");
+    return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+}
+
+std::vector<std::string> words(const std::string& s) {
+    std::vector<std::string> out;
+    for (size_t i = 0; i < s.size();) {
+        if (isIdentifierChar(s[i])) {
+            size_t j = i;
+            while (j < s.size() && isIdentifierChar(s[j])) ++j;
+            out.push_back(s.substr(i, j - i));
+            i = j;
+        } else if (!std::isspace(static_cast<unsigned char>(s[i]))) {
+            out.push_back(std::string(1, s[i++]));
+        } else {
+            ++i;
+        }
+    }
+    return out;
+}
+
+// "1", "-0.5", "2.f", "1e-3h", ".25": a number with an optional sign and HLSL suffix.
+std::optional<double> number(std::string s) {
+    s = trimmed(s);
+    if (s == "true") return 1.0;
+    if (s == "false") return 0.0;
+    bool negative = false;
+    while (!s.empty() && (s[0] == '-' || s[0] == '+')) {
+        negative ^= s[0] == '-';
+        s = trimmed(s.substr(1));
+    }
+    while (!s.empty() && std::string("fFhHlLuU").find(s.back()) != std::string::npos &&
+           !(s.size() >= 2 && (s[s.size() - 2] == 'e' || s[s.size() - 2] == 'E')))
+        s.pop_back();
+    if (s.empty()) return std::nullopt;
+    double value = 0.0;
+    auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
+    if (error != std::errc() || end != s.data() + s.size()) return std::nullopt;
+    return negative ? -value : value;
+}
+
+// A comma-separated list of numbers.
+std::optional<std::vector<double>> numbers(const std::string& list) {
+    std::vector<double> out;
+    size_t from = 0;
+    while (from <= list.size()) {
+        size_t comma = list.find(',', from);
+        if (comma == std::string::npos) comma = list.size();
+        std::string item = trimmed(list.substr(from, comma - from));
+        if (item.empty() && comma == list.size() && !out.empty()) break;  // {1, 2, 3,}
+        auto n = number(item);
+        if (!n) return std::nullopt;
+        out.push_back(*n);
+        from = comma + 1;
+    }
+    return out;
+}
+
+// `2.0`, `float4(1, 2, 3, 4)`, `{1, 2, 3, 4}`, `true`; nullopt for anything else (an expression,
+// a nested constructor, another variable's name).
+std::optional<std::vector<double>> constantValues(const std::string& initializer) {
+    std::string s = trimmed(initializer);
+    if (s.empty()) return std::nullopt;
+    if (s.front() == '{' && s.back() == '}') return numbers(s.substr(1, s.size() - 2));
+    size_t open = s.find('(');
+    if (open != std::string::npos && s.back() == ')') {
+        std::string type = trimmed(s.substr(0, open));
+        if (type.empty() || !std::all_of(type.begin(), type.end(), isIdentifierChar)) return std::nullopt;
+        std::string inside = s.substr(open + 1, s.size() - open - 2);
+        if (inside.find_first_of("()") != std::string::npos) return std::nullopt;
+        return numbers(inside);
+    }
+    if (auto n = number(s)) return std::vector<double>{*n};
+    return std::nullopt;
+}
+
+const std::set<std::string>& modifiers() {
+    static const std::set<std::string> m = {"uniform", "extern", "shared", "volatile", "row_major", "column_major",
+                                            "precise", "nointerpolation"};
+    return m;
+}
+
+// One statement at declaration scope, `text` starting at `offset` in the code.
+std::optional<HlslGlobalInitializer> declaration(const std::string& code, size_t offset, const std::string& text) {
+    size_t equals = text.find('=');
+    if (equals == std::string::npos) return std::nullopt;
+    std::string left = text.substr(0, equals);
+    if (size_t annotation = left.find('<'); annotation != std::string::npos) left.erase(annotation);
+    if (size_t colon = left.find(':'); colon != std::string::npos) left.erase(colon);  // semantic, register(c3)
+    if (left.find_first_of("(){}") != std::string::npos) return std::nullopt;  // not a variable
+    std::vector<std::string> w = words(left);
+    HlslGlobalInitializer init;
+    if (size_t bracket = left.find('['); bracket != std::string::npos) {
+        init.array = true;
+        w = words(left.substr(0, bracket));
+    }
+    std::vector<std::string> declarators;
+    for (const std::string& word : w) {
+        if (word == "static" || word == "const") return std::nullopt;  // not a constant the application sets
+        if (!modifiers().count(word)) declarators.push_back(word);
+    }
+    if (declarators.size() != 2 || !isIdentifierChar(declarators[0][0]) || !isIdentifierChar(declarators[1][0]))
+        return std::nullopt;
+    init.declaredType = declarators[0];
+    init.name = declarators[1];
+    if (auto values = constantValues(text.substr(equals + 1))) {
+        init.constant = true;
+        init.values = std::move(*values);
+    }
+    // The line of the name: its last occurrence as a whole word before '='.
+    size_t at = offset;
+    for (size_t p = left.find(init.name); p != std::string::npos; p = left.find(init.name, p + 1)) {
+        bool before = p == 0 || !isIdentifierChar(left[p - 1]);
+        bool after = p + init.name.size() >= left.size() || !isIdentifierChar(left[p + init.name.size()]);
+        if (before && after) at = offset + p;
+    }
+    init.line = 1 + static_cast<int>(std::count(code.begin(), code.begin() + static_cast<long>(at), '\n'));
+    return init;
+}
+
+}  // namespace
+
+std::vector<HlslGlobalInitializer> findHlslGlobalInitializers(const std::string& source) {
+    const std::string code = blanked(source);
+    enum class Scope { Buffer, Initializer, Other };
+    std::vector<Scope> scopes;
+    std::vector<HlslGlobalInitializer> out;
+    size_t start = 0;  // of the statement being read at declaration scope
+    auto atDeclarationScope = [&] { return scopes.empty() || scopes.back() == Scope::Buffer; };
+    for (size_t i = 0; i < code.size(); ++i) {
+        const char c = code[i];
+        if (c == '{') {
+            if (!atDeclarationScope()) {
+                scopes.push_back(Scope::Other);
+                continue;
+            }
+            std::string head = code.substr(start, i - start);
+            std::vector<std::string> w = words(head);
+            if (head.find('=') != std::string::npos) {
+                scopes.push_back(Scope::Initializer);
+            } else if (!w.empty() && (w[0] == "cbuffer" || w[0] == "tbuffer")) {
+                scopes.push_back(Scope::Buffer);
+                start = i + 1;
+            } else {
+                scopes.push_back(Scope::Other);
+            }
+        } else if (c == '}') {
+            if (scopes.empty()) continue;  // unbalanced: the compiler reports it
+            Scope closed = scopes.back();
+            scopes.pop_back();
+            if (closed != Scope::Initializer && atDeclarationScope()) start = i + 1;  // after a body
+        } else if (c == ';' && atDeclarationScope()) {
+            if (auto init = declaration(code, start, code.substr(start, i - start))) out.push_back(std::move(*init));
+            start = i + 1;
+        }
+    }
+    return out;
+}
+
+}  // namespace rmfx
