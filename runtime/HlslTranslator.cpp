@@ -311,6 +311,42 @@ std::optional<Translated> spirvToGlsl(const std::vector<unsigned>& spirv, Shader
 
 }  // namespace
 
+std::optional<FixedFunctionVaryings> hlslFixedFunctionVaryings(const std::string& pixelGlsl, std::string& unsupported) {
+    static const std::map<std::string, std::string> swizzles = {{"float", ".x"}, {"vec2", ".xy"}, {"vec3", ".xyz"}, {"vec4", ""}};
+    FixedFunctionVaryings out;
+    const std::string prefix = "rm_hlsl_";
+    size_t from = 0;
+    while (from < pixelGlsl.size()) {
+        size_t end = pixelGlsl.find('\n', from);
+        if (end == std::string::npos) end = pixelGlsl.size();
+        std::string line = pixelGlsl.substr(from, end - from);
+        from = end + 1;
+        // "in vec2 rm_hlsl_TEXCOORD0;", maybe with qualifiers first ("flat in float …")
+        if (line.empty() || line.back() != ';') continue;
+        std::vector<std::string> words;
+        for (size_t i = 0; i + 1 < line.size();) {
+            size_t j = line.find(' ', i);
+            if (j == std::string::npos || j > line.size() - 1) j = line.size() - 1;
+            if (j > i) words.push_back(line.substr(i, j - i));
+            i = j + 1;
+        }
+        if (words.size() < 3 || words.back().rfind(prefix, 0) != 0 ||
+            std::find(words.begin(), words.end() - 2, "in") == words.end() - 2)
+            continue;
+        const std::string type = words[words.size() - 2], name = words.back();
+        auto [semantic, index] = splitSemantic(name.substr(prefix.size()));
+        auto swizzle = swizzles.find(type);
+        std::string value = semantic == "TEXCOORD" ? "vec4(rm_TexCoordIn, 0.0, 1.0)" : semantic == "COLOR" ? "vec4(1.0)" : "";
+        if (value.empty() || swizzle == swizzles.end()) {
+            unsupported = semantic + std::to_string(index);
+            return std::nullopt;
+        }
+        out.declarations += "out " + type + " " + name + ";\n";
+        out.assignments += "    " + name + " = " + value + swizzle->second + ";\n";
+    }
+    return out;
+}
+
 std::string hlslVaryingName(const std::string& semantic) {
     auto [name, index] = splitSemantic(semantic);
     return "rm_hlsl_" + name + std::to_string(index);

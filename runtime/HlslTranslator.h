@@ -48,6 +48,17 @@ std::optional<PreprocessedShader> translateHlsl(const PreprocessedShader& hlsl, 
                                                 const SourceLocation& where, const std::string& element,
                                                 Diagnostics& diagnostics);
 
+// For a pass with an HLSL pixel shader and no vertex shader, what Direct3D 9's fixed-function
+// vertex processing hands the pixel shader: GLSL 4.50 declarations and assignments, for rmfx's
+// built-in vertex shader, of every input of `pixelGlsl` (the translated pixel shader):
+// TEXCOORDn the mesh's texture coordinates as (u, v, 0, 1), COLORn opaque white (the material
+// colour with lighting off). nullopt, with the semantic in `unsupported`, for any other input.
+struct FixedFunctionVaryings {
+    std::string declarations;  // `out vec2 rm_hlsl_TEXCOORD0;` …
+    std::string assignments;   // statements for the end of main(), reading vec2 rm_TexCoordIn
+};
+std::optional<FixedFunctionVaryings> hlslFixedFunctionVaryings(const std::string& pixelGlsl, std::string& unsupported);
+
 // "TEXCOORD" → rm_hlsl_TEXCOORD0, "color1" → rm_hlsl_COLOR1: the GLSL name of a varying.
 std::string hlslVaryingName(const std::string& semantic);
 // The GLSL attribute name of a vertex input with that usage: (TexCoord, 1) → rm_hlsl_in_TEXCOORD1.

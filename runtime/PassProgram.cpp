@@ -102,22 +102,37 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
         if (failed()) ok = false;
         program.stages.push_back(std::move(stage));
     };
-    if (vertex) {
-        add(*vertex);
-    } else {
+    if (vertex) add(*vertex);
+    if (fragment) add(*fragment);
+    if (!vertex) {
         bool fullscreen = pass.draw.mesh == BuiltinMesh::FullscreenTriangle;
         // An HLSL fragment shader arrives as GLSL 4.50, so its built-in vertex shader is GLSL 4.50.
-        ShaderDialect dialect = fragment && fragment->dialect != ShaderDialect::Hlsl ? fragment->dialect : ShaderDialect::Glsl;
+        const bool hlsl = fragment && fragment->dialect == ShaderDialect::Hlsl;
+        ShaderDialect dialect = fragment && !hlsl ? fragment->dialect : ShaderDialect::Glsl;
         ShaderInput input;
         input.dialect = dialect;
         input.code = fullscreen ? builtinFullscreenVertexShader(dialect) : builtinModelVertexShader(dialect);
+        if (hlsl && ok) {
+            // Direct3D runs a pass without a vertex shader through its fixed-function vertex
+            // processing; the built-in vertex shader hands the pixel shader what that would.
+            std::string unsupported;
+            if (auto varyings = hlslFixedFunctionVaryings(program.stages.back().shader.code, unsupported)) {
+                input.code.insert(input.code.find("void main() {"), varyings->declarations);
+                input.code.insert(input.code.rfind('}'), varyings->assignments);
+            } else {
+                diagnostics.push_back({Diagnostic::Severity::Error, fragment->where, passLabel(pass),
+                                       "the HLSL pixel shader reads " + unsupported +
+                                           ", which a pass without a vertex shader (Direct3D's fixed-function "
+                                           "vertex processing) does not provide: give the pass a vertex shader"});
+                ok = false;
+            }
+        }
         input.start = {fullscreen ? "<built-in fullscreen vertex shader>" : "<built-in model vertex shader>", 1};
         input.root = ws.includeFolder();
         input.folder = ws.folder;
         PassStage stage{ShaderStage::Vertex, preprocessShader(input, diagnostics), pass.where, true, dialect};
-        program.stages.push_back(std::move(stage));
+        program.stages.insert(program.stages.begin(), std::move(stage));
     }
-    if (fragment) add(*fragment);
     if (!ok) return std::nullopt;
     return program;
 }

@@ -146,6 +146,47 @@ float4 main(float2 uv : TEXCOORD0) : COLOR { return tex2D(baseMap, uv) * gain; }
             expectNear(pixel(out, x, y), 2.0 * image.at(x, y), 1e-6, "texel " + std::to_string(x) + "," + std::to_string(y));
 }
 
+// A pass with a pixel shader only: Direct3D's fixed-function vertex processing gives it the
+// mesh's texture coordinates (TEXCOORDn, as (u, v, 0, 1)) and white (COLORn); rmfx's built-in
+// vertex shader hands it the same. On the full-screen triangle (u, v) is the pixel's position.
+TEST_F(HlslGLTest, PixelShaderWithoutAVertexShaderReadsWhatFixedFunctionGives) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x4">
+  <target name="out" format="rgba32f" size="4x4"/>
+  <pass name="hlsl" target="out">
+    <shader stage="fragment"><![CDATA[
+float4 main(float2 uv : TEXCOORD0, float4 far : TEXCOORD3, float3 colour : COLOR0) : COLOR {
+    return float4(uv.x, uv.y + far.w, far.z + colour.g * 0.5, colour.r);
+}
+]]></shader>
+  </pass>
+</workspace>)";
+    RefImage out = renderOut(xml);
+    ASSERT_EQ(out.width, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) {
+            const double u = (x + 0.5) / 4, v = (y + 0.5) / 4;
+            expectNear(pixel(out, x, y), {u, v + 1.0, 0.5, 1.0}, 1e-6, "pixel " + std::to_string(x) + "," + std::to_string(y));
+        }
+}
+
+// An input fixed-function processing does not give is an error naming the semantic.
+TEST_F(HlslGLTest, PixelShaderWithoutAVertexShaderReadingANormalIsAnError) {
+    ParsedWorkspace parsed = parseWorkspaceText(R"(<workspace version="1" name="hlsl" size="4x4">
+  <pass name="hlsl">
+    <shader stage="fragment" dialect="hlsl"><![CDATA[
+float4 main(float3 n : NORMAL) : COLOR { return float4(n, 1); }
+]]></shader>
+  </pass>
+</workspace>)",
+                                                "hlsl-test.xml", ".");
+    ASSERT_TRUE(parsed.workspace) << formatAll(parsed.diagnostics);
+    std::string all = formatAll(validateWorkspace(*parsed.workspace));
+    EXPECT_NE(all.find("hlsl-test.xml:3: error: <pass name=\"hlsl\">: the HLSL pixel shader reads NORMAL0, which a pass "
+                       "without a vertex shader"),
+              std::string::npos)
+        << all;
+}
+
 // Direct3D keeps z/w in [0, 1] and writes it to the depth buffer as is; rmfx must give the same
 // window depth (gl_FragCoord.z, SV_Position.z in the pixel shader), also when w is not 1.
 TEST_F(HlslGLTest, ClipSpaceDepthFollowsDirect3D) {
