@@ -171,6 +171,19 @@ size_t prepareBlocks(CrossCompiler& cross) {
     return blocks;
 }
 
+// The lines of a text, without their '\n'.
+std::vector<std::string> splitLines(const std::string& text) {
+    std::vector<std::string> out;
+    size_t from = 0;
+    while (from < text.size()) {
+        size_t end = text.find('\n', from);
+        if (end == std::string::npos) end = text.size();
+        out.push_back(text.substr(from, end - from));
+        from = end + 1;
+    }
+    return out;
+}
+
 // Components of a GLSL scalar or vector type ("float" 1, "ivec3" 3…), 0 for anything else.
 int components(const std::string& type) {
     static const std::map<std::string, int> sizes = {
@@ -234,12 +247,7 @@ std::string flattenBlocks(std::string glsl, size_t blocks, const std::map<std::s
             size_t bodyEnd = glsl.find("\n};\n", start);
             std::string body = glsl.substr(start + structHead.size(), bodyEnd - start - structHead.size());
             std::string uniforms;
-            size_t from = 0;
-            while (from < body.size()) {
-                size_t end = body.find('\n', from);
-                if (end == std::string::npos) end = body.size();
-                std::string line = body.substr(from, end - from);
-                from = end + 1;
+            for (std::string line : splitLines(body)) {
                 line.erase(0, line.find_first_not_of(" \t"));
                 if (line.empty()) continue;
                 // "vec4 Tint;", "layout(row_major) mat4 M;", "vec4 List[4];"
@@ -315,12 +323,7 @@ std::optional<FixedFunctionVaryings> hlslFixedFunctionVaryings(const std::string
     static const std::map<std::string, std::string> swizzles = {{"float", ".x"}, {"vec2", ".xy"}, {"vec3", ".xyz"}, {"vec4", ""}};
     FixedFunctionVaryings out;
     const std::string prefix = "rm_hlsl_";
-    size_t from = 0;
-    while (from < pixelGlsl.size()) {
-        size_t end = pixelGlsl.find('\n', from);
-        if (end == std::string::npos) end = pixelGlsl.size();
-        std::string line = pixelGlsl.substr(from, end - from);
-        from = end + 1;
+    for (const std::string& line : splitLines(pixelGlsl)) {
         // "in vec2 rm_hlsl_TEXCOORD0;", maybe with qualifiers first ("flat in float …")
         if (line.empty() || line.back() != ';') continue;
         std::vector<std::string> words;
