@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <optional>
 #include <set>
 
@@ -85,7 +86,7 @@ std::optional<double> number(std::string s) {
     if (s.empty()) return std::nullopt;
     double value = 0.0;
     auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
-    if (error != std::errc() || end != s.data() + s.size()) return std::nullopt;
+    if (error != std::errc() || end != s.data() + s.size() || !std::isfinite(value)) return std::nullopt;  // "inf", "nan"
     return negative ? -value : value;
 }
 

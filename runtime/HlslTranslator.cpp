@@ -197,11 +197,11 @@ int components(const std::string& type) {
 // One component as a GLSL literal of the type's kind.
 std::string literal(const std::string& type, double value) {
     char text[40];
-    if (type.find("bool") != std::string::npos || type[0] == 'b') return value != 0.0 ? "true" : "false";
-    if (type[0] == 'i' || type == "int") {
-        std::snprintf(text, sizeof text, "%lld", static_cast<long long>(value));
+    if (type[0] == 'b') return value != 0.0 ? "true" : "false";  // bool, bvecN
+    if (type[0] == 'i') {
+        std::snprintf(text, sizeof text, "%lld", static_cast<long long>(std::clamp(value, -2147483648.0, 2147483647.0)));
     } else if (type[0] == 'u') {
-        std::snprintf(text, sizeof text, "%lluu", static_cast<unsigned long long>(std::max(value, 0.0)));
+        std::snprintf(text, sizeof text, "%lluu", static_cast<unsigned long long>(std::clamp(value, 0.0, 4294967295.0)));
     } else {
         std::snprintf(text, sizeof text, "%.9g", value);
         std::string s = text;

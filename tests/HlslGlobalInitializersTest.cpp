@@ -79,8 +79,12 @@ TEST(HlslGlobalInitializers, ExpressionsArraysAndMatricesAreReportedNotRead) {
         "float Weights[3] = { 1, 2, 3 };",
         "float2x2 Turn = { 0, 1, -1, 0 };",
         "float Half = 1.0 / 2.0;",
+        "float Huge = 1e999;",
+        "float Endless = inf;",
     }));
-    ASSERT_EQ(all.size(), 5u);
+    ASSERT_EQ(all.size(), 7u);
+    EXPECT_FALSE(find(all, "Huge")->constant);
+    EXPECT_FALSE(find(all, "Endless")->constant);
     EXPECT_FALSE(find(all, "Mix")->constant);
     EXPECT_TRUE(find(all, "Weights")->array);
     EXPECT_TRUE(find(all, "Weights")->constant);
