@@ -5,12 +5,14 @@
 //   //@@ snippet:NAME  a workspace <code> snippet NAME
 //   //@@ :inline       the top level is inline workspace code (line 7 of fuzz.xml), not a file
 //   //@@ :log          a compiler log, mapped back through the result (mapCompilerLog)
-// Properties: one origin per line of the result, which starts with a #version line.
+// Properties: one origin per line of the result, which starts with a #version line. The HLSL
+// initial-value scanner reads the same text: every global it finds has a name and a line in it.
 
 #include <algorithm>
 
 #include "fuzz/FuzzEntries.h"
 #include "fuzz/FuzzInputFiles.h"
+#include "runtime/HlslGlobalInitializers.h"
 #include "runtime/ShaderPreprocessor.h"
 
 namespace rmfx::fuzz {
@@ -63,6 +65,12 @@ void fuzzShaderPreprocessor(const std::uint8_t* data, std::size_t size) {
               "the preprocessed code does not start with #version");
     for (int line : {-1, 0, 1, static_cast<int>(lines), static_cast<int>(lines) + 1}) out.origin(line);
     formatAll(mapCompilerLog(log, out, shader.start, "<shader>"));
+    for (const HlslGlobalInitializer& init : findHlslGlobalInitializers(out.code)) {
+        fuzzCheck(!init.name.empty() && !init.declaredType.empty(), "an HLSL global without a name or a type");
+        fuzzCheck(init.line >= 1 && static_cast<size_t>(init.line) <= lines + 1,
+                  "HLSL global '" + init.name + "' at line " + std::to_string(init.line) + " of " + std::to_string(lines));
+        fuzzCheck(init.constant || init.values.empty(), "values read from an initializer that is not constant");
+    }
 }
 
 }  // namespace rmfx::fuzz
