@@ -7,6 +7,8 @@
 #include <optional>
 #include <set>
 
+#include "runtime/IdentifierSearch.h"
+
 namespace rmfx {
 namespace {
 
@@ -15,35 +17,15 @@ bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c
 // The code with comments, string literals and preprocessor lines turned into spaces (newlines
 // kept, so offsets and line numbers still match the input).
 std::string blanked(const std::string& code) {
-    std::string out = code;
-    size_t i = 0;
-    bool lineStart = true;
-    while (i < out.size()) {
-        char c = out[i];
-        if (c == '\n') {
-            lineStart = true;
-            ++i;
-            continue;
-        }
-        if (lineStart && c == '#') {
-            while (i < out.size() && out[i] != '\n') out[i++] = ' ';
-            continue;
-        }
-        if (!std::isspace(static_cast<unsigned char>(c))) lineStart = false;
-        if (c == '/' && i + 1 < out.size() && out[i + 1] == '/') {
-            while (i < out.size() && out[i] != '\n') out[i++] = ' ';
-        } else if (c == '/' && i + 1 < out.size() && out[i + 1] == '*') {
-            size_t end = out.find("*/", i + 2);
-            end = end == std::string::npos ? out.size() : end + 2;
-            for (; i < end; ++i)
-                if (out[i] != '\n') out[i] = ' ';
-        } else if (c == '"') {
-            out[i++] = ' ';
-            while (i < out.size() && out[i] != '"' && out[i] != '\n') out[i++] = ' ';
-            if (i < out.size() && out[i] == '"') out[i++] = ' ';
-        } else {
-            ++i;
-        }
+    std::string out = withoutComments(code);
+    size_t line = 0;
+    while (line < out.size()) {
+        size_t first = out.find_first_not_of(" \t", line);
+        if (first != std::string::npos && out[first] == '#')
+            for (size_t i = first; i < out.size() && out[i] != '\n'; ++i) out[i] = ' ';
+        size_t next = out.find('\n', line);
+        if (next == std::string::npos) break;
+        line = next + 1;
     }
     return out;
 }

@@ -1,12 +1,17 @@
 #pragma once
 // Whether shader code names an identifier: a whole-word match, not a substring ("Ke" is not in
-// "Kernel"). Comments and strings are not told apart; good enough to say what code uses.
+// "Kernel"), outside comments and string literals.
 
+#include <string>
 #include <string_view>
 
 namespace rmfx {
 
 bool mentionsIdentifier(std::string_view code, std::string_view name);
+
+// The code with its // and /* */ comments and "string literals" turned into spaces, newlines kept
+// (offsets and line numbers still match the input).
+std::string withoutComments(std::string_view code);
 
 // Whether GLSL code declares a vertex input `name`: a statement holding the word `attribute` or
 // `in` before the name, which ends it (";", "," or "["). No regex: shaders can be long.

@@ -48,6 +48,10 @@ void readCamera(const RfxEffectEntry& effect, const std::string& file, Diagnosti
     const XMLElement* chosen = nullptr;
     for (const XMLElement* c = effect.element->FirstChildElement("RmCamera"); c; c = c->NextSiblingElement("RmCamera"))
         if (!chosen || RfxElement(c, file, diagnostics).name() == active) chosen = c;
+    const std::string chosenName = chosen ? RfxElement(chosen, file, diagnostics).name() : "";
+    if (!active.empty() && chosenName != active)
+        e.warning("ACTIVE_CAMERA '" + active + "' names no <RmCamera> of the effect; " +
+                  (chosen ? "using the first one, '" + chosenName + "'" : "rmfx's default camera is used"));
     if (chosen) ws.camera = orbitFromRmCamera(RfxElement(chosen, file, diagnostics));
 }
 

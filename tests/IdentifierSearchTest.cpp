@@ -12,6 +12,21 @@ TEST(IdentifierSearch, WholeWordsOnly) {
     EXPECT_FALSE(mentionsIdentifier("anything", ""));
 }
 
+// A name only a comment or a string holds is not used ("view_position" in a commented-out line
+// of MeshLab's Simplempass.rfx made `rmfx list` say the pass needs it).
+TEST(IdentifierSearch, CommentsAndStringsDoNotCount) {
+    EXPECT_FALSE(mentionsIdentifier("// uniform vec4 view_position;\nvoid main() {}", "view_position"));
+    EXPECT_FALSE(mentionsIdentifier("/* view_position\n * more */ void main() {}", "view_position"));
+    EXPECT_FALSE(mentionsIdentifier("#error \"view_position\"", "view_position"));
+    EXPECT_TRUE(mentionsIdentifier("/* old */ uniform vec4 view_position; // used", "view_position"));
+    EXPECT_TRUE(mentionsIdentifier("x = 1; /* unterminated\nview_position", "x"));
+    EXPECT_FALSE(mentionsIdentifier("x = 1; /* unterminated\nview_position", "view_position"));
+}
+
+TEST(IdentifierSearch, CommentsBecomeSpacesKeepingLines) {
+    EXPECT_EQ(withoutComments("a // b\nc /* d\ne */ f \"g\" h"), "a     \nc     \n     f     h");
+}
+
 TEST(IdentifierSearch, VertexInputDeclarations) {
     EXPECT_TRUE(declaresVertexInput("attribute vec3 rm_Tangent;\nvoid main(){}", "rm_Tangent"));
     EXPECT_TRUE(declaresVertexInput("in  highp vec4 a_position ;", "a_position"));

@@ -307,6 +307,23 @@ TEST(RfxImporter, CameraBecomesTheOrbitThatSeesTheSame) {
     EXPECT_FLOAT_EQ(ws.camera.farPlane, 50.0f);
 }
 
+TEST(RfxImporter, ActiveCameraNamingNoCameraWarns) {
+    auto warnings = [](const std::string& text) { return formatAll(importRfxText(text, "t.rfx", ".", {}).diagnostics); };
+    const std::string pass = "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n" + std::string(kFragment) + "\n</RmGLPass>\n";
+    std::string none = glEffect(pass);
+    none.replace(none.find("API=\"OpenGL\">"), 14, "API=\"OpenGL\" ACTIVE_CAMERA=\"Camera\">");
+    EXPECT_NE(warnings(none).find("t.rfx:3: warning: <RmOpenGLEffect NAME=\"E\">: ACTIVE_CAMERA 'Camera' names no <RmCamera> "
+                                  "of the effect; rmfx's default camera is used"),
+              std::string::npos)
+        << warnings(none);
+    std::string other = glEffect("<RmCamera NAME=\"Side\" CAMERA_POSITION_X=\"0\" CAMERA_POSITION_Y=\"0\" CAMERA_POSITION_Z=\"3\"/>\n" + pass);
+    other.replace(other.find("API=\"OpenGL\">"), 14, "API=\"OpenGL\" ACTIVE_CAMERA=\"Main\">");
+    EXPECT_NE(warnings(other).find("ACTIVE_CAMERA 'Main' names no <RmCamera> of the effect; using the first one, 'Side'"),
+              std::string::npos)
+        << warnings(other);
+    EXPECT_EQ(allWarnings("gl_legacy.rfx").find("ACTIVE_CAMERA"), std::string::npos);
+}
+
 TEST(RfxImporter, EffectChosenByDottedPathOrName) {
     for (const char* name : {"Tests.Group.Other", "Group.Other", "Other"}) {
         Workspace ws = imported("gl_legacy.rfx", name);
