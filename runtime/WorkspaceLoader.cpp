@@ -1,12 +1,13 @@
 #include "runtime/WorkspaceLoader.h"
 
 #include "runtime/DefaultWorkspace.h"
+#include "runtime/RfxCameraFraming.h"
 #include "runtime/RfxImporter.h"
 #include "runtime/WorkspaceParser.h"
 
 namespace rmfx {
 
-static LoadedWorkspace validated(ParsedWorkspace parsed, const ValidationOptions& options) {
+static LoadedWorkspace validated(ParsedWorkspace parsed, const ValidationOptions& options, bool imported = false) {
     LoadedWorkspace out;
     out.diagnostics = std::move(parsed.diagnostics);
     if (!parsed.workspace) return out;
@@ -15,6 +16,7 @@ static LoadedWorkspace validated(ParsedWorkspace parsed, const ValidationOptions
     Diagnostics unresolved = resolveWorkspaceMedia(*parsed.workspace, options.media);
     out.diagnostics.insert(out.diagnostics.end(), unresolved.begin(), unresolved.end());
     if (hasErrors(unresolved)) return out;
+    if (imported) frameDrawnModels(*parsed.workspace);
     Diagnostics found = validateWorkspace(*parsed.workspace, options);
     out.diagnostics.insert(out.diagnostics.end(), found.begin(), found.end());
     if (!hasErrors(out.diagnostics)) out.workspace = std::move(parsed.workspace);
@@ -23,7 +25,7 @@ static LoadedWorkspace validated(ParsedWorkspace parsed, const ValidationOptions
 
 LoadedWorkspace loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options,
                               const WorkspaceLoadOptions& load) {
-    if (isRfxPath(path)) return validated(importRfxFile(path, {load.effect}), options);
+    if (isRfxPath(path)) return validated(importRfxFile(path, {load.effect}), options, true);
     if (!load.effect.empty()) {
         LoadedWorkspace out;
         out.diagnostics.push_back({Diagnostic::Severity::Error, {path.string(), 0}, "--effect " + load.effect,
