@@ -270,5 +270,25 @@ void main() { gl_FragColor = vec4(gl_LightSource[0].diffuse.g, gl_FrontMaterial.
     EXPECT_FLOAT_EQ(image->at(1, 1, 2), 1.0f);
 }
 
+// RenderMonkey's window showed colour only: an imported effect's output goes to an 8-bit file
+// without alpha (gl_legacy.rfx writes (0.45, 0.525, 0.6), alpha 1); an .exr keeps all four.
+TEST_F(LegacyDialectsGLTest, RenderCommandWritesAnImportedEffectsOutputWithoutAlphaTo8BitFiles) {
+    ScratchDir dir;
+    const std::filesystem::path png = dir / "legacy.png", exr = dir / "legacy.exr";
+    const std::string rfx = shellQuoted(sourceDir() / "tests" / "rfx" / "gl_legacy.rfx");
+    CommandResult cli = runRmfx("render " + rfx + " --size 8x8 -o " + shellQuoted(png), dir.path());
+    ASSERT_EQ(cli.status, 0) << cli.err;
+    auto image = readImage(png);
+    ASSERT_TRUE(image) << image.error();
+    EXPECT_EQ(image->channels, 3);
+    EXPECT_NEAR(image->at(3, 3, 0), 0.45, 0.5 / 255 + 1e-6);
+    EXPECT_NEAR(image->at(3, 3, 2), 0.6, 0.5 / 255 + 1e-6);
+    cli = runRmfx("render " + rfx + " --size 8x8 -o " + shellQuoted(exr), dir.path());
+    ASSERT_EQ(cli.status, 0) << cli.err;
+    auto full = readImage(exr);
+    ASSERT_TRUE(full) << full.error();
+    EXPECT_EQ(full->channels, 4);
+}
+
 }  // namespace
 }  // namespace rmfx::test
