@@ -501,8 +501,7 @@ struct GlExecutor::Impl {
             inputs.insert(name);
         }
         auto warn = [&](const VertexStream& stream, const std::string& why) {
-            d.push_back({Diagnostic::Severity::Warning, stream.where, passLabel(pass),
-                         "pass '" + pass.name + "': stream " + streamLabel(stream) + " " + why});
+            d.push_back({Diagnostic::Severity::Warning, stream.where, passLabel(pass), "stream " + streamLabel(stream) + " " + why});
         };
         for (const VertexStream& stream : pass.streams) {
             if (!stream.attribute.empty()) {
@@ -515,11 +514,11 @@ struct GlExecutor::Impl {
             }
             std::string builtin = builtinAttributeName(stream);
             if (builtin.empty()) {
-                warn(stream, "names no attribute, and tangents and binormals have no compatibility built-in");
+                if (!stream.shared) warn(stream, "names no attribute, and tangents and binormals have no compatibility built-in");
             } else if (!compatibility) {
                 warn(stream, "feeds the built-in " + builtin + ", which needs <workspace profile=\"compatibility\">");
             } else if (!inputs.count(builtin)) {
-                warn(stream, "feeds the built-in " + builtin + ", which the shaders do not read");
+                if (!stream.shared) warn(stream, "feeds the built-in " + builtin + ", which the shaders do not read");
             } else {
                 gp.streams.push_back({stream.usage, stream.usageIndex, -1});
             }

@@ -177,7 +177,7 @@ StreamMapDeclaration readStreamMap(const RfxElement& e) {
                 continue;
             }
             map.streams.push_back({*u, static_cast<int>(*index), channel.text("ATTRIBUTE_NAME", false).value_or(""),
-                                   channel.where()});
+                                   true, channel.where()});
         }
     return map;
 }
@@ -215,6 +215,9 @@ bool readDeclaration(const RfxElement& e, Declarations& into) {
     }
     if (tag == "RmModelData") {
         into.models.push_back({e.name(), e.text("FILE_NAME").value_or(""), e.where()});
+        if (auto orientation = e.integer("ORIENTATION", -2147483648LL, 2147483647LL, false); orientation && *orientation != 0)
+            e.warning("ORIENTATION " + std::to_string(*orientation) +
+                      " is not applied: the model is drawn as the file holds it (RenderMonkey does not document the values)");
         return true;
     }
     if (tag == "Rm3DTextureVariable" || tag == "RmLightVariable" || tag == "RmMaterialVariable") {

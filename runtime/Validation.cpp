@@ -218,10 +218,10 @@ private:
         if (!uniforms) return;
         // Built-in streams are checked by the GL executor, which sees the driver's list of inputs.
         for (const VertexStream& stream : pass.streams)
-            if (!stream.attribute.empty() && std::find(inputs.begin(), inputs.end(), stream.attribute) == inputs.end())
-                warning(stream.where, label, "pass '" + pass.name + "': stream to attribute '" + stream.attribute +
-                                                 "' (line " + std::to_string(stream.where.line) +
-                                                 "), which the shaders do not read");
+            if (!stream.shared && !stream.attribute.empty() &&
+                std::find(inputs.begin(), inputs.end(), stream.attribute) == inputs.end())
+                warning(stream.where, label, "stream to attribute '" + stream.attribute + "' (line " +
+                                                 std::to_string(stream.where.line) + "), which the shaders do not read");
         std::set<std::string> active;
         const std::set<std::string> initialized = uniformsWithInitializers(*program);
         for (const ActiveUniform& u : *uniforms) {

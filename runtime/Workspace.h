@@ -176,6 +176,9 @@ struct VertexStream {
     int usageIndex = 0;     // TEXCOORD1 → 1
     std::string attribute;  // the attribute it feeds (rm_Vertex, a_position…); empty: the
                             // compatibility built-in (gl_Vertex, gl_Normal, gl_MultiTexCoordN, gl_Color)
+    // From a stream map every pass shares (RenderMonkey's RmStreamMap): a pass whose shaders do
+    // not read it is normal, and not warned about.
+    bool shared = false;
     SourceLocation where;
 };
 

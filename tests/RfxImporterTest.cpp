@@ -324,6 +324,24 @@ TEST(RfxImporter, ActiveCameraNamingNoCameraWarns) {
     EXPECT_EQ(allWarnings("gl_legacy.rfx").find("ACTIVE_CAMERA"), std::string::npos);
 }
 
+TEST(RfxImporter, ModelOrientationOtherThanZeroWarns) {
+    std::string text = glEffect("<RmModelData NAME=\"M\" FILE_NAME=\"m.obj\" ORIENTATION=\"1\"/>\n"
+                                "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n" + std::string(kFragment) + "\n</RmGLPass>\n");
+    std::string all = formatAll(importRfxText(text, "t.rfx", ".", {}).diagnostics);
+    EXPECT_NE(all.find("t.rfx:4: warning: <RmModelData NAME=\"M\">: ORIENTATION 1 is not applied"), std::string::npos) << all;
+    EXPECT_EQ(allWarnings("gl_legacy.rfx").find("ORIENTATION"), std::string::npos);
+}
+
+// RenderMonkey's stream maps are shared by every pass that names one: a channel a pass's shaders
+// do not read is normal there (a screen-aligned quad's pass ignores the normals), not a warning.
+TEST(RfxImporter, SharedStreamChannelsAPassDoesNotReadAreNotWarnedAbout) {
+    LoadedWorkspace loaded = loadWorkspace(rfxDir() / "d3d_hlsl.rfx");  // BINORMAL2: no shader reads it
+    ASSERT_TRUE(loaded.workspace) << formatAll(loaded.diagnostics);
+    for (const Pass& pass : loaded.workspace->passes)
+        for (const VertexStream& stream : pass.streams) EXPECT_TRUE(stream.shared);
+    EXPECT_EQ(formatAll(loaded.diagnostics).find("do not read"), std::string::npos) << formatAll(loaded.diagnostics);
+}
+
 TEST(RfxImporter, EffectChosenByDottedPathOrName) {
     for (const char* name : {"Tests.Group.Other", "Group.Other", "Other"}) {
         Workspace ws = imported("gl_legacy.rfx", name);
