@@ -1,4 +1,3 @@
-#include <cctype>
 #include <cmath>
 #include <iostream>
 #include <optional>
@@ -17,13 +16,6 @@
 namespace rmfx::cli {
 
 namespace {
-
-// .exr and .hdr keep float data (ImageIO.h); every other format is 8 or 16 bits.
-bool keepsFloat(const std::filesystem::path& file) {
-    std::string ext = file.extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext == ".exr" || ext == ".hdr";
-}
 
 struct RenderArguments {
     std::optional<std::string> workspace;
@@ -179,18 +171,12 @@ int renderCommand(const std::vector<std::string>& args) {
         return 2;
     }
     DisplayTransform transform = a->transform.value_or(a->target ? DisplayTransform::None : ws.output.transform);
-    if (isRfxPath(ws.path) && !a->target && image->channels == 4 && !keepsFloat(output)) {
-        // RenderMonkey's window showed the back buffer's colour only; the alpha its shaders wrote
-        // would turn into transparency in an image viewer.
-        Image opaque = *image;
-        opaque.channels = 3;
-        opaque.pixels.clear();
-        for (size_t i = 0; i < image->pixels.size(); i += 4)
-            opaque.pixels.insert(opaque.pixels.end(), image->pixels.begin() + static_cast<long>(i),
-                                 image->pixels.begin() + static_cast<long>(i) + 3);
-        image = std::move(opaque);
-    }
-    if (auto written = writeImage(output, *image, transform); !written) {
+    WriteOptions write;
+    write.transform = transform;
+    // RenderMonkey's window showed the back buffer's colour only; the alpha an imported effect's
+    // shaders wrote would turn into transparency in an image viewer.
+    write.integerOpaque = isRfxPath(ws.path) && !a->target;
+    if (auto written = writeImage(output, *image, write); !written) {
         std::cerr << "rmfx render: " << written.error() << "\n";
         return 2;
     }

@@ -20,6 +20,7 @@ struct WriteOptions {
     DisplayTransform transform = DisplayTransform::None;
     bool exrHalf = false;  // .exr: 16-bit half instead of 32-bit float
     int pngBits = 8;       // .png: 8 or 16
+    bool integerOpaque = false;  // integer formats store colour only (alpha dropped); .exr, .hdr as usual
 };
 
 // The format comes from the extension: .exr and .hdr keep linear float data and ignore the

@@ -42,10 +42,10 @@ std::optional<Target> targetFor(const fs::path& file) {
 bool hasAlpha(int channels) { return channels == 2 || channels == 4; }
 
 // Channel counts a container cannot store are adapted: Radiance files hold RGB only (grey is
-// replicated, alpha dropped); JPEG drops alpha.
-int storedChannels(Container container, int channels) {
-    if (container == Container::Rgbe) return 3;
-    if (container == Container::Jpeg && hasAlpha(channels)) return channels - 1;
+// replicated, alpha dropped); JPEG drops alpha, and so do the other integer formats when asked to.
+int storedChannels(const Target& target, int channels, bool integerOpaque) {
+    if (target.container == Container::Rgbe) return 3;
+    if ((target.container == Container::Jpeg || (target.integer && integerOpaque)) && hasAlpha(channels)) return channels - 1;
     return channels;
 }
 
@@ -110,7 +110,7 @@ Result<bool> writeImage(const fs::path& file, const Image& image, const WriteOpt
     if (!folder.empty() && !fs::is_directory(folder, ec))
         return imageFileError(file, "folder '" + folder.string() + "' does not exist");
 
-    const int stored = storedChannels(target->container, image.channels);
+    const int stored = storedChannels(*target, image.channels, options.integerOpaque);
     const std::vector<int> map = channelMap(image.channels, stored);
     const bool sixteen = target->container == Container::Png && options.pngBits == 16;
 

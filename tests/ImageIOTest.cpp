@@ -135,6 +135,28 @@ TEST(ImageIO, ExrHalfOption) {
     EXPECT_EQ(read->pixels[5], -3.0f);
 }
 
+// integerOpaque: 8-bit formats keep colour only (rmfx render of an imported RenderMonkey effect);
+// float formats keep every channel.
+TEST(ImageIO, IntegerOpaqueDropsAlphaFromIntegerFormatsOnly) {
+    test::ScratchDir dir;
+    const Image rgba = makeImage(2, 1, 4, {0.2f, 0.4f, 0.6f, 0.0f, 1.0f, 0.0f, 0.5f, 0.25f});
+    WriteOptions options;
+    options.integerOpaque = true;
+    for (const char* name : {"o.png", "o.tga", "o.bmp"}) {
+        ASSERT_TRUE(writeImage(dir / name, rgba, options)) << name;
+        const Result<Image> read = readImage(dir / name);
+        ASSERT_TRUE(read) << read.error();
+        EXPECT_EQ(read->channels, 3) << name;
+        EXPECT_NEAR(read->at(0, 0, 1), 0.4f, 0.5f / 255) << name;  // colour kept although alpha was 0
+    }
+    ASSERT_TRUE(writeImage(dir / "o.exr", rgba, options));
+    const Result<Image> exr = readImage(dir / "o.exr");
+    ASSERT_TRUE(exr) << exr.error();
+    EXPECT_EQ(exr->channels, 4);
+    ASSERT_TRUE(writeImage(dir / "a.png", rgba));
+    EXPECT_EQ(readImage(dir / "a.png")->channels, 4);  // without the option alpha stays
+}
+
 TEST(ImageIO, FloatChannelCountsSurviveExr) {
     test::ScratchDir dir;
     for (int channels : {1, 2, 3, 4}) {
