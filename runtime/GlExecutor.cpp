@@ -542,7 +542,12 @@ struct GlExecutor::Impl {
             if (name.size() > 3 && name.compare(name.size() - 3, 3, "[0]") == 0) name.resize(name.size() - 3);
             UniformType type = uniformTypeFromGl(values[0]);
             if (name.rfind("rmfx_effect_", 0) == 0) {  // declared by the effect prelude
-                gp.uniforms.push_back({values[1], name, type, Unbound{}, name.substr(12)});
+                UniformSlot slot;
+                slot.location = values[1];
+                slot.name = name;
+                slot.type = type;
+                slot.effectSwitch = name.substr(12);
+                gp.uniforms.push_back(std::move(slot));
                 continue;
             }
             UniformSource source = resolveUniform(ws, pass, name);
@@ -579,7 +584,11 @@ struct GlExecutor::Impl {
                 gp.samplers.push_back(slot);
                 continue;
             }
-            UniformSlot slot{values[1], name, type, source, {}};
+            UniformSlot slot;
+            slot.location = values[1];
+            slot.name = name;
+            slot.type = type;
+            slot.source = source;
             if (const auto* m = std::get_if<BoundSemantic>(&source)) slot.semantic = m->info;
             else if (const auto* c = std::get_if<BoundConstant>(&source)) slot.value = &c->constant->value;
             else if (const auto* v = std::get_if<BoundVariable>(&source)) slot.value = &this->values.at(v->variable->name);

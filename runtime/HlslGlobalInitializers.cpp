@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 #include <set>
+#include <string_view>
 
 #include "runtime/IdentifierSearch.h"
 
@@ -114,7 +115,23 @@ const std::set<std::string>& modifiers() {
 }
 
 // One statement at declaration scope, `text` starting at `offset` in the code.
-std::optional<HlslGlobalInitializer> declaration(const std::string& code, size_t offset, const std::string& text) {
+// Line numbers by offset, found by binary search over the newlines (counting them per
+// declaration made the scan quadratic).
+class LineIndex {
+public:
+    explicit LineIndex(const std::string& code) {
+        for (size_t i = 0; i < code.size(); ++i)
+            if (code[i] == '\n') newlines_.push_back(i);
+    }
+    int lineOf(size_t offset) const {
+        return 1 + static_cast<int>(std::lower_bound(newlines_.begin(), newlines_.end(), offset) - newlines_.begin());
+    }
+
+private:
+    std::vector<size_t> newlines_;
+};
+
+std::optional<HlslGlobalInitializer> declaration(const LineIndex& lines, size_t offset, const std::string& text) {
     size_t equals = text.find('=');
     if (equals == std::string::npos) return std::nullopt;
     std::string left = text.substr(0, equals);
@@ -147,7 +164,7 @@ std::optional<HlslGlobalInitializer> declaration(const std::string& code, size_t
         bool after = p + init.name.size() >= left.size() || !isIdentifierChar(left[p + init.name.size()]);
         if (before && after) at = offset + p;
     }
-    init.line = 1 + static_cast<int>(std::count(code.begin(), code.begin() + static_cast<long>(at), '\n'));
+    init.line = lines.lineOf(at);
     return init;
 }
 
@@ -155,23 +172,35 @@ std::optional<HlslGlobalInitializer> declaration(const std::string& code, size_t
 
 std::vector<HlslGlobalInitializer> findHlslGlobalInitializers(const std::string& source) {
     const std::string code = blanked(source);
+    const LineIndex lines(code);
     enum class Scope { Buffer, Initializer, Other };
     std::vector<Scope> scopes;
     std::vector<HlslGlobalInitializer> out;
     size_t start = 0;  // of the statement being read at declaration scope
+    size_t lastEquals = std::string::npos;
     auto atDeclarationScope = [&] { return scopes.empty() || scopes.back() == Scope::Buffer; };
+    // Every step below looks at the statement so far in constant time, or at text that the
+    // statement then leaves behind, so the scan stays linear (`a = 1 {}{}{}…` once took seconds).
+    auto firstWordIsBuffer = [&](size_t end) {
+        size_t first = code.find_first_not_of(" \t\r\n", start);
+        if (first >= end) return false;
+        size_t last = first;
+        while (last < end && isIdentifierChar(code[last])) ++last;
+        std::string_view word(code.data() + first, last - first);
+        return word == "cbuffer" || word == "tbuffer";
+    };
     for (size_t i = 0; i < code.size(); ++i) {
         const char c = code[i];
-        if (c == '{') {
+        if (c == '=') {
+            lastEquals = i;
+        } else if (c == '{') {
             if (!atDeclarationScope()) {
                 scopes.push_back(Scope::Other);
                 continue;
             }
-            std::string head = code.substr(start, i - start);
-            std::vector<std::string> w = words(head);
-            if (head.find('=') != std::string::npos) {
+            if (lastEquals != std::string::npos && lastEquals >= start) {
                 scopes.push_back(Scope::Initializer);
-            } else if (!w.empty() && (w[0] == "cbuffer" || w[0] == "tbuffer")) {
+            } else if (firstWordIsBuffer(i)) {
                 scopes.push_back(Scope::Buffer);
                 start = i + 1;
             } else {
@@ -183,7 +212,7 @@ std::vector<HlslGlobalInitializer> findHlslGlobalInitializers(const std::string&
             scopes.pop_back();
             if (closed != Scope::Initializer && atDeclarationScope()) start = i + 1;  // after a body
         } else if (c == ';' && atDeclarationScope()) {
-            if (auto init = declaration(code, start, code.substr(start, i - start))) out.push_back(std::move(*init));
+            if (auto init = declaration(lines, start, code.substr(start, i - start))) out.push_back(std::move(*init));
             start = i + 1;
         }
     }
