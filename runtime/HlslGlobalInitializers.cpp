@@ -31,18 +31,18 @@ std::string blanked(const std::string& code) {
     return out;
 }
 
-std::string trimmed(const std::string& s) {
+std::string trimmed(std::string_view s) {
     size_t a = s.find_first_not_of(" \t\r\n"), b = s.find_last_not_of(" \t\r\n");
-    return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+    return a == std::string_view::npos ? std::string() : std::string(s.substr(a, b - a + 1));
 }
 
-std::vector<std::string> words(const std::string& s) {
+std::vector<std::string> words(std::string_view s) {
     std::vector<std::string> out;
     for (size_t i = 0; i < s.size();) {
         if (isIdentifierChar(s[i])) {
             size_t j = i;
             while (j < s.size() && isIdentifierChar(s[j])) ++j;
-            out.push_back(s.substr(i, j - i));
+            out.push_back(std::string(s.substr(i, j - i)));
             i = j;
         } else if (!std::isspace(static_cast<unsigned char>(s[i]))) {
             out.push_back(std::string(1, s[i++]));
@@ -92,7 +92,7 @@ std::optional<std::vector<double>> numbers(const std::string& list) {
 
 // `2.0`, `float4(1, 2, 3, 4)`, `{1, 2, 3, 4}`, `true`; nullopt for anything else (an expression,
 // a nested constructor, another variable's name).
-std::optional<std::vector<double>> constantValues(const std::string& initializer) {
+std::optional<std::vector<double>> constantValues(std::string_view initializer) {
     std::string s = trimmed(initializer);
     if (s.empty()) return std::nullopt;
     if (s.front() == '{' && s.back() == '}') return numbers(s.substr(1, s.size() - 2));
@@ -131,16 +131,16 @@ private:
     std::vector<size_t> newlines_;
 };
 
-std::optional<HlslGlobalInitializer> declaration(const LineIndex& lines, size_t offset, const std::string& text) {
+std::optional<HlslGlobalInitializer> declaration(const LineIndex& lines, size_t offset, std::string_view text) {
     size_t equals = text.find('=');
-    if (equals == std::string::npos) return std::nullopt;
-    std::string left = text.substr(0, equals);
-    if (size_t annotation = left.find('<'); annotation != std::string::npos) left.erase(annotation);
-    if (size_t colon = left.find(':'); colon != std::string::npos) left.erase(colon);  // semantic, register(c3)
-    if (left.find_first_of("(){}") != std::string::npos) return std::nullopt;  // not a variable
+    if (equals == std::string_view::npos) return std::nullopt;
+    std::string_view left = text.substr(0, equals);
+    if (size_t annotation = left.find('<'); annotation != std::string_view::npos) left = left.substr(0, annotation);
+    if (size_t colon = left.find(':'); colon != std::string_view::npos) left = left.substr(0, colon);  // semantic, register(c3)
+    if (left.find_first_of("(){}") != std::string_view::npos) return std::nullopt;  // not a variable
     std::vector<std::string> w = words(left);
     HlslGlobalInitializer init;
-    if (size_t bracket = left.find('['); bracket != std::string::npos) {
+    if (size_t bracket = left.find('['); bracket != std::string_view::npos) {
         init.array = true;
         w = words(left.substr(0, bracket));
     }
@@ -159,7 +159,7 @@ std::optional<HlslGlobalInitializer> declaration(const LineIndex& lines, size_t 
     }
     // The line of the name: its last occurrence as a whole word before '='.
     size_t at = offset;
-    for (size_t p = left.find(init.name); p != std::string::npos; p = left.find(init.name, p + 1)) {
+    for (size_t p = left.find(init.name); p != std::string_view::npos; p = left.find(init.name, p + 1)) {
         bool before = p == 0 || !isIdentifierChar(left[p - 1]);
         bool after = p + init.name.size() >= left.size() || !isIdentifierChar(left[p + init.name.size()]);
         if (before && after) at = offset + p;
@@ -212,7 +212,8 @@ std::vector<HlslGlobalInitializer> findHlslGlobalInitializers(const std::string&
             scopes.pop_back();
             if (closed != Scope::Initializer && atDeclarationScope()) start = i + 1;  // after a body
         } else if (c == ';' && atDeclarationScope()) {
-            if (auto init = declaration(lines, start, code.substr(start, i - start))) out.push_back(std::move(*init));
+            if (auto init = declaration(lines, start, std::string_view(code).substr(start, i - start)))
+                out.push_back(std::move(*init));
             start = i + 1;
         }
     }

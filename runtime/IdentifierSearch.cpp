@@ -14,10 +14,11 @@ std::string withoutComments(std::string_view input) {
             if (out[i] != '\n') out[i] = ' ';
     };
     while (i < out.size()) {
-        if (out.compare(i, 2, "//") == 0) {
+        const char next = i + 1 < out.size() ? out[i + 1] : '\0';
+        if (out[i] == '/' && next == '/') {
             size_t end = out.find('\n', i);
             blank(end == std::string::npos ? out.size() : end);
-        } else if (out.compare(i, 2, "/*") == 0) {
+        } else if (out[i] == '/' && next == '*') {
             size_t end = out.find("*/", i + 2);
             blank(end == std::string::npos ? out.size() : end + 2);
         } else if (out[i] == '"') {

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <optional>
 #include <regex>
 #include <set>
@@ -14,13 +15,16 @@
 namespace rmfx {
 namespace {
 
-std::vector<std::string> splitLines(const std::string& text) {
-    std::vector<std::string> lines;
-    std::string line;
-    std::istringstream in(text);
-    while (std::getline(in, line)) {
-        if (!line.empty() && line.back() == '\r') line.pop_back();
+// Views into `text`, which must outlive them; a trailing '\r' is dropped.
+std::vector<std::string_view> splitLines(std::string_view text) {
+    std::vector<std::string_view> lines;
+    while (!text.empty()) {
+        size_t end = text.find('\n');
+        std::string_view line = text.substr(0, end);
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
         lines.push_back(line);
+        if (end == std::string_view::npos) break;
+        text.remove_prefix(end + 1);
     }
     return lines;
 }
@@ -86,7 +90,8 @@ public:
             } else if (directive == "pragma" && lines[i].find("once") != std::string::npos) {
                 blank(where);
             } else {
-                out_.code += lines[i] + "\n";
+                out_.code.append(lines[i]);
+                out_.code += '\n';
                 out_.lineOrigins.push_back(where);
             }
         }
@@ -119,7 +124,7 @@ private:
         blank(where);
     }
 
-    void include(const std::string& line, const SourceLocation& where, const std::filesystem::path& folder, int depth) {
+    void include(std::string_view line, const SourceLocation& where, const std::filesystem::path& folder, int depth) {
         if (++includes_ > kMaxIncludes) return stopGrowing(where);
         std::optional<std::string> included = includedName(line);
         if (!included) return fail(where, "expected #include \"file\"");
@@ -130,31 +135,54 @@ private:
                 if (snippet.name == name)
                     return enter("<snippet>/" + snippet.name, name, snippet.code,
                                  {snippet.where.file, snippet.codeLine}, folder, depth, where, nullptr);
+        const Located& located = locate(name, folder);
+        if (!located.failure.empty()) return fail(where, located.failure);
+        const std::filesystem::path& candidate = located.file;
+        std::ifstream in(candidate, std::ios::binary);
+        std::stringstream buffer;
+        buffer << in.rdbuf();
+        enter(located.key, name, buffer.str(),
+              {candidate.lexically_normal().string(), 1}, candidate.parent_path(), depth, where, &candidate);
+    }
+
+    struct Located {
+        std::filesystem::path file;
+        std::filesystem::path key;  // weakly canonical, for cycles and #pragma once
+        std::string failure;        // why `file` is empty
+    };
+
+    // Where `#include "name"` in `folder` leads. Remembered: the file system does not change
+    // while one shader expands, and a name included thousands of times (a fan-out the limits
+    // above stop) would otherwise list its folders each time.
+    const Located& locate(const std::string& name, const std::filesystem::path& folder) {
+        auto key = std::make_pair(folder.string(), name);
+        if (auto known = located_.find(key); known != located_.end()) return known->second;
+        Located& result = located_[key];
         // As every file reference: backslashes separate, case is ignored when the exact name is
         // not there (MediaResolver); an absolute name is taken as it is, for the root check below.
         MediaReference reference = MediaReference::parse(name);
-        std::filesystem::path candidate;
         std::string ambiguity;
         std::vector<std::filesystem::path> bases{folder, input_.root};
         if (reference.absolute()) bases = {reference.posixAbsolute ? "/" : ""};
         for (const std::filesystem::path& base : bases) {
             if (base.empty()) break;
             if (auto found = walkIgnoringCase(base, reference.components, &ambiguity)) {
-                candidate = base / *found;
+                result.file = base / *found;
                 break;
             }
-            if (!ambiguity.empty()) return fail(where, "\"" + name + "\" is ambiguous: " + ambiguity);
+            if (!ambiguity.empty()) {
+                result.failure = "\"" + name + "\" is ambiguous: " + ambiguity;
+                return result;
+            }
         }
-        if (candidate.empty())
-            return fail(where, "cannot find \"" + name + "\" (looked in " + folder.string() +
-                                   (folder == input_.root ? "" : " and " + input_.root.string()) + ")");
-        if (!liesInside(candidate, input_.root))
-            return fail(where, "\"" + name + "\" lies outside the workspace folder " + input_.root.string());
-        std::ifstream in(candidate, std::ios::binary);
-        std::stringstream buffer;
-        buffer << in.rdbuf();
-        enter(std::filesystem::weakly_canonical(candidate), name, buffer.str(),
-              {candidate.lexically_normal().string(), 1}, candidate.parent_path(), depth, where, &candidate);
+        if (result.file.empty())
+            result.failure = "cannot find \"" + name + "\" (looked in " + folder.string() +
+                             (folder == input_.root ? "" : " and " + input_.root.string()) + ")";
+        else if (!liesInside(result.file, input_.root))
+            result.failure = "\"" + name + "\" lies outside the workspace folder " + input_.root.string();
+        if (!result.failure.empty()) result.file.clear();
+        else result.key = std::filesystem::weakly_canonical(result.file);
+        return result;
     }
 
     // Expands an included text unless it is already open (a cycle) or was marked #pragma once;
@@ -191,6 +219,7 @@ private:
     std::vector<std::filesystem::path> stack_;  // the files and snippets being included, outermost first
     std::vector<std::string> names_;            // the name each was included by
     std::set<std::filesystem::path> onceFiles_;
+    std::map<std::pair<std::string, std::string>, Located> located_;  // by folder and name
     SourceLocation current_;
     size_t includes_ = 0;    // #include lines met, whether they expand or fail
     size_t linesRead_ = 0;   // every line of every text expanded, include lines too
@@ -258,7 +287,8 @@ PreprocessedShader preprocessShader(const ShaderInput& input, Diagnostics& diagn
     }
     SourceLocation versionWhere = versionLine < lines.size() ? body.lineOrigins[versionLine] : input.start;
     if (versionLine < lines.size()) {
-        out.code += lines[versionLine] + "\n";
+        out.code.append(lines[versionLine]);
+        out.code += '\n';
         out.lineOrigins.push_back(versionWhere);
     } else if (std::string version = defaultVersionLine(input.dialect); !version.empty()) {
         out.code += version + "\n";
@@ -276,7 +306,8 @@ PreprocessedShader preprocessShader(const ShaderInput& input, Diagnostics& diagn
         if (i == versionLine) {
             out.code += "\n";  // the #version already went first
         } else {
-            out.code += lines[i] + "\n";
+            out.code.append(lines[i]);
+            out.code += '\n';
         }
         out.lineOrigins.push_back(body.lineOrigins[i]);
     }
