@@ -69,7 +69,7 @@ std::optional<std::string> includedName(std::string_view line) {
 // (each including the next twice, say) would otherwise grow it exponentially.
 constexpr size_t kMaxIncludes = 4096;
 constexpr size_t kMaxExpandedLines = size_t(1) << 18;
-constexpr size_t kMaxExpandedBytes = size_t(16) << 20;
+constexpr size_t kMaxExpandedBytes = size_t(4) << 20;
 
 class Expander {
 public:
