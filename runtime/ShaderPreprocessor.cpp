@@ -157,7 +157,7 @@ private:
     const Located& locate(const std::string& name, const std::filesystem::path& folder) {
         auto key = std::make_pair(folder.string(), name);
         if (auto known = located_.find(key); known != located_.end()) return known->second;
-        Located& result = located_[key];
+        Located result;  // remembered only once complete: a file system error leaves nothing behind
         // As every file reference: backslashes separate, case is ignored when the exact name is
         // not there (MediaResolver); an absolute name is taken as it is, for the root check below.
         MediaReference reference = MediaReference::parse(name);
@@ -172,7 +172,7 @@ private:
             }
             if (!ambiguity.empty()) {
                 result.failure = "\"" + name + "\" is ambiguous: " + ambiguity;
-                return result;
+                return located_.emplace(std::move(key), std::move(result)).first->second;
             }
         }
         if (result.file.empty())
@@ -182,7 +182,7 @@ private:
             result.failure = "\"" + name + "\" lies outside the workspace folder " + input_.root.string();
         if (!result.failure.empty()) result.file.clear();
         else result.key = std::filesystem::weakly_canonical(result.file);
-        return result;
+        return located_.emplace(std::move(key), std::move(result)).first->second;
     }
 
     // Expands an included text unless it is already open (a cycle) or was marked #pragma once;
