@@ -7,6 +7,7 @@
 #include "runtime/RfxDoctype.h"
 #include "runtime/RfxEffectCatalogue.h"
 #include "runtime/RfxPassReader.h"
+#include "runtime/RfxRenderStates.h"
 #include "runtime/XmlElementReader.h"
 
 namespace rmfx {
@@ -97,7 +98,25 @@ ParsedWorkspace importEffect(const RfxEffectEntry& effect, const std::filesystem
         }
     std::stable_sort(passes.begin(), passes.end(), [](const ReadPass& a, const ReadPass& b) { return a.index < b.index; });
     const Pass* previous = nullptr;
+    // Render states carry over in run order from the last pass that runs (RenderMonkey set them on
+    // the device and left them there: fur.rfx sets blending in its first shell pass only, for all
+    // fifteen). The first pass starts from RenderMonkey's frame state.
+    Pass carried;
+    rfx::setRenderMonkeyDefaults(carried);
+    bool carriedSeparateAlpha = false;
     for (ReadPass& p : passes) {
+        p.pass.blend = carried.blend;
+        p.pass.depth = carried.depth;
+        p.pass.raster = carried.raster;
+        bool separateAlpha = carriedSeparateAlpha;
+        for (const XMLElement* block : p.stateBlocks)
+            rfx::applyRenderStateBlock(RfxElement(block, file, diagnostics), effect.api, p.pass, separateAlpha);
+        if (p.pass.enabled && p.runnable) {
+            carried.blend = p.pass.blend;
+            carried.depth = p.pass.depth;
+            carried.raster = p.pass.raster;
+            carriedSeparateAlpha = separateAlpha;
+        }
         if (p.pass.shaders.empty() && p.runnable) {
             if (previous) {
                 // The program comes with what it reads: samplers and streams, unless the pass

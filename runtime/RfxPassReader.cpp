@@ -33,7 +33,6 @@ public:
         out_.pass.where = e_.where();
         out_.pass.enabled = enabled.value_or(true);
         out_.index = index.value_or(0);
-        setRenderMonkeyDefaults(out_.pass);
         for (const XMLElement* c = e_.xml()->FirstChildElement(); c; c = c->NextSiblingElement()) child(c);
         bindStreams();
         checkConstants();
@@ -61,7 +60,7 @@ private:
                                   " (line " + std::to_string(c.line()) + ") is assembly";
             constantsOf(c);
         } else if (tag == "RmRenderStateBlock") {
-            renderStates(c);
+            out_.stateBlocks.push_back(x);
         } else if (tag == "RmRenderTarget") {
             renderTarget(c);
         } else if (tag == "RmModelReference") {
@@ -200,15 +199,6 @@ private:
         states.finish(c, s);
         std::erase_if(samplersWithoutObject_, [&](const auto& p) { return p.first == s.uniform; });
         out_.pass.samplers.push_back(std::move(s));
-    }
-
-    void renderStates(const RfxElement& block) {
-        bool separateAlpha = false;
-        for (const XMLElement* x = block.xml()->FirstChildElement("RmState"); x; x = x->NextSiblingElement("RmState")) {
-            if (api_ == RfxApi::Direct3D) applyD3dRenderState(at(x), out_.pass, separateAlpha);
-            else applyGlRenderState(at(x), out_.pass);
-        }
-        if (api_ == RfxApi::Direct3D) finishD3dRenderStates(out_.pass, separateAlpha);
     }
 
     void renderTarget(const RfxElement& c) {

@@ -28,6 +28,9 @@ struct ReadPass {
     int index = 0;        // PASS_INDEX
     bool runnable = true; // false: a shader rmfx cannot compile (assembly)
     std::string whyNotRunnable;
+    // Its RmRenderStateBlocks, applied by the importer in run order: states carry over from the
+    // pass before (rfx::applyRenderStateBlock).
+    std::vector<const tinyxml2::XMLElement*> stateBlocks;
 };
 
 // Shaders are left empty when the pass has none (the importer gives it the previous pass's).

@@ -196,4 +196,13 @@ void finishD3dRenderStates(Pass& pass, bool separateAlpha) {
     pass.blend.alphaOp = pass.blend.colorOp;
 }
 
+void applyRenderStateBlock(const RfxElement& block, RfxApi api, Pass& pass, bool& separateAlpha) {
+    for (const tinyxml2::XMLElement* x = block.xml()->FirstChildElement("RmState"); x; x = x->NextSiblingElement("RmState")) {
+        RfxElement state(x, block.file(), block.diagnostics());
+        if (api == RfxApi::Direct3D) applyD3dRenderState(state, pass, separateAlpha);
+        else applyGlRenderState(state, pass);
+    }
+    if (api == RfxApi::Direct3D) finishD3dRenderStates(pass, separateAlpha);
+}
+
 }  // namespace rmfx::rfx

@@ -10,14 +10,21 @@
 // model has no place for is a warning naming the state and its value; a value outside the
 // state's enumeration is an error.
 
+#include "runtime/RfxEffectCatalogue.h"
 #include "runtime/RfxElement.h"
 #include "runtime/Workspace.h"
 
 namespace rmfx::rfx {
 
-// RenderMonkey's starting state for every pass, before its state block: depth test and write on
-// with LESS_EQUAL (its preview window has a depth buffer), no blending, no culling.
+// RenderMonkey's state at the start of a frame: depth test and write on with LESS_EQUAL (its
+// preview window has a depth buffer), no blending, no culling.
 void setRenderMonkeyDefaults(Pass& pass);
+
+// The RmState children of an RmRenderStateBlock, applied over the pass's blend, depth and raster
+// state. States carry over from pass to pass (as the device's did), so the pass should come in
+// with the state of the pass that ran before it. separateAlpha, D3DRS_SEPARATEALPHABLENDENABLE,
+// carries over with them.
+void applyRenderStateBlock(const RfxElement& block, RfxApi api, Pass& pass, bool& separateAlpha);
 
 void applyGlRenderState(const RfxElement& state, Pass& pass);
 // separateAlpha: set by D3DRS_SEPARATEALPHABLENDENABLE; pass it to finishD3dRenderStates.

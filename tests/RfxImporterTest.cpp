@@ -131,6 +131,62 @@ TEST(RfxImporter, GlRenderStatesMapToBlendDepthAndRaster) {
         << allWarnings("gl_legacy.rfx");
 }
 
+TEST(RfxImporter, RenderStatesCarryOverInRunOrderFromThePassesThatRun) {
+    Workspace ws = imported("shells.rfx");
+    ASSERT_EQ(ws.passes.size(), 5u);
+    std::vector<std::string> order;
+    for (const Pass& p : ws.passes) order.push_back(p.name);
+    EXPECT_EQ(order, (std::vector<std::string>{"Base", "Shell 1", "Reset", "Shell 2", "Shell 3"}));
+    EXPECT_FALSE(ws.passes[0].blend.enabled);  // RenderMonkey's frame state
+    EXPECT_TRUE(ws.passes[0].depth.test);
+    for (size_t i : {1u, 3u, 4u}) {
+        const Pass& p = ws.passes[i];
+        EXPECT_TRUE(p.blend.enabled) << p.name;
+        EXPECT_EQ(p.blend.srcColor, BlendFactor::One) << p.name;
+        EXPECT_EQ(p.blend.dstColor, BlendFactor::One) << p.name;
+        EXPECT_EQ(p.raster.cull, CullFace::None) << p.name;  // Reset's culling never ran
+        EXPECT_TRUE(p.depth.test) << p.name;
+        EXPECT_EQ(p.depth.func, CompareFunc::LessEqual) << p.name;
+    }
+    // The disabled pass has its own block over what it would inherit, should it be enabled.
+    EXPECT_FALSE(ws.passes[2].blend.enabled);
+    EXPECT_EQ(ws.passes[2].blend.dstColor, BlendFactor::One);
+    EXPECT_EQ(ws.passes[2].raster.cull, CullFace::Back);
+}
+
+TEST(RfxImporter, Direct3dSeparateAlphaBlendingCarriesOverWithTheOtherStates) {
+    auto pass = [](int index, const std::string& states) {
+        return "<RmPass NAME=\"P" + std::to_string(index) + "\" PASS_INDEX=\"" + std::to_string(index) +
+               "\"><RmRenderStateBlock NAME=\"S\">" + states + "</RmRenderStateBlock>" +
+               (index == 0 ? "<RmHLSLShader NAME=\"PS\" PIXEL_SHADER=\"TRUE\" TARGET=\"ps_2_0\" ENTRY_POINT=\"main\">"
+                             "<RmShaderCode><![CDATA[float4 main() : COLOR { return 1; }]]></RmShaderCode></RmHLSLShader>"
+                           : "") +
+               "</RmPass>\n";
+    };
+    auto state = [](int number, int value) {
+        return "<RmState NAME=\"D3DRS_" + std::to_string(number) + "\" STATE=\"" + std::to_string(number) + "\" VALUE=\"" +
+               std::to_string(value) + "\"/>";
+    };
+    // P0: separate alpha on, alpha ONE, ONE. P1: colour SRCALPHA only; alpha keeps ONE, ONE.
+    // P2: separate alpha off: alpha blends like colour again.
+    std::string text = "<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\" ACTIVE_EFFECT=\"W.E\">\n"
+                       "<RmDirectXEffect NAME=\"E\" API=\"D3D\">\n" +
+                       pass(0, state(27, 1) + state(206, 1) + state(207, 2) + state(208, 2)) + pass(1, state(19, 5)) +
+                       pass(2, state(206, 0)) + "</RmDirectXEffect>\n</RmEffectWorkspace>\n</RENDER_MONKEY>\n";
+    ParsedWorkspace p = importRfxText(text, "t.rfx", ".", {""});
+    ASSERT_TRUE(p.workspace) << formatAll(p.diagnostics);
+    const std::vector<Pass>& passes = p.workspace->passes;
+    ASSERT_EQ(passes.size(), 3u);
+    EXPECT_TRUE(passes[1].blend.enabled);
+    EXPECT_EQ(passes[1].blend.srcColor, BlendFactor::SrcAlpha);
+    EXPECT_EQ(passes[1].blend.dstColor, BlendFactor::Zero);
+    EXPECT_EQ(passes[1].blend.srcAlpha, BlendFactor::One);
+    EXPECT_EQ(passes[1].blend.dstAlpha, BlendFactor::One);
+    EXPECT_TRUE(passes[2].blend.enabled);
+    EXPECT_EQ(passes[2].blend.srcAlpha, BlendFactor::SrcAlpha);
+    EXPECT_EQ(passes[2].blend.dstAlpha, BlendFactor::Zero);
+}
+
 TEST(RfxImporter, ShadersKeepTheirRfxLinesAndDialect) {
     Workspace ws = imported("gl_legacy.rfx");
     const std::filesystem::path file = rfxDir() / "gl_legacy.rfx";

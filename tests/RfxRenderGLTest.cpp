@@ -28,8 +28,11 @@ std::unique_ptr<Workspace> loadRfx(const std::string& name, GlProfile expectedPr
     return std::make_unique<Workspace>(std::move(*loaded.workspace));
 }
 
-// Every pixel of the output equals `expected` (rgb) with alpha 1, within the 8-bit output's rounding.
-void expectUniformOutput(const GlRun& run, std::array<double, 3> expected) {
+constexpr double kOutputRounding = 0.5 / 255.0;
+
+// Every pixel of the output equals `expected` (rgb) with alpha 1, within `tolerance` (by default
+// the 8-bit output's rounding).
+void expectUniformOutput(const GlRun& run, std::array<double, 3> expected, double tolerance = kOutputRounding) {
     ASSERT_TRUE(run.exec);
     Image image = readBack(*run.exec, run.ws->outputTargetName());
     ASSERT_EQ(image.width, kSize);
@@ -40,7 +43,7 @@ void expectUniformOutput(const GlRun& run, std::array<double, 3> expected) {
             for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(image.at(x, y, c) - expected[c]));
             worst = std::max(worst, std::abs(image.at(x, y, 3) - 1.0));
         }
-    expectWithin("max abs error against the effect's maths", worst, 0.5 / 255.0 + 1e-6);
+    expectWithin("max abs error against the effect's maths", worst, tolerance + 1e-6);
 }
 
 class RfxLegacyRenderGLTest : public CompatibilityGlTest {};
@@ -56,6 +59,18 @@ TEST_F(RfxLegacyRenderGLTest, TwoLegacyPassesInPassIndexOrderThroughARenderableT
     std::array<double, 3> expected{};
     for (int c = 0; c < 3; ++c) expected[c] = tint[c] * scale * 2.0 + offset[c];
     expectUniformOutput(runWorkspace(std::move(ws), RunSettings{{kSize, kSize}}), expected);
+}
+
+TEST_F(RfxLegacyRenderGLTest, RenderStatesCarryOverToThePassesAfterThem) {
+    auto ws = loadRfx("shells.rfx", GlProfile::Compatibility);
+    ASSERT_TRUE(ws);
+    // "Base" writes Base; "Shell 1" adds Layer with the ONE, ONE blending of its block; the
+    // disabled "Reset" changes nothing; "Shell 2" and "Shell 3" add Layer with Shell 1's state.
+    const std::array<double, 3> base{0.1, 0.2, 0.3}, layer{0.2, 0.1, 0.05};
+    std::array<double, 3> expected{};
+    for (int c = 0; c < 3; ++c) expected[c] = std::min(1.0, base[c] + 3.0 * layer[c]);
+    // Each of the four passes leaves its result in the 8-bit output, rounded by up to half a step.
+    expectUniformOutput(runWorkspace(std::move(ws), RunSettings{{kSize, kSize}}), expected, 4 * kOutputRounding);
 }
 
 TEST_F(RfxCoreRenderGLTest, GlslEsPassWithStreamedAttributesBlendsOntoItsClearColour) {
@@ -97,7 +112,7 @@ TEST_F(RfxCoreRenderGLTest, Direct3DStreamsInitialValuesAndCbuffersReachTheShade
             const double expected[4] = {0.25 * 0.5 + 0.125 + 0.5, 0.25 + 0.125, 0.5 * v, u};
             for (int c = 0; c < 4; ++c) worst = std::max(worst, std::abs(atGl(image, x, y, c) - expected[c]));
         }
-    expectWithin("max abs error against the effect's maths", worst, 0.5 / 255.0 + 1e-6);
+    expectWithin("max abs error against the effect's maths", worst, kOutputRounding + 1e-6);
 }
 
 }  // namespace
