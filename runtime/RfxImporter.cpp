@@ -117,6 +117,7 @@ ParsedWorkspace importEffect(const RfxEffectEntry& effect, const std::filesystem
             carried.raster = p.pass.raster;
             carriedSeparateAlpha = separateAlpha;
         }
+        if (effect.api == RfxApi::Direct3D) rfx::finishD3dRenderStates(p.pass, separateAlpha);
         if (p.pass.shaders.empty() && p.runnable) {
             if (previous) {
                 // The program comes with what it reads: samplers and streams, unless the pass

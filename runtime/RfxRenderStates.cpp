@@ -202,7 +202,6 @@ void applyRenderStateBlock(const RfxElement& block, RfxApi api, Pass& pass, bool
         if (api == RfxApi::Direct3D) applyD3dRenderState(state, pass, separateAlpha);
         else applyGlRenderState(state, pass);
     }
-    if (api == RfxApi::Direct3D) finishD3dRenderStates(pass, separateAlpha);
 }
 
 }  // namespace rmfx::rfx

@@ -23,7 +23,8 @@ void setRenderMonkeyDefaults(Pass& pass);
 // The RmState children of an RmRenderStateBlock, applied over the pass's blend, depth and raster
 // state. States carry over from pass to pass (as the device's did), so the pass should come in
 // with the state of the pass that ran before it. separateAlpha, D3DRS_SEPARATEALPHABLENDENABLE,
-// carries over with them.
+// carries over with them; so do the alpha blend states as set, which finishD3dRenderStates then
+// replaces in the pass (not in what carries over) when alpha blending is not separate.
 void applyRenderStateBlock(const RfxElement& block, RfxApi api, Pass& pass, bool& separateAlpha);
 
 void applyGlRenderState(const RfxElement& state, Pass& pass);

@@ -168,15 +168,16 @@ TEST(RfxImporter, Direct3dSeparateAlphaBlendingCarriesOverWithTheOtherStates) {
                std::to_string(value) + "\"/>";
     };
     // P0: separate alpha on, alpha ONE, ONE. P1: colour SRCALPHA only; alpha keeps ONE, ONE.
-    // P2: separate alpha off: alpha blends like colour again.
+    // P2: separate alpha off: alpha blends like colour again. P3: separate alpha on again: the
+    // alpha states P0 set are still there (Direct3D kept them while they were not used).
     std::string text = "<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\" ACTIVE_EFFECT=\"W.E\">\n"
                        "<RmDirectXEffect NAME=\"E\" API=\"D3D\">\n" +
                        pass(0, state(27, 1) + state(206, 1) + state(207, 2) + state(208, 2)) + pass(1, state(19, 5)) +
-                       pass(2, state(206, 0)) + "</RmDirectXEffect>\n</RmEffectWorkspace>\n</RENDER_MONKEY>\n";
+                       pass(2, state(206, 0)) + pass(3, state(206, 1)) + "</RmDirectXEffect>\n</RmEffectWorkspace>\n</RENDER_MONKEY>\n";
     ParsedWorkspace p = importRfxText(text, "t.rfx", ".", {""});
     ASSERT_TRUE(p.workspace) << formatAll(p.diagnostics);
     const std::vector<Pass>& passes = p.workspace->passes;
-    ASSERT_EQ(passes.size(), 3u);
+    ASSERT_EQ(passes.size(), 4u);
     EXPECT_TRUE(passes[1].blend.enabled);
     EXPECT_EQ(passes[1].blend.srcColor, BlendFactor::SrcAlpha);
     EXPECT_EQ(passes[1].blend.dstColor, BlendFactor::Zero);
@@ -185,6 +186,9 @@ TEST(RfxImporter, Direct3dSeparateAlphaBlendingCarriesOverWithTheOtherStates) {
     EXPECT_TRUE(passes[2].blend.enabled);
     EXPECT_EQ(passes[2].blend.srcAlpha, BlendFactor::SrcAlpha);
     EXPECT_EQ(passes[2].blend.dstAlpha, BlendFactor::Zero);
+    EXPECT_EQ(passes[3].blend.srcAlpha, BlendFactor::One);
+    EXPECT_EQ(passes[3].blend.dstAlpha, BlendFactor::One);
+    EXPECT_EQ(passes[3].blend.srcColor, BlendFactor::SrcAlpha);
 }
 
 TEST(RfxImporter, ShadersKeepTheirRfxLinesAndDialect) {
