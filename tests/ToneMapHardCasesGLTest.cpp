@@ -84,7 +84,9 @@ TEST_F(ToneMapHardCasesGLTest, EveryCurveStaysFiniteAndOnItsModel) {
                 for (int x = 0; x < hdr.width; ++x) {
                     glm::dvec3 h(hdr.at(x, y));
                     ASSERT_TRUE(std::isfinite(h.r) && std::isfinite(h.g) && std::isfinite(h.b)) << "hdr " << x << "," << y;
-                    if (format == 1) ASSERT_LE(glm::max(h.r, glm::max(h.g, h.b)), 65504.0);
+                    if (format == 1) {
+                        ASSERT_LE(glm::max(h.r, glm::max(h.g, h.b)), 65504.0);
+                    }
                     glm::dvec3 model = toneMapped(h, settings, curve);
                     for (int ch = 0; ch < 3; ++ch) {
                         int gpu = code(atGl(out, x, y, ch));
@@ -93,13 +95,18 @@ TEST_F(ToneMapHardCasesGLTest, EveryCurveStaysFiniteAndOnItsModel) {
                     }
                 }
             expectWithin(what + ": codes off the model", worst, 1);
-            if (c.exposure == 0.0f) EXPECT_EQ(lit, 0) << "Exposure 0 must give black";
-            else EXPECT_EQ(lit, 255) << "the 1e6 pixel maps to white";
+            if (c.exposure == 0.0f) {
+                EXPECT_EQ(lit, 0) << "Exposure 0 must give black";
+            } else {
+                EXPECT_EQ(lit, 255) << "the 1e6 pixel maps to white";
+            }
             // The poisoned texels are black, as zeros would be.
             for (int i = 0; i < 6; ++i)
                 for (int ch = 0; ch < 3; ++ch) {
                     glm::dvec3 s = sanitisedTexel(input.at(2 + 3 * i, 10));
-                    if (s[ch] == 0.0 && rec709Luminance(s) == 0.0) EXPECT_EQ(atGl(out, 2 + 3 * i, 10, ch), 0.0f);
+                    if (s[ch] == 0.0 && rec709Luminance(s) == 0.0) {
+                        EXPECT_EQ(atGl(out, 2 + 3 * i, 10, ch), 0.0f);
+                    }
                 }
         }
     }
