@@ -114,7 +114,6 @@ const std::set<std::string>& modifiers() {
     return m;
 }
 
-// One statement at declaration scope, `text` starting at `offset` in the code.
 // Line numbers by offset, found by binary search over the newlines (counting them per
 // declaration made the scan quadratic).
 class LineIndex {
@@ -131,6 +130,7 @@ private:
     std::vector<size_t> newlines_;
 };
 
+// One statement at declaration scope, `text` starting at `offset` in the code.
 std::optional<HlslGlobalInitializer> declaration(const LineIndex& lines, size_t offset, std::string_view text) {
     size_t equals = text.find('=');
     if (equals == std::string_view::npos) return std::nullopt;
