@@ -38,9 +38,9 @@
 #include <epoxy/gl.h>
 
 #include "bench/HandWrittenShader5.h"
-#include "runtime/GlContext.h"
-#include "runtime/GlExecutor.h"
-#include "runtime/WorkspaceLoader.h"
+#include "gl/GlContext.h"
+#include "gl/GlExecutor.h"
+#include "validation/WorkspaceLoader.h"
 
 namespace {
 

@@ -10,12 +10,12 @@
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 
-#include "runtime/BuiltinMeshes.h"
-#include "runtime/GlMesh.h"
-#include "runtime/GlTexture.h"
-#include "runtime/OrbitCamera.h"
-#include "runtime/PassProgram.h"
-#include "runtime/ShaderPreprocessor.h"
+#include "frontend/shader/PassProgram.h"
+#include "frontend/shader/ShaderPreprocessor.h"
+#include "gl/GlMesh.h"
+#include "gl/GlTexture.h"
+#include "io/mesh/BuiltinMeshes.h"
+#include "model/OrbitCamera.h"
 
 namespace rmfx::bench {
 namespace {

@@ -13,8 +13,8 @@
 
 #include <glm/vec2.hpp>
 
-#include "runtime/Result.h"
-#include "runtime/Workspace.h"
+#include "core/Result.h"
+#include "model/Workspace.h"
 
 namespace rmfx::bench {
 

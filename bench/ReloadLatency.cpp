@@ -19,8 +19,8 @@
 #include <thread>
 #include <vector>
 
-#include "runtime/GlContext.h"
-#include "runtime/LiveWorkspace.h"
+#include "gl/GlContext.h"
+#include "run/LiveWorkspace.h"
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;

@@ -20,12 +20,12 @@
 #include "bench/accuracy/VariantManifest.h"
 #include "bench/accuracy/VariantRun.h"
 #include "cli/Commands.h"
-#include "runtime/GlContext.h"
-#include "runtime/HeadlessRun.h"
-#include "runtime/ImageIO.h"
-#include "runtime/MediaArguments.h"
-#include "runtime/WorkspaceLoader.h"
-#include "runtime/XmlElementReader.h"
+#include "gl/GlContext.h"
+#include "io/image/ImageIO.h"
+#include "io/media/MediaArguments.h"
+#include "io/xml/XmlElementReader.h"
+#include "run/HeadlessRun.h"
+#include "validation/WorkspaceLoader.h"
 
 namespace rmfx::cli {
 namespace {

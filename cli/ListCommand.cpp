@@ -5,10 +5,10 @@
 #include <sstream>
 
 #include "cli/Commands.h"
-#include "runtime/IdentifierSearch.h"
-#include "runtime/RfxImporter.h"
-#include "runtime/Validation.h"
-#include "runtime/VertexUsageName.h"
+#include "core/IdentifierSearch.h"
+#include "frontend/rfx/RfxImporter.h"
+#include "model/VertexUsageName.h"
+#include "validation/Validation.h"
 
 namespace rmfx::cli {
 namespace {

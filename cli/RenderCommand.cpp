@@ -3,15 +3,15 @@
 #include <optional>
 
 #include "cli/Commands.h"
-#include "runtime/EffectSelection.h"
-#include "runtime/FrameExplanation.h"
-#include "runtime/FrameWatchdog.h"
-#include "runtime/GlContext.h"
-#include "runtime/HeadlessRun.h"
-#include "runtime/ImageIO.h"
-#include "runtime/MediaArguments.h"
-#include "runtime/RfxImporter.h"
-#include "runtime/WorkspaceLoader.h"
+#include "core/FrameWatchdog.h"
+#include "frontend/rfx/RfxImporter.h"
+#include "gl/GlContext.h"
+#include "graph/FrameExplanation.h"
+#include "io/image/ImageIO.h"
+#include "io/media/MediaArguments.h"
+#include "model/EffectSelection.h"
+#include "run/HeadlessRun.h"
+#include "validation/WorkspaceLoader.h"
 
 namespace rmfx::cli {
 

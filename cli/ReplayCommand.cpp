@@ -11,13 +11,13 @@
 #include <optional>
 
 #include "cli/Commands.h"
-#include "runtime/FrameWatchdog.h"
-#include "runtime/GlContext.h"
-#include "runtime/ImageIO.h"
-#include "runtime/JUnitReport.h"
-#include "runtime/MediaArguments.h"
-#include "runtime/ReplayManifest.h"
-#include "runtime/ReplayRun.h"
+#include "core/FrameWatchdog.h"
+#include "frontend/replay/ReplayManifest.h"
+#include "gl/GlContext.h"
+#include "io/image/ImageIO.h"
+#include "io/media/MediaArguments.h"
+#include "io/xml/JUnitReport.h"
+#include "run/ReplayRun.h"
 
 namespace rmfx::cli {
 namespace {

@@ -1,8 +1,8 @@
 #include <iostream>
 
 #include "cli/Commands.h"
-#include "runtime/MediaArguments.h"
-#include "runtime/WorkspaceLoader.h"
+#include "io/media/MediaArguments.h"
+#include "validation/WorkspaceLoader.h"
 
 namespace rmfx::cli {
 

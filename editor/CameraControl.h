@@ -4,7 +4,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "runtime/OrbitCamera.h"
+#include "model/OrbitCamera.h"
 
 namespace rmfx::editor {
 

@@ -9,14 +9,14 @@
 
 #include "editor/CameraControl.h"
 #include "editor/EditorWindow.h"
-#include "runtime/LiveWorkspace.h"
 #include "editor/ErrorPanel.h"
 #include "editor/TargetBrowser.h"
 #include "editor/TextureBlit.h"
 #include "editor/TimingPanel.h"
 #include "editor/VariablesPanel.h"
-#include "runtime/ImageIO.h"
-#include "runtime/WorkspaceLoader.h"
+#include "io/image/ImageIO.h"
+#include "run/LiveWorkspace.h"
+#include "validation/WorkspaceLoader.h"
 
 namespace rmfx::editor {
 namespace {

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "runtime/MediaArguments.h"
+#include "io/media/MediaArguments.h"
 
 namespace rmfx::editor {
 

@@ -9,7 +9,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "runtime/MediaResolver.h"
+#include "io/media/MediaResolver.h"
 
 namespace rmfx::editor {
 

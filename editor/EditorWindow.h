@@ -7,9 +7,9 @@
 
 #include <glm/vec2.hpp>
 
-#include "runtime/Image.h"
-#include "runtime/Result.h"
-#include "runtime/Workspace.h"
+#include "core/Result.h"
+#include "model/Image.h"
+#include "model/Workspace.h"
 
 struct GLFWwindow;
 

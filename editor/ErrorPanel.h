@@ -3,7 +3,7 @@
 // "file:line: error: element: message" (the window keeps showing the last good build meanwhile);
 // then the warnings of the last reload (a tweaked value dropped, say) in yellow.
 
-#include "runtime/Diagnostic.h"
+#include "core/Diagnostic.h"
 
 namespace rmfx::editor {
 

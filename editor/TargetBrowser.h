@@ -12,7 +12,7 @@
 #include "editor/DisplayTexture.h"
 #include "editor/TargetViewer.h"
 #include "editor/TextureBlit.h"
-#include "runtime/GlExecutor.h"
+#include "gl/GlExecutor.h"
 
 namespace rmfx::editor {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "runtime/ImageIO.h"
+#include "io/image/ImageIO.h"
 
 namespace rmfx::editor {
 namespace {

@@ -9,8 +9,8 @@
 
 #include <glm/vec4.hpp>
 
-#include "runtime/HdrEncoding.h"
-#include "runtime/Image.h"
+#include "model/HdrEncoding.h"
+#include "model/Image.h"
 
 namespace rmfx::editor {
 

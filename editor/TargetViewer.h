@@ -9,7 +9,7 @@
 
 #include "editor/DisplayTexture.h"
 #include "editor/TargetDecoding.h"
-#include "runtime/GlExecutor.h"
+#include "gl/GlExecutor.h"
 
 namespace rmfx::editor {
 

@@ -10,8 +10,8 @@
 
 #include <glm/vec2.hpp>
 
-#include "runtime/Image.h"
-#include "runtime/Result.h"
+#include "core/Result.h"
+#include "model/Image.h"
 
 namespace rmfx::editor {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/GlExecutor.h"
+#include "model/PassTiming.h"
 
 namespace rmfx::editor {
 

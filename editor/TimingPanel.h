@@ -3,7 +3,7 @@
 // held), the frame total, and a graph of frame totals over the last ~120 frames.
 
 #include "editor/TimingHistory.h"
-#include "runtime/GlExecutor.h"
+#include "gl/GlExecutor.h"
 
 namespace rmfx::editor {
 

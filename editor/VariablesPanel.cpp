@@ -7,7 +7,7 @@
 #include <imgui.h>
 
 #include "editor/WidgetChoice.h"
-#include "runtime/VariableValueWriter.h"
+#include "frontend/workspace/VariableValueWriter.h"
 
 namespace rmfx::editor {
 namespace {

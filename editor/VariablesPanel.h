@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "runtime/LiveWorkspace.h"
+#include "run/LiveWorkspace.h"
 
 namespace rmfx::editor {
 

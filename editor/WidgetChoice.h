@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "runtime/Workspace.h"
+#include "model/Workspace.h"
 
 namespace rmfx::editor {
 

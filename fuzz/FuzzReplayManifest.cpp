@@ -2,9 +2,9 @@
 // `rmfx replay` parses it. Properties of an accepted manifest: every case has a compare and is
 // found by its name.
 
+#include "frontend/replay/ReplayManifest.h"
 #include "fuzz/FuzzEntries.h"
 #include "fuzz/FuzzInputFiles.h"
-#include "runtime/ReplayManifest.h"
 
 namespace rmfx::fuzz {
 

@@ -2,10 +2,10 @@
 // FuzzInputFiles.h), listed, imported, then checked as the "workspace" target checks a parsed
 // workspace. Seeds: tests/rfx/.
 
+#include "frontend/rfx/RfxImporter.h"
 #include "fuzz/FuzzEntries.h"
 #include "fuzz/FuzzInputFiles.h"
 #include "fuzz/FuzzWorkspace.h"
-#include "runtime/RfxImporter.h"
 
 namespace rmfx::fuzz {
 

@@ -10,10 +10,10 @@
 
 #include <algorithm>
 
+#include "frontend/shader/HlslGlobalInitializers.h"
+#include "frontend/shader/ShaderPreprocessor.h"
 #include "fuzz/FuzzEntries.h"
 #include "fuzz/FuzzInputFiles.h"
-#include "runtime/HlslGlobalInitializers.h"
-#include "runtime/ShaderPreprocessor.h"
 
 namespace rmfx::fuzz {
 

@@ -13,12 +13,12 @@
 #include <cmath>
 #include <sstream>
 
+#include "frontend/workspace/VariableValueWriter.h"
+#include "frontend/workspace/WorkspaceParser.h"
 #include "fuzz/FuzzEntries.h"
 #include "fuzz/FuzzInputFiles.h"
-#include "runtime/AtomicFile.h"
-#include "runtime/VariableValueWriter.h"
-#include "runtime/WorkspaceParser.h"
-#include "runtime/XmlTagScanner.h"
+#include "io/file/AtomicFile.h"
+#include "io/xml/XmlTagScanner.h"
 
 namespace rmfx::fuzz {
 namespace {

@@ -5,16 +5,16 @@
 
 #include <map>
 
+#include "frontend/workspace/WorkspaceDependencies.h"
+#include "frontend/workspace/WorkspaceParser.h"
 #include "fuzz/FuzzEntries.h"
 #include "fuzz/FuzzInputFiles.h"
 #include "fuzz/FuzzWorkspace.h"
-#include "runtime/EffectSelection.h"
-#include "runtime/PassGraph.h"
-#include "runtime/ResourceLimits.h"
-#include "runtime/TargetPlan.h"
-#include "runtime/WorkspaceDependencies.h"
-#include "runtime/WorkspaceLoader.h"
-#include "runtime/WorkspaceParser.h"
+#include "graph/PassGraph.h"
+#include "graph/ResourceLimits.h"
+#include "graph/TargetPlan.h"
+#include "model/EffectSelection.h"
+#include "validation/WorkspaceLoader.h"
 
 namespace rmfx::fuzz {
 namespace {

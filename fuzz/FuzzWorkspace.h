@@ -4,7 +4,7 @@
 // overrides of every variable's own value (which must read back unchanged), the files it
 // depends on, effect selection, the pass graph, the target plan and its limits.
 
-#include "runtime/WorkspaceParser.h"
+#include "frontend/workspace/WorkspaceParser.h"
 
 namespace rmfx::fuzz {
 

@@ -5,9 +5,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "runtime/CubeMapLayout.h"
-#include "runtime/HdrEncoding.h"
-#include "runtime/ImageIO.h"
+#include "io/image/CubeMapLayout.h"
+#include "io/image/ImageIO.h"
+#include "model/HdrEncoding.h"
 
 namespace rmfx::samples {
 

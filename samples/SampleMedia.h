@@ -6,8 +6,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "runtime/Image.h"
-#include "runtime/Result.h"
+#include "core/Result.h"
+#include "model/Image.h"
 
 namespace rmfx::samples {
 

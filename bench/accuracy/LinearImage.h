@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "runtime/Image.h"
+#include "model/Image.h"
 
 namespace rmfx::accuracy {
 

@@ -9,9 +9,9 @@
 #include "bench/accuracy/AccuracyMetrics.h"
 #include "bench/accuracy/LinearImage.h"
 #include "bench/accuracy/VariantManifest.h"
-#include "runtime/Image.h"
-#include "runtime/Result.h"
-#include "runtime/Workspace.h"
+#include "core/Result.h"
+#include "model/Image.h"
+#include "model/Workspace.h"
 
 namespace rmfx::accuracy {
 

@@ -5,7 +5,7 @@
 #include <set>
 #include <sstream>
 
-#include "runtime/XmlElementReader.h"
+#include "io/xml/XmlElementReader.h"
 
 namespace rmfx::accuracy {
 

@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "runtime/Diagnostic.h"
+#include "core/Diagnostic.h"
 
 namespace rmfx::accuracy {
 

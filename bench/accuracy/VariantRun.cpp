@@ -5,8 +5,8 @@
 
 #include <epoxy/gl.h>
 
-#include "runtime/GlExecutor.h"
-#include "runtime/WorkspaceLoader.h"
+#include "gl/GlExecutor.h"
+#include "validation/WorkspaceLoader.h"
 
 namespace rmfx::accuracy {
 

@@ -1,0 +1,346 @@
+// `rmfx replay`: a tiny workspace and manifest in a scratch folder, references written with
+// --update, replays that pass, then a changed variable or shader that fails with the metrics,
+// the diff and actual images and a JUnit report; --case, broken cases, exit statuses.
+
+#include <gtest/gtest.h>
+#include <tinyxml2.h>
+
+#include "io/image/ImageIO.h"
+#include "tests/support/GlTestSupport.h"
+#include "tests/support/TestSupport.h"
+
+namespace rmfx::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+class CliReplayGLTest : public GlTest {};
+
+// 16x16 by default. `base` holds (u, v, blue, 1) with u, v the pixel centre's texture coordinate:
+// (x + 0.5) / 16 = (2x + 1) / 32, exact in half and float. The output is base.rgb · Gain.
+std::string tinyWorkspace(const std::string& blue = "0.25") {
+    return R"(<workspace version="1" name="tiny" size="16x16">
+  <float name="Gain" value="1"/>
+  <target name="base" format="rgba32f" scale="1"/>
+  <pass name="gradient" target="base">
+    <shader stage="fragment"><![CDATA[
+#version 450 core
+uniform vec2 rm_InvTargetSize;
+out vec4 fragColor;
+void main() { fragColor = vec4(gl_FragCoord.xy * rm_InvTargetSize, )" +
+           blue + R"(, 1.0); }
+]]></shader>
+  </pass>
+  <pass name="final">
+    <sampler name="src" target="base" filter="nearest"/>
+    <shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D src;
+uniform float Gain;
+out vec4 fragColor;
+void main() { fragColor = vec4(texelFetch(src, ivec2(gl_FragCoord.xy), 0).rgb * Gain, 1.0); }
+]]></shader>
+  </pass>
+</workspace>
+)";
+}
+
+std::string tinyManifest(const std::string& gain = "1") {
+    return lines({
+        "<replay version=\"1\">",
+        "  <defaults size=\"16x16\"/>",
+        "  <case name=\"tiny\" workspace=\"fx/tiny.xml\">",
+        "    <set name=\"Gain\" value=\"" + gain + "\"/>",
+        "    <compare reference=\"refs/tiny.exr\" max=\"0.01\" store=\"half\"/>",
+        "    <compare target=\"base\" reference=\"refs/tiny_base.exr\" error=\"relative\" max=\"0.2\"/>",
+        "  </case>",
+        "  <case name=\"second\" workspace=\"fx/tiny.xml\" size=\"8x4\">",
+        "    <compare reference=\"refs/second.exr\"/>",
+        "  </case>",
+        "</replay>",
+    });
+}
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+Image readOk(const fs::path& file) {
+    auto image = readImage(file);
+    EXPECT_TRUE(image) << image.error();
+    return image ? *image : Image{};
+}
+
+// The one <testsuite> of a JUnit report file, after checking its counts; nullptr (a test failure)
+// when the file does not parse.
+const tinyxml2::XMLElement* junitSuite(tinyxml2::XMLDocument& doc, const fs::path& file, const char* tests,
+                                       const char* failures, const char* errors) {
+    EXPECT_EQ(doc.LoadFile(file.c_str()), tinyxml2::XML_SUCCESS) << file;
+    const tinyxml2::XMLElement* suite = doc.RootElement() ? doc.RootElement()->FirstChildElement("testsuite") : nullptr;
+    EXPECT_TRUE(suite) << file;
+    if (!suite) return nullptr;
+    EXPECT_STREQ(suite->Attribute("tests"), tests);
+    EXPECT_STREQ(suite->Attribute("failures"), failures);
+    EXPECT_STREQ(suite->Attribute("errors"), errors);
+    return suite;
+}
+
+// A scratch folder holding fx/tiny.xml and manifest.xml, references written with --update.
+class Project {
+public:
+    Project() {
+        dir_.write("fx/tiny.xml", tinyWorkspace());
+        dir_.write("manifest.xml", tinyManifest());
+    }
+    const ScratchDir& dir() const { return dir_; }
+    fs::path operator/(const std::string& name) const { return dir_ / name; }
+    CommandResult replay(const std::string& options = "") const {
+        return runRmfx("replay manifest.xml " + options, dir_.path());
+    }
+    void update() const {
+        CommandResult r = replay("--update");
+        ASSERT_EQ(r.status, 0) << r.out << r.err;
+    }
+
+private:
+    ScratchDir dir_;
+};
+
+TEST_F(CliReplayGLTest, UpdateWritesTheReferencesAndTheReplayPasses) {
+    Project p;
+    CommandResult update = p.replay("--update");
+    ASSERT_EQ(update.status, 0) << update.out << update.err;
+    EXPECT_TRUE(has(update.out, "[1/2] tiny ... updated")) << update.out;
+    EXPECT_TRUE(has(update.out, "    wrote refs/tiny.exr (output, 16x16, 4 channels, half)\n")) << update.out;
+    EXPECT_TRUE(has(update.out, "    wrote refs/tiny_base.exr (base, 16x16, 4 channels, float)\n")) << update.out;
+    EXPECT_TRUE(has(update.out, "[2/2] second ... updated")) << update.out;
+    EXPECT_TRUE(has(update.out, "    wrote refs/second.exr (output, 8x4, 4 channels, float)\n")) << update.out;
+    EXPECT_TRUE(has(update.out, "replay: 2 of 2 cases passed, 0 failed; 3 references written\n")) << update.out;
+    EXPECT_EQ(update.err, "");
+
+    // The references hold the render: row 0 is the top, so pixel (15, 0) is u = v = 31/32.
+    Image output = readOk(p / "refs/tiny.exr");
+    ASSERT_EQ(output.width, 16);
+    ASSERT_EQ(output.height, 16);
+    ASSERT_EQ(output.channels, 4);
+    EXPECT_EQ(output.bitsPerChannel, 16);  // store="half"
+    EXPECT_EQ(output.at(15, 0, 0), 31.0f / 32);
+    EXPECT_EQ(output.at(15, 0, 1), 31.0f / 32);
+    EXPECT_EQ(output.at(0, 15, 0), 1.0f / 32);
+    EXPECT_EQ(output.at(0, 15, 1), 1.0f / 32);
+    EXPECT_EQ(output.at(3, 7, 2), 0.25f);
+    EXPECT_EQ(output.at(3, 7, 3), 1.0f);
+    Image base = readOk(p / "refs/tiny_base.exr");
+    EXPECT_EQ(base.bitsPerChannel, 32);
+    EXPECT_EQ(base.at(5, 0, 0), 11.0f / 32);
+    Image second = readOk(p / "refs/second.exr");
+    EXPECT_EQ(second.width, 8);
+    EXPECT_EQ(second.height, 4);
+    EXPECT_EQ(second.at(7, 0, 1), 7.0f / 8);  // v of the top row of 4: 3.5 / 4
+
+    CommandResult replay = p.replay();
+    EXPECT_EQ(replay.status, 0) << replay.out << replay.err;
+    EXPECT_TRUE(has(replay.out, "[1/2] tiny ... ok (")) << replay.out;
+    EXPECT_TRUE(has(replay.out, "[2/2] second ... ok (")) << replay.out;
+    EXPECT_TRUE(has(replay.out, "replay: 2 of 2 cases passed, 0 failed; 3 of 3 compares passed, 0 failed\n"))
+        << replay.out;
+    EXPECT_FALSE(fs::exists(p / "replay-out/tiny"));
+}
+
+TEST_F(CliReplayGLTest, AChangedVariableFailsWithMetricsImagesAndJUnit) {
+    Project p;
+    p.update();
+    p.dir().write("manifest.xml", tinyManifest("1.5"));
+    CommandResult r = p.replay("--junit reports/junit.xml");
+    EXPECT_EQ(r.status, 1) << r.out << r.err;
+    // Gain 1.5 adds half of u and v: the largest error is 31/64 = 0.484375 (the top row's v,
+    // the right column's u); base is unchanged.
+    EXPECT_TRUE(has(r.out, "[1/2] tiny ... FAILED (")) << r.out;
+    EXPECT_TRUE(has(r.out, "    output: FAILED: max error 0.484375 > 0.01 at x=")) << r.out;
+    EXPECT_TRUE(has(r.out, "      diff:   replay-out/tiny/output.diff.exr\n")) << r.out;
+    EXPECT_TRUE(has(r.out, "      actual: replay-out/tiny/output.actual.exr\n")) << r.out;
+    EXPECT_TRUE(has(r.out, "    base: ok (max relative error 0 ≤ 0.2)\n")) << r.out;
+    EXPECT_TRUE(has(r.out, "[2/2] second ... ok (")) << r.out;
+    EXPECT_TRUE(has(r.out, "replay: 1 of 2 cases passed, 1 failed; 2 of 3 compares passed, 1 failed\n")) << r.out;
+    EXPECT_TRUE(has(r.out, "replay: wrote reports/junit.xml\n")) << r.out;
+
+    Image diff = readOk(p / "replay-out/tiny/output.diff.exr");
+    ASSERT_EQ(diff.width, 16);
+    ASSERT_EQ(diff.channels, 4);
+    EXPECT_EQ(diff.at(15, 0, 0), 31.0f / 64);
+    EXPECT_EQ(diff.at(15, 0, 1), 31.0f / 64);
+    EXPECT_EQ(diff.at(0, 15, 0), 1.0f / 64);
+    EXPECT_EQ(diff.at(4, 4, 2), 0.125f);
+    EXPECT_EQ(diff.at(4, 4, 3), 0.0f);
+    Image actual = readOk(p / "replay-out/tiny/output.actual.exr");
+    EXPECT_EQ(actual.at(15, 0, 0), 1.5f * 31 / 32);
+    EXPECT_FALSE(fs::exists(p / "replay-out/tiny/base.diff.exr"));
+    EXPECT_FALSE(fs::exists(p / "replay-out/second"));
+
+    tinyxml2::XMLDocument doc;
+    const tinyxml2::XMLElement* suite = junitSuite(doc, p / "reports/junit.xml", "2", "1", "0");
+    ASSERT_TRUE(suite);
+    const tinyxml2::XMLElement* tiny = suite->FirstChildElement("testcase");
+    ASSERT_TRUE(tiny);
+    EXPECT_STREQ(tiny->Attribute("name"), "tiny");
+    EXPECT_STREQ(tiny->Attribute("classname"), "replay.manifest");
+    const tinyxml2::XMLElement* failure = tiny->FirstChildElement("failure");
+    ASSERT_TRUE(failure);
+    EXPECT_EQ(std::string(failure->Attribute("message")).rfind("output: max error 0.484375 > 0.01 at x=", 0), 0u)
+        << failure->Attribute("message");
+    EXPECT_TRUE(has(failure->GetText(), "replay-out/tiny/output.diff.exr")) << failure->GetText();
+    const tinyxml2::XMLElement* second = tiny->NextSiblingElement("testcase");
+    ASSERT_TRUE(second);
+    EXPECT_STREQ(second->Attribute("name"), "second");
+    EXPECT_EQ(second->FirstChildElement(), nullptr);
+
+    // Fixed again: the case passes and its old failure images are gone.
+    p.dir().write("manifest.xml", tinyManifest("1"));
+    CommandResult fixed = p.replay();
+    EXPECT_EQ(fixed.status, 0) << fixed.out;
+    EXPECT_FALSE(fs::exists(p / "replay-out/tiny/output.diff.exr"));
+    EXPECT_FALSE(fs::exists(p / "replay-out/tiny/output.actual.exr"));
+}
+
+TEST_F(CliReplayGLTest, AChangedShaderFailsTheTargetsRelativeLimit) {
+    Project p;
+    p.update();
+    p.dir().write("fx/tiny.xml", tinyWorkspace("0.3125"));
+    CommandResult r = p.replay("--out results/run1 --case tiny");
+    EXPECT_EQ(r.status, 1) << r.out << r.err;
+    // Blue 0.25 → 0.3125: absolute error 0.0625 in the output, relative 0.0625 / 0.25 in base.
+    EXPECT_TRUE(has(r.out, "    output: FAILED: max error 0.0625 > 0.01 at x=")) << r.out;
+    EXPECT_TRUE(has(r.out, "channel 2\n")) << r.out;
+    EXPECT_TRUE(has(r.out, "    base: FAILED: max relative error 0.25 > 0.2 at x=")) << r.out;
+    EXPECT_TRUE(has(r.out, "      diff:   results/run1/tiny/base.diff.exr\n")) << r.out;
+    EXPECT_TRUE(has(r.out, "replay: 0 of 1 case passed, 1 failed; 0 of 2 compares passed, 2 failed\n")) << r.out;
+    Image relative = readOk(p / "results/run1/tiny/base.diff.exr");
+    EXPECT_EQ(relative.at(9, 9, 2), 0.25f);
+    EXPECT_EQ(relative.at(9, 9, 0), 0.0f);
+    EXPECT_FALSE(fs::exists(p / "replay-out"));
+}
+
+TEST_F(CliReplayGLTest, CaseSelectsWhatRunsAndWhatUpdates) {
+    Project p;
+    CommandResult update = p.replay("--update --case second");
+    ASSERT_EQ(update.status, 0) << update.out << update.err;
+    EXPECT_TRUE(has(update.out, "[1/1] second ... updated")) << update.out;
+    EXPECT_FALSE(has(update.out, "tiny")) << update.out;
+    EXPECT_TRUE(fs::exists(p / "refs/second.exr"));
+    EXPECT_FALSE(fs::exists(p / "refs/tiny.exr"));
+
+    CommandResult second = p.replay("--case second");
+    EXPECT_EQ(second.status, 0) << second.out;
+    EXPECT_TRUE(has(second.out, "replay: 1 of 1 case passed, 0 failed; 1 of 1 compares passed, 0 failed\n"))
+        << second.out;
+
+    // Without references the compares fail, and the render is kept to look at.
+    CommandResult both = p.replay("--case tiny --case second");
+    EXPECT_EQ(both.status, 1) << both.out;
+    EXPECT_TRUE(has(both.out, "[1/2] tiny ... FAILED")) << both.out;
+    EXPECT_TRUE(has(both.out,
+                    "    output: FAILED: cannot read the reference: refs/tiny.exr: no such file (rmfx replay --update "
+                    "writes it)\n      actual: replay-out/tiny/output.actual.exr\n"))
+        << both.out;
+    EXPECT_TRUE(has(both.out, "[2/2] second ... ok")) << both.out;
+    EXPECT_TRUE(fs::exists(p / "replay-out/tiny/output.actual.exr"));
+    EXPECT_FALSE(fs::exists(p / "replay-out/tiny/output.diff.exr"));
+
+    CommandResult unknown = p.replay("--case third");
+    EXPECT_EQ(unknown.status, 1);
+    EXPECT_EQ(unknown.err, "rmfx replay: --case third: manifest.xml has no such case (it has: tiny, second)\n");
+    EXPECT_EQ(unknown.out, "");
+}
+
+TEST_F(CliReplayGLTest, BrokenCasesFailWithTheirDiagnosticsAndTheOthersStillRun) {
+    ScratchDir dir;
+    dir.write("fx/tiny.xml", tinyWorkspace());
+    dir.write("fx/broken.xml", tinyWorkspace("undeclared_blue"));
+    dir.write("m.xml", lines({
+                           "<replay version=\"1\">",
+                           "  <case name=\"broken\" workspace=\"fx/broken.xml\" size=\"4x4\">",
+                           "    <compare reference=\"a.exr\"/>",
+                           "  </case>",
+                           "  <case name=\"unknown-target\" workspace=\"fx/tiny.xml\" size=\"4x4\">",
+                           "    <set name=\"Gain\" value=\"2\"/>",
+                           "    <compare target=\"glare9\" reference=\"b.exr\"/>",
+                           "  </case>",
+                           "  <case name=\"good\" workspace=\"fx/tiny.xml\" size=\"4x4\">",
+                           "    <compare reference=\"c.exr\"/>",
+                           "  </case>",
+                           "</replay>",
+                       }));
+    CommandResult r = runRmfx("replay m.xml --update --junit j.xml", dir.path());
+    EXPECT_EQ(r.status, 1) << r.out << r.err;
+    EXPECT_TRUE(has(r.out, "[1/3] broken ... FAILED")) << r.out;
+    // The shader error is located in the workspace that has it.
+    EXPECT_TRUE(has(r.out, "    fx/broken.xml:9: error: ")) << r.out;
+    EXPECT_TRUE(has(r.out, "undeclared_blue")) << r.out;
+    EXPECT_TRUE(has(r.out, "[2/3] unknown-target ... FAILED")) << r.out;
+    EXPECT_TRUE(has(r.out, "    m.xml:7: error: <compare target=\"glare9\">: case 'unknown-target': the workspace has no "
+                           "render target 'glare9' (it has: base; the output is 'output')\n"))
+        << r.out;
+    EXPECT_TRUE(has(r.out, "[3/3] good ... updated")) << r.out;
+    EXPECT_TRUE(has(r.out, "replay: 1 of 3 cases passed, 2 failed; 1 reference written, 2 not run\n")) << r.out;
+    EXPECT_TRUE(fs::exists(dir / "c.exr"));
+    EXPECT_FALSE(fs::exists(dir / "a.exr"));
+    EXPECT_FALSE(fs::exists(dir / "b.exr"));
+
+    tinyxml2::XMLDocument doc;
+    const tinyxml2::XMLElement* suite = junitSuite(doc, dir / "j.xml", "3", "0", "2");
+    ASSERT_TRUE(suite);
+    const tinyxml2::XMLElement* unknown = suite->FirstChildElement("testcase")->NextSiblingElement("testcase");
+    ASSERT_TRUE(unknown && unknown->FirstChildElement("error"));
+    EXPECT_STREQ(unknown->FirstChildElement("error")->Attribute("message"),
+                 "m.xml:7: error: <compare target=\"glare9\">: case 'unknown-target': the workspace has no render "
+                 "target 'glare9' (it has: base; the output is 'output')");
+}
+
+TEST_F(CliReplayGLTest, InvalidManifestOrArgumentsExitWith1) {
+    ScratchDir dir;
+    dir.write("m.xml", lines({"<replay version=\"1\">", "  <case name=\"a\" workspace=\"x.xml\">",
+                              "    <compare reference=\"a.png\"/>", "  </case>", "</replay>"}));
+    CommandResult bad = runRmfx("replay m.xml", dir.path());
+    EXPECT_EQ(bad.status, 1);
+    EXPECT_EQ(bad.err, "m.xml:3: error: <compare>: attribute 'reference': 'a.png' is not an OpenEXR file: references "
+                       "are .exr files, which keep the render's float values\n");
+    EXPECT_EQ(bad.out, "");
+
+    CommandResult none = runRmfx("replay", dir.path());
+    EXPECT_EQ(none.status, 1);
+    EXPECT_EQ(none.err, "rmfx replay: name a manifest file (see rmfx --help and docs/replay.md)\n");
+    CommandResult option = runRmfx("replay m.xml --outdir x", dir.path());
+    EXPECT_EQ(option.status, 1);
+    EXPECT_EQ(option.err, "rmfx replay: unknown option '--outdir' (see rmfx --help)\n");
+    CommandResult value = runRmfx("replay m.xml --junit", dir.path());
+    EXPECT_EQ(value.status, 1);
+    EXPECT_EQ(value.err, "rmfx replay: --junit needs a value\n");
+    CommandResult missing = runRmfx("replay nothere.xml", dir.path());
+    EXPECT_EQ(missing.status, 1);
+    EXPECT_EQ(missing.err, "nothere.xml: error: cannot open the file\n");
+}
+
+TEST_F(CliReplayGLTest, QuietPrintsOnlyFailingCases) {
+    Project p;
+    p.update();
+    CommandResult passing = p.replay("-q");
+    EXPECT_EQ(passing.status, 0);
+    EXPECT_EQ(passing.out, "");
+    EXPECT_EQ(passing.err, "");
+    p.dir().write("manifest.xml", tinyManifest("0.5"));
+    CommandResult failing = p.replay("-q");
+    EXPECT_EQ(failing.status, 1);
+    EXPECT_EQ(failing.out.rfind("[1/2] tiny ... FAILED (", 0), 0u) << failing.out;
+    EXPECT_FALSE(has(failing.out, "second")) << failing.out;
+    EXPECT_FALSE(has(failing.out, "replay:")) << failing.out;
+}
+
+TEST_F(CliReplayGLTest, NoGlContextExitsWith2) {
+    Project p;
+    // libglvnd finds no EGL vendor library: no display can be opened.
+    CommandResult r = runRmfx("replay manifest.xml", p.dir().path(), "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json");
+    EXPECT_EQ(r.status, 2) << r.out << r.err;
+    EXPECT_TRUE(has(r.err, "rmfx replay: cannot open an EGL display")) << r.err;
+    EXPECT_EQ(r.out, "");
+}
+
+}  // namespace
+}  // namespace rmfx::test

@@ -1,0 +1,60 @@
+#include "core/IdentifierSearch.h"
+
+#include <cctype>
+
+namespace rmfx {
+
+static bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+std::string withoutComments(std::string_view input) {
+    std::string out(input);
+    size_t i = 0;
+    auto blank = [&](size_t end) {
+        for (; i < end && i < out.size(); ++i)
+            if (out[i] != '\n') out[i] = ' ';
+    };
+    while (i < out.size()) {
+        const char next = i + 1 < out.size() ? out[i + 1] : '\0';
+        if (out[i] == '/' && next == '/') {
+            size_t end = out.find('\n', i);
+            blank(end == std::string::npos ? out.size() : end);
+        } else if (out[i] == '/' && next == '*') {
+            size_t end = out.find("*/", i + 2);
+            blank(end == std::string::npos ? out.size() : end + 2);
+        } else if (out[i] == '"') {
+            size_t end = out.find_first_of("\"\n", i + 1);
+            blank(end == std::string::npos ? out.size() : out[end] == '"' ? end + 1 : end);
+        } else {
+            ++i;
+        }
+    }
+    return out;
+}
+
+bool mentionsIdentifier(std::string_view text, std::string_view name) {
+    if (name.empty() || text.find(name) == std::string_view::npos) return false;
+    const std::string uncommented = withoutComments(text);
+    const std::string_view code = uncommented;
+    for (size_t at = code.find(name); at != std::string_view::npos; at = code.find(name, at + 1)) {
+        bool before = at > 0 && identifierChar(code[at - 1]);
+        bool after = at + name.size() < code.size() && identifierChar(code[at + name.size()]);
+        if (!before && !after) return true;
+    }
+    return false;
+}
+
+bool declaresVertexInput(std::string_view code, std::string_view name) {
+    if (name.empty()) return false;
+    for (size_t at = code.find(name); at != std::string_view::npos; at = code.find(name, at + 1)) {
+        size_t end = at + name.size();
+        if ((at > 0 && identifierChar(code[at - 1])) || (end < code.size() && identifierChar(code[end]))) continue;
+        size_t next = code.find_first_not_of(" \t\r\n", end);
+        if (next == std::string_view::npos || (code[next] != ';' && code[next] != ',' && code[next] != '[')) continue;
+        size_t start = code.find_last_of(";{}", at);
+        std::string_view statement = code.substr(start == std::string_view::npos ? 0 : start + 1, at - (start == std::string_view::npos ? 0 : start + 1));
+        if (mentionsIdentifier(statement, "attribute") || mentionsIdentifier(statement, "in")) return true;
+    }
+    return false;
+}
+
+}  // namespace rmfx

@@ -1,0 +1,212 @@
+// Direct3D 9 HLSL vertex/pixel shader pairs rendered through the translator (passes named hlsl*
+// are HLSL), against values worked out on the CPU: constants, a texture read with tex2D, the
+// matrix convention of runtime/HlslTranslator.h (mul(v, M) is rmfx's M * v), and Direct3D's
+// clip-space depth.
+
+#include <gtest/gtest.h>
+#include <glm/mat4x4.hpp>
+
+#include "frontend/workspace/WorkspaceParser.h"
+#include "tests/support/GlTestSupport.h"
+#include "tests/support/TestSupport.h"
+#include "validation/Validation.h"
+
+namespace rmfx::test {
+namespace {
+
+class HlslGLTest : public GlTest {};
+
+// Parses `xml`, marks the shaders of passes named hlsl* as HLSL (vs_2_0 / ps_2_0, entry "main")
+// and validates it, as an imported Direct3D effect would be.
+std::unique_ptr<Workspace> hlslWorkspace(const std::string& xml, const std::filesystem::path& folder = ".") {
+    ParsedWorkspace parsed = parseWorkspaceText(xml, folder / "hlsl-test.xml", folder);
+    if (!parsed.workspace) {
+        ADD_FAILURE() << formatAll(parsed.diagnostics);
+        return nullptr;
+    }
+    for (Pass& pass : parsed.workspace->passes) {
+        if (pass.name.rfind("hlsl", 0) != 0) continue;
+        for (ShaderSource& s : pass.shaders) {
+            s.dialect = ShaderDialect::Hlsl;
+            s.entryPoint = "main";
+            s.profile = s.stage == ShaderStage::Vertex ? "vs_2_0" : "ps_2_0";
+        }
+    }
+    Diagnostics d = validateWorkspace(*parsed.workspace);
+    if (hasErrors(d)) {
+        ADD_FAILURE() << formatAll(d);
+        return nullptr;
+    }
+    return std::make_unique<Workspace>(std::move(*parsed.workspace));
+}
+
+// Passes the mesh's position and first texture coordinates on, with a chosen clip-space z and w.
+const char* passThroughVertexShader = R"(
+float depth;
+float w;
+struct VS_OUTPUT { float4 Pos : POSITION; float2 Tex : TEXCOORD0; };
+VS_OUTPUT main(float4 Pos : POSITION, float2 Tex : TEXCOORD0) {
+    VS_OUTPUT o;
+    o.Pos = float4(Pos.xy * w, depth * w, w);
+    o.Tex = Tex;
+    return o;
+}
+)";
+
+std::string vertexShaderXml(const std::string& code) {
+    return R"(<shader stage="vertex"><![CDATA[)" + code + "]]></shader>\n";
+}
+
+glm::dvec4 pixel(const RefImage& image, int x, int y) { return image.at(x, y); }
+
+// Renders one frame of hlslWorkspace(xml) and reads target "out" back; an empty image (and a test
+// failure) when it does not run.
+RefImage renderOut(const std::string& xml, const std::filesystem::path& folder = ".") {
+    GlRun run = runWorkspace(hlslWorkspace(xml, folder), RunSettings());
+    if (!run.exec) return {};
+    return readRef(run, "out");
+}
+
+void expectNear(glm::dvec4 got, glm::dvec4 want, double tolerance, const std::string& what) {
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(got[c], want[c], tolerance) << what << " channel " << c;
+}
+
+}  // namespace
+
+// Four pixels: a constant, mul(v, M), mul(M, v) and the interpolated texture coordinates.
+TEST_F(HlslGLTest, ConstantsMatricesAndTexCoordsReachThePixelShader) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x1">
+  <vec4 name="tint" value="0.125 -2.5 3.75 1"/>
+  <vec4 name="v" value="1 -2 3 0.5"/>
+  <mat4 name="M" value="1 2 3 4  5 6 7 8  9 10 11 12  13 14 15 16.5"/>
+  <float name="depth" value="0.25"/>
+  <float name="w" value="1"/>
+  <target name="out" format="rgba32f" size="4x1"/>
+  <pass name="hlsl" target="out">
+    )" + vertexShaderXml(passThroughVertexShader) +
+                            R"(    <shader stage="fragment"><![CDATA[
+float4 tint;
+float4 v;
+float4x4 M;
+float4 main(float2 uv : TEXCOORD0) : COLOR {
+    if (uv.x < 0.25) return tint;
+    if (uv.x < 0.5) return mul(v, M);
+    if (uv.x < 0.75) return mul(M, v);
+    return float4(uv, 0, 1);
+}
+]]></shader>
+  </pass>
+</workspace>)";
+    RefImage out = renderOut(xml);
+    ASSERT_EQ(out.width, 4);
+
+    // rmfx's matrix: the 16 numbers are its columns.
+    double values[16] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16.5};
+    auto m = [&](int row, int column) { return values[4 * column + row]; };
+    glm::dvec4 v(1, -2, 3, 0.5), mv(0.0), mtv(0.0);
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) {
+            mv[r] += m(r, c) * v[c];   // rmfx's M * v
+            mtv[r] += m(c, r) * v[c];  // transpose(M) * v
+        }
+    expectNear(pixel(out, 0, 0), {0.125, -2.5, 3.75, 1}, 0.0, "tint");
+    expectNear(pixel(out, 1, 0), mv, 1e-4, "mul(v, M) is rmfx's M * v");
+    expectNear(pixel(out, 2, 0), mtv, 1e-4, "mul(M, v) is transpose(M) * v");
+    expectNear(pixel(out, 3, 0), {0.875, 0.5, 0, 1}, 1e-6, "TEXCOORD0 at the pixel centre");
+}
+
+// A 4x4 float image read with tex2D at the texel centres comes back texel for texel, the same
+// way up as a GLSL texture() read of it (row 0 at the bottom).
+TEST_F(HlslGLTest, Tex2DReadsTheTextureBoundUnderTheHlslSamplerName) {
+    ScratchDir dir;
+    RefImage image(4, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) image.at(x, y) = {0.25 * x + 0.0625 * y, 10.0 + y, -x - 0.5, 1.0 / (1 + x + y)};
+    writeFloatExr(dir / "image.exr", image);
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x4">
+  <texture name="Image" file="image.exr"/>
+  <float name="depth" value="0.5"/>
+  <float name="w" value="1"/>
+  <float name="gain" value="2"/>
+  <target name="out" format="rgba32f" size="4x4"/>
+  <pass name="hlsl" target="out">
+    <sampler name="baseMap" texture="Image" filter="nearest"/>
+    )" + vertexShaderXml(passThroughVertexShader) +
+                            R"(    <shader stage="fragment"><![CDATA[
+sampler2D baseMap;
+float gain;
+float4 main(float2 uv : TEXCOORD0) : COLOR { return tex2D(baseMap, uv) * gain; }
+]]></shader>
+  </pass>
+</workspace>)";
+    RefImage out = renderOut(xml, dir.path());
+    ASSERT_EQ(out.width, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x)
+            expectNear(pixel(out, x, y), 2.0 * image.at(x, y), 1e-6, "texel " + std::to_string(x) + "," + std::to_string(y));
+}
+
+// A pass with a pixel shader only: Direct3D's fixed-function vertex processing gives it the
+// mesh's texture coordinates (TEXCOORDn, as (u, v, 0, 1)) and white (COLORn); rmfx's built-in
+// vertex shader hands it the same. On the full-screen triangle (u, v) is the pixel's position.
+TEST_F(HlslGLTest, PixelShaderWithoutAVertexShaderReadsWhatFixedFunctionGives) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x4">
+  <target name="out" format="rgba32f" size="4x4"/>
+  <pass name="hlsl" target="out">
+    <shader stage="fragment"><![CDATA[
+float4 main(float2 uv : TEXCOORD0, float4 far : TEXCOORD3, float3 colour : COLOR0) : COLOR {
+    return float4(uv.x, uv.y + far.w, far.z + colour.g * 0.5, colour.r);
+}
+]]></shader>
+  </pass>
+</workspace>)";
+    RefImage out = renderOut(xml);
+    ASSERT_EQ(out.width, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) {
+            const double u = (x + 0.5) / 4, v = (y + 0.5) / 4;
+            expectNear(pixel(out, x, y), {u, v + 1.0, 0.5, 1.0}, 1e-6, "pixel " + std::to_string(x) + "," + std::to_string(y));
+        }
+}
+
+// An input fixed-function processing does not give is an error naming the semantic.
+TEST_F(HlslGLTest, PixelShaderWithoutAVertexShaderReadingANormalIsAnError) {
+    ParsedWorkspace parsed = parseWorkspaceText(R"(<workspace version="1" name="hlsl" size="4x4">
+  <pass name="hlsl">
+    <shader stage="fragment" dialect="hlsl"><![CDATA[
+float4 main(float3 n : NORMAL) : COLOR { return float4(n, 1); }
+]]></shader>
+  </pass>
+</workspace>)",
+                                                "hlsl-test.xml", ".");
+    ASSERT_TRUE(parsed.workspace) << formatAll(parsed.diagnostics);
+    std::string all = formatAll(validateWorkspace(*parsed.workspace));
+    EXPECT_NE(all.find("hlsl-test.xml:3: error: <pass name=\"hlsl\">: the HLSL pixel shader reads NORMAL0, which a pass "
+                       "without a vertex shader"),
+              std::string::npos)
+        << all;
+}
+
+// Direct3D keeps z/w in [0, 1] and writes it to the depth buffer as is; rmfx must give the same
+// window depth (gl_FragCoord.z, SV_Position.z in the pixel shader), also when w is not 1.
+TEST_F(HlslGLTest, ClipSpaceDepthFollowsDirect3D) {
+    for (double w : {1.0, 2.0}) {
+        const std::string xml = R"(<workspace version="1" name="hlsl" size="2x2">
+  <float name="depth" value="0.25"/>
+  <float name="w" value=")" + glslFloat(w) + R"("/>
+  <target name="out" format="rgba32f" size="2x2"/>
+  <pass name="hlsl" target="out">
+    )" + vertexShaderXml(passThroughVertexShader) +
+                                R"(    <shader stage="fragment"><![CDATA[
+float4 main(float4 position : SV_Position) : COLOR { return float4(position.z, 0, 0, 1); }
+]]></shader>
+  </pass>
+</workspace>)";
+        RefImage out = renderOut(xml);
+        ASSERT_EQ(out.width, 2);
+        // Direct3D: window depth = z/w = 0.25 (OpenGL without the mapping: (0.25 + 1) / 2 = 0.625).
+        EXPECT_NEAR(pixel(out, 1, 1).x, 0.25, 1e-6) << "w = " << w;
+    }
+}
+
+}  // namespace rmfx::test

@@ -1,0 +1,640 @@
+// The RenderMonkey importer, field by field, on the .rfx files written for these tests
+// (tests/rfx/): every expected number below is worked out by hand from the file's text.
+
+#include "frontend/rfx/RfxImporter.h"
+
+#include <cmath>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "frontend/workspace/VariableValueWriter.h"
+#include "tests/support/TestSupport.h"
+#include "validation/WorkspaceLoader.h"
+
+namespace rmfx {
+namespace {
+
+std::filesystem::path rfxDir() { return test::sourceDir() / "tests" / "rfx"; }
+
+// The 1-based line of the first line of `file` holding `needle`; 0 when none does.
+int lineOf(const std::filesystem::path& file, const std::string& needle) {
+    std::ifstream in(file);
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n)
+        if (line.find(needle) != std::string::npos) return n;
+    return 0;
+}
+
+Workspace imported(const std::string& name, const std::string& effect = "") {
+    ParsedWorkspace p = importRfxFile(rfxDir() / name, {effect});
+    EXPECT_FALSE(hasErrors(p.diagnostics)) << formatAll(p.diagnostics);
+    EXPECT_TRUE(p.workspace.has_value());
+    return p.workspace ? *p.workspace : Workspace{};
+}
+
+std::string allWarnings(const std::string& name, const std::string& effect = "") {
+    return formatAll(importRfxFile(rfxDir() / name, {effect}).diagnostics);
+}
+
+const Variable& variable(const Workspace& ws, const std::string& name) {
+    const Variable* v = ws.findVariable(name);
+    EXPECT_NE(v, nullptr) << name;
+    static Variable none;
+    return v ? *v : none;
+}
+
+void expectColor(glm::vec4 actual, glm::vec4 expected) {
+    for (int i = 0; i < 4; ++i) EXPECT_FLOAT_EQ(actual[i], expected[i]) << "component " << i;
+}
+
+// Errors of an .rfx text (named t.rfx): its formatted diagnostics.
+std::string errorsOf(const std::string& text, const std::string& effect = "") {
+    ParsedWorkspace p = importRfxText(text, "t.rfx", ".", {effect});
+    EXPECT_FALSE(p.workspace.has_value());
+    return formatAll(p.diagnostics);
+}
+
+// An OpenGL effect "E" in workspace "W" whose body starts on line 4.
+std::string glEffect(const std::string& body) {
+    return "<RENDER_MONKEY>\n"
+           "<RmEffectWorkspace NAME=\"W\" ACTIVE_EFFECT=\"W.E\">\n"
+           "<RmOpenGLEffect NAME=\"E\" API=\"OpenGL\">\n" +
+           body + "</RmOpenGLEffect>\n</RmEffectWorkspace>\n</RENDER_MONKEY>\n";
+}
+
+const char* kFragment =
+    "<RmGLShader NAME=\"F\" PIXEL_SHADER=\"TRUE\"><RmShaderCode><![CDATA[void main() { gl_FragColor = vec4(1.0); }]]>"
+    "</RmShaderCode></RmGLShader>";
+
+TEST(RfxImporter, GlEffectPassesRunInPassIndexOrderWithTheirTargetsAndClears) {
+    Workspace ws = imported("gl_legacy.rfx");
+    EXPECT_EQ(ws.name, "Tests.Group.Legacy");
+    EXPECT_EQ(ws.profile, GlProfile::Compatibility);
+    EXPECT_EQ(ws.output.transform, DisplayTransform::None);
+    EXPECT_EQ(ws.output.format, TargetFormat::RGBA8);
+    ASSERT_EQ(ws.passes.size(), 3u);
+    EXPECT_EQ(ws.passes[0].name, "Tint");  // PASS_INDEX 0, second in the file
+    EXPECT_EQ(ws.passes[1].name, "Show");
+    EXPECT_EQ(ws.passes[2].name, "Again");
+    EXPECT_TRUE(ws.passes[0].enabled);
+    EXPECT_FALSE(ws.passes[2].enabled);
+
+    const Pass& tint = ws.passes[0];
+    EXPECT_EQ(tint.target, "Scene");
+    ASSERT_TRUE(tint.clear.color.has_value());
+    expectColor(*tint.clear.color, {0.0f, 128.0f / 255.0f, 0.0f, 1.0f});  // -16744448 = 0xFF008000
+    ASSERT_TRUE(tint.clear.depth.has_value());
+    EXPECT_FLOAT_EQ(*tint.clear.depth, 0.75f);
+    EXPECT_EQ(tint.draw.file, "quad.obj");
+    EXPECT_EQ(tint.where.line, lineOf(rfxDir() / "gl_legacy.rfx", "NAME=\"Tint\" API=\"OpenGL\""));
+
+    EXPECT_EQ(ws.passes[1].target, "");  // no RmRenderTarget: the output
+    EXPECT_EQ(ws.passes[2].target, "");  // RENDER_TO_SCREEN
+    // RenderMonkey clears its back buffer every frame: the first pass drawing to the output does,
+    // to opaque black and depth 1; later ones clear only what they ask for.
+    ASSERT_TRUE(ws.passes[1].clear.color.has_value());
+    expectColor(*ws.passes[1].clear.color, {0.0f, 0.0f, 0.0f, 1.0f});
+    ASSERT_TRUE(ws.passes[1].clear.depth.has_value());
+    EXPECT_FLOAT_EQ(*ws.passes[1].clear.depth, 1.0f);
+    EXPECT_FALSE(ws.passes[2].clear.color.has_value());
+}
+
+TEST(RfxImporter, GlRenderStatesMapToBlendDepthAndRaster) {
+    Workspace ws = imported("gl_legacy.rfx");
+    const Pass& tint = ws.passes[0];
+    EXPECT_TRUE(tint.depth.test);
+    EXPECT_TRUE(tint.depth.write);  // RenderMonkey's default, not changed by the block
+    EXPECT_EQ(tint.depth.func, CompareFunc::Always);  // 8
+    EXPECT_FALSE(tint.blend.enabled);
+    EXPECT_EQ(tint.blend.srcColor, BlendFactor::SrcAlpha);          // 7
+    EXPECT_EQ(tint.blend.dstColor, BlendFactor::OneMinusSrcAlpha);  // 8
+    EXPECT_EQ(tint.blend.srcAlpha, BlendFactor::One);               // 2
+    EXPECT_EQ(tint.blend.dstAlpha, BlendFactor::Zero);              // 1
+    EXPECT_EQ(tint.blend.colorOp, BlendOp::Max);                    // 5
+    EXPECT_EQ(tint.blend.alphaOp, BlendOp::Max);
+    expectColor(tint.blend.constant, {1.0f, 64.0f / 255.0f, 0.0f, 128.0f / 255.0f});  // 0x80FF4000
+    EXPECT_EQ(tint.raster.cull, CullFace::None);
+
+    const Pass& show = ws.passes[1];
+    EXPECT_FALSE(show.depth.test);
+    EXPECT_FALSE(show.depth.write);
+    EXPECT_EQ(show.raster.cull, CullFace::Back);  // 3
+    EXPECT_TRUE(show.raster.frontCounterClockwise);
+
+    // GL_LineWidth holds the bits of 2.5f (0x40200000 = 1075838976): warned about, as a float.
+    int line = lineOf(rfxDir() / "gl_legacy.rfx", "GL_LineWidth");
+    EXPECT_NE(allWarnings("gl_legacy.rfx").find("gl_legacy.rfx:" + std::to_string(line) +
+                                                ": warning: <RmState NAME=\"GL_LineWidth\">: render state GL_LineWidth = 2.5 "
+                                                "has no equivalent"),
+              std::string::npos)
+        << allWarnings("gl_legacy.rfx");
+}
+
+TEST(RfxImporter, RenderStatesCarryOverInRunOrderFromThePassesThatRun) {
+    Workspace ws = imported("shells.rfx");
+    ASSERT_EQ(ws.passes.size(), 5u);
+    std::vector<std::string> order;
+    for (const Pass& p : ws.passes) order.push_back(p.name);
+    EXPECT_EQ(order, (std::vector<std::string>{"Base", "Shell 1", "Reset", "Shell 2", "Shell 3"}));
+    EXPECT_FALSE(ws.passes[0].blend.enabled);  // RenderMonkey's frame state
+    EXPECT_TRUE(ws.passes[0].depth.test);
+    for (size_t i : {1u, 3u, 4u}) {
+        const Pass& p = ws.passes[i];
+        EXPECT_TRUE(p.blend.enabled) << p.name;
+        EXPECT_EQ(p.blend.srcColor, BlendFactor::One) << p.name;
+        EXPECT_EQ(p.blend.dstColor, BlendFactor::One) << p.name;
+        EXPECT_EQ(p.raster.cull, CullFace::None) << p.name;  // Reset's culling never ran
+        EXPECT_TRUE(p.depth.test) << p.name;
+        EXPECT_EQ(p.depth.func, CompareFunc::LessEqual) << p.name;
+    }
+    // The disabled pass has its own block over what it would inherit, should it be enabled.
+    EXPECT_FALSE(ws.passes[2].blend.enabled);
+    EXPECT_EQ(ws.passes[2].blend.dstColor, BlendFactor::One);
+    EXPECT_EQ(ws.passes[2].raster.cull, CullFace::Back);
+}
+
+TEST(RfxImporter, Direct3dSeparateAlphaBlendingCarriesOverWithTheOtherStates) {
+    auto pass = [](int index, const std::string& states) {
+        return "<RmPass NAME=\"P" + std::to_string(index) + "\" PASS_INDEX=\"" + std::to_string(index) +
+               "\"><RmRenderStateBlock NAME=\"S\">" + states + "</RmRenderStateBlock>" +
+               (index == 0 ? "<RmHLSLShader NAME=\"PS\" PIXEL_SHADER=\"TRUE\" TARGET=\"ps_2_0\" ENTRY_POINT=\"main\">"
+                             "<RmShaderCode><![CDATA[float4 main() : COLOR { return 1; }]]></RmShaderCode></RmHLSLShader>"
+                           : "") +
+               "</RmPass>\n";
+    };
+    auto state = [](int number, int value) {
+        return "<RmState NAME=\"D3DRS_" + std::to_string(number) + "\" STATE=\"" + std::to_string(number) + "\" VALUE=\"" +
+               std::to_string(value) + "\"/>";
+    };
+    // P0: separate alpha on, alpha ONE, ONE. P1: colour SRCALPHA only; alpha keeps ONE, ONE.
+    // P2: separate alpha off: alpha blends like colour again. P3: separate alpha on again: the
+    // alpha states P0 set are still there (Direct3D kept them while they were not used).
+    std::string text = "<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\" ACTIVE_EFFECT=\"W.E\">\n"
+                       "<RmDirectXEffect NAME=\"E\" API=\"D3D\">\n" +
+                       pass(0, state(27, 1) + state(206, 1) + state(207, 2) + state(208, 2)) + pass(1, state(19, 5)) +
+                       pass(2, state(206, 0)) + pass(3, state(206, 1)) + "</RmDirectXEffect>\n</RmEffectWorkspace>\n</RENDER_MONKEY>\n";
+    ParsedWorkspace p = importRfxText(text, "t.rfx", ".", {""});
+    ASSERT_TRUE(p.workspace) << formatAll(p.diagnostics);
+    const std::vector<Pass>& passes = p.workspace->passes;
+    ASSERT_EQ(passes.size(), 4u);
+    EXPECT_TRUE(passes[1].blend.enabled);
+    EXPECT_EQ(passes[1].blend.srcColor, BlendFactor::SrcAlpha);
+    EXPECT_EQ(passes[1].blend.dstColor, BlendFactor::Zero);
+    EXPECT_EQ(passes[1].blend.srcAlpha, BlendFactor::One);
+    EXPECT_EQ(passes[1].blend.dstAlpha, BlendFactor::One);
+    EXPECT_TRUE(passes[2].blend.enabled);
+    EXPECT_EQ(passes[2].blend.srcAlpha, BlendFactor::SrcAlpha);
+    EXPECT_EQ(passes[2].blend.dstAlpha, BlendFactor::Zero);
+    EXPECT_EQ(passes[3].blend.srcAlpha, BlendFactor::One);
+    EXPECT_EQ(passes[3].blend.dstAlpha, BlendFactor::One);
+    EXPECT_EQ(passes[3].blend.srcColor, BlendFactor::SrcAlpha);
+}
+
+TEST(RfxImporter, ShadersKeepTheirRfxLinesAndDialect) {
+    Workspace ws = imported("gl_legacy.rfx");
+    const std::filesystem::path file = rfxDir() / "gl_legacy.rfx";
+    const Pass& show = ws.passes[1];
+    ASSERT_EQ(show.shaders.size(), 2u);
+    EXPECT_EQ(show.shaders[0].stage, ShaderStage::Vertex);
+    EXPECT_EQ(show.shaders[1].stage, ShaderStage::Fragment);
+    for (const ShaderSource& s : show.shaders) EXPECT_EQ(s.dialect, ShaderDialect::GlslLegacy);
+    // The CDATA opens on the RmShaderCode line: code line 1 is that line's remainder (empty).
+    EXPECT_EQ(show.shaders[1].codeLine, lineOf(file, "<RmGLShader NAME=\"Fragment Program\""));
+    EXPECT_EQ(show.shaders[1].code.substr(0, 26), "\nuniform sampler2D Scene;\n");
+    // "Again" has no shaders: it runs the program of the pass before it.
+    ASSERT_EQ(ws.passes[2].shaders.size(), 2u);
+    EXPECT_EQ(ws.passes[2].shaders[1].code, show.shaders[1].code);
+    EXPECT_EQ(ws.passes[2].shaders[1].codeLine, show.shaders[1].codeLine);
+    // ...with the samplers and streams that program reads, as it names none of its own.
+    ASSERT_EQ(ws.passes[2].samplers.size(), 1u);
+    EXPECT_EQ(ws.passes[2].samplers[0].target, "Scene");
+    EXPECT_EQ(ws.passes[2].streams.size(), show.streams.size());
+}
+
+TEST(RfxImporter, SamplerStatesAndStreams) {
+    Workspace ws = imported("gl_legacy.rfx");
+    const Pass& show = ws.passes[1];
+    ASSERT_EQ(show.samplers.size(), 1u);
+    const Sampler& s = show.samplers[0];
+    EXPECT_EQ(s.uniform, "Scene");
+    EXPECT_EQ(s.target, "Scene");  // a renderable texture
+    EXPECT_EQ(s.texture, "");
+    EXPECT_EQ(s.wrapS, Wrap::Clamp);   // 2 GL_CLAMP_TO_EDGE
+    EXPECT_EQ(s.wrapT, Wrap::Mirror);  // 5 GL_MIRRORED_REPEAT
+    EXPECT_EQ(s.filter, Filter::Nearest);
+    EXPECT_EQ(s.mipmap, MipmapMode::None);
+
+    ASSERT_EQ(show.streams.size(), 4u);
+    EXPECT_EQ(show.streams[0].usage, VertexUsage::Position);
+    EXPECT_EQ(show.streams[1].usage, VertexUsage::Normal);
+    EXPECT_EQ(show.streams[2].usage, VertexUsage::TexCoord);
+    EXPECT_EQ(show.streams[3].usage, VertexUsage::Tangent);
+    // OpenGL: built-ins, except the attribute the vertex shader declares.
+    EXPECT_EQ(show.streams[0].attribute, "");
+    EXPECT_EQ(show.streams[2].attribute, "");
+    EXPECT_EQ(show.streams[3].attribute, "rm_Tangent");
+}
+
+TEST(RfxImporter, VariablesOfEveryTypeWithScopesSemanticsAndRanges) {
+    Workspace ws = imported("gl_legacy.rfx");
+    // Scale: workspace 0.75, group 0.5 (the group's wins), pass "Tint" 0.5 as a pass constant.
+    EXPECT_FLOAT_EQ(variable(ws, "Scale").value.asFloat(), 0.5f);
+    EXPECT_FLOAT_EQ(*variable(ws, "Scale").max, 2.0f);
+    EXPECT_TRUE(variable(ws, "Scale").editable);
+    ASSERT_EQ(ws.passes[0].constants.size(), 1u);
+    EXPECT_EQ(ws.passes[0].constants[0].name, "Scale");
+    EXPECT_FALSE(ws.passes[0].constants[0].editable);
+    EXPECT_FLOAT_EQ(variable(ws, "Shadowed").value.asFloat(), 0.0f);  // the effect's, not the workspace's 1.0
+    EXPECT_EQ(ws.findVariable("Width"), nullptr);                      // registry state is no variable
+
+    const Variable& tint = variable(ws, "Tint");
+    EXPECT_EQ(tint.value.type, ValueType::Color4);
+    expectColor({tint.value.data[0], tint.value.data[1], tint.value.data[2], tint.value.data[3]}, {0.2f, 0.4f, 0.6f, 1.0f});
+    const Variable& offset = variable(ws, "Offset");
+    EXPECT_EQ(offset.value.type, ValueType::Vec4);
+    EXPECT_FLOAT_EQ(offset.value.data[1], 0.125f);
+    EXPECT_FLOAT_EQ(*offset.min, -1.0f);
+    EXPECT_EQ(variable(ws, "Time").semantic, "Time0_X");
+    EXPECT_FALSE(variable(ws, "Time").editable);
+    EXPECT_EQ(variable(ws, "Steps").value.type, ValueType::Int);
+    EXPECT_EQ(variable(ws, "Steps").value.asInt(), -3);
+    EXPECT_EQ(variable(ws, "Flag").value.type, ValueType::Bool);
+    EXPECT_TRUE(variable(ws, "Flag").value.asBool());
+    const Variable& basis = variable(ws, "Basis");
+    EXPECT_EQ(basis.value.type, ValueType::Mat4);
+    EXPECT_EQ(basis.semantic, "ViewProjection");
+    for (int i = 0; i < 16; ++i) EXPECT_FLOAT_EQ(basis.value.data[i], static_cast<float>(i + 1));
+
+    const Variable& pair = variable(ws, "Pair");
+    EXPECT_EQ(pair.value.type, ValueType::Vec2);
+    EXPECT_FLOAT_EQ(pair.value.data[0], 0.5f);
+    EXPECT_FLOAT_EQ(pair.value.data[1], -1.5f);
+    EXPECT_EQ(variable(ws, "Triple").value.type, ValueType::Vec3);
+    EXPECT_EQ(variable(ws, "Triple").semantic, "ViewPosition");
+    EXPECT_FLOAT_EQ(variable(ws, "Triple").value.data[2], 3.0f);
+    // Column-major: (row r, column c) is element c * rows + r.
+    const Variable& m2 = variable(ws, "Rotation2");
+    EXPECT_EQ(m2.value.type, ValueType::Mat2);
+    EXPECT_EQ(std::vector<float>(m2.value.data.begin(), m2.value.data.begin() + 4), (std::vector<float>{1, 3, 2, 4}));
+    const Variable& m3 = variable(ws, "Rotation3");
+    EXPECT_EQ(m3.value.type, ValueType::Mat3);
+    EXPECT_FLOAT_EQ(m3.value.data[5], 7.0f);  // row 2, column 1
+    EXPECT_FLOAT_EQ(m3.value.data[7], 5.0f);  // row 1, column 2
+    EXPECT_FLOAT_EQ(m3.value.data[0], 0.0f);
+    EXPECT_EQ(variable(ws, "Count").value.type, ValueType::Int);
+    EXPECT_EQ(variable(ws, "Count").value.asInt(), 6);
+}
+
+TEST(RfxImporter, TexturesKeepFileNamesAsWritten) {
+    Workspace ws = imported("gl_legacy.rfx", "Other");
+    EXPECT_EQ(ws.textures.size(), 2u);  // "Unused", which no pass samples, is left out
+    const Texture* noise = ws.findTexture("Noise");
+    ASSERT_NE(noise, nullptr);
+    EXPECT_EQ(noise->kind, TextureKind::Texture2D);
+    EXPECT_EQ(noise->files, std::vector<std::string>{"..\\Media\\Textures\\NoiseVolume.TGA"});
+    const Texture* sky = ws.findTexture("Sky");
+    ASSERT_NE(sky, nullptr);
+    EXPECT_EQ(sky->kind, TextureKind::Cube);
+    EXPECT_EQ(sky->files, std::vector<std::string>{"C:\\Program Files\\RenderMonkey\\Media\\Textures\\Snow.dds"});
+    EXPECT_EQ(ws.findTexture("Volume"), nullptr);
+    int line = lineOf(rfxDir() / "gl_legacy.rfx", "Rm3DTextureVariable NAME=\"Volume\"");
+    EXPECT_NE(allWarnings("gl_legacy.rfx", "Other").find("gl_legacy.rfx:" + std::to_string(line) +
+                                                         ": warning: <Rm3DTextureVariable NAME=\"Volume\">: rmfx has no 3D textures"),
+              std::string::npos);
+}
+
+TEST(RfxImporter, GlSamplerStatesOfTextureVariables) {
+    Workspace ws = imported("gl_legacy.rfx", "Other");
+    const Pass& only = ws.passes[0];
+    ASSERT_EQ(only.samplers.size(), 2u);
+    const Sampler& noise = only.samplers[0];  // no states: OpenGL's defaults
+    EXPECT_EQ(noise.texture, "Noise");
+    EXPECT_EQ(noise.wrapS, Wrap::Repeat);
+    EXPECT_EQ(noise.wrapT, Wrap::Repeat);
+    EXPECT_EQ(noise.filter, Filter::Linear);
+    EXPECT_EQ(noise.mipmap, MipmapMode::Linear);
+    const Sampler& sky = only.samplers[1];
+    EXPECT_EQ(sky.texture, "Sky");
+    EXPECT_EQ(sky.filter, Filter::Linear);      // magnify 1; minify 4 is NEAREST_MIPMAP_LINEAR
+    EXPECT_EQ(sky.mipmap, MipmapMode::Linear);  // from the minify filter
+    expectColor(sky.border, {0.0f, 0.0f, 1.0f, 1.0f});  // -16776961 = 0xFF0000FF
+    std::string warnings = allWarnings("gl_legacy.rfx", "Other");
+    int line = lineOf(rfxDir() / "gl_legacy.rfx", "<RmTextureObject NAME=\"Sky\"");
+    std::string at = "gl_legacy.rfx:" + std::to_string(line) + ": warning: <RmTextureObject NAME=\"Sky\">: ";
+    EXPECT_NE(warnings.find(at + "minify and magnify filters differ"), std::string::npos) << warnings;
+    EXPECT_NE(warnings.find(at + "its R wrap differs from S"), std::string::npos) << warnings;
+    // 1082130432 = 0x40800000 = 4.0f
+    EXPECT_NE(warnings.find("sampler state GL_TextureMaxAnisotropyEXT = 4 has no equivalent"), std::string::npos) << warnings;
+}
+
+TEST(RfxImporter, RenderableTexturesTakeEveryD3dFormatNumber) {
+    Workspace ws = imported("gl_legacy.rfx");
+    auto format = [&](const std::string& name) {
+        const RenderTarget* t = ws.findTarget(name);
+        EXPECT_NE(t, nullptr) << name;
+        return t ? t->format : TargetFormat::RGBA8;
+    };
+    EXPECT_EQ(format("Scene"), TargetFormat::RGBA16F);  // 113
+    EXPECT_EQ(format("Half"), TargetFormat::RGBA8);     // 21
+    EXPECT_EQ(format("F34"), TargetFormat::RG16);
+    EXPECT_EQ(format("F36"), TargetFormat::RGBA16);
+    EXPECT_EQ(format("F111"), TargetFormat::R16F);
+    EXPECT_EQ(format("F112"), TargetFormat::RG16F);
+    EXPECT_EQ(format("F114"), TargetFormat::R32F);
+    EXPECT_EQ(format("F115"), TargetFormat::RG32F);
+    EXPECT_EQ(format("F116"), TargetFormat::RGBA32F);
+    const RenderTarget* scene = ws.findTarget("Scene");
+    EXPECT_FALSE(scene->size.relative);
+    EXPECT_EQ(scene->size.width, 64);
+    EXPECT_EQ(scene->size.height, 32);
+    EXPECT_FALSE(scene->mipmaps);
+    const RenderTarget* half = ws.findTarget("Half");
+    EXPECT_TRUE(half->size.relative);
+    EXPECT_DOUBLE_EQ(half->size.scaleX, 0.5);
+    EXPECT_DOUBLE_EQ(half->size.scaleY, 0.25);
+    EXPECT_TRUE(half->mipmaps);
+}
+
+TEST(RfxImporter, CameraBecomesTheOrbitThatSeesTheSame) {
+    Workspace ws = imported("gl_legacy.rfx");
+    // Position (3, 4, 0) looking at the origin: distance 5, yaw atan2(3, 0) = 90°, pitch asin(4/5).
+    EXPECT_FLOAT_EQ(ws.camera.distance, 5.0f);
+    EXPECT_NEAR(ws.camera.yawDegrees, 90.0f, 1e-4);
+    EXPECT_NEAR(ws.camera.pitchDegrees, std::asin(0.8) * 180.0 / M_PI, 1e-4);
+    EXPECT_FLOAT_EQ(ws.camera.fovYDegrees, 45.0f);
+    EXPECT_FLOAT_EQ(ws.camera.nearPlane, 0.5f);
+    EXPECT_FLOAT_EQ(ws.camera.farPlane, 50.0f);
+}
+
+TEST(RfxImporter, ActiveCameraNamingNoCameraWarns) {
+    auto warnings = [](const std::string& text) { return formatAll(importRfxText(text, "t.rfx", ".", {}).diagnostics); };
+    const std::string pass = "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n" + std::string(kFragment) + "\n</RmGLPass>\n";
+    std::string none = glEffect(pass);
+    none.replace(none.find("API=\"OpenGL\">"), 14, "API=\"OpenGL\" ACTIVE_CAMERA=\"Camera\">");
+    EXPECT_NE(warnings(none).find("t.rfx:3: warning: <RmOpenGLEffect NAME=\"E\">: ACTIVE_CAMERA 'Camera' names no <RmCamera> "
+                                  "of the effect; rmfx's default camera is used"),
+              std::string::npos)
+        << warnings(none);
+    std::string other = glEffect("<RmCamera NAME=\"Side\" CAMERA_POSITION_X=\"0\" CAMERA_POSITION_Y=\"0\" CAMERA_POSITION_Z=\"3\"/>\n" + pass);
+    other.replace(other.find("API=\"OpenGL\">"), 14, "API=\"OpenGL\" ACTIVE_CAMERA=\"Main\">");
+    EXPECT_NE(warnings(other).find("ACTIVE_CAMERA 'Main' names no <RmCamera> of the effect; using the first one, 'Side'"),
+              std::string::npos)
+        << warnings(other);
+    EXPECT_EQ(allWarnings("gl_legacy.rfx").find("ACTIVE_CAMERA"), std::string::npos);
+}
+
+TEST(RfxImporter, ModelOrientationOtherThanZeroWarns) {
+    std::string text = glEffect("<RmModelData NAME=\"M\" FILE_NAME=\"m.obj\" ORIENTATION=\"1\"/>\n"
+                                "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n" + std::string(kFragment) + "\n</RmGLPass>\n");
+    std::string all = formatAll(importRfxText(text, "t.rfx", ".", {}).diagnostics);
+    EXPECT_NE(all.find("t.rfx:4: warning: <RmModelData NAME=\"M\">: ORIENTATION 1 is not applied"), std::string::npos) << all;
+    EXPECT_EQ(allWarnings("gl_legacy.rfx").find("ORIENTATION"), std::string::npos);
+}
+
+// RenderMonkey's stream maps are shared by every pass that names one: a channel a pass's shaders
+// do not read is normal there (a screen-aligned quad's pass ignores the normals), not a warning.
+TEST(RfxImporter, SharedStreamChannelsAPassDoesNotReadAreNotWarnedAbout) {
+    LoadedWorkspace loaded = loadWorkspace(rfxDir() / "d3d_hlsl.rfx");  // BINORMAL2: no shader reads it
+    ASSERT_TRUE(loaded.workspace) << formatAll(loaded.diagnostics);
+    for (const Pass& pass : loaded.workspace->passes)
+        for (const VertexStream& stream : pass.streams) EXPECT_TRUE(stream.shared);
+    EXPECT_EQ(formatAll(loaded.diagnostics).find("do not read"), std::string::npos) << formatAll(loaded.diagnostics);
+}
+
+TEST(RfxImporter, EffectChosenByDottedPathOrName) {
+    for (const char* name : {"Tests.Group.Other", "Group.Other", "Other"}) {
+        Workspace ws = imported("gl_legacy.rfx", name);
+        EXPECT_EQ(ws.name, "Tests.Group.Other") << name;
+        ASSERT_EQ(ws.passes.size(), 1u);
+        EXPECT_EQ(ws.passes[0].draw.file, "");  // no model reference
+        // Shadowed: the workspace's 1.0 (the sibling effect's 0.0 is not visible here).
+        EXPECT_FLOAT_EQ(variable(ws, "Shadowed").value.asFloat(), 1.0f);
+        EXPECT_NE(ws.findTexture("Noise"), nullptr);
+    }
+    EXPECT_EQ(imported("gl_legacy.rfx").findTexture("Noise"), nullptr);  // the sibling's declarations are not visible
+    std::string errors = formatAll(importRfxFile(rfxDir() / "gl_legacy.rfx", {"Nope"}).diagnostics);
+    EXPECT_NE(errors.find("error: --effect Nope: no effect 'Nope'; it has: 'Tests.Group.Legacy' (OpenGL, active), "
+                          "'Tests.Group.Other' (OpenGL)"),
+              std::string::npos)
+        << errors;
+}
+
+TEST(RfxImporter, GlesEffectFeedsNamedAttributes) {
+    Workspace ws = imported("gles.rfx");
+    EXPECT_EQ(ws.profile, GlProfile::Core);
+    ASSERT_EQ(ws.passes.size(), 1u);
+    const Pass& p = ws.passes[0];
+    for (const ShaderSource& s : p.shaders) EXPECT_EQ(s.dialect, ShaderDialect::GlslEs100);
+    ASSERT_EQ(p.streams.size(), 3u);  // the blend-weights channel is left out, with a warning
+    EXPECT_EQ(p.streams[0].attribute, "a_position");
+    EXPECT_EQ(p.streams[1].attribute, "a_uv");
+    EXPECT_EQ(p.streams[2].usage, VertexUsage::Color);
+    EXPECT_EQ(p.streams[2].attribute, "a_color");
+    EXPECT_TRUE(p.blend.enabled);
+    EXPECT_EQ(p.blend.srcColor, BlendFactor::One);
+    EXPECT_EQ(p.blend.dstColor, BlendFactor::One);
+    EXPECT_FALSE(p.depth.test);
+    ASSERT_TRUE(p.clear.color.has_value());
+    expectColor(*p.clear.color, {32 / 255.0f, 32 / 255.0f, 32 / 255.0f, 1.0f});  // 0xFF202020
+    int line = lineOf(rfxDir() / "gles.rfx", "NAME=\"Weights\"");
+    EXPECT_NE(allWarnings("gles.rfx").find("gles.rfx:" + std::to_string(line) + ": warning: <RmStreamChannel NAME=\"Weights\">: USAGE 1"),
+              std::string::npos);
+}
+
+TEST(RfxImporter, Direct3dEffectWithHlslStatesAndAnAssemblyPass) {
+    Workspace ws = imported("d3d_hlsl.rfx");
+    EXPECT_EQ(ws.profile, GlProfile::Core);
+    ASSERT_EQ(ws.passes.size(), 2u);  // the disabled assembly pass is left out, with a warning
+    const Pass& fill = ws.passes[0];
+    ASSERT_EQ(fill.shaders.size(), 2u);
+    EXPECT_EQ(fill.shaders[0].dialect, ShaderDialect::Hlsl);
+    EXPECT_EQ(fill.shaders[0].entryPoint, "vs_main");
+    EXPECT_EQ(fill.shaders[0].profile, "vs_2_0");
+    EXPECT_EQ(fill.shaders[1].entryPoint, "ps_main");
+    EXPECT_EQ(fill.shaders[1].profile, "ps_2_0");
+    EXPECT_EQ(fill.target, "Buffer");
+    EXPECT_FALSE(fill.depth.test);
+    EXPECT_FALSE(fill.depth.write);
+    EXPECT_EQ(fill.depth.func, CompareFunc::NotEqual);  // D3DCMP 6
+    EXPECT_EQ(fill.raster.cull, CullFace::None);
+    EXPECT_EQ(fill.blend.srcColor, BlendFactor::SrcAlpha);          // D3DBLEND 5
+    EXPECT_EQ(fill.blend.dstColor, BlendFactor::OneMinusSrcAlpha);  // 6
+    EXPECT_EQ(fill.blend.colorOp, BlendOp::ReverseSubtract);        // 3
+    // No separate alpha blending: alpha blends like colour.
+    EXPECT_EQ(fill.blend.srcAlpha, BlendFactor::SrcAlpha);
+    EXPECT_EQ(fill.blend.dstAlpha, BlendFactor::OneMinusSrcAlpha);
+    EXPECT_EQ(fill.blend.alphaOp, BlendOp::ReverseSubtract);
+    ASSERT_EQ(fill.streams.size(), 3u);
+    EXPECT_EQ(fill.streams[2].usage, VertexUsage::Binormal);
+    EXPECT_EQ(fill.streams[2].usageIndex, 2);
+
+    const Pass& twice = ws.passes[1];
+    EXPECT_EQ(twice.raster.cull, CullFace::Back);  // D3DCULL_CW: clockwise faces culled,
+    EXPECT_TRUE(twice.raster.frontCounterClockwise);  // so counter-clockwise ones are the front
+    EXPECT_EQ(twice.blend.srcAlpha, BlendFactor::One);
+    EXPECT_EQ(twice.blend.dstAlpha, BlendFactor::Zero);
+    EXPECT_EQ(twice.blend.alphaOp, BlendOp::Max);
+    expectColor(twice.blend.constant, {0.0f, 1.0f, 0.0f, 1.0f});  // 0xFF00FF00
+    ASSERT_EQ(twice.samplers.size(), 1u);
+    const Sampler& s = twice.samplers[0];
+    EXPECT_EQ(s.uniform, "BufferSampler");
+    EXPECT_EQ(s.target, "Buffer");
+    EXPECT_EQ(s.wrapS, Wrap::Clamp);   // D3DTADDRESS_CLAMP 3
+    EXPECT_EQ(s.wrapT, Wrap::Border);  // 4
+    expectColor(s.border, {1.0f, 0.0f, 0.0f, 1.0f});  // 0xFFFF0000
+    EXPECT_EQ(s.filter, Filter::Nearest);
+    EXPECT_EQ(s.mipmap, MipmapMode::None);
+
+    std::string warnings = allWarnings("d3d_hlsl.rfx");
+    EXPECT_NE(warnings.find("d3d_hlsl.rfx:" + std::to_string(lineOf(rfxDir() / "d3d_hlsl.rfx", "NAME=\"Legacy\"")) +
+                            ": warning: <pass \"Legacy\">: disabled, and it could not run"),
+              std::string::npos)
+        << warnings;
+    int line = lineOf(rfxDir() / "d3d_hlsl.rfx", "<RmShader NAME=");
+    EXPECT_NE(warnings.find("d3d_hlsl.rfx:" + std::to_string(line) +
+                            ": warning: <RmShader NAME=\"Pixel Shader\">: an assembly shader"),
+              std::string::npos)
+        << warnings;
+    EXPECT_NE(warnings.find("D3DRS_DEPTHBIAS = 0.5 has no equivalent"), std::string::npos) << warnings;
+    EXPECT_NE(warnings.find("D3DRS_FILLMODE = 2 has no equivalent"), std::string::npos) << warnings;
+}
+
+TEST(RfxImporter, AssemblyShaderInAnEnabledPassIsAnError) {
+    std::string errors = errorsOf(glEffect(
+        "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n"
+        "<RmShader NAME=\"Asm\" PIXEL_SHADER=\"TRUE\"><RmShaderCode><![CDATA[ps.1.1]]></RmShaderCode></RmShader>\n"
+        "</RmGLPass>\n"));
+    EXPECT_NE(errors.find("t.rfx:5: warning: <RmShader NAME=\"Asm\">: an assembly shader"), std::string::npos) << errors;
+    EXPECT_NE(errors.find("t.rfx:4: error: <pass \"P\">: the effect cannot run: its pixel shader <RmShader NAME=\"Asm\"> "
+                          "(line 5) is assembly"),
+              std::string::npos)
+        << errors;
+}
+
+TEST(RfxImporter, BadInputsAreErrorsWithFileAndLine) {
+    auto pass = [](const std::string& inside) {
+        return glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n" + std::string(kFragment) + "\n" +
+                        inside + "</RmGLPass>\n");
+    };
+    EXPECT_NE(errorsOf(glEffect("<RmFloatVariable NAME=\"x\" VALUE=\"abc\"/>\n")).find(
+                  "t.rfx:4: error: <RmFloatVariable NAME=\"x\">: attribute VALUE: 'abc' is not a number"),
+              std::string::npos);
+    EXPECT_NE(errorsOf(glEffect("<RmRenderableTexture NAME=\"rt\" WIDTH=\"4\" HEIGHT=\"4\" FORMAT=\"999\"/>\n"))
+                  .find("t.rfx:4: error: <RmRenderableTexture NAME=\"rt\">: FORMAT 999 is not a Direct3D 9 format"),
+              std::string::npos);
+    EXPECT_NE(errorsOf(glEffect("<RmRenderableTexture NAME=\"rt\" WIDTH=\"0\" HEIGHT=\"4\" FORMAT=\"21\"/>\n"))
+                  .find("t.rfx:4: error: <RmRenderableTexture NAME=\"rt\">: attribute WIDTH: 0 is outside 1…16384"),
+              std::string::npos);
+    // A constant naming no variable is an error when a shader uses the name, else a warning.
+    std::string usedFragment = "<RmGLShader NAME=\"F\" PIXEL_SHADER=\"TRUE\"><RmShaderCode><![CDATA[uniform float Nope; "
+                               "void main() { gl_FragColor = vec4(Nope); }]]></RmShaderCode></RmGLShader>\n";
+    EXPECT_NE(errorsOf(glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n<RmShaderConstant NAME=\"Nope\"/>\n" +
+                                usedFragment + "</RmGLPass>\n"))
+                  .find("t.rfx:5: error: <RmShaderConstant NAME=\"Nope\">: no variable 'Nope' is visible from the pass"),
+              std::string::npos);
+    ParsedWorkspace unused = importRfxText(pass("<RmShaderConstant NAME=\"light0\"/>\n"), "t.rfx", ".");
+    EXPECT_TRUE(unused.workspace.has_value());
+    EXPECT_NE(formatAll(unused.diagnostics).find("t.rfx:6: warning: <RmShaderConstant NAME=\"light0\">: no variable 'light0' "
+                                                 "is visible from the pass (pass, effect, group or workspace); its shaders do not use it"),
+              std::string::npos) << formatAll(unused.diagnostics);
+    EXPECT_NE(errorsOf(pass("<RmTextureObject NAME=\"s\"><RmTextureReference NAME=\"missing\"/></RmTextureObject>\n"))
+                  .find("t.rfx:6: error: <RmTextureReference NAME=\"missing\">: no texture variable or renderable texture"),
+              std::string::npos);
+    EXPECT_NE(errorsOf(pass("<RmSampler NAME=\"s\"/>\n"))
+                  .find("t.rfx:6: error: <RmSampler NAME=\"s\">: sampler 's' has no <RmTextureObject NAME=\"s\">"),
+              std::string::npos);
+    EXPECT_NE(errorsOf(pass("<RmRenderStateBlock>\n<RmState NAME=\"GL_DepthFunction\" STATE=\"45\" VALUE=\"9\"/>\n</RmRenderStateBlock>\n"))
+                  .find("t.rfx:7: error: <RmState NAME=\"GL_DepthFunction\">: VALUE 9 is not a compare function (it takes 1, 2, 3, 4, 5, 6, 7, 8)"),
+              std::string::npos);
+    EXPECT_NE(errorsOf(pass("<RmRenderStateBlock>\n<RmState NAME=\"GL_CullMode\" STATE=\"8\" VALUE=\"x1\"/>\n</RmRenderStateBlock>\n"))
+                  .find("t.rfx:7: error: <RmState NAME=\"GL_CullMode\">: attribute VALUE: 'x1' is not a whole number"),
+              std::string::npos);
+    EXPECT_NE(errorsOf(pass("<RmRenderTarget NAME=\"nowhere\" RENDER_TO_SCREEN=\"FALSE\"/>\n"))
+                  .find("t.rfx:6: error: <RmRenderTarget NAME=\"nowhere\">: no <RmRenderableTexture NAME=\"nowhere\">"),
+              std::string::npos);
+    EXPECT_NE(errorsOf(pass("<RmModelReference NAME=\"Teapot\"/>\n"))
+                  .find("t.rfx:6: error: <RmModelReference NAME=\"Teapot\">: no <RmModelData NAME=\"Teapot\">"),
+              std::string::npos);
+    EXPECT_NE(errorsOf(glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"zero\" ENABLED=\"TRUE\">\n" + std::string(kFragment) + "\n</RmGLPass>\n"))
+                  .find("t.rfx:4: error: <RmGLPass NAME=\"P\">: attribute PASS_INDEX: 'zero' is not a whole number"),
+              std::string::npos);
+    EXPECT_NE(errorsOf(glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\"/>\n"))
+                  .find("t.rfx:4: error: <pass \"P\">: it has no shaders and no pass runs before it"),
+              std::string::npos);
+    EXPECT_NE(errorsOf(glEffect("<RmDynamicVariable NAME=\"d\" VARIABLE_TYPE=\"INTEGER\" ROWS=\"1\" COLUMNS=\"3\"/>\n"))
+                  .find("t.rfx:4: error: <RmDynamicVariable NAME=\"d\">: INTEGER 1x3 has no rmfx type"),
+              std::string::npos);
+    EXPECT_NE(errorsOf("<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\">\n<oops\n</RENDER_MONKEY>\n").find("t.rfx:3: error: malformed XML"),
+              std::string::npos);
+    EXPECT_NE(errorsOf("<workspace version=\"1\"/>\n").find("the root element must be <RENDER_MONKEY>, not <workspace>"),
+              std::string::npos);
+    EXPECT_NE(errorsOf(glEffect(""), "W.Missing").find("error: --effect W.Missing: no effect 'W.Missing'; it has: 'W.E' (OpenGL, active)"),
+              std::string::npos);
+    EXPECT_NE(errorsOf(glEffect("")).find("t.rfx:3: error: <RmOpenGLEffect NAME=\"E\">: the effect has no passes"), std::string::npos);
+}
+
+// Every prefix of the test files, and copies with bytes overwritten, must give diagnostics or a
+// workspace, never a crash (the fuzz target covers this at scale; this keeps it in the unit run).
+TEST(RfxImporter, TruncatedAndDamagedFilesNeverCrash) {
+    for (const char* name : {"gl_legacy.rfx", "gles.rfx", "d3d_hlsl.rfx"}) {
+        std::string text = test::readText(rfxDir() / name);
+        ASSERT_FALSE(text.empty());
+        for (size_t cut = 0; cut < text.size(); cut += 53) {
+            ParsedWorkspace p = importRfxText(text.substr(0, cut), "t.rfx", ".");
+            EXPECT_TRUE(p.workspace.has_value() || hasErrors(p.diagnostics)) << name << " cut at " << cut;
+        }
+        unsigned seed = 12345;
+        for (int round = 0; round < 300; ++round) {
+            std::string damaged = text;
+            for (int k = 0; k < 4; ++k) {
+                seed = seed * 1103515245u + 12345u;
+                size_t at = (seed >> 8) % damaged.size();
+                damaged[at] = "<>\"=&;]x9-. \n"[(seed >> 4) % 14];
+            }
+            ParsedWorkspace p = importRfxText(damaged, "t.rfx", ".");
+            EXPECT_TRUE(p.workspace.has_value() || hasErrors(p.diagnostics)) << name << " round " << round;
+        }
+    }
+}
+
+TEST(RfxImporter, DoctypeWithItsInternalSubsetKeepsLineNumbers) {
+    // gl_legacy.rfx opens with a DTD whose quoted '>' would end tinyxml2's DOCTYPE early.
+    Workspace ws = imported("gl_legacy.rfx");
+    EXPECT_EQ(ws.findVariable("Tint")->where.line, lineOf(rfxDir() / "gl_legacy.rfx", "NAME=\"Tint\""));
+}
+
+TEST(RfxImporter, LoaderDispatchesOnTheExtensionInAnyCase) {
+    std::filesystem::path dir = test::binaryDir() / "rfx-loader-test";
+    std::filesystem::create_directories(dir);
+    std::filesystem::copy_file(rfxDir() / "gles.rfx", dir / "Upper.RFX", std::filesystem::copy_options::overwrite_existing);
+    std::filesystem::copy_file(rfxDir() / "quad.obj", dir / "quad.obj", std::filesystem::copy_options::overwrite_existing);
+    ValidationOptions structureOnly;
+    structureOnly.compileShaders = false;
+    LoadedWorkspace loaded = loadWorkspace(dir / "Upper.RFX", structureOnly);
+    EXPECT_TRUE(loaded.workspace.has_value()) << formatAll(loaded.diagnostics);
+    LoadedWorkspace wrong = loadWorkspace(dir / "Upper.RFX", structureOnly, {"Nope"});
+    EXPECT_FALSE(wrong.workspace.has_value());
+    LoadedWorkspace xml = loadWorkspace(test::sourceDir() / "effects" / "shader_1.xml", structureOnly, {"Some.Effect"});
+    EXPECT_FALSE(xml.workspace.has_value());
+    EXPECT_NE(formatAll(xml.diagnostics).find("--effect chooses an effect of a RenderMonkey .rfx file"), std::string::npos);
+}
+
+TEST(RfxImporter, EditorSavesIntoAnRfxAreRefused) {
+    auto saved = saveVariableValues(rfxDir() / "gles.rfx", {{"Gain", Value::ofFloat(0.25f)}});
+    ASSERT_FALSE(saved.ok());
+    EXPECT_NE(saved.error().find("saving tweaked values into a RenderMonkey .rfx file is not supported"), std::string::npos);
+}
+
+TEST(RfxImporter, ListNamesEveryEffectWithItsApiAndActiveFlag) {
+    RfxEffectList list = listRfxEffects(rfxDir() / "gl_legacy.rfx");
+    ASSERT_EQ(list.effects.size(), 2u);
+    EXPECT_EQ(list.effects[0].path, "Tests.Group.Legacy");
+    EXPECT_EQ(list.effects[0].api, "OpenGL");
+    EXPECT_TRUE(list.effects[0].active);
+    EXPECT_EQ(list.effects[1].path, "Tests.Group.Other");
+    EXPECT_FALSE(list.effects[1].active);
+}
+
+}  // namespace
+}  // namespace rmfx

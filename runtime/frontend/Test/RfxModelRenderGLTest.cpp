@@ -1,0 +1,293 @@
+// RenderMonkey effects that draw a model, rendered headless and compared pixel by pixel with a
+// float64 ray cast of the same model (tests/reference/MeshRayCast.h): the camera, the
+// fixed-function matrices and light, the vertex streams, depth testing, samplers and the effect's
+// own maths, each worked out here from the file's values and docs/rendermonkey.md's defaults.
+//
+// RfxModelRenderGLTest runs tests/rfx/lit_teapot.rfx (written for it). PublicRfxGLTest runs public
+// RenderMonkey files that cannot be kept in this repository: set RMFX_PUBLIC_RFX_DIR to a folder
+// holding them (docs/rendermonkey.md says where they come from); without it those tests are skipped.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/common.hpp>
+#include <glm/mat3x3.hpp>
+#include <gtest/gtest.h>
+
+#include "io/image/ImageIO.h"
+#include "io/mesh/BuiltinMeshes.h"
+#include "reference/CameraRays.h"
+#include "reference/RayCastImage.h"
+#include "tests/support/GlTestSupport.h"
+#include "tests/support/TestSupport.h"
+#include "validation/WorkspaceLoader.h"
+
+namespace rmfx::test {
+namespace {
+
+constexpr double kUnorm8Step = 1.0 / 255.0;
+
+// docs/rendermonkey.md: light 0 is directional from the camera, position (0, 0, 1, 0) in eye space,
+// diffuse (1, 1, 1); the front material's diffuse is (0.8, 0.8, 0.8); gl_Color is white.
+const glm::dvec3 kLightPositionEye(0.0, 0.0, 1.0);
+const glm::dvec3 kLightDiffuse(1.0);
+const glm::dvec3 kMaterialDiffuse(0.8);
+
+std::unique_ptr<Workspace> loadRfxWithMedia(const std::filesystem::path& file, const std::filesystem::path& media) {
+    ValidationOptions options;
+    options.media.searchPath = {media};
+    LoadedWorkspace loaded = loadWorkspace(file, options);
+    if (!loaded.workspace) {
+        ADD_FAILURE() << formatAll(loaded.diagnostics);
+        return nullptr;
+    }
+    EXPECT_EQ(loaded.workspace->profile, GlProfile::Compatibility) << file;
+    return std::make_unique<Workspace>(std::move(*loaded.workspace));
+}
+
+// An 8-bit image file whose texel (i, j) (j from the bottom) is texel(i, j) / 255; returned as the
+// float64 image the texture holds.
+RefImage writeTexture(const std::filesystem::path& file, int width, int height,
+                      const std::function<glm::ivec4(int i, int j)>& texel) {
+    Image image;
+    image.width = width, image.height = height, image.channels = 4;
+    image.pixels.resize(size_t(width) * height * 4);
+    RefImage held(width, height);
+    for (int j = 0; j < height; ++j)
+        for (int i = 0; i < width; ++i) {
+            glm::ivec4 v = texel(i, j);
+            for (int c = 0; c < 4; ++c) image.at(i, height - 1 - j, c) = float(v[c] / 255.0);
+            held.at(i, j) = glm::dvec4(v) / 255.0;
+        }
+    auto written = writeImage(file, image);
+    EXPECT_TRUE(written) << (written ? "" : written.error());
+    return held;
+}
+
+// A sphere about the origin, counter-clockwise seen from outside, its texture coordinates spread
+// over [uvMin, uvMax] (u around from −z, v from the south pole up): the seam where u jumps back
+// faces −z, away from a camera on the +z side (rmfx's default camera is).
+Mesh uvSphere(double radius, int segments, int rings, glm::dvec2 uvMin, glm::dvec2 uvMax) {
+    Mesh mesh;
+    for (int r = 0; r <= rings; ++r)
+        for (int s = 0; s <= segments; ++s) {
+            const double u = double(s) / segments, v = double(r) / rings;
+            const double phi = 2.0 * std::numbers::pi * u + std::numbers::pi, theta = std::numbers::pi * (1.0 - v);
+            const glm::dvec3 n(std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi));
+            mesh.positions.emplace_back(n * radius);
+            mesh.normals.emplace_back(n);
+            mesh.texcoords.emplace_back(uvMin + (uvMax - uvMin) * glm::dvec2(u, v));
+        }
+    auto index = [&](int r, int s) { return static_cast<uint32_t>(r * (segments + 1) + s); };
+    for (int r = 0; r < rings; ++r)
+        for (int s = 0; s < segments; ++s) {
+            const uint32_t a = index(r, s), b = index(r, s + 1), c = index(r + 1, s + 1), d = index(r + 1, s);
+            if (r > 0) mesh.indices.insert(mesh.indices.end(), {a, b, c});
+            if (r < rings - 1) mesh.indices.insert(mesh.indices.end(), {a, c, d});
+        }
+    return mesh;
+}
+
+// The mesh as a Wavefront OBJ file, with %.9g so that the floats read back exactly.
+void writeObj(const std::filesystem::path& file, const Mesh& mesh) {
+    std::FILE* out = std::fopen(file.c_str(), "w");
+    ASSERT_TRUE(out) << file;
+    for (const auto& p : mesh.positions) std::fprintf(out, "v %.9g %.9g %.9g\n", p.x, p.y, p.z);
+    for (const auto& t : mesh.texcoords) std::fprintf(out, "vt %.9g %.9g\n", t.x, t.y);
+    for (const auto& n : mesh.normals) std::fprintf(out, "vn %.9g %.9g %.9g\n", n.x, n.y, n.z);
+    for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+        std::fprintf(out, "f");
+        for (int k = 0; k < 3; ++k) std::fprintf(out, " %u/%u/%u", mesh.indices[i + k] + 1, mesh.indices[i + k] + 1, mesh.indices[i + k] + 1);
+        std::fprintf(out, "\n");
+    }
+    std::fclose(out);
+}
+
+glm::dmat3 normalMatrix(const glm::dmat4& modelView) { return glm::transpose(glm::inverse(glm::dmat3(modelView))); }
+
+// The range of `shade(texel)` when the texel filtered from an 8-bit texture comes back rounded to
+// 8 bits, as a GPU may (llvmpipe filters 8-bit textures in 8-bit fixed point): every rgb channel
+// of the texel one step down, unchanged or one step up; each result clamped to [0, 1] as the
+// 8-bit output keeps it.
+ExpectedRange overTexelRounding(glm::dvec4 texel, const std::function<glm::dvec4(glm::dvec4)>& shade) {
+    ExpectedRange range(glm::dvec4(std::numeric_limits<double>::infinity()),
+                        glm::dvec4(-std::numeric_limits<double>::infinity()));
+    for (int dr = -1; dr <= 1; ++dr)
+        for (int dg = -1; dg <= 1; ++dg)
+            for (int db = -1; db <= 1; ++db) {
+                glm::dvec4 v = shade(texel + glm::dvec4(dr, dg, db, 0) * kUnorm8Step);
+                v = glm::clamp(v, 0.0, 1.0);
+                range.lower = glm::min(range.lower, v);
+                range.upper = glm::max(range.upper, v);
+            }
+    return range;
+}
+
+// Renders a model effect at the cast's size and compares it with the cast shaded by `shade`, on
+// the clear colour, opaque black.
+struct ModelCheck {
+    const MeshRayCast& cast;
+    SurfaceShading shade;
+    int minComparedPixels;
+    SurfaceFilter comparable = {};
+};
+
+void renderAndCompare(std::unique_ptr<Workspace> ws, const ModelCheck& check) {
+    ASSERT_TRUE(ws);
+    GlRun run = runWorkspace(std::move(ws), RunSettings{check.cast.size()});
+    ASSERT_TRUE(run.exec);
+    RefImage image = readRef(run, run.ws->outputTargetName());
+    RayCastImage reference = rayCastImage(check.cast, check.shade, glm::dvec4(0.0, 0.0, 0.0, 1.0), check.comparable);
+    EXPECT_GE(reference.comparedSurfacePixels, check.minComparedPixels)
+        << "too few pixels of the model to compare (" << reference.surfacePixels << " on the surface)";
+    // Half a step of the 8-bit output's rounding, and float arithmetic on the GPU.
+    const double tolerance = 0.5 * kUnorm8Step + 1e-4;
+    RayCastDifference d = worstExcess(image, reference);
+    expectWithin("max distance outside the float64 ray cast's range", d.worst, tolerance);
+    if (d.worst > tolerance) ADD_FAILURE() << d.describe(image, reference);
+}
+
+class RfxModelRenderGLTest : public CompatibilityGlTest {};
+
+TEST_F(RfxModelRenderGLTest, LitTeapotMatchesAFloat64RayCastOfTheModel) {
+    ScratchDir media;
+    // Ramp.png, 128 x 1: r = 2i, g = 254 - 2i, b = 60.
+    RefImage ramp = writeTexture(media / "Ramp.png", 128, 1, [](int i, int) { return glm::ivec4(2 * i, 254 - 2 * i, 60, 255); });
+    auto ws = loadRfxWithMedia(sourceDir() / "tests" / "rfx" / "lit_teapot.rfx", media.path());
+    ASSERT_TRUE(ws);
+
+    // The RmCamera "Side": position, look-at and up as given, FOV 50° (vertical), clip planes 0.1 and 20.
+    const int size = 128;
+    const glm::dmat4 view = glm::lookAt(glm::dvec3(1.6, 1.0, 2.0), glm::dvec3(0.0, 0.3, 0.0), glm::dvec3(0, 1, 0));
+    const glm::dmat4 projection = glm::perspective(50.0 * std::numbers::pi / 180.0, 1.0, 0.1, 20.0);
+    const glm::dmat3 normals = normalMatrix(view);
+    const glm::dvec3 paint(0.9, 0.6, 0.3);
+    const double rimPower = 3.0;
+    const Mesh teapot = makeMesh(BuiltinMesh::Teapot);  // the stand-in for the missing Teapot.3ds
+
+    auto shade = [&](const SurfaceHit& hit) {
+        const glm::dvec3 n = glm::normalize(normals * hit.normal);
+        const glm::dvec3 toEye = glm::normalize(-glm::dvec3(view * glm::dvec4(hit.position, 1.0)));
+        const glm::dvec3 toLight = glm::normalize(kLightPositionEye);
+        const double diffuse = std::max(glm::dot(n, toLight), 0.0);
+        const double rim = std::pow(1.0 - std::abs(glm::dot(n, toEye)), rimPower);
+        const glm::dvec4 band = sampleBilinear(ramp, {diffuse, 0.5});  // GL_LINEAR, clamp to edge
+        return overTexelRounding(band, [&](glm::dvec4 texel) {
+            return glm::dvec4(glm::dvec3(texel) * paint * kMaterialDiffuse * kLightDiffuse + glm::dvec3(0.25 * rim), 1.0);
+        });
+    };
+    const MeshRayCast cast(teapot, glm::dmat4(1.0), view, projection, {size, size});
+    renderAndCompare(std::move(ws), {cast, shade, 2000});
+}
+
+// Public RenderMonkey files, from RMFX_PUBLIC_RFX_DIR; the test is skipped without it.
+class PublicRfxGLTest : public CompatibilityGlTest {
+protected:
+    std::filesystem::path publicFile(const std::string& name) {
+        const char* folder = std::getenv("RMFX_PUBLIC_RFX_DIR");
+        if (!folder || !*folder) return {};
+        std::filesystem::path file = std::filesystem::path(folder) / name;
+        return std::filesystem::is_regular_file(file) ? file : std::filesystem::path();
+    }
+};
+
+// MeshLab's shaders/cartoon.rfx ("NPR Metallic Cartoon"): no RmCamera, so rmfx's default camera;
+// the stock Teapot.3ds drawn as rmfx's teapot; the outline texture replaced by a ramp. Its shader:
+// outline = texture2D(Outline, (1 − n·v, 0.5)), lighting = max(0, L·n · 0.5 + 0.5),
+// colour = outline × lighting × Material, alpha lighting × Material.a.
+TEST_F(PublicRfxGLTest, MeshLabCartoonShadesTheTeapotAsItsShaderSays) {
+    const std::filesystem::path file = publicFile("cartoon.rfx");
+    if (file.empty()) GTEST_SKIP() << "set RMFX_PUBLIC_RFX_DIR to a folder holding MeshLab's cartoon.rfx";
+    ScratchDir media;
+    RefImage ramp = writeTexture(media / "NPR Metallic Outline.tga", 128, 1,
+                                 [](int i, int) { return glm::ivec4(2 * i, 254 - 2 * i, 60, 255); });
+    auto ws = loadRfxWithMedia(file, media.path());
+    ASSERT_TRUE(ws);
+    const int size = 256;
+    const CameraRays camera(ws->camera, size, size);
+    const glm::dmat4 view = camera.view();
+    const glm::dmat3 normals = normalMatrix(view);
+    const glm::dvec4 material(0.260816, 0.666667, 0.274381, 1.0);  // RmColorVariable "Material"
+    const Mesh teapot = makeMesh(BuiltinMesh::Teapot);
+    auto outlineCoordinate = [&](const SurfaceHit& hit) {
+        const glm::dvec3 n = glm::normalize(normals * hit.normal);
+        const glm::dvec3 toEye = glm::normalize(-glm::dvec3(view * glm::dvec4(hit.position, 1.0)));
+        return 1.0 - glm::dot(n, toEye);
+    };
+    auto shade = [&](const SurfaceHit& hit) {
+        const glm::dvec3 n = glm::normalize(normals * hit.normal);
+        const double lighting = std::max(0.0, glm::dot(kLightPositionEye, n) * 0.5 + 0.5);
+        // The sampler clamps to the edge and, with no filter state, filters trilinearly across the
+        // texture's mipmaps; every level of a linear ramp is the same ramp away from its ends.
+        const glm::dvec4 outline = sampleBilinear(ramp, {outlineCoordinate(hit), 0.5});
+        return overTexelRounding(outline, [&](glm::dvec4 texel) {
+            return glm::dvec4(glm::dvec3(texel), 1.0) * lighting * material;
+        });
+    };
+    // Pixels where the GPU may read a coarse mipmap level whose ends differ from the ramp are left
+    // out: the coordinate within 0.1 of an end, or changing by more than 1/8 (16 texels) from a
+    // neighbouring pixel (as far as neighbours on the same surface show; without one, left out).
+    const MeshRayCast cast(teapot, glm::dmat4(1.0), view, camera.projection(), {size, size});
+    auto onTheRampAtAFineLevel = [&](const SurfaceHit& hit, int i, int j) {
+        const double s = outlineCoordinate(hit);
+        if (!(s > 0.1 && s < 0.9)) return false;
+        for (glm::ivec2 step : {glm::ivec2(1, 0), glm::ivec2(-1, 0), glm::ivec2(0, 1), glm::ivec2(0, -1)}) {
+            const auto next = cast.at(i + step.x + 0.5, j + step.y + 0.5);
+            if (!next || std::abs(next->depth - hit.depth) > 0.02 * hit.depth) return false;
+            if (std::abs(outlineCoordinate(*next) - s) > 1.0 / 8.0) return false;
+        }
+        return true;
+    };
+    renderAndCompare(std::move(ws), {cast, shade, 1000, onTheRampAtAFineLevel});
+}
+
+// MeshLab's shaders/NormalMapping.rfx: model laurana500.obj and texture TEXTURE0.PNG, both replaced
+// by stand-ins written here (a sphere whose texture coordinates stay within 0.25…0.75, and a
+// smooth normal map). Its shader: p = normalize(texel.rgb − 0.5), N = normalize(gl_NormalMatrix p),
+// diffuse = clamp(L·N), specular = clamp(reflect(V, N)·(−L))^Ke,
+// colour = (Kd · diffuse + Ks · specular) · gl_Color, on every channel alpha included.
+TEST_F(PublicRfxGLTest, MeshLabNormalMappingLightsItsModelAsItsShaderSays) {
+    const std::filesystem::path file = publicFile("NormalMapping.rfx");
+    if (file.empty()) GTEST_SKIP() << "set RMFX_PUBLIC_RFX_DIR to a folder holding MeshLab's NormalMapping.rfx";
+    ScratchDir media;
+    RefImage bump = writeTexture(media / "TEXTURE0.PNG", 64, 64,
+                                 [](int i, int j) { return glm::ivec4(64 + 2 * i, 80 + 2 * j, 230, 255); });
+    const Mesh sphere = uvSphere(1.2, 48, 24, {0.25, 0.25}, {0.75, 0.75});
+    writeObj(media / "laurana500.obj", sphere);
+    auto ws = loadRfxWithMedia(file, media.path());
+    ASSERT_TRUE(ws);
+    const int size = 256;
+    const CameraRays camera(ws->camera, size, size);
+    const glm::dmat4 view = camera.view();
+    const glm::dmat3 normals = normalMatrix(view);
+    const double kd = 0.7, ks = 0.4, ke = 35.84;  // RmFloatVariables Kd, Ks, Ke
+    auto shade = [&](const SurfaceHit& hit) {
+        const glm::dvec3 toEye = glm::normalize(-glm::dvec3(view * glm::dvec4(hit.position, 1.0)));
+        const glm::dvec3 toLight = glm::normalize(kLightPositionEye);
+        // Default sampler: repeat, trilinear; the coordinates stay far from the texture's edges and
+        // every mipmap level of this ramp (steps of 2) is the same ramp exactly.
+        return overTexelRounding(sampleBilinear(bump, hit.texcoord), [&](glm::dvec4 texel) {
+            const glm::dvec3 perturbed = glm::normalize(glm::dvec3(texel) - 0.5);
+            const glm::dvec3 n = glm::normalize(normals * perturbed);
+            const double diffuse = std::clamp(glm::dot(toLight, n), 0.0, 1.0);
+            const glm::dvec3 reflected = toEye - 2.0 * glm::dot(n, toEye) * n;
+            const double specular = std::pow(std::clamp(glm::dot(reflected, -toLight), 0.0, 1.0), ke);
+            return glm::dvec4(kd * diffuse + ks * specular);  // × gl_Color, white
+        });
+    };
+    const MeshRayCast cast(sphere, glm::dmat4(1.0), view, camera.projection(), {size, size});
+    renderAndCompare(std::move(ws), {cast, shade, 10000});
+}
+
+}  // namespace
+}  // namespace rmfx::test

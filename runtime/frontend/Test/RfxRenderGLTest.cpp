@@ -1,0 +1,119 @@
+// The test .rfx files (tests/rfx/, written for these tests) imported through loadWorkspace and
+// rendered headless, end to end: importer, media resolution, contexts, dialects, streams, states
+// and HLSL. Each expectation is the effect's maths worked out here from the values in the file.
+
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include "tests/support/GlTestSupport.h"
+#include "tests/support/TestSupport.h"
+#include "validation/WorkspaceLoader.h"
+
+namespace rmfx::test {
+namespace {
+
+constexpr int kSize = 16;
+
+std::unique_ptr<Workspace> loadRfx(const std::string& name, GlProfile expectedProfile) {
+    LoadedWorkspace loaded = loadWorkspace(sourceDir() / "tests" / "rfx" / name);
+    if (!loaded.workspace) {
+        ADD_FAILURE() << formatAll(loaded.diagnostics);
+        return nullptr;
+    }
+    EXPECT_EQ(loaded.workspace->profile, expectedProfile) << name;
+    return std::make_unique<Workspace>(std::move(*loaded.workspace));
+}
+
+constexpr double kOutputRounding = 0.5 / 255.0;
+
+// Every pixel of the output equals `expected` (rgb) with alpha 1, within `tolerance` (by default
+// the 8-bit output's rounding).
+void expectUniformOutput(const GlRun& run, std::array<double, 3> expected, double tolerance = kOutputRounding) {
+    ASSERT_TRUE(run.exec);
+    Image image = readBack(*run.exec, run.ws->outputTargetName());
+    ASSERT_EQ(image.width, kSize);
+    ASSERT_EQ(image.height, kSize);
+    double worst = 0.0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(image.at(x, y, c) - expected[c]));
+            worst = std::max(worst, std::abs(image.at(x, y, 3) - 1.0));
+        }
+    expectWithin("max abs error against the effect's maths", worst, tolerance + 1e-6);
+}
+
+class RfxLegacyRenderGLTest : public CompatibilityGlTest {};
+class RfxCoreRenderGLTest : public GlTest {};
+
+TEST_F(RfxLegacyRenderGLTest, TwoLegacyPassesInPassIndexOrderThroughARenderableTexture) {
+    auto ws = loadRfx("gl_legacy.rfx", GlProfile::Compatibility);
+    ASSERT_TRUE(ws);
+    // Pass "Tint" (PASS_INDEX 0): Tint.rgb × Scale, with the group's Scale (0.5) shadowing the
+    // workspace's (0.75). Pass "Show" (PASS_INDEX 1): Scene × 2 + Offset.xyz.
+    const std::array<double, 3> tint{0.2, 0.4, 0.6}, offset{0.25, 0.125, 0.0};
+    const double scale = 0.5;
+    std::array<double, 3> expected{};
+    for (int c = 0; c < 3; ++c) expected[c] = tint[c] * scale * 2.0 + offset[c];
+    expectUniformOutput(runWorkspace(std::move(ws), RunSettings{{kSize, kSize}}), expected);
+}
+
+TEST_F(RfxLegacyRenderGLTest, RenderStatesCarryOverToThePassesAfterThem) {
+    auto ws = loadRfx("shells.rfx", GlProfile::Compatibility);
+    ASSERT_TRUE(ws);
+    // "Base" writes Base; "Shell 1" adds Layer with the ONE, ONE blending of its block; the
+    // disabled "Reset" changes nothing; "Shell 2" and "Shell 3" add Layer with Shell 1's state.
+    const std::array<double, 3> base{0.1, 0.2, 0.3}, layer{0.2, 0.1, 0.05};
+    std::array<double, 3> expected{};
+    for (int c = 0; c < 3; ++c) expected[c] = std::min(1.0, base[c] + 3.0 * layer[c]);
+    // Each of the four passes leaves its result in the 8-bit output, rounded by up to half a step.
+    expectUniformOutput(runWorkspace(std::move(ws), RunSettings{{kSize, kSize}}), expected, 4 * kOutputRounding);
+}
+
+TEST_F(RfxCoreRenderGLTest, GlslEsPassWithStreamedAttributesBlendsOntoItsClearColour) {
+    auto ws = loadRfx("gles.rfx", GlProfile::Core);
+    ASSERT_TRUE(ws);
+    // Base × Gain added (ONE, ONE) onto the clear colour 0xFF202020 (0x20 / 255 per channel).
+    const std::array<double, 3> base{0.5, 0.25, 1.0};
+    const double gain = 0.5, clear = 0x20 / 255.0;
+    std::array<double, 3> expected{};
+    for (int c = 0; c < 3; ++c) expected[c] = std::min(1.0, base[c] * gain + clear);
+    expectUniformOutput(runWorkspace(std::move(ws), RunSettings{{kSize, kSize}}), expected);
+}
+
+TEST_F(RfxCoreRenderGLTest, Direct3DHlslPassesRunThroughGlslang) {
+    auto ws = loadRfx("d3d_hlsl.rfx", GlProfile::Core);
+    ASSERT_TRUE(ws);
+    // Pass "Fill": Color.rgb × Gain into a float texture; pass "Double" samples it × 2.
+    const std::array<double, 3> color{0.8, 0.4, 0.2};
+    const double gain = 0.5;
+    std::array<double, 3> expected{};
+    for (int c = 0; c < 3; ++c) expected[c] = color[c] * gain * 2.0;
+    expectUniformOutput(runWorkspace(std::move(ws), RunSettings{{kSize, kSize}}), expected);
+}
+
+TEST_F(RfxCoreRenderGLTest, Direct3DStreamsInitialValuesAndCbuffersReachTheShaders) {
+    auto ws = loadRfx("d3d_streams.rfx", GlProfile::Core);
+    ASSERT_TRUE(ws);
+    GlRun run = runWorkspace(std::move(ws), RunSettings{{kSize, kSize}});
+    ASSERT_TRUE(run.exec);
+    Image image = readBack(*run.exec, run.ws->outputTargetName());
+    ASSERT_EQ(image.width, kSize);
+    // |tangent| (1, 0, 0) × Scale (the variable's 0.25, not the HLSL 2.0) × 0.5, plus Bias (its
+    // HLSL initial value: no constant binds it) and Offset (a cbuffer member) (0.5, 0.125, 0);
+    // TEXCOORD1 (the quad's coordinates, 0…1 across the screen): v/2 into blue, u into alpha.
+    double worst = 0.0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const double u = (x + 0.5) / kSize, v = (y + 0.5) / kSize;
+            const double expected[4] = {0.25 * 0.5 + 0.125 + 0.5, 0.25 + 0.125, 0.5 * v, u};
+            for (int c = 0; c < 4; ++c) worst = std::max(worst, std::abs(atGl(image, x, y, c) - expected[c]));
+        }
+    expectWithin("max abs error against the effect's maths", worst, kOutputRounding + 1e-6);
+}
+
+}  // namespace
+}  // namespace rmfx::test

@@ -1,0 +1,209 @@
+#include "frontend/rfx/RfxImporter.h"
+
+#include <algorithm>
+#include <string_view>
+
+#include "frontend/rfx/detail/RfxCamera.h"
+#include "frontend/rfx/detail/RfxDoctype.h"
+#include "frontend/rfx/detail/RfxEffectCatalogue.h"
+#include "frontend/rfx/detail/RfxPassReader.h"
+#include "frontend/rfx/detail/RfxRenderStates.h"
+#include "io/xml/XmlElementReader.h"
+
+namespace rmfx {
+namespace {
+
+using namespace rfx;
+using tinyxml2::XMLElement;
+
+bool isPassTag(std::string_view tag) { return tag == "RmGLPass" || tag == "RmGLESPass" || tag == "RmPass"; }
+bool isEffectTag(std::string_view tag) {
+    return tag == "RmOpenGLEffect" || tag == "RmOpenGLESEffect" || tag == "RmDirectXEffect" || tag == "RmEffectGroup";
+}
+
+// The declarations directly under one level (workspace, group or effect); passes, effects and
+// editor state are the caller's or nobody's.
+Declarations readLevel(const XMLElement* level, const std::string& file, Diagnostics& diagnostics) {
+    Declarations d;
+    for (const XMLElement* x = level->FirstChildElement(); x; x = x->NextSiblingElement()) {
+        std::string_view tag = x->Name();
+        if (isPassTag(tag) || isEffectTag(tag) || tag == "RmRegistryBranch" || tag == "RmPlugInData" ||
+            tag == "RmCamera")
+            continue;
+        RfxElement e(x, file, diagnostics);
+        if (!readDeclaration(e, d)) e.warning("rmfx does not know <" + std::string(tag) + "> here; ignored");
+    }
+    return d;
+}
+
+// Innermost first: a name declared at several levels is the innermost one's.
+template <class T>
+void addVisible(std::vector<T>& into, const std::vector<T>& from) {
+    for (const T& item : from)
+        if (std::none_of(into.begin(), into.end(), [&](const T& x) { return x.name == item.name; })) into.push_back(item);
+}
+
+void readCamera(const RfxEffectEntry& effect, const std::string& file, Diagnostics& diagnostics, Workspace& ws) {
+    RfxElement e(effect.element, file, diagnostics);
+    std::string active = e.text("ACTIVE_CAMERA", false).value_or("");
+    const XMLElement* chosen = nullptr;
+    for (const XMLElement* c = effect.element->FirstChildElement("RmCamera"); c; c = c->NextSiblingElement("RmCamera"))
+        if (!chosen || RfxElement(c, file, diagnostics).name() == active) chosen = c;
+    const std::string chosenName = chosen ? RfxElement(chosen, file, diagnostics).name() : "";
+    if (!active.empty() && chosenName != active)
+        e.warning("ACTIVE_CAMERA '" + active + "' names no <RmCamera> of the effect; " +
+                  (chosen ? "using the first one, '" + chosenName + "'" : "rmfx's default camera is used"));
+    if (chosen) ws.camera = orbitFromRmCamera(RfxElement(chosen, file, diagnostics));
+}
+
+ParsedWorkspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path& path,
+                             const std::filesystem::path& folder, Diagnostics diagnostics) {
+    const std::string file = path.string();
+    ParsedWorkspace out;
+    Workspace ws;
+    ws.path = path;
+    ws.folder = folder;
+    ws.name = effect.path;
+    ws.description = std::string("RenderMonkey ") + rfxApiName(effect.api) + " effect '" + effect.path + "'";
+    // RenderMonkey shows what shaders write, unconverted, in an 8-bit back buffer.
+    ws.output.format = TargetFormat::RGBA8;
+    ws.output.transform = DisplayTransform::None;
+    ws.output.where = {file, effect.element->GetLineNum()};
+    ws.profile = effect.api == RfxApi::OpenGL ? GlProfile::Compatibility : GlProfile::Core;
+
+    Declarations effectLevel = readLevel(effect.element, file, diagnostics);
+    Declarations groupLevel = effect.group ? readLevel(effect.group, file, diagnostics) : Declarations{};
+    Declarations workspaceLevel = readLevel(effect.workspace, file, diagnostics);
+    VisibleScopes scopes;
+    scopes.levels = {&effectLevel};
+    if (effect.group) scopes.levels.push_back(&groupLevel);
+    scopes.levels.push_back(&workspaceLevel);
+    for (const Declarations* level : scopes.levels) {
+        addVisible(ws.variables, level->variables);
+        addVisible(ws.textures, level->textures);
+        addVisible(ws.targets, level->targets);
+    }
+    readCamera(effect, file, diagnostics, ws);
+
+    std::vector<ReadPass> passes;
+    for (const XMLElement* x = effect.element->FirstChildElement(); x; x = x->NextSiblingElement())
+        if (isPassTag(x->Name())) {
+            RfxElement e(x, file, diagnostics);
+            std::string_view expected = effect.api == RfxApi::OpenGL ? "RmGLPass" : effect.api == RfxApi::OpenGLES ? "RmGLESPass" : "RmPass";
+            if (expected != x->Name()) {
+                e.error("a " + std::string(rfxApiName(effect.api)) + " effect takes <" + std::string(expected) + "> passes");
+                continue;
+            }
+            if (auto p = readPass(e, effect.api, scopes)) passes.push_back(std::move(*p));
+        }
+    std::stable_sort(passes.begin(), passes.end(), [](const ReadPass& a, const ReadPass& b) { return a.index < b.index; });
+    const Pass* previous = nullptr;
+    // Render states carry over in run order from the last pass that runs (RenderMonkey set them on
+    // the device and left them there: fur.rfx sets blending in its first shell pass only, for all
+    // fifteen). The first pass starts from RenderMonkey's frame state.
+    Pass carried;
+    rfx::setRenderMonkeyDefaults(carried);
+    bool carriedSeparateAlpha = false;
+    for (ReadPass& p : passes) {
+        p.pass.blend = carried.blend;
+        p.pass.depth = carried.depth;
+        p.pass.raster = carried.raster;
+        bool separateAlpha = carriedSeparateAlpha;
+        for (const XMLElement* block : p.stateBlocks)
+            rfx::applyRenderStateBlock(RfxElement(block, file, diagnostics), effect.api, p.pass, separateAlpha);
+        if (p.pass.enabled && p.runnable) {
+            carried.blend = p.pass.blend;
+            carried.depth = p.pass.depth;
+            carried.raster = p.pass.raster;
+            carriedSeparateAlpha = separateAlpha;
+        }
+        if (effect.api == RfxApi::Direct3D) rfx::finishD3dRenderStates(p.pass, separateAlpha);
+        if (p.pass.shaders.empty() && p.runnable) {
+            if (previous) {
+                // The program comes with what it reads: samplers and streams, unless the pass
+                // names its own.
+                p.pass.shaders = previous->shaders;
+                if (p.pass.samplers.empty()) p.pass.samplers = previous->samplers;
+                if (p.pass.streams.empty()) p.pass.streams = previous->streams;
+            } else {
+                diagnostics.push_back({Diagnostic::Severity::Error, p.pass.where, "<pass \"" + p.pass.name + "\">",
+                                       "it has no shaders and no pass runs before it to lend its program"});
+            }
+        }
+        if (!p.runnable && p.pass.enabled)
+            diagnostics.push_back({Diagnostic::Severity::Error, p.pass.where, "<pass \"" + p.pass.name + "\">",
+                                   "the effect cannot run: " + p.whyNotRunnable + " (disable the pass to run the rest)"});
+        if (!p.runnable && !p.pass.enabled) {
+            diagnostics.push_back({Diagnostic::Severity::Warning, p.pass.where, "<pass \"" + p.pass.name + "\">",
+                                   "disabled, and it could not run: " + p.whyNotRunnable + "; left out of the workspace"});
+            continue;
+        }
+        ws.passes.push_back(std::move(p.pass));
+        previous = &ws.passes.back();
+    }
+    // RenderMonkey clears its back buffer (colour and depth) before every frame: the first pass
+    // that draws to the output clears what it does not clear itself, to opaque black and depth 1.
+    for (Pass& pass : ws.passes) {
+        if (!pass.enabled || !pass.target.empty()) continue;
+        if (!pass.clear.color) pass.clear.color = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        if (!pass.clear.depth) pass.clear.depth = 1.0f;
+        break;
+    }
+    // Texture variables no pass samples are left out: RenderMonkey files keep textures of other
+    // effects at the workspace level, and their missing media must not stop this effect.
+    std::erase_if(ws.textures, [&](const Texture& t) {
+        return std::none_of(ws.passes.begin(), ws.passes.end(), [&](const Pass& p) {
+            return std::any_of(p.samplers.begin(), p.samplers.end(), [&](const Sampler& s) { return s.texture == t.name; });
+        });
+    });
+    if (ws.passes.empty())
+        diagnostics.push_back({Diagnostic::Severity::Error, {file, effect.element->GetLineNum()}, "<" + std::string(effect.element->Name()) + " NAME=\"" + effect.name + "\">",
+                               "the effect has no passes"});
+    out.diagnostics = std::move(diagnostics);
+    if (!hasErrors(out.diagnostics)) out.workspace = std::move(ws);
+    return out;
+}
+
+}  // namespace
+
+bool isRfxPath(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext == ".rfx";
+}
+
+ParsedWorkspace importRfxText(const std::string& text, const std::filesystem::path& path,
+                              const std::filesystem::path& folder, const RfxImportOptions& options) {
+    ParsedWorkspace out;
+    const std::string file = path.string();
+    tinyxml2::XMLDocument doc;
+    const XMLElement* root = xml::parseDocument(doc, blankDoctype(text), file, "RENDER_MONKEY", out.diagnostics);
+    if (!root) return out;
+    RfxCatalogue catalogue = readCatalogue(root, file, out.diagnostics);
+    const RfxEffectEntry* effect = chooseEffect(catalogue, options.effect, file, out.diagnostics);
+    if (!effect || hasErrors(out.diagnostics)) return out;
+    return importEffect(*effect, path, folder, std::move(out.diagnostics));
+}
+
+ParsedWorkspace importRfxFile(const std::filesystem::path& path, const RfxImportOptions& options) {
+    ParsedWorkspace out;
+    auto text = xml::readTextFile(path, out.diagnostics);
+    if (!text) return out;
+    std::filesystem::path folder = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
+    return importRfxText(*text, path, folder, options);
+}
+
+RfxEffectList listRfxEffects(const std::filesystem::path& path) {
+    RfxEffectList out;
+    auto text = xml::readTextFile(path, out.diagnostics);
+    if (!text) return out;
+    tinyxml2::XMLDocument doc;
+    const XMLElement* root = xml::parseDocument(doc, blankDoctype(*text), path.string(), "RENDER_MONKEY", out.diagnostics);
+    if (!root) return out;
+    RfxCatalogue catalogue = readCatalogue(root, path.string(), out.diagnostics);
+    for (const RfxEffectEntry& e : catalogue.effects)
+        out.effects.push_back({e.path, rfxApiName(e.api), e.active, e.element->GetLineNum()});
+    return out;
+}
+
+}  // namespace rmfx

@@ -1,0 +1,39 @@
+#pragma once
+// What one level of a RenderMonkey workspace (the workspace, a group, an effect or a pass)
+// declares: variables, textures, renderable textures, stream maps and models. Inner levels
+// shadow outer ones by name.
+
+#include <string>
+#include <vector>
+
+#include "frontend/rfx/detail/RfxElement.h"
+#include "model/Workspace.h"
+
+namespace rmfx::rfx {
+
+struct StreamMapDeclaration {
+    std::string name;
+    std::vector<VertexStream> streams;
+    SourceLocation where;
+};
+
+struct ModelDeclaration {
+    std::string name;
+    std::string file;  // FILE_NAME exactly as written (a Windows path, often)
+    SourceLocation where;
+};
+
+struct Declarations {
+    std::vector<Variable> variables;
+    std::vector<Texture> textures;
+    std::vector<RenderTarget> targets;
+    std::vector<StreamMapDeclaration> streamMaps;
+    std::vector<ModelDeclaration> models;
+};
+
+// Reads `e` into `into` when it is a declaration element (RmFloatVariable, Rm2DTextureVariable,
+// RmRenderableTexture, RmStreamMap, RmModelData…) and returns true; false for any other element.
+// Declarations rmfx cannot use (lights, materials, strings, 3D textures) give a warning and true.
+bool readDeclaration(const RfxElement& e, Declarations& into);
+
+}  // namespace rmfx::rfx

@@ -1,0 +1,282 @@
+#include "frontend/rfx/detail/RfxPassReader.h"
+
+#include <algorithm>
+#include <string_view>
+
+#include "core/IdentifierSearch.h"
+#include "frontend/rfx/detail/RfxPackedColor.h"
+#include "frontend/rfx/detail/RfxRenderStates.h"
+#include "frontend/rfx/detail/RfxSamplerStates.h"
+#include "frontend/shader/HlslTranslator.h"
+
+namespace rmfx::rfx {
+namespace {
+
+using tinyxml2::XMLElement;
+
+template <class T, class Member>
+const T* findIn(const std::vector<const Declarations*>& levels, Member member, const std::string& name) {
+    for (const Declarations* d : levels)
+        for (const T& item : d->*member)
+            if (item.name == name) return &item;
+    return nullptr;
+}
+
+class PassReader {
+public:
+    PassReader(const RfxElement& e, RfxApi api, const VisibleScopes& scopes) : e_(e), api_(api), scopes_(scopes) {}
+
+    std::optional<ReadPass> read() {
+        auto index = e_.integer("PASS_INDEX", -1000000, 1000000);
+        auto enabled = e_.flag("ENABLED", false);
+        out_.pass.name = e_.text("NAME").value_or("");
+        out_.pass.where = e_.where();
+        out_.pass.enabled = enabled.value_or(true);
+        out_.index = index.value_or(0);
+        for (const XMLElement* c = e_.xml()->FirstChildElement(); c; c = c->NextSiblingElement()) child(c);
+        bindStreams();
+        checkConstants();
+        for (const auto& [sampler, where] : samplersWithoutObject_)
+            where.error("sampler '" + sampler + "' has no <RmTextureObject NAME=\"" + sampler +
+                        "\"> in the pass to say which texture it reads");
+        if (!index) return std::nullopt;
+        return out_;
+    }
+
+private:
+    RfxElement at(const XMLElement* x) const { return RfxElement(x, e_.file(), e_.diagnostics()); }
+
+    void child(const XMLElement* x) {
+        RfxElement c = at(x);
+        std::string_view tag = x->Name();
+        if (readDeclaration(c, passLevel_)) {
+            takePassDeclarations(c);
+        } else if (tag == "RmGLShader" || tag == "RmGLESShader" || tag == "RmHLSLShader") {
+            shader(c, tag);
+        } else if (tag == "RmShader") {
+            c.warning("an assembly shader: rmfx compiles only HLSL and GLSL, so this pass cannot run");
+            out_.runnable = false;
+            out_.whyNotRunnable = "its " + std::string(pixelShader(c) ? "pixel" : "vertex") + " shader " + c.label() +
+                                  " (line " + std::to_string(c.line()) + ") is assembly";
+            constantsOf(c);
+        } else if (tag == "RmRenderStateBlock") {
+            out_.stateBlocks.push_back(x);
+        } else if (tag == "RmRenderTarget") {
+            renderTarget(c);
+        } else if (tag == "RmModelReference") {
+            if (const ModelDeclaration* m = scopes_.model(c.name())) {
+                out_.pass.draw.file = m->file;
+                out_.pass.draw.where = c.where();
+            } else {
+                c.error("no <RmModelData NAME=\"" + c.name() + "\"> is visible from the pass");
+            }
+        } else if (tag == "RmStreamMapReference") {
+            streamMap_ = scopes_.streamMap(c.name());
+            if (!streamMap_) c.error("no <RmStreamMap NAME=\"" + c.name() + "\"> is visible from the pass");
+        } else if (tag == "RmTextureObject") {
+            textureObject(c);
+        } else if (tag == "RmSampler") {
+            sampler(c);
+        } else if (tag == "RmShaderConstant") {
+            constant(c);
+        } else if (tag == "RmCameraReference" || tag == "RmPlugInData") {
+            // the effect's camera is the only one rmfx has; plug-in data is editor state
+        } else {
+            c.warning("rmfx does not support <" + std::string(tag) + "> in a pass; ignored");
+        }
+    }
+
+    void takePassDeclarations(const RfxElement& c) {
+        for (Variable& v : passLevel_.variables) out_.pass.constants.push_back(std::move(v));
+        passLevel_.variables.clear();
+        if (!passLevel_.textures.empty() || !passLevel_.targets.empty() || !passLevel_.models.empty() ||
+            !passLevel_.streamMaps.empty())
+            c.warning("textures, targets, models and stream maps declared inside a pass are not supported; "
+                      "declare them in the effect");
+        passLevel_ = {};
+    }
+
+    static bool pixelShader(const RfxElement& c) { return c.flag("PIXEL_SHADER", false).value_or(false); }
+
+    void shader(const RfxElement& c, std::string_view tag) {
+        ShaderSource s;
+        auto pixel = c.flag("PIXEL_SHADER");
+        s.stage = pixel.value_or(false) ? ShaderStage::Fragment : ShaderStage::Vertex;
+        s.where = c.where();
+        if (tag == "RmGLShader") {
+            // Desktop GLSL of any version runs in the compatibility profile, which accepts
+            // #version 110 through 4.x and the fixed-function built-ins: one dialect for all.
+            s.dialect = ShaderDialect::GlslLegacy;
+        } else if (tag == "RmGLESShader") {
+            s.dialect = ShaderDialect::GlslEs100;
+        } else {
+            s.dialect = ShaderDialect::Hlsl;
+            s.entryPoint = c.text("ENTRY_POINT").value_or("main");
+            s.profile = c.text("TARGET").value_or("");
+            constantsOf(c);
+        }
+        const XMLElement* code = c.xml()->FirstChildElement("RmShaderCode");
+        if (!code) {
+            c.error("it has no <RmShaderCode>");
+            return;
+        }
+        const tinyxml2::XMLNode* text = code->FirstChild();
+        if (text && text->ToText()) {
+            s.code = text->Value();
+            s.codeLine = text->GetLineNum();
+        } else {
+            s.codeLine = code->GetLineNum();
+        }
+        if (!pixel) return;
+        for (const ShaderSource& other : out_.pass.shaders)
+            if (other.stage == s.stage) {
+                c.error(std::string("the pass already has a ") + (pixel.value() ? "pixel" : "vertex") + " shader (line " +
+                        std::to_string(other.where.line) + ")");
+                return;
+            }
+        out_.pass.shaders.push_back(std::move(s));
+    }
+
+    // RmShaderConstant and RmSampler children of a D3D shader.
+    void constantsOf(const RfxElement& c) {
+        for (const XMLElement* x = c.xml()->FirstChildElement(); x; x = x->NextSiblingElement()) {
+            std::string_view tag = x->Name();
+            if (tag == "RmShaderConstant") constant(at(x));
+            else if (tag == "RmSampler") sampler(at(x));
+        }
+    }
+
+    // Checked once the pass's shaders are known: RenderMonkey keeps constants that name nothing
+    // (left over from edits); they matter only when a shader uses the name.
+    void constant(const RfxElement& c) { constants_.push_back(c); }
+
+    void checkConstants() {
+        for (const RfxElement& c : constants_) {
+            std::string name = c.name();
+            bool passLevel = std::any_of(out_.pass.constants.begin(), out_.pass.constants.end(),
+                                         [&](const Variable& v) { return v.name == name; });
+            if (passLevel || scopes_.variable(name) || scopes_.texture(name)) continue;
+            bool used = std::any_of(out_.pass.shaders.begin(), out_.pass.shaders.end(),
+                                    [&](const ShaderSource& s) { return mentionsIdentifier(s.code, name); });
+            std::string message = "no variable '" + name + "' is visible from the pass (pass, effect, group or workspace)";
+            if (used) c.error(message);
+            else c.warning(message + "; its shaders do not use it, so it is ignored");
+        }
+    }
+
+    void sampler(const RfxElement& c) {
+        std::string name = c.name();
+        for (const Sampler& s : out_.pass.samplers)
+            if (s.uniform == name) return;
+        samplersWithoutObject_.emplace_back(name, c);
+    }
+
+    void textureObject(const RfxElement& c) {
+        Sampler s;
+        s.uniform = c.name();
+        s.where = c.where();
+        const XMLElement* ref = c.xml()->FirstChildElement("RmTextureReference");
+        if (!ref) {
+            c.error("it has no <RmTextureReference> naming the texture it binds");
+            return;
+        }
+        std::string texture = at(ref).name();
+        bool mipmaps = true;
+        if (scopes_.texture(texture)) {
+            s.texture = texture;
+        } else if (const RenderTarget* t = scopes_.target(texture)) {
+            s.target = texture;
+            mipmaps = t->mipmaps;
+        } else {
+            at(ref).error("no texture variable or renderable texture '" + texture + "' is visible from the pass");
+            return;
+        }
+        SamplerStates states(api_ == RfxApi::Direct3D, mipmaps);
+        for (const XMLElement* x = c.xml()->FirstChildElement("RmState"); x; x = x->NextSiblingElement("RmState")) {
+            if (api_ == RfxApi::Direct3D) states.applyD3d(at(x));
+            else states.applyGl(at(x));
+        }
+        states.finish(c, s);
+        std::erase_if(samplersWithoutObject_, [&](const auto& p) { return p.first == s.uniform; });
+        out_.pass.samplers.push_back(std::move(s));
+    }
+
+    void renderTarget(const RfxElement& c) {
+        if (targetSeen_) {
+            c.warning("a second render target (multiple render targets): rmfx passes write one; ignored");
+            return;
+        }
+        targetSeen_ = true;
+        if (auto index = c.integer("INDEX", 0, 15, false); index && *index != 0)
+            c.warning("INDEX " + std::to_string(*index) + ": written as the pass's only target");
+        bool screen = c.flag("RENDER_TO_SCREEN", false).value_or(false);
+        if (!screen) {
+            if (!scopes_.target(c.name())) {
+                c.error("no <RmRenderableTexture NAME=\"" + c.name() + "\"> is visible from the pass");
+                return;
+            }
+            out_.pass.target = c.name();
+        }
+        if (c.flag("COLOR_CLEAR", false).value_or(false)) {
+            if (auto packed = c.integer("CLEAR_COLOR_VALUE", -2147483648LL, 4294967295LL))
+                out_.pass.clear.color = unpackArgb(*packed);
+        }
+        if (c.flag("DEPTH_CLEAR", false).value_or(false)) {
+            if (auto depth = c.number("DEPTH_CLEAR_VALUE")) {
+                if (*depth < 0 || *depth > 1) c.error("DEPTH_CLEAR_VALUE must be within 0…1");
+                else out_.pass.clear.depth = *depth;
+            }
+        }
+    }
+
+    // Streams feed named attributes in OpenGL ES, and in OpenGL only when the vertex shader
+    // declares an attribute of that name (RenderMonkey feeds gl_Vertex, gl_Normal… otherwise).
+    // In Direct3D they feed the vertex shader's input of that usage (TEXCOORD1, TANGENT0…), which
+    // the HLSL translator names by hlslVertexInputName.
+    void bindStreams() {
+        if (!streamMap_) return;
+        const ShaderSource* vertex = nullptr;
+        for (const ShaderSource& s : out_.pass.shaders)
+            if (s.stage == ShaderStage::Vertex) vertex = &s;
+        for (VertexStream stream : streamMap_->streams) {
+            if (api_ == RfxApi::Direct3D) stream.attribute = hlslVertexInputName(stream.usage, stream.usageIndex);
+            if (api_ == RfxApi::OpenGL && !(vertex && declaresVertexInput(vertex->code, stream.attribute)))
+                stream.attribute.clear();
+            out_.pass.streams.push_back(std::move(stream));
+        }
+    }
+
+    const RfxElement& e_;
+    RfxApi api_;
+    const VisibleScopes& scopes_;
+    ReadPass out_;
+    Declarations passLevel_;
+    const StreamMapDeclaration* streamMap_ = nullptr;
+    bool targetSeen_ = false;
+    std::vector<std::pair<std::string, RfxElement>> samplersWithoutObject_;
+    std::vector<RfxElement> constants_;
+};
+
+}  // namespace
+
+const Variable* VisibleScopes::variable(const std::string& name) const {
+    return findIn<Variable>(levels, &Declarations::variables, name);
+}
+const Texture* VisibleScopes::texture(const std::string& name) const {
+    return findIn<Texture>(levels, &Declarations::textures, name);
+}
+const RenderTarget* VisibleScopes::target(const std::string& name) const {
+    return findIn<RenderTarget>(levels, &Declarations::targets, name);
+}
+const StreamMapDeclaration* VisibleScopes::streamMap(const std::string& name) const {
+    return findIn<StreamMapDeclaration>(levels, &Declarations::streamMaps, name);
+}
+const ModelDeclaration* VisibleScopes::model(const std::string& name) const {
+    return findIn<ModelDeclaration>(levels, &Declarations::models, name);
+}
+
+std::optional<ReadPass> readPass(const RfxElement& e, RfxApi api, const VisibleScopes& scopes) {
+    return PassReader(e, api, scopes).read();
+}
+
+}  // namespace rmfx::rfx

@@ -1,0 +1,140 @@
+#include "gl/GlTexture.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <epoxy/gl.h>
+
+#include "gl/GlFormats.h"
+#include "io/image/CubeMapLayout.h"
+#include "io/image/DdsCubeMap.h"
+#include "io/image/ImageIO.h"
+
+namespace rmfx {
+namespace {
+
+struct UploadFormat {
+    GLenum internal = GL_RGBA32F;
+    GLenum pixelFormat = GL_RGBA;
+    bool swizzleGray = false;  // 1 channel: rgb = r; 2 channels: rgb = r, a = g
+};
+
+// 8-bit sRGB images of 3 or 4 channels decode in hardware (GL_SRGB8*); every other sRGB image is
+// decoded on the CPU first (alpha stays linear).
+UploadFormat chooseFormat(Image& image, ColorSpace space) {
+    UploadFormat f;
+    static constexpr GLenum pixelFormats[5] = {0, GL_RED, GL_RG, GL_RGB, GL_RGBA};
+    f.pixelFormat = pixelFormats[image.channels];
+    f.swizzleGray = image.channels <= 2;
+    bool hardwareSrgb = space == ColorSpace::Srgb && image.bitsPerChannel == 8 && image.channels >= 3;
+    if (space == ColorSpace::Srgb && !hardwareSrgb) {
+        int colorChannels = image.channels == 2 || image.channels == 4 ? image.channels - 1 : image.channels;
+        for (size_t i = 0; i < image.pixels.size(); ++i)
+            if (static_cast<int>(i % image.channels) < colorChannels) image.pixels[i] = srgbDecode(image.pixels[i]);
+    }
+    if (hardwareSrgb) {
+        f.internal = image.channels == 4 ? GL_SRGB8_ALPHA8 : GL_SRGB8;
+    } else if (image.highDynamicRange || space == ColorSpace::Srgb) {
+        static constexpr GLenum floats[5] = {0, GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F};
+        f.internal = floats[image.channels];
+    } else if (image.bitsPerChannel <= 8) {
+        static constexpr GLenum bytes[5] = {0, GL_R8, GL_RG8, GL_RGB8, GL_RGBA8};
+        f.internal = bytes[image.channels];
+    } else {
+        static constexpr GLenum shorts[5] = {0, GL_R16, GL_RG16, GL_RGB16, GL_RGBA16};
+        f.internal = shorts[image.channels];
+    }
+    return f;
+}
+
+size_t bytesPerTexel(GLenum internal) {
+    switch (internal) {
+        case GL_R8: return 1;
+        case GL_RG8: case GL_R16: return 2;
+        case GL_RGB8: case GL_SRGB8: return 3;
+        case GL_RGBA8: case GL_SRGB8_ALPHA8: case GL_RG16: case GL_R32F: return 4;
+        case GL_RGB16: return 6;
+        case GL_RGBA16: case GL_RG32F: return 8;
+        case GL_RGB32F: return 12;
+        default: return 16;
+    }
+}
+
+void applySwizzle(GLuint texture, int channels) {
+    if (channels == 1) {
+        const GLint swizzle[4] = {GL_RED, GL_RED, GL_RED, GL_ONE};
+        glTextureParameteriv(texture, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+    } else if (channels == 2) {
+        const GLint swizzle[4] = {GL_RED, GL_RED, GL_RED, GL_GREEN};
+        glTextureParameteriv(texture, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+    }
+}
+
+std::string label(const Texture& t) {
+    return std::string(t.kind == TextureKind::Cube ? "cubemap '" : "texture '") + t.name + "'";
+}
+
+}  // namespace
+
+Result<GlTextureInfo> loadGlTexture(const Workspace& ws, const Texture& texture) {
+    GlTextureInfo info;
+    if (texture.kind == TextureKind::Texture2D) {
+        auto image = readImage(ws.folder / texture.files[0]);
+        if (!image) return Error{label(texture) + ": " + image.error()};
+        UploadFormat f = chooseFormat(*image, texture.colorSpace);
+        info.width = image->width;
+        info.height = image->height;
+        // Image rows run top to bottom; GL's t = 0 is the bottom row.
+        std::vector<float> flipped(image->pixels.size());
+        size_t row = static_cast<size_t>(image->width) * image->channels;
+        for (int y = 0; y < image->height; ++y)
+            std::copy_n(image->pixels.begin() + static_cast<long>(y * row), row,
+                        flipped.begin() + static_cast<long>((image->height - 1 - y) * row));
+        int levels = texture.mipmaps ? gl::mipLevels(info.width, info.height) : 1;
+        glCreateTextures(GL_TEXTURE_2D, 1, &info.name);
+        glTextureStorage2D(info.name, levels, f.internal, info.width, info.height);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTextureSubImage2D(info.name, 0, 0, 0, info.width, info.height, f.pixelFormat, GL_FLOAT, flipped.data());
+        if (f.swizzleGray) applySwizzle(info.name, image->channels);
+        if (texture.mipmaps) glGenerateTextureMipmap(info.name);
+        info.bytes = static_cast<size_t>(info.width) * info.height * bytesPerTexel(f.internal) * (texture.mipmaps ? 4 : 3) / 3;
+        return info;
+    }
+
+    Result<CubeFaces> faces = Error{""};
+    if (texture.files.size() == 1 && isDdsFile(texture.files[0])) {
+        faces = readDdsCubeMap(ws.folder / texture.files[0]);
+    } else if (texture.layout == CubeLayout::Faces) {
+        std::array<Image, 6> images;
+        for (int i = 0; i < 6; ++i) {
+            auto image = readImage(ws.folder / texture.files[i]);
+            if (!image) return Error{label(texture) + ": " + image.error()};
+            images[i] = std::move(*image);
+        }
+        faces = cubeFromFaces(std::move(images));
+    } else {
+        auto image = readImage(ws.folder / texture.files[0]);
+        if (!image) return Error{label(texture) + ": " + image.error()};
+        faces = texture.layout == CubeLayout::Cross ? cubeFromCross(*image)
+                                                    : cubeFromEquirect(*image, texture.faceSize);
+    }
+    if (!faces) return Error{label(texture) + ": " + faces.error()};
+    CubeFaces& cube = *faces;
+    UploadFormat f;
+    for (Image& face : cube) f = chooseFormat(face, texture.colorSpace);
+    info.width = info.height = cube[0].width;
+    int levels = texture.mipmaps ? gl::mipLevels(info.width, info.height) : 1;
+    glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &info.name);
+    glTextureStorage2D(info.name, levels, f.internal, info.width, info.height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    // Cube faces are uploaded top row first: GL's face t axis points down the face.
+    for (int i = 0; i < 6; ++i)
+        glTextureSubImage3D(info.name, 0, 0, 0, i, info.width, info.height, 1, f.pixelFormat, GL_FLOAT,
+                            cube[i].pixels.data());
+    if (f.swizzleGray) applySwizzle(info.name, cube[0].channels);
+    if (texture.mipmaps) glGenerateTextureMipmap(info.name);
+    info.bytes = static_cast<size_t>(info.width) * info.height * 6 * bytesPerTexel(f.internal) * (texture.mipmaps ? 4 : 3) / 3;
+    return info;
+}
+
+}  // namespace rmfx

@@ -1,0 +1,29 @@
+#pragma once
+// `rmfx render --explain`: the schedule of a frame as a table (each pass run or culled and why),
+// the targets with size, format, bytes, lifetime and the memory they share, and the frame's peak
+// GPU memory against the total of all declared targets.
+
+#include <set>
+#include <string>
+
+#include "graph/PassGraph.h"
+#include "graph/TargetPlan.h"
+#include "model/Workspace.h"
+
+namespace rmfx {
+
+struct FrameExplanationInput {
+    const Workspace* ws = nullptr;
+    const PassGraph* graph = nullptr;
+    const TargetPlan* plan = nullptr;
+    std::set<std::string> askedEffects;
+    std::set<std::string> switchedOffEffects;
+    bool pooled = true;
+};
+
+std::string explainFrame(const FrameExplanationInput& input);
+
+// 1536 → "1.5 KiB"; exact bytes below 1 KiB.
+std::string formatBytes(std::size_t bytes);
+
+}  // namespace rmfx

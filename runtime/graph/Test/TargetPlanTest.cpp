@@ -1,0 +1,155 @@
+// Target allocation without GL: only targets a scheduled pass uses get memory, lifetimes that do
+// not overlap share it, carried targets never do, and the byte counts are what the formats need.
+
+#include "graph/TargetPlan.h"
+
+#include <gtest/gtest.h>
+
+#include "frontend/workspace/WorkspaceParser.h"
+#include "tests/support/TestSupport.h"
+
+namespace rmfx {
+namespace {
+
+using test::passXml;
+
+using Names = std::vector<std::string>;
+
+struct Planned {
+    std::unique_ptr<Workspace> ws;
+    PassGraph graph;
+    TargetPlan plan;
+};
+
+Planned planText(const std::string& xml, FrameRequest request = {}, bool pool = true) {
+    Planned p;
+    ParsedWorkspace parsed = parseWorkspaceText(xml, "plan.xml", ".");
+    EXPECT_FALSE(hasErrors(parsed.diagnostics)) << formatAll(parsed.diagnostics);
+    p.ws = std::make_unique<Workspace>(std::move(*parsed.workspace));
+    Diagnostics d;
+    p.graph = buildPassGraph(*p.ws, request, d);
+    EXPECT_FALSE(hasErrors(d)) << formatAll(d);
+    std::map<std::string, Value> values;
+    for (const Variable& v : p.ws->variables) values[v.name] = v.value;
+    auto plan = planTargets(*p.ws, {&p.graph}, {p.ws->width, p.ws->height}, values, pool);
+    EXPECT_TRUE(plan) << (plan ? "" : plan.error());
+    if (plan) p.plan = *plan;
+    return p;
+}
+
+// Targets as "name format [size]" lines; the workspace is 8x8.
+std::string workspace(const std::string& targets, const std::string& passes) {
+    return "<workspace version=\"1\" name=\"plan\" size=\"8x8\">\n" + targets + passes + "</workspace>\n";
+}
+
+std::string target(const std::string& name, const std::string& format = "rgba16f", const std::string& size = "") {
+    return "  <target name=\"" + name + "\" format=\"" + format + "\"" +
+           (size.empty() ? "" : " size=\"" + size + "\"") + "/>\n";
+}
+
+Names sharing(const TargetPlan& plan, const std::string& name) {
+    Names names;
+    const PlannedTarget& t = plan.targets[static_cast<size_t>(plan.find(name))];
+    for (int k : plan.resources[static_cast<size_t>(t.resource)].targets)
+        names.push_back(plan.targets[static_cast<size_t>(k)].name);
+    return names;
+}
+
+TEST(TargetPlan, AChainPingPongsBetweenTwoTexturesAndTheOutputReusesOne) {
+    Planned p = planText(workspace(target("ta") + target("tb") + target("tc") + target("td"),
+                                   passXml("a", "ta", {}) + passXml("b", "tb", {"ta"}) + passXml("c", "tc", {"tb"}) +
+                                       passXml("d", "td", {"tc"}) + passXml("final", "", {"td"})));
+    // Lifetimes (pass indices): ta 0..1, tb 1..2, tc 2..3, td 3..4, output 4..end.
+    EXPECT_EQ(p.plan.resources.size(), 2u);
+    EXPECT_EQ(sharing(p.plan, "ta"), (Names{"ta", "tc", "output"}));
+    EXPECT_EQ(sharing(p.plan, "tb"), (Names{"tb", "td"}));
+    const std::size_t one = 8 * 8 * 8;  // rgba16f: 8 bytes a pixel
+    EXPECT_EQ(p.plan.allocatedBytes, 2 * one);
+    EXPECT_EQ(p.plan.declaredBytes, 5 * one);
+    const PlannedTarget& output = p.plan.targets[static_cast<size_t>(p.plan.find("output"))];
+    EXPECT_EQ(output.firstUse, 4);
+    EXPECT_EQ(output.lastUse, 5) << "an output lives to the end of the frame";
+
+    Planned unpooled =
+        planText(workspace(target("ta") + target("tb") + target("tc") + target("td"),
+                           passXml("a", "ta", {}) + passXml("b", "tb", {"ta"}) + passXml("c", "tc", {"tb"}) +
+                               passXml("d", "td", {"tc"}) + passXml("final", "", {"td"})),
+                 {}, false);
+    EXPECT_EQ(unpooled.plan.resources.size(), 5u);
+    EXPECT_EQ(unpooled.plan.allocatedBytes, 5 * one);
+}
+
+TEST(TargetPlan, OnlySameSizeFormatAndDepthShare) {
+    Planned p = planText(workspace(target("half") + target("full32", "rgba32f") + target("small", "rgba16f", "4x4") +
+                                       target("deep") + target("late"),
+                                   passXml("a", "half", {}) + passXml("b", "full32", {"half"}) +
+                                       passXml("c", "small", {"full32"}) +
+                                       passXml("d", "deep", {"small"}, "    <clear depth=\"1\"/>\n") +
+                                       passXml("e", "late", {"deep"}) + passXml("final", "", {"late"})));
+    EXPECT_EQ(sharing(p.plan, "half"), (Names{"half", "late"}));  // deep has a depth buffer, half has not
+    EXPECT_EQ(sharing(p.plan, "full32"), (Names{"full32"}));
+    EXPECT_EQ(sharing(p.plan, "small"), (Names{"small"}));
+    EXPECT_EQ(sharing(p.plan, "deep"), (Names{"deep"}));
+    EXPECT_EQ(p.plan.targets[static_cast<size_t>(p.plan.find("deep"))].bytes, 8u * 8 * 8 + 8 * 8 * 4);
+}
+
+TEST(TargetPlan, CarriedTargetsGetMemoryOfTheirOwn) {
+    // acc is read as last frame's (two buffers); blendOnly is drawn over before anything writes it.
+    Planned p =
+        planText(workspace(target("m") + target("acc") + target("blendOnly") + target("later"),
+                           passXml("measure", "m", {}) + passXml("adapt", "acc", {"acc'", "m"}) +
+                               passXml("glow", "blendOnly", {"acc"}, "    <blend mode=\"add\"/>\n") +
+                               passXml("after", "later", {"blendOnly"}) + passXml("final", "", {"later", "acc"})));
+    const PlannedTarget& acc = p.plan.targets[static_cast<size_t>(p.plan.find("acc"))];
+    EXPECT_TRUE(acc.history);
+    EXPECT_TRUE(acc.carried);
+    EXPECT_EQ(acc.bytes, 2u * 8 * 8 * 8);
+    EXPECT_EQ(sharing(p.plan, "acc"), (Names{"acc"}));
+    EXPECT_TRUE(p.plan.targets[static_cast<size_t>(p.plan.find("blendOnly"))].carried);
+    EXPECT_EQ(sharing(p.plan, "blendOnly"), (Names{"blendOnly"}));
+    EXPECT_EQ(sharing(p.plan, "m"), (Names{"m", "later"}));  // m ends at adapt, later starts after
+}
+
+TEST(TargetPlan, TargetsOfCulledPassesGetNoMemory) {
+    Planned p =
+        planText(workspace(target("used") + target("unused"),
+                           passXml("a", "used", {}) + passXml("b", "unused", {}) + passXml("final", "", {"used"})));
+    const PlannedTarget& unused = p.plan.targets[static_cast<size_t>(p.plan.find("unused"))];
+    EXPECT_FALSE(unused.used);
+    EXPECT_EQ(unused.resource, -1);
+    for (const TargetResource& r : p.plan.resources)
+        for (int k : r.targets) EXPECT_NE(p.plan.targets[static_cast<size_t>(k)].name, "unused");
+}
+
+TEST(TargetPlan, OnePlanForSeveralGraphsCoversEveryLifetime) {
+    // With the effect on, t1 lives 0..2 (read by "use"); with it off, "use" reads nothing and
+    // the plan of both must still keep t1 and t2 apart.
+    std::string xml =
+        workspace(target("t1") + target("t2"), "  <effect name=\"fx\" passes=\"b\"/>\n" + passXml("a", "t1", {}) +
+                                                   passXml("b", "t2", {}) + passXml("use", "", {"t1", "t2"}));
+    ParsedWorkspace parsed = parseWorkspaceText(xml, "plan.xml", ".");
+    ASSERT_TRUE(parsed.workspace) << formatAll(parsed.diagnostics);
+    Workspace& ws = *parsed.workspace;
+    Diagnostics d;
+    PassGraph on = buildPassGraph(ws, {{}, {"fx"}, {}}, d);
+    PassGraph off = buildPassGraph(ws, {{}, {"fx"}, {"fx"}}, d);
+    ASSERT_FALSE(hasErrors(d)) << formatAll(d);
+    auto both = planTargets(ws, {&on, &off}, {8, 8}, {}, true);
+    ASSERT_TRUE(both);
+    EXPECT_EQ(sharing(*both, "t1"), (Names{"t1"}));
+    EXPECT_EQ(sharing(*both, "t2"), (Names{"t2"}));
+    auto offOnly = planTargets(ws, {&off}, {8, 8}, {}, true);
+    ASSERT_TRUE(offOnly);
+    EXPECT_FALSE(offOnly->targets[static_cast<size_t>(offOnly->find("t2"))].used);
+}
+
+TEST(TargetPlan, BytesCountMipLevelsBuffersAndDepth) {
+    // 5x3: levels 5x3, 2x1, 1x1 = 18 pixels of 8 bytes, two buffers, and a 4-byte depth per base pixel.
+    EXPECT_EQ(targetBytes(TargetFormat::RGBA16F, {5, 3}, true, true, true), 18u * 8 * 2 + 15 * 4);
+    EXPECT_EQ(targetBytes(TargetFormat::R32F, {5, 3}, false, false, false), 15u * 4);
+    EXPECT_EQ(targetBytes(TargetFormat::RGBA8, {1, 1}, true, false, false), 4u);
+    EXPECT_EQ(targetBytes(TargetFormat::RGBA32F, {4096, 4096}, false, false, true), 4096ull * 4096 * 16 * 2);
+}
+
+}  // namespace
+}  // namespace rmfx

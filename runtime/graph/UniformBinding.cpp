@@ -1,0 +1,61 @@
+#include "graph/UniformBinding.h"
+
+namespace rmfx {
+
+UniformSource resolveUniform(const Workspace& ws, const Pass& pass, const std::string& name) {
+    for (size_t i = 0; i < pass.samplers.size(); ++i)
+        if (pass.samplers[i].uniform == name) return BoundSampler{&pass.samplers[i], static_cast<int>(i)};
+    auto semantic = [](const Variable& v) { return v.semantic.empty() ? std::nullopt : findSemantic(v.semantic); };
+    for (const Variable& c : pass.constants) {
+        if (c.name != name) continue;
+        if (auto s = semantic(c)) return BoundSemantic{&c, *s};
+        return BoundConstant{&c};
+    }
+    if (const Variable* v = ws.findVariable(name)) {
+        if (auto s = semantic(*v)) return BoundSemantic{v, *s};
+        return BoundVariable{v};
+    }
+    if (auto p = findPredefined(name)) return BoundPredefined{*p};
+    return Unbound{};
+}
+
+static std::string where(const SourceLocation& at) { return at.file + ":" + std::to_string(at.line); }
+
+std::string bindingMismatch(const Workspace& ws, const UniformSource& source, const std::string& uniform,
+                            UniformType type, int arraySize) {
+    std::string declared = "uniform '" + uniform + "' is declared " + uniformTypeName(type) +
+                           (arraySize > 1 ? "[" + std::to_string(arraySize) + "]" : "");
+    if (arraySize > 1) return declared + ", but arrays cannot be bound to variables";
+    if (const auto* s = std::get_if<BoundSampler>(&source)) {
+        bool cube = false;
+        if (!s->sampler->texture.empty()) {
+            const Texture* t = ws.findTexture(s->sampler->texture);
+            cube = t && t->kind == TextureKind::Cube;
+        }
+        UniformType wanted = cube ? UniformType::SamplerCube : UniformType::Sampler2D;
+        if (type == wanted) return {};
+        return declared + ", but <sampler name=\"" + uniform + "\"> (" + where(s->sampler->where) + ") binds " +
+               (cube ? "a cube map and needs samplerCube" : "a 2D image and needs sampler2D");
+    }
+    auto variableMismatch = [&](const Variable& v, const char* kind) -> std::string {
+        if (uniformAccepts(type, v.value.type)) return {};
+        return declared + ", but " + kind + " '" + v.name + "' (" + where(v.where) + ") is a " +
+               valueTypeName(v.value.type) + " (binds to GLSL " + glslTypeName(v.value.type) + ")";
+    };
+    if (const auto* c = std::get_if<BoundConstant>(&source)) return variableMismatch(*c->constant, "pass constant");
+    if (const auto* v = std::get_if<BoundVariable>(&source)) return variableMismatch(*v->variable, "variable");
+    if (const auto* s = std::get_if<BoundSemantic>(&source)) {
+        if (semanticFeeds(s->info, type)) return {};
+        return declared + ", but variable '" + s->variable->name + "' (" + where(s->variable->where) + ") has semantic " +
+               s->info.name + ", a " + uniformTypeName(s->info.type);
+    }
+    if (const auto* p = std::get_if<BoundPredefined>(&source)) {
+        if (p->info.type == type) return {};
+        return declared + ", but the predefined " + p->info.name + " is a " + uniformTypeName(p->info.type);
+    }
+    if (isSampler(type))
+        return declared + ", but the pass has no <sampler name=\"" + uniform + "\">";
+    return declared + ", but no variable, pass constant or predefined value has that name";
+}
+
+}  // namespace rmfx

@@ -1,0 +1,30 @@
+#pragma once
+// Which value feeds a uniform of a pass: a sampler of the pass, a pass constant, a workspace
+// variable or a predefined value, looked up in that order. A constant or variable with a known
+// semantic (Variable::semantic) is fed the semantic's value every frame.
+
+#include <string>
+#include <variant>
+
+#include "model/PredefinedVariables.h"
+#include "model/SemanticValues.h"
+#include "model/Workspace.h"
+
+namespace rmfx {
+
+struct BoundSampler { const Sampler* sampler; int index; };
+struct BoundConstant { const Variable* constant; };
+struct BoundVariable { const Variable* variable; };
+struct BoundPredefined { PredefinedInfo info; };
+struct BoundSemantic { const Variable* variable; SemanticInfo info; };  // a pass constant or a variable
+struct Unbound {};
+
+using UniformSource = std::variant<Unbound, BoundSampler, BoundConstant, BoundVariable, BoundPredefined, BoundSemantic>;
+
+UniformSource resolveUniform(const Workspace& ws, const Pass& pass, const std::string& name);
+
+// Empty when the source can feed a uniform of that type; else why not, as a sentence naming both.
+std::string bindingMismatch(const Workspace& ws, const UniformSource& source, const std::string& uniform,
+                            UniformType type, int arraySize);
+
+}  // namespace rmfx

@@ -1,0 +1,150 @@
+// DDS textures through OpenImageIO: DXT1/3/5 blocks written here byte by byte, whose decoded
+// colours are worked out by hand from the S3TC rules, and cube maps in one file.
+
+#include "io/image/DdsCubeMap.h"
+
+#include <cstdint>
+#include <fstream>
+#include <tuple>
+
+#include <gtest/gtest.h>
+
+#include "io/image/ImageIO.h"
+#include "tests/support/DdsBytes.h"
+#include "tests/support/TestSupport.h"
+
+namespace rmfx {
+namespace {
+
+using namespace test::dds;
+
+// Writes the bytes as `name` and reads the image back: a 4x4 RGBA image.
+Image readDds(const test::ScratchDir& dir, const std::string& name, const Bytes& bytes) {
+    auto image = readImage(writeBytes(dir, name, bytes));
+    EXPECT_TRUE(image) << image.error();
+    if (!image) return {};
+    EXPECT_EQ(image->width, 4);
+    EXPECT_EQ(image->height, 4);
+    EXPECT_EQ(image->channels, 4);
+    return *image;
+}
+
+// One DXT1 block (end points c0, c1 and a 2-bit index per texel) decoded by OpenImageIO.
+Image decodeDxt1(const test::ScratchDir& dir, const std::string& name, uint16_t c0, uint16_t c1,
+                 const std::array<int, 16>& index) {
+    Bytes b = header("DXT1");
+    colorBlock(b, c0, c1, index);
+    return readDds(dir, name, b);
+}
+
+void expectTexel(const Image& image, int x, int y, std::array<int, 4> bytes) {
+    for (int c = 0; c < 4; ++c)
+        EXPECT_FLOAT_EQ(image.at(x, y, c), bytes[c] / 255.0f) << "texel " << x << "," << y << " channel " << c;
+}
+
+}  // namespace
+
+TEST(DdsTexture, Dxt1FourColourBlock) {
+    test::ScratchDir dir;
+    // c0 = red > c1 = blue: four colours, c2 = (2 c0 + c1) / 3, c3 = (c0 + 2 c1) / 3. Every row
+    // holds indices 0 1 2 3.
+    Image image = decodeDxt1(dir, "four.dds", kRed, kBlue, {0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3});
+    ASSERT_FALSE(image.empty());
+    for (int y = 0; y < 4; ++y) {
+        expectTexel(image, 0, y, {255, 0, 0, 255});
+        expectTexel(image, 1, y, {0, 0, 255, 255});
+        expectTexel(image, 2, y, {170, 0, 85, 255});  // 2·255/3, 255/3
+        expectTexel(image, 3, y, {85, 0, 170, 255});
+    }
+}
+
+TEST(DdsTexture, Dxt1ThreeColourBlockHasTransparentBlack) {
+    test::ScratchDir dir;
+    // c0 = blue ≤ c1 = red: three colours and index 3 is transparent black: at (0, 0), (1, 1),
+    // (2, 2), (3, 3); the end points elsewhere.
+    Image image = decodeDxt1(dir, "three.dds", kBlue, kRed, {3, 0, 1, 0, 1, 3, 0, 1, 0, 1, 3, 0, 1, 0, 1, 3});
+    ASSERT_FALSE(image.empty());
+    const std::array<int, 4> transparent{0, 0, 0, 0}, blue{0, 0, 255, 255}, red{255, 0, 0, 255};
+    for (auto [x, y, expected] : {std::tuple{0, 0, transparent}, {1, 0, blue}, {2, 0, red}, {1, 1, transparent},
+                                  {3, 3, transparent}, {0, 3, red}})
+        expectTexel(image, x, y, expected);
+}
+
+TEST(DdsTexture, Dxt3ExplicitAlpha) {
+    test::ScratchDir dir;
+    Bytes b = header("DXT3");
+    // Texel i has the 4-bit alpha i (i·17 in 8 bits), then a green colour block.
+    for (int pair = 0; pair < 8; ++pair) b.push_back(static_cast<uint8_t>((2 * pair) | ((2 * pair + 1) << 4)));
+    colorBlock(b, kGreen, 0, kAllZero);
+    Image image = readDds(dir, "dxt3.dds", b);
+    ASSERT_FALSE(image.empty());
+    for (int i = 0; i < 16; ++i) expectTexel(image, i % 4, i / 4, {0, 255, 0, 17 * i});
+}
+
+TEST(DdsTexture, Dxt5InterpolatedAlpha) {
+    test::ScratchDir dir;
+    Bytes b = header("DXT5");
+    // a0 = 238 > a1 = 0: eight alphas, index k ≥ 2 gives ((8 − k)·a0 + (k − 1)·a1) / 7 = (8 − k)·34.
+    b.push_back(238);
+    b.push_back(0);
+    uint64_t bits = 0;
+    for (int i = 0; i < 16; ++i) bits |= static_cast<uint64_t>(i % 8) << (3 * i);
+    for (int i = 0; i < 6; ++i) b.push_back(static_cast<uint8_t>(bits >> (8 * i)));
+    colorBlock(b, kWhite, 0, kAllZero);
+    Image image = readDds(dir, "dxt5.dds", b);
+    ASSERT_FALSE(image.empty());
+    const int alpha[8] = {238, 0, 204, 170, 136, 102, 68, 34};
+    for (int i = 0; i < 16; ++i) expectTexel(image, i % 4, i / 4, {255, 255, 255, alpha[i % 8]});
+}
+
+TEST(DdsTexture, CubeMapInOneFileGivesSixFacesInGlOrder) {
+    test::ScratchDir dir;
+    Bytes b = header("DXT1", kCubeMap | kAllFaces);
+    const uint16_t colors[6] = {kRed, kGreen, kBlue, kYellow, kMagenta, kWhite};  // +x -x +y -y +z -z
+    for (uint16_t c : colors) colorBlock(b, c, 0, kAllZero);
+    auto file = writeBytes(dir, "sky.DDS", b);
+    EXPECT_TRUE(isDdsFile(file));
+    auto faces = readDdsCubeMap(file);
+    ASSERT_TRUE(faces) << faces.error();
+    const std::array<int, 4> expected[6] = {
+        {255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}, {255, 255, 0, 255}, {255, 0, 255, 255}, {255, 255, 255, 255}};
+    for (int f = 0; f < 6; ++f) {
+        const Image& face = (*faces)[f];
+        ASSERT_EQ(face.width, 4);
+        ASSERT_EQ(face.height, 4);
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x) expectTexel(face, x, y, expected[f]);
+    }
+}
+
+TEST(DdsTexture, WhatIsNoFullCubeMapIsAClearError) {
+    test::ScratchDir dir;
+    Bytes flat = header("DXT1");
+    colorBlock(flat, kRed, 0, kAllZero);
+    auto flatFile = writeBytes(dir, "flat.dds", flat);
+    auto notCube = readDdsCubeMap(flatFile);
+    ASSERT_FALSE(notCube);
+    EXPECT_EQ(notCube.error(), "'" + flatFile.string() +
+                                   "' is a 2D DDS texture, not a cube map: use it as a texture, or give six faces");
+
+    Bytes partial = header("DXT1", kCubeMap | kPositiveX | kPositiveZ);
+    colorBlock(partial, kRed, 0, kAllZero);
+    colorBlock(partial, kBlue, 0, kAllZero);
+    auto partialFile = writeBytes(dir, "partial.dds", partial);
+    auto two = readDdsCubeMap(partialFile);
+    ASSERT_FALSE(two);
+    EXPECT_EQ(two.error(), "'" + partialFile.string() + "' is a cube map with only the faces '+x +z': a cube texture needs all six");
+
+    Bytes volume = header("DXT1", kVolume, 2);
+    colorBlock(volume, kRed, 0, kAllZero);
+    colorBlock(volume, kBlue, 0, kAllZero);
+    auto volumeFile = writeBytes(dir, "volume.dds", volume);
+    auto asCube = readDdsCubeMap(volumeFile);
+    ASSERT_FALSE(asCube);
+    EXPECT_EQ(asCube.error(), "'" + volumeFile.string() + "' is a volume texture (depth 2): volume textures are not supported");
+    auto as2d = readImage(volumeFile);
+    ASSERT_FALSE(as2d);
+    EXPECT_NE(as2d.error().find("volume images are not supported"), std::string::npos) << as2d.error();
+}
+
+}  // namespace rmfx

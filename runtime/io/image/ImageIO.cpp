@@ -1,0 +1,102 @@
+#include "io/image/ImageIO.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/imageio.h>
+
+#include "io/image/ImageFileError.h"
+
+namespace rmfx {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kMaxSide = 65536;
+constexpr int64_t kMaxPixels = int64_t(1) << 28;
+
+template <class Int>
+void scaleIntegers(const std::vector<Int>& raw, std::vector<float>& out, float max) {
+    out.resize(raw.size());
+    for (size_t i = 0; i < raw.size(); ++i)
+        out[i] = static_cast<float>(raw[i]) / max;
+}
+
+bool isFloatType(OIIO::TypeDesc type) {
+    return type.basetype == OIIO::TypeDesc::HALF || type.basetype == OIIO::TypeDesc::FLOAT ||
+           type.basetype == OIIO::TypeDesc::DOUBLE;
+}
+
+}  // namespace
+
+Result<Image> readImage(const fs::path& file) {
+    std::error_code ec;
+    if (!fs::exists(file, ec))
+        return imageFileError(file, "no such file");
+    if (!fs::is_regular_file(file, ec))
+        return imageFileError(file, "not a regular file");
+
+    // Without this hint OpenImageIO premultiplies PNG/TGA colour by alpha on read.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::open(file.string(), &config);
+    if (!in)
+        return imageFileError(file, "cannot read image: " + oneLine(OIIO::geterror()));
+
+    const OIIO::ImageSpec spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0)
+        return imageFileError(file, "image has no pixels (" + std::to_string(spec.width) + "x" +
+                                   std::to_string(spec.height) + ")");
+    if (spec.width > kMaxSide || spec.height > kMaxSide ||
+        int64_t(spec.width) * spec.height > kMaxPixels)
+        return imageFileError(file, "image too large (" + std::to_string(spec.width) + "x" +
+                                   std::to_string(spec.height) + ")");
+    if (spec.depth > 1)
+        return imageFileError(file, "volume images are not supported");
+    if (spec.nchannels < 1)
+        return imageFileError(file, "unsupported channel count " + std::to_string(spec.nchannels));
+
+    Image image;
+    image.width = spec.width;
+    image.height = spec.height;
+    image.channels = std::min(spec.nchannels, 4);
+    image.highDynamicRange = isFloatType(spec.format);
+    image.bitsPerChannel = static_cast<int>(spec.format.size() * 8);
+
+    // 8- and 16-bit data is read as it is stored and scaled here, so that a byte b becomes
+    // exactly b / 255.0f (OpenImageIO's own conversion multiplies by a rounded reciprocal).
+    const size_t count = size_t(image.width) * image.height * image.channels;
+    bool ok = false;
+    if (spec.format.basetype == OIIO::TypeDesc::UINT8) {
+        std::vector<uint8_t> raw(count);
+        ok = in->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::UINT8, raw.data());
+        if (ok) scaleIntegers(raw, image.pixels, 255.0f);
+    } else if (spec.format.basetype == OIIO::TypeDesc::UINT16) {
+        std::vector<uint16_t> raw(count);
+        ok = in->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::UINT16, raw.data());
+        if (ok) scaleIntegers(raw, image.pixels, 65535.0f);
+    } else {
+        image.pixels.resize(count);
+        ok = in->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::FLOAT, image.pixels.data());
+    }
+    if (!ok)
+        return imageFileError(file, "cannot read pixels: " + oneLine(in->geterror()));
+    in->close();
+    return image;
+}
+
+float srgbEncode(float linear) {
+    const double v = linear;
+    return static_cast<float>(v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055);
+}
+
+float srgbDecode(float encoded) {
+    const double v = encoded;
+    return static_cast<float>(v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
+}
+
+}  // namespace rmfx

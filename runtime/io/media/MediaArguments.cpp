@@ -1,0 +1,22 @@
+#include "io/media/MediaArguments.h"
+
+#include <filesystem>
+
+namespace rmfx {
+
+std::optional<std::string> takeMediaArgument(const std::vector<std::string>& args, size_t& i, MediaOptions& media) {
+    const std::string& arg = args[i];
+    if (arg == "--sandbox" || arg == "--no-sandbox") {
+        media.sandbox = arg == "--sandbox";
+        return "";
+    }
+    if (arg != "--media") return std::nullopt;
+    if (i + 1 >= args.size() || args[i + 1].empty()) return "--media needs a folder";
+    const std::string& folder = args[++i];
+    std::error_code error;
+    if (!std::filesystem::is_directory(folder, error)) return "--media: '" + folder + "' is not a folder";
+    media.searchPath.emplace_back(folder);
+    return "";
+}
+
+}  // namespace rmfx

@@ -1,0 +1,146 @@
+#include "io/mesh/BuiltinMeshes.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace rmfx {
+
+namespace {
+
+// Appends a quad with corners centre ± tangent ± bitangent. cross(tangent, bitangent) must
+// point along normal so that the corners run counter-clockwise seen from outside.
+void addQuad(Mesh& mesh, glm::vec3 centre, glm::vec3 tangent, glm::vec3 bitangent, glm::vec3 normal) {
+    const auto base = static_cast<uint32_t>(mesh.positions.size());
+    const std::array<glm::vec2, 4> corners{{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}};
+    for (glm::vec2 c : corners) {
+        mesh.positions.push_back(centre + c.x * tangent + c.y * bitangent);
+        mesh.normals.push_back(normal);
+        mesh.texcoords.push_back((c + 1.0f) * 0.5f);
+    }
+    for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) mesh.indices.push_back(base + i);
+}
+
+}  // namespace
+
+Mesh makeFullscreenTriangle() {
+    Mesh mesh;
+    mesh.positions = {{-1, -1, 0}, {3, -1, 0}, {-1, 3, 0}};
+    mesh.normals.assign(3, glm::vec3(0, 0, 1));
+    mesh.texcoords = {{0, 0}, {2, 0}, {0, 2}};
+    mesh.indices = {0, 1, 2};
+    return mesh;
+}
+
+Mesh makeCube() {
+    struct Face {
+        glm::vec3 normal, tangent, bitangent;
+    };
+    const std::array<Face, 6> faces{{
+        {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}},
+        {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+        {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}},
+        {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
+        {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},
+        {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
+    }};
+    Mesh mesh;
+    for (const Face& f : faces) addQuad(mesh, f.normal, f.tangent, f.bitangent, f.normal);
+    return mesh;
+}
+
+Mesh makeSphere(int segments, int rings) {
+    segments = std::max(segments, 3);
+    rings = std::max(rings, 2);
+    const float pi = 3.14159265358979323846f;
+    Mesh mesh;
+    // Rows from the north pole (y = 1) down; the seam column is duplicated so u runs 0..1.
+    // Pole rows keep one vertex per column so that each pole triangle gets its own u.
+    for (int r = 0; r <= rings; ++r) {
+        const float theta = pi * float(r) / float(rings);
+        for (int s = 0; s <= segments; ++s) {
+            const float phi = 2.0f * pi * float(s) / float(segments);
+            glm::vec3 p(std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi));
+            if (r == 0 || r == rings) p = glm::vec3(0, r == 0 ? 1 : -1, 0);
+            mesh.positions.push_back(p);
+            mesh.normals.push_back(p);
+            float u = float(s) / float(segments);
+            if (r == 0 || r == rings) u = (float(s) + 0.5f) / float(segments);
+            mesh.texcoords.emplace_back(u, 1.0f - float(r) / float(rings));
+        }
+    }
+    const auto at = [&](int r, int s) { return static_cast<uint32_t>(r * (segments + 1) + s); };
+    for (int r = 0; r < rings; ++r) {
+        for (int s = 0; s < segments; ++s) {
+            // Going down a ring and then along a segment turns counter-clockwise seen from outside.
+            // At a pole the quad collapses to one triangle through that pole's column-s vertex.
+            if (r == rings - 1) {
+                mesh.indices.insert(mesh.indices.end(), {at(r, s), at(r + 1, s), at(r, s + 1)});
+                continue;
+            }
+            mesh.indices.insert(mesh.indices.end(), {at(r, s), at(r + 1, s), at(r + 1, s + 1)});
+            if (r != 0) mesh.indices.insert(mesh.indices.end(), {at(r, s), at(r + 1, s + 1), at(r, s + 1)});
+        }
+    }
+    return mesh;
+}
+
+Mesh makePlane() {
+    Mesh mesh;
+    addQuad(mesh, {0, 0, 0}, {1, 0, 0}, {0, 0, -1}, {0, 1, 0});
+    return mesh;
+}
+
+Mesh makeQuad() {
+    Mesh mesh;
+    addQuad(mesh, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1});
+    return mesh;
+}
+
+Mesh makeMesh(BuiltinMesh which) {
+    switch (which) {
+        case BuiltinMesh::FullscreenTriangle: return makeFullscreenTriangle();
+        case BuiltinMesh::Cube: return makeCube();
+        case BuiltinMesh::Sphere: return makeSphere();
+        case BuiltinMesh::Plane: return makePlane();
+        case BuiltinMesh::Teapot: return makeTeapot();
+        case BuiltinMesh::Quad: return makeQuad();
+    }
+    return {};
+}
+
+namespace {
+
+constexpr std::array<BuiltinMesh, 6> kAllBuiltins{BuiltinMesh::FullscreenTriangle, BuiltinMesh::Cube, BuiltinMesh::Sphere,
+                                                  BuiltinMesh::Plane, BuiltinMesh::Teapot, BuiltinMesh::Quad};
+
+bool equalsIgnoringCase(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
+}  // namespace
+
+std::optional<BuiltinMesh> builtinMeshFromName(std::string_view name) {
+    for (BuiltinMesh m : kAllBuiltins)
+        if (equalsIgnoringCase(name, builtinMeshName(m))) return m;
+    return std::nullopt;
+}
+
+const char* builtinMeshName(BuiltinMesh which) {
+    switch (which) {
+        case BuiltinMesh::FullscreenTriangle: return "fullscreen";
+        case BuiltinMesh::Cube: return "cube";
+        case BuiltinMesh::Sphere: return "sphere";
+        case BuiltinMesh::Plane: return "plane";
+        case BuiltinMesh::Teapot: return "teapot";
+        case BuiltinMesh::Quad: return "quad";
+    }
+    return "?";
+}
+
+}  // namespace rmfx

@@ -1,0 +1,34 @@
+#pragma once
+// Meshes a workspace can name instead of a model file: RenderMonkey's stock geometry.
+
+#include <optional>
+#include <string_view>
+
+#include "model/Mesh.h"
+
+namespace rmfx {
+
+Mesh makeMesh(BuiltinMesh which);
+
+// One triangle that covers clip space [-1,1]^2; texcoords are 0..1 over the visible square.
+Mesh makeFullscreenTriangle();
+// Side 2, centred at the origin, 24 vertices so each face has its own normal and 0..1 UVs.
+Mesh makeCube();
+// Radius 1 at the origin; segments around the Y axis, rings from pole to pole.
+Mesh makeSphere(int segments = 48, int rings = 24);
+// 2x2 in XZ at y = 0, facing +Y.
+Mesh makePlane();
+// 2x2 in XY at z = 0, facing +Z, texcoords 0..1 from the bottom-left corner: the stand-in for
+// RenderMonkey's ScreenAlignedQuad.3ds, whose shaders write its positions straight to clip space.
+Mesh makeQuad();
+// The Utah teapot, Y up, centred near the origin and scaled to fit [-1,1];
+// each of its 32 Bezier patches becomes subdivisions x subdivisions quads over its own
+// (subdivisions+1)^2 vertices, patch after patch in the classic order (rim, body, handle,
+// spout, lid, bottom). Texcoords are the patch parameters.
+Mesh makeTeapot(int subdivisions = 10);
+
+// "fullscreen", "cube", "sphere", "plane", "teapot", "quad" (case-insensitive).
+std::optional<BuiltinMesh> builtinMeshFromName(std::string_view name);
+const char* builtinMeshName(BuiltinMesh which);
+
+}  // namespace rmfx

@@ -1,0 +1,297 @@
+#pragma once
+// The in-memory workspace: what every front end (the XML format, a RenderMonkey importer)
+// produces and what validation, the pass graph and the GL executor consume. Plain data:
+// no GL, no file access. Every object remembers where it was declared.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/Diagnostic.h"
+#include "core/Value.h"
+#include "model/Image.h"
+#include "model/Mesh.h"
+
+namespace rmfx {
+
+enum class WidgetHint { Auto, Slider, Drag, Color, Checkbox, Combo };
+
+struct Variable {
+    std::string name;
+    Value value;  // the default, as written in the file
+    // A value the runtime fills every frame, by RenderMonkey's VARIABLE_SEMANTIC name
+    // ("ViewProjection", "Time0_X", "ViewportWidth"…); empty: the variable holds `value`.
+    std::string semantic;
+    bool editable = true;  // shown as a tweakable (RenderMonkey's ARTIST_EDITABLE)
+    std::optional<float> min, max, step;
+    WidgetHint widget = WidgetHint::Auto;
+    std::vector<std::string> options;  // labels of a combo: value i selects options[i]
+    bool hdr = false;                  // colour values may exceed 1
+    std::string description;
+    SourceLocation where;
+};
+
+enum class ColorSpace { Linear, Srgb };
+enum class TextureKind { Texture2D, Cube };
+enum class CubeLayout { Faces, Cross, Equirect };
+
+struct Texture {
+    std::string name;
+    TextureKind kind = TextureKind::Texture2D;
+    CubeLayout layout = CubeLayout::Faces;   // cube maps only
+    std::vector<std::string> files;          // one, or six faces (+x -x +y -y +z -z) for CubeLayout::Faces
+    std::vector<SourceLocation> fileLocations;  // where each file was named
+    ColorSpace colorSpace = ColorSpace::Linear;
+    bool mipmaps = true;
+    int faceSize = 0;  // equirect → cube face size; 0: image height / 2
+    SourceLocation where;
+};
+
+enum class TargetFormat { RGBA8, RGBA16F, RGBA32F, R16F, R32F, RG16F, RG32F, RGBA16, R11G11B10F, RGB10A2, R8, RG8, RG16 };
+
+struct TargetSize {
+    bool relative = true;
+    double scaleX = 1.0, scaleY = 1.0;  // relative: fraction of the viewport
+    int width = 0, height = 0;          // absolute
+};
+
+struct RenderTarget {
+    std::string name;
+    TargetFormat format = TargetFormat::RGBA16F;  // with formatVariable: formats[0]
+    // format-by: the int variable whose value i picks formats[i] (the format follows an encoding
+    // chosen by a variable or --set); empty: the format is fixed.
+    std::string formatVariable;
+    std::vector<TargetFormat> formats;
+    TargetSize size;  // with scaleVariable: scales[0]
+    // scale-by: the int variable whose value i picks scales[i] (a downsample factor chosen by a
+    // variable or --set); empty: the size is fixed.
+    std::string scaleVariable;
+    std::vector<TargetSize> scales;
+    bool mipmaps = false;
+    glm::vec4 initial{0.0f};  // contents before the first frame writes it (seen by frame="previous")
+    SourceLocation where;
+};
+
+enum class Filter { Nearest, Linear };
+enum class MipmapMode { None, Nearest, Linear };
+enum class Wrap { Repeat, Clamp, Mirror, Border };
+
+struct Sampler {
+    std::string uniform;      // the sampler uniform in the pass's shaders
+    std::string texture;      // a texture name, or
+    std::string target;       // a render-target name
+    bool previousFrame = false;  // read the target as the previous frame left it
+    Filter filter = Filter::Linear;
+    MipmapMode mipmap = MipmapMode::None;
+    Wrap wrapS = Wrap::Clamp, wrapT = Wrap::Clamp;
+    glm::vec4 border{0.0f};
+    SourceLocation where;
+};
+
+enum class ShaderStage { Vertex, Fragment };
+
+// The language a shader is written in. rmfx's own workspaces use Glsl; the others come from
+// RenderMonkey (.rfx) imports.
+enum class ShaderDialect {
+    Glsl,        // GLSL 4.50 core; "#version 450 core" is put first when the code has no #version
+    GlslLegacy,  // desktop GLSL 1.10/1.20 with compatibility built-ins (gl_Vertex, ftransform(),
+                 // gl_ModelViewProjectionMatrix, gl_LightSource…); runs in a compatibility-profile
+                 // context; no #version is added
+    GlslEs100,   // GLSL ES 1.00 (precision qualifiers, attribute/varying), run as "#version 100"
+    Hlsl,        // Direct3D 9 HLSL, compiled through glslang's HLSL front end (entryPoint, profile)
+};
+
+// Shader code kept in the workspace file itself, which `#include "NAME"` finds before any file.
+struct CodeSnippet {
+    std::string name;
+    std::string code;
+    int codeLine = 0;  // line of the workspace file where the code starts
+    SourceLocation where;
+};
+
+struct ShaderSource {
+    ShaderStage stage = ShaderStage::Fragment;
+    ShaderDialect dialect = ShaderDialect::Glsl;
+    std::string entryPoint;  // Hlsl: the function to compile ("main" when empty)
+    std::string profile;     // Hlsl: the D3D target it was written for ("vs_2_0", "ps_2_0"…)
+    std::string file;    // relative to the workspace folder; empty for inline code
+    std::string code;    // inline code (CDATA or text)
+    int codeLine = 0;    // line of the workspace file where inline code starts
+    SourceLocation where;
+};
+
+enum class BlendFactor {
+    Zero, One, SrcColor, OneMinusSrcColor, DstColor, OneMinusDstColor,
+    SrcAlpha, OneMinusSrcAlpha, DstAlpha, OneMinusDstAlpha, ConstantColor, OneMinusConstantColor
+};
+enum class BlendOp { Add, Subtract, ReverseSubtract, Min, Max };
+
+struct BlendState {
+    bool enabled = false;
+    BlendFactor srcColor = BlendFactor::One, dstColor = BlendFactor::Zero;
+    BlendFactor srcAlpha = BlendFactor::One, dstAlpha = BlendFactor::Zero;
+    BlendOp colorOp = BlendOp::Add, alphaOp = BlendOp::Add;
+    glm::vec4 constant{0.0f};
+};
+
+enum class CompareFunc { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
+
+struct DepthState {
+    bool test = false;
+    bool write = false;
+    CompareFunc func = CompareFunc::Less;
+};
+
+enum class CullFace { None, Back, Front };
+
+struct RasterState {
+    CullFace cull = CullFace::None;
+    bool frontCounterClockwise = true;
+};
+
+struct ClearState {
+    std::optional<glm::vec4> color;
+    std::optional<float> depth;
+};
+
+struct DrawCall {
+    std::optional<BuiltinMesh> mesh;  // a built-in mesh, or
+    std::string file;                 // a model file relative to the workspace folder
+    glm::vec3 translate{0.0f};
+    glm::vec3 rotateDegrees{0.0f};    // applied X, then Y, then Z
+    glm::vec3 scale{1.0f};
+    SourceLocation where;
+};
+
+// Which mesh data feeds which vertex attribute of a pass (RenderMonkey's RmStreamMap).
+enum class VertexUsage { Position, Normal, TexCoord, Tangent, Binormal, Color };
+
+struct VertexStream {
+    VertexUsage usage = VertexUsage::Position;
+    int usageIndex = 0;     // TEXCOORD1 → 1
+    std::string attribute;  // the attribute it feeds (rm_Vertex, a_position…); empty: the
+                            // compatibility built-in (gl_Vertex, gl_Normal, gl_MultiTexCoordN, gl_Color)
+    // From a stream map every pass shares (RenderMonkey's RmStreamMap): a pass whose shaders do
+    // not read it is normal, and not warned about.
+    bool shared = false;
+    SourceLocation where;
+};
+
+struct Pass {
+    std::string name;
+    std::string target;  // empty: the output
+    bool enabled = true;
+    ClearState clear;
+    BlendState blend;
+    DepthState depth;
+    RasterState raster;
+    std::vector<ShaderSource> shaders;  // at most one per stage; no vertex shader: the built-in one
+    std::vector<Sampler> samplers;
+    std::vector<Variable> constants;    // pass-local values, shadowing workspace variables
+    DrawCall draw;                      // default: the full-screen triangle
+    // Empty: rmfx's layout (locations 0 position, 1 normal, 2 texcoord). Else these streams,
+    // by attribute name or compatibility built-in.
+    std::vector<VertexStream> streams;
+    SourceLocation where;
+};
+
+// A named group of passes that a scene asks for or leaves out (<effect>). Shaders see
+// RMFX_EFFECT_<name>: false when the effect is left out, else true, or a uniform bool that follows
+// its switch variables when it has any.
+struct Effect {
+    std::string name;
+    std::vector<std::string> passes;
+    // Variables that switch it off at run time: it runs while any of them is true or non-zero.
+    std::vector<std::string> switches;
+    std::string description;
+    SourceLocation where;
+};
+
+struct Output {
+    std::string target;  // empty: the implicit target named "output"
+    // The effects this workspace asks for (<output effects="…">); nullopt: every declared effect.
+    std::optional<std::vector<std::string>> effects;
+    TargetFormat format = TargetFormat::RGBA16F;  // of the implicit target
+    DisplayTransform transform = DisplayTransform::Srgb;
+    SourceLocation where;
+};
+
+struct OrbitCameraSettings {
+    glm::vec3 target{0.0f};
+    float distance = 4.0f;
+    float yawDegrees = 30.0f;     // about +Y, 0 looks down -Z
+    float pitchDegrees = 15.0f;   // above the horizon
+    float fovYDegrees = 60.0f;
+    float nearPlane = 0.05f, farPlane = 100.0f;
+    SourceLocation where;
+};
+
+// Core: rmfx's own workspaces. Compatibility: a compatibility-profile context, for legacy GLSL
+// and the fixed-function matrices and lights it reads (RenderMonkey imports).
+enum class GlProfile { Core, Compatibility };
+
+struct Workspace {
+    GlProfile profile = GlProfile::Core;
+    std::filesystem::path path;  // the file it came from ("<built-in>" for embedded text)
+    std::filesystem::path folder;  // shader, texture and model paths are relative to it
+    std::filesystem::path includeRoot;  // #include may not leave it; empty: `folder` (see includeFolder)
+    SourceLocation includeRootWhere;    // where includeRoot was declared
+    std::string name;
+    std::string description;
+    int width = 512, height = 512;  // default viewport size
+    std::vector<Variable> variables;
+    std::vector<CodeSnippet> snippets;
+    std::vector<Texture> textures;
+    std::vector<RenderTarget> targets;
+    std::vector<Pass> passes;  // run in this order
+    std::vector<Effect> effects;
+    Output output;
+    OrbitCameraSettings camera;
+
+    static constexpr const char* implicitOutputName = "output";
+
+    const Variable* findVariable(std::string_view name) const;
+    Variable* findVariable(std::string_view name);
+    const Texture* findTexture(std::string_view name) const;
+    const RenderTarget* findTarget(std::string_view name) const;
+    const Pass* findPass(std::string_view name) const;
+    const Effect* findEffect(std::string_view name) const;
+    const Effect* effectOfPass(std::string_view passName) const;  // null: the pass belongs to no effect
+    // The name of the target the output comes from: output.target or the implicit one.
+    std::string outputTargetName() const;
+    // The target a pass writes, resolved: "" → the output target.
+    std::string passTargetName(const Pass& pass) const;
+    // Whether GlExecutor::readTarget can read `name`: a declared target or the output.
+    bool canReadTarget(std::string_view name) const;
+    // For messages about a target that is not there: "it has: a, b; the output is 'output'".
+    std::string describeTargets() const;
+
+    // The folder #include may not leave: the workspace folder, or the ancestor <workspace include-root> names.
+    const std::filesystem::path& includeFolder() const { return includeRoot.empty() ? folder : includeRoot; }
+};
+
+const char* targetFormatName(TargetFormat format);
+std::optional<TargetFormat> targetFormatFromName(std::string_view name);
+int targetFormatBytesPerPixel(TargetFormat format);
+// The format a target is allocated with when its format variable (if any) has `value`; nullopt
+// when the value picks none of its formats.
+std::optional<TargetFormat> selectTargetFormat(const RenderTarget& target, const Value* value);
+// "variable 'V' = 7 picks none of the 6 formats of target 'T'": why selectTargetFormat gave none.
+std::string formatChoiceError(const RenderTarget& target, const Value* value);
+
+// The size a target is allocated with when its scale variable (if any) has `value`; nullopt when
+// the value picks none of its scales.
+std::optional<TargetSize> selectTargetSize(const RenderTarget& target, const Value* value);
+// "variable 'V' = 7 picks none of the 3 scales of target 'T'": why selectTargetSize gave none.
+std::string scaleChoiceError(const RenderTarget& target, const Value* value);
+
+// Viewport-relative sizes round up, never below 1: ceil(viewport × scale), so a chain of
+// half-size targets covers every source pixel (5 → 3 → 2 → 1).
+glm::ivec2 resolveTargetSize(const TargetSize& size, glm::ivec2 viewport);
+
+}  // namespace rmfx

@@ -1,0 +1,23 @@
+#pragma once
+// Renders a workspace for a fixed number of frames with a fixed time step: what `rmfx render`,
+// replay tests and the GL tests all do. Needs a current GL context.
+
+#include <functional>
+#include <memory>
+#include <string>
+
+#include <glm/vec2.hpp>
+
+#include "core/Diagnostic.h"
+#include "gl/GlExecutor.h"
+#include "model/RunSettings.h"
+#include "model/Workspace.h"
+
+namespace rmfx {
+
+// Frame i runs at time i·dt with deltaTime dt; with a frame budget each frame is waited for. Returns the executor after the last frame, or
+// nullptr with diagnostics when creation or a frame failed.
+std::unique_ptr<GlExecutor> runHeadless(const Workspace& ws, const RunSettings& settings, Diagnostics& diagnostics,
+                                        const ExecutorOptions& options = {});
+
+}  // namespace rmfx

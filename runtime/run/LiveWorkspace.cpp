@@ -1,0 +1,327 @@
+#include "run/LiveWorkspace.h"
+
+#include <algorithm>
+
+#include "frontend/rfx/RfxImporter.h"
+#include "frontend/workspace/WorkspaceParser.h"
+#include "validation/WorkspaceLoader.h"
+
+namespace rmfx {
+namespace {
+
+Diagnostics withSeverity(const Diagnostics& all, Diagnostic::Severity severity) {
+    Diagnostics out;
+    for (const Diagnostic& d : all)
+        if (d.severity == severity) out.push_back(d);
+    return out;
+}
+
+void append(Diagnostics& to, const Diagnostics& from) { to.insert(to.end(), from.begin(), from.end()); }
+
+bool sameCamera(const OrbitCameraSettings& a, const OrbitCameraSettings& b) {
+    return a.target == b.target && a.distance == b.distance && a.yawDegrees == b.yawDegrees &&
+           a.pitchDegrees == b.pitchDegrees && a.fovYDegrees == b.fovYDegrees && a.nearPlane == b.nearPlane &&
+           a.farPlane == b.farPlane;
+}
+
+}  // namespace
+
+LiveWorkspace::~LiveWorkspace() {
+    executor_.reset();  // refers to workspace_
+}
+
+std::unique_ptr<LiveWorkspace> LiveWorkspace::open(const std::filesystem::path& file, glm::ivec2 viewport,
+                                                   const std::vector<std::pair<std::string, std::string>>& overrides,
+                                                   Diagnostics& diagnostics, const MediaOptions& media,
+                                                   const WorkspaceLoadOptions& load) {
+    std::unique_ptr<LiveWorkspace> live(new LiveWorkspace);
+    live->loadOptions_ = load;
+    live->file_ = file;
+    live->media_ = media;
+    live->requestedViewport_ = viewport;
+    live->overrides_ = overrides;
+    Diagnostics found;
+    auto build = live->load(found);
+    append(diagnostics, found);
+    if (!build) return nullptr;
+    live->adopt(std::move(*build), withSeverity(found, Diagnostic::Severity::Warning));
+    return live;
+}
+
+glm::ivec2 LiveWorkspace::viewportFor(const Workspace& ws) const {
+    return requestedViewport_ == glm::ivec2(0) ? glm::ivec2(ws.width, ws.height) : requestedViewport_;
+}
+
+std::optional<LiveWorkspace::Build> LiveWorkspace::load(Diagnostics& diagnostics, const std::set<std::string>& staleTextures) {
+    failedDependencies_ = {};
+    // Reloads leave the shaders to the GL compiler, whose messages are mapped to file and line
+    // just as glslang's are: that halves the time a reload of the workspace file takes.
+    ValidationOptions validation;
+    validation.compileShaders = !executor_;
+    validation.media = media_;
+    LoadedWorkspace loaded = loadWorkspace(file_, validation, loadOptions_);
+    append(diagnostics, loaded.diagnostics);
+    if (!loaded.workspace) {
+        // Watch what the broken file names too (a texture it names that is not there yet, say).
+        ParsedWorkspace parsed = isRfxPath(file_) ? importRfxFile(file_, {loadOptions_.effect}) : parseWorkspaceFile(file_);
+        if (parsed.workspace) failedDependencies_ = findWorkspaceDependencies(*parsed.workspace);
+        return std::nullopt;
+    }
+    Build build;
+    build.workspace = std::make_unique<Workspace>(std::move(*loaded.workspace));
+    // Overrides from the command line: errors the first time; after that a variable the edited
+    // file no longer declares only loses its override (the file stays loadable).
+    for (const auto& override : overrides_) {
+        Diagnostics bad = applyOverrides(*build.workspace, {override});
+        if (!executor_)
+            append(diagnostics, bad);
+        else
+            for (Diagnostic& d : bad) {
+                d.severity = Diagnostic::Severity::Warning;
+                d.message += " (the override is ignored)";
+                diagnostics.push_back(d);
+            }
+    }
+    build.dependencies = findWorkspaceDependencies(*build.workspace);
+    if (hasErrors(diagnostics)) {
+        failedDependencies_ = std::move(build.dependencies);
+        return std::nullopt;
+    }
+    // Watched before the build reads them: a save during the build is then seen, not lost.
+    failedDependencies_ = build.dependencies;
+    updateWatches();
+    glm::ivec2 viewport = viewportFor(*build.workspace);
+    if (executor_) {
+        // Textures whose files did not change are copied from the running build, not decoded again.
+        std::vector<std::string> reusable;
+        for (const Texture& t : workspace_->textures)
+            if (!pendingTextures_.count(t.name) && !staleTextures.count(t.name)) reusable.push_back(t.name);
+        build.executor = GlExecutor::createReusing(*build.workspace, viewport, diagnostics, *executor_, reusable);
+    } else {
+        build.executor = GlExecutor::create(*build.workspace, viewport, diagnostics);
+    }
+    if (!build.executor) return std::nullopt;
+    return build;
+}
+
+void LiveWorkspace::adopt(Build build, Diagnostics warnings) {
+    Workspace& ws = *build.workspace;
+    GlExecutor& exec = *build.executor;
+    // The camera the user moved stays, unless the file's <camera> itself was edited.
+    if (executor_ && sameCamera(workspace_->camera, ws.camera)) exec.camera() = executor_->camera();
+    for (auto it = tweaks_.begin(); it != tweaks_.end();) {
+        const std::string& name = it->first;
+        const Variable* v = ws.findVariable(name);
+        std::string why;
+        if (!v)
+            why = "the workspace no longer declares it";
+        else if (v->value.type != it->second.type)
+            why = std::string("it is now a ") + valueTypeName(v->value.type) + ", not a " + valueTypeName(it->second.type);
+        else if (std::string refused = exec.setVariable(name, it->second); !refused.empty())
+            why = refused;
+        if (why.empty()) {
+            ++it;
+            continue;
+        }
+        warnings.push_back({Diagnostic::Severity::Warning, v ? v->where : SourceLocation{ws.path.string(), 0},
+                            "variable " + name, "the value you set (" + formatValue(it->second) + ") is dropped: " + why});
+        it = tweaks_.erase(it);
+    }
+    executor_.reset();
+    workspace_ = std::move(build.workspace);
+    executor_ = std::move(build.executor);
+    dependencies_ = std::move(build.dependencies);
+    failedDependencies_ = {};
+    // Everything was just read from the files as they are: nothing is left to retry.
+    workspacePending_ = false;
+    pendingPasses_.clear();
+    pendingTextures_.clear();
+    pendingModels_.clear();
+    failures_.clear();
+    append(warnings_, warnings);
+    updateWatches();
+    collectErrors();
+}
+
+bool LiveWorkspace::rebuildWorkspace(const std::set<std::string>& staleTextures) {
+    Diagnostics found;
+    auto build = load(found, staleTextures);
+    if (!build) {
+        workspacePending_ = true;
+        failures_["workspace"] = withSeverity(found, Diagnostic::Severity::Error);
+        updateWatches();
+        return false;
+    }
+    adopt(std::move(*build), withSeverity(found, Diagnostic::Severity::Warning));
+    lastReload_.workspaceRebuilt = true;
+    return true;
+}
+
+void LiveWorkspace::recompilePendingPasses() {
+    std::vector<std::string> names;  // in schedule order
+    for (const Pass& pass : workspace_->passes)
+        if (pendingPasses_.count(pass.name)) names.push_back(pass.name);
+    Diagnostics found = executor_->recompilePasses(names);
+    append(warnings_, withSeverity(found, Diagnostic::Severity::Warning));
+    if (hasErrors(found)) {
+        failures_["passes"] = withSeverity(found, Diagnostic::Severity::Error);
+        lastReload_.failed = true;
+        return;
+    }
+    failures_.erase("passes");
+    pendingPasses_.clear();
+    lastReload_.recompiledPasses = names;
+}
+
+void LiveWorkspace::reloadPendingTextures() {
+    for (auto it = pendingTextures_.begin(); it != pendingTextures_.end();) {
+        Diagnostics found = executor_->reloadTexture(*it);
+        if (hasErrors(found)) {
+            failures_["texture " + *it] = found;
+            lastReload_.failed = true;
+            ++it;
+            continue;
+        }
+        failures_.erase("texture " + *it);
+        lastReload_.reloadedTextures.push_back(*it);
+        it = pendingTextures_.erase(it);
+    }
+}
+
+void LiveWorkspace::reloadPendingModels() {
+    for (auto it = pendingModels_.begin(); it != pendingModels_.end();) {
+        Diagnostics found = executor_->reloadModel(*it);
+        if (hasErrors(found)) {
+            failures_["model " + *it] = found;
+            lastReload_.failed = true;
+            ++it;
+            continue;
+        }
+        failures_.erase("model " + *it);
+        lastReload_.reloadedModels.push_back(*it);
+        it = pendingModels_.erase(it);
+    }
+}
+
+void LiveWorkspace::updateWatches() {
+    // The workspace file as named too: when it is a symbolic link, replacing the link is a change.
+    std::vector<std::filesystem::path> files{dependencyPath(file_), std::filesystem::absolute(file_).lexically_normal()};
+    for (const auto* deps : {&dependencies_, &failedDependencies_})
+        for (const FileDependency& d : deps->files)
+            if (std::find(files.begin(), files.end(), d.file) == files.end()) files.push_back(d.file);
+    watcher_.watch(files);
+}
+
+void LiveWorkspace::collectErrors() {
+    errors_.clear();
+    if (auto it = failures_.find("workspace"); it != failures_.end()) append(errors_, it->second);
+    for (const auto& [unit, found] : failures_)
+        if (unit != "workspace") append(errors_, found);
+}
+
+bool LiveWorkspace::poll() {
+    std::vector<std::filesystem::path> changed = watcher_.poll();
+    // A file appearing next to the watched ones may be what a failed build was missing (a new
+    // #include, say): retry what failed.
+    bool retry = watcher_.sawOtherFileAppear() && !failures_.empty();
+    if (changed.empty() && !retry) return false;
+    FileWatcher::Clock::time_point start = watcher_.lastChangeTime();
+    if (start == FileWatcher::Clock::time_point{}) start = FileWatcher::Clock::now();
+
+    std::set<std::string> passes, textures, models;
+    bool workspaceChanged = false;
+    std::filesystem::path self = dependencyPath(file_);
+    for (const auto& file : changed) {
+        if (dependencyPath(file) == self) {
+            workspaceChanged = true;
+            continue;
+        }
+        // Files only the broken workspace file names matter through its retry below.
+        const FileDependency* dep = dependencies_.find(file);
+        if (!dep) continue;
+        switch (dep->kind) {
+            case DependencyKind::Workspace: workspaceChanged = true; break;
+            case DependencyKind::Shader:
+            case DependencyKind::Include: passes.insert(dep->passes.begin(), dep->passes.end()); break;
+            case DependencyKind::Texture: textures.insert(dep->textures.begin(), dep->textures.end()); break;
+            case DependencyKind::Model:
+                for (const std::string& pass : dep->passes)
+                    if (const Pass* p = workspace_->findPass(pass)) models.insert(p->draw.file);
+                break;
+        }
+    }
+    bool workspaceRetry = workspacePending_ && (!changed.empty() || retry);
+    bool attempted = workspaceChanged || workspaceRetry || !passes.empty() || !textures.empty() || !models.empty() ||
+                     (retry && (!pendingPasses_.empty() || !pendingTextures_.empty() || !pendingModels_.empty()));
+    if (!attempted) return false;
+
+    lastReload_ = {};
+    lastReload_.changedFiles = changed;
+    warnings_.clear();
+    bool rebuilt = (workspaceChanged || workspaceRetry) && rebuildWorkspace(textures);
+    if (!rebuilt) {
+        // The running build is kept; what else changed is rebuilt into it.
+        pendingPasses_.insert(passes.begin(), passes.end());
+        pendingTextures_.insert(textures.begin(), textures.end());
+        pendingModels_.insert(models.begin(), models.end());
+        if (!pendingPasses_.empty() && (!passes.empty() || retry)) recompilePendingPasses();
+        if (!pendingTextures_.empty() && (!textures.empty() || retry)) reloadPendingTextures();
+        if (!pendingModels_.empty() && (!models.empty() || retry)) reloadPendingModels();
+        // Shaders may include other files now.
+        dependencies_ = findWorkspaceDependencies(*workspace_);
+        updateWatches();
+    }
+    collectErrors();
+    lastReload_.failed = lastReload_.failed || (!rebuilt && workspacePending_);
+    lastReloadMilliseconds_ =
+        std::chrono::duration<double, std::milli>(FileWatcher::Clock::now() - start).count();
+    return true;
+}
+
+GlExecutor& LiveWorkspace::executor() { return *executor_; }
+const Workspace& LiveWorkspace::workspace() const { return *workspace_; }
+const Diagnostics& LiveWorkspace::errors() const { return errors_; }
+double LiveWorkspace::lastReloadMilliseconds() const { return lastReloadMilliseconds_; }
+std::vector<std::filesystem::path> LiveWorkspace::watchedFiles() const { return watcher_.files(); }
+
+std::string LiveWorkspace::setVariable(const std::string& name, const Value& value) {
+    std::string why = executor_->setVariable(name, value);
+    if (why.empty()) tweaks_[name] = value;
+    return why;
+}
+
+void LiveWorkspace::resetVariable(const std::string& name) {
+    tweaks_.erase(name);
+    if (const Variable* v = workspace_->findVariable(name)) executor_->setVariable(name, v->value);
+}
+
+Diagnostics LiveWorkspace::setViewport(glm::ivec2 viewport) {
+    Diagnostics found;
+    glm::ivec2 previous = requestedViewport_;
+    requestedViewport_ = viewport;
+    Build build;
+    build.workspace = std::make_unique<Workspace>(*workspace_);
+    build.dependencies = dependencies_;
+    build.executor = GlExecutor::create(*build.workspace, viewportFor(*build.workspace), found);
+    if (!build.executor) {
+        requestedViewport_ = previous;
+        return found;
+    }
+    // The new build read every shader, image and model as they are now, but not the workspace
+    // file: a failure of that stays.
+    bool workspaceFailed = workspacePending_;
+    Diagnostics workspaceErrors = failures_.count("workspace") ? failures_["workspace"] : Diagnostics{};
+    WorkspaceDependencies failed = failedDependencies_;
+    warnings_.clear();
+    adopt(std::move(build), withSeverity(found, Diagnostic::Severity::Warning));
+    if (workspaceFailed) {
+        workspacePending_ = true;
+        failures_["workspace"] = workspaceErrors;
+        failedDependencies_ = std::move(failed);
+        updateWatches();
+        collectErrors();
+    }
+    return found;
+}
+
+}  // namespace rmfx

@@ -1,0 +1,126 @@
+#pragma once
+// A workspace that follows its files: hot reload for the editor. Watches every file the
+// workspace depends on (WorkspaceDependencies, FileWatcher) and, when one changes, rebuilds only
+// what it feeds: a shader or include file recompiles the passes whose programs read it, an image
+// reloads its texture, a model its mesh; the workspace file loads, validates and builds a new
+// executor, keeping the values the user tweaked and the camera.
+//
+// A failed rebuild of any kind leaves the running build untouched (its programs, textures and
+// the last frame it rendered) and reports why in errors(), with file and line. What failed is
+// retried with every later change to its files, so the next good save recovers without a restart.
+// Needs the GL context the executor was built in to be current when poll() is called.
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "core/Diagnostic.h"
+#include "core/Value.h"
+#include "frontend/workspace/WorkspaceDependencies.h"
+#include "gl/GlExecutor.h"
+#include "io/file/FileWatcher.h"
+#include "io/media/MediaResolver.h"
+#include "model/Workspace.h"
+#include "validation/WorkspaceLoader.h"
+
+namespace rmfx {
+
+// What the last poll() that found changes did.
+struct ReloadReport {
+    std::vector<std::filesystem::path> changedFiles;  // as the watcher reported them
+    bool workspaceRebuilt = false;                    // a new executor replaced the old one
+    std::vector<std::string> recompiledPasses;        // passes whose new programs were swapped in
+    std::vector<std::string> reloadedTextures;
+    std::vector<std::string> reloadedModels;          // model files, as the passes name them
+    bool failed = false;                              // something could not be rebuilt: see errors()
+};
+
+class LiveWorkspace {
+public:
+    // Loads (runtime/WorkspaceLoader: loadWorkspace + applyOverrides), validates and builds the
+    // workspace for `viewport` (0,0 = the workspace's size), watching every file it depends on.
+    // Returns nullptr with diagnostics when the FIRST build fails (nothing good to keep yet).
+    static std::unique_ptr<LiveWorkspace> open(const std::filesystem::path& file, glm::ivec2 viewport,
+                                               const std::vector<std::pair<std::string, std::string>>& overrides,
+                                               Diagnostics& diagnostics, const MediaOptions& media = {},
+                                               const WorkspaceLoadOptions& load = {});
+    ~LiveWorkspace();
+    LiveWorkspace(const LiveWorkspace&) = delete;
+    LiveWorkspace& operator=(const LiveWorkspace&) = delete;
+
+    // errors(): what failed to rebuild and still runs from its last good build (the workspace
+    // file, the passes of a shader change, a texture, a model), with file and line; it empties
+    // as each is rebuilt from a good save, and once nothing failed it is empty.
+    bool poll();                        // non-blocking: handles changes seen since the last call; true if something was rebuilt (or a rebuild failed)
+    GlExecutor& executor();             // the last good build
+    const Workspace& workspace() const; // the workspace of the last good build
+    const Diagnostics& errors() const;  // diagnostics of the last failed reload; empty after a good one
+    std::string setVariable(const std::string& name, const Value& value);  // as GlExecutor::setVariable, and remembered across reloads
+    void resetVariable(const std::string& name);  // back to the file's default, forgets the tweak
+    double lastReloadMilliseconds() const;        // from the file event to the end of the rebuild
+    std::vector<std::filesystem::path> watchedFiles() const;
+
+    // Additions to the editor's API.
+    // Warnings of the last rebuild: a tweaked value dropped because its variable is gone or
+    // changed type, validation warnings. Errors are in errors().
+    const Diagnostics& warnings() const { return warnings_; }
+    const ReloadReport& lastReload() const { return lastReload_; }
+    const std::map<std::string, Value>& tweakedValues() const { return tweaks_; }
+    // Builds the workspace anew for another viewport size (0,0 = the workspace's size), keeping
+    // tweaks and camera; on failure the old build stays and the diagnostics say why.
+    Diagnostics setViewport(glm::ivec2 viewport);
+    // The watcher's own problems (inotify limits), one sentence each; watching goes on by time stamp.
+    const std::vector<std::string>& watcherErrors() const { return watcher_.errors(); }
+
+private:
+    struct Build {
+        std::unique_ptr<Workspace> workspace;  // first: the executor refers to it
+        std::unique_ptr<GlExecutor> executor;
+        WorkspaceDependencies dependencies;
+    };
+
+    LiveWorkspace() = default;
+    // Loads, validates and builds the workspace file; on failure fills failedDependencies_ with
+    // what the broken file names, so that those files are watched too.
+    // Textures named in staleTextures changed on disk: not copied from the running build.
+    std::optional<Build> load(Diagnostics& diagnostics, const std::set<std::string>& staleTextures = {});
+    bool rebuildWorkspace(const std::set<std::string>& staleTextures);
+    void adopt(Build build, Diagnostics warnings);
+    void recompilePendingPasses();
+    void reloadPendingTextures();
+    void reloadPendingModels();
+    void updateWatches();
+    void collectErrors();
+    glm::ivec2 viewportFor(const Workspace& ws) const;
+
+    std::filesystem::path file_;
+    glm::ivec2 requestedViewport_{0};
+    std::vector<std::pair<std::string, std::string>> overrides_;
+    MediaOptions media_;  // every reload resolves file references as the first load did
+    WorkspaceLoadOptions loadOptions_;  // the .rfx effect chosen with --effect
+
+    std::unique_ptr<Workspace> workspace_;  // before executor_: destroyed after it
+    std::unique_ptr<GlExecutor> executor_;
+    WorkspaceDependencies dependencies_;
+    WorkspaceDependencies failedDependencies_;  // of a workspace file that failed to build
+    FileWatcher watcher_;
+
+    std::map<std::string, Value> tweaks_;
+    // What failed and is retried with the next change: the workspace file, passes (as one group,
+    // all or nothing), textures, model files.
+    bool workspacePending_ = false;
+    std::set<std::string> pendingPasses_, pendingTextures_, pendingModels_;
+    std::map<std::string, Diagnostics> failures_;  // "workspace", "passes", "texture NAME", "model FILE"
+    Diagnostics errors_, warnings_;
+    ReloadReport lastReload_;
+    double lastReloadMilliseconds_ = 0.0;
+};
+
+}  // namespace rmfx

@@ -1,0 +1,36 @@
+#pragma once
+// Compiles and links a pass's GLSL with glslang, without any GL context, to report errors with
+// portable messages and to list the active uniforms with their types.
+
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/Diagnostic.h"
+#include "frontend/shader/PassProgram.h"
+#include "model/UniformType.h"
+
+namespace rmfx {
+
+struct ActiveUniform {
+    std::string name;
+    UniformType type = UniformType::Other;
+    int arraySize = 1;
+    int glType = 0;
+};
+
+// Returns the active uniforms, or nullopt (with diagnostics) when a stage fails to compile or link.
+// With `vertexInputs`, also the names of the active vertex shader inputs (attributes).
+std::optional<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSource& program,
+                                                           const std::string& element, Diagnostics& diagnostics,
+                                                           std::vector<std::string>* vertexInputs = nullptr);
+
+// Where a uniform is declared, found by scanning the stage texts: the first `uniform TYPE NAME`.
+std::optional<SourceLocation> findUniformDeclaration(const PassProgramSource& program, const std::string& name);
+
+// The uniforms the stage texts declare with an initial value (`uniform float k = 0.5;`, which the
+// HLSL translator writes for initialised globals): left unbound, they keep that value.
+std::set<std::string> uniformsWithInitializers(const PassProgramSource& program);
+
+}  // namespace rmfx

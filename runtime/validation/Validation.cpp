@@ -1,0 +1,263 @@
+#include "validation/Validation.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "frontend/shader/PassProgram.h"
+#include "graph/PassGraph.h"
+#include "graph/UniformBinding.h"
+#include "model/EffectSelection.h"
+#include "validation/GlslangCheck.h"
+
+namespace rmfx {
+namespace {
+
+class Validator {
+public:
+    Validator(const Workspace& ws, const ValidationOptions& options, Diagnostics& out)
+        : ws_(ws), options_(options), out_(out) {}
+
+    void run() {
+        checkUniqueNames();
+        checkTargets();
+        checkOutput();
+        checkEffects();
+        checkSemantics();
+        for (const Pass& pass : ws_.passes) checkPass(pass);
+        Diagnostics order = checkPassOrder(ws_);
+        out_.insert(out_.end(), order.begin(), order.end());
+    }
+
+private:
+    void error(const SourceLocation& where, const std::string& element, const std::string& message) {
+        out_.push_back({Diagnostic::Severity::Error, where, element, message});
+    }
+    void warning(const SourceLocation& where, const std::string& element, const std::string& message) {
+        out_.push_back({Diagnostic::Severity::Warning, where, element, message});
+    }
+    // "color (rgb)" and "color (rgba)" tell the two colour types apart.
+    static std::string typeWithWidth(ValueType type) {
+        if (type == ValueType::Color3) return "color (rgb)";
+        if (type == ValueType::Color4) return "color (rgba)";
+        return valueTypeName(type);
+    }
+    static std::string at(const SourceLocation& where) { return "line " + std::to_string(where.line); }
+
+    // tag(item): the element the item was declared with ("float", "cubemap", …).
+    template <class T, class Tag>
+    void unique(const std::vector<T>& items, const char* kind, Tag tag) {
+        std::map<std::string, SourceLocation> seen;
+        for (const T& item : items) {
+            auto [it, fresh] = seen.emplace(item.name, item.where);
+            if (!fresh)
+                error(item.where, "<" + std::string(tag(item)) + " name=\"" + item.name + "\">",
+                      std::string("duplicate ") + kind + " name '" + item.name + "' (first declared at " +
+                          at(it->second) + ")");
+        }
+    }
+
+    void checkUniqueNames() {
+        unique(ws_.variables, "variable", [](const Variable& v) { return valueTypeName(v.value.type); });
+        unique(ws_.textures, "texture",
+               [](const Texture& t) { return t.kind == TextureKind::Cube ? "cubemap" : "texture"; });
+        unique(ws_.targets, "target", [](const RenderTarget&) { return "target"; });
+        unique(ws_.passes, "pass", [](const Pass&) { return "pass"; });
+        unique(ws_.snippets, "code snippet", [](const CodeSnippet&) { return "code"; });
+        if (ws_.output.target.empty())
+            if (const RenderTarget* t = ws_.findTarget(Workspace::implicitOutputName))
+                error(t->where, "<target name=\"output\">",
+                      "the name 'output' is taken by the implicit output target; rename the target, or make it the "
+                      "output with <output target=\"output\"/>");
+    }
+
+    void checkTargets() {
+        for (const RenderTarget& t : ws_.targets) {
+            if (!t.formatVariable.empty())
+                checkChoiceVariable(t, "format-by", t.formatVariable, t.formats.size(), "format",
+                                    selectTargetFormat(t, valueOf(t.formatVariable)).has_value());
+            if (!t.scaleVariable.empty())
+                checkChoiceVariable(t, "scale-by", t.scaleVariable, t.scales.size(), "scale",
+                                    selectTargetSize(t, valueOf(t.scaleVariable)).has_value());
+        }
+    }
+
+    const Value* valueOf(const std::string& name) const {
+        const Variable* v = ws_.findVariable(name);
+        return v ? &v->value : nullptr;
+    }
+
+    // format-by / scale-by: an int variable with one option per choice, whose value picks one.
+    void checkChoiceVariable(const RenderTarget& t, const char* attribute, const std::string& variable, size_t choices,
+                             const std::string& noun, bool picksOne) {
+        std::string element = "<target name=\"" + t.name + "\">";
+        const Variable* v = ws_.findVariable(variable);
+        if (!v) {
+            error(t.where, element, std::string(attribute) + " names '" + variable + "', which is not a declared variable");
+            return;
+        }
+        if (v->value.type != ValueType::Int) {
+            error(t.where, element, std::string(attribute) + " variable '" + v->name + "' (" + at(v->where) + ") is a " +
+                                        valueTypeName(v->value.type) + "; it must be an int");
+            return;
+        }
+        std::string count = std::to_string(choices);
+        if (!v->options.empty() && v->options.size() != choices)
+            error(t.where, element, noun + " lists " + count + " " + noun + "s, but variable '" + v->name + "' (" +
+                                        at(v->where) + ") has " + std::to_string(v->options.size()) + " options: give one " +
+                                        noun + " per option");
+        else if (!picksOne)
+            error(t.where, element, "variable '" + v->name + "' = " + std::to_string(v->value.asInt()) + " picks none of the " +
+                                        count + " " + noun + "s (values 0 to " + std::to_string(choices - 1) + ")");
+    }
+
+    void checkOutput() {
+        if (!ws_.output.target.empty() && !ws_.findTarget(ws_.output.target))
+            error(ws_.output.where, "<output>", "target '" + ws_.output.target + "' is not declared");
+        // The parser reports this on the <workspace> element; a workspace built otherwise has no line.
+        if (ws_.passes.empty()) error({ws_.path.string(), 0}, "<workspace>", "no <pass>: nothing to render");
+    }
+
+    void checkEffects() {
+        unique(ws_.effects, "effect", [](const Effect&) { return "effect"; });
+        std::map<std::string, const Effect*> owner;
+        for (const Effect& e : ws_.effects) {
+            std::string element = "<effect name=\"" + e.name + "\">";
+            for (const std::string& p : e.passes) {
+                if (!ws_.findPass(p)) {
+                    error(e.where, element, "pass '" + p + "' is not declared");
+                    continue;
+                }
+                auto [it, fresh] = owner.emplace(p, &e);
+                if (!fresh)
+                    error(e.where, element, "pass '" + p + "' already belongs to effect '" + it->second->name + "' (" +
+                                                at(it->second->where) + "): a pass belongs to one effect");
+            }
+            for (const std::string& name : e.switches) {
+                const Variable* v = ws_.findVariable(name);
+                if (!v)
+                    error(e.where, element, "switch '" + name + "' is not a declared variable");
+                else if (v->value.type != ValueType::Bool && v->value.type != ValueType::Int &&
+                         v->value.type != ValueType::Float)
+                    error(e.where, element, "switch '" + name + "' (" + at(v->where) + ") is a " +
+                                                valueTypeName(v->value.type) + "; a switch is a bool, int or float");
+            }
+        }
+        if (ws_.output.effects)
+            for (const std::string& name : *ws_.output.effects)
+                if (!ws_.findEffect(name))
+                    error(ws_.output.where, "<output>", "effects: no effect named '" + name + "' is declared");
+    }
+
+    // An unknown semantic is no error: RenderMonkey knew a few rmfx does not fill.
+    void checkSemantics() {
+        auto check = [&](const Variable& v) {
+            if (v.semantic.empty() || findSemantic(v.semantic)) return;
+            warning(v.where, "<" + std::string(valueTypeName(v.value.type)) + " name=\"" + v.name + "\">",
+                    "variable '" + v.name + "' (" + at(v.where) + ") has semantic '" + v.semantic +
+                        "', which rmfx does not fill: it keeps its stored value " + formatValue(v.value));
+        };
+        for (const Variable& v : ws_.variables) check(v);
+        for (const Pass& p : ws_.passes)
+            for (const Variable& c : p.constants) check(c);
+    }
+
+    void checkPass(const Pass& pass) {
+        std::string label = passLabel(pass);
+        for (const ShaderSource& s : pass.shaders)
+            if (s.dialect == ShaderDialect::GlslLegacy && ws_.profile != GlProfile::Compatibility)
+                error(s.where, "<shader>", "legacy GLSL (dialect=\"glsl110\") in " + label +
+                                               " needs a compatibility-profile context: <workspace profile=\"compatibility\">");
+        if (!pass.target.empty() && !ws_.findTarget(pass.target) &&
+            !(pass.target == Workspace::implicitOutputName && ws_.output.target.empty()))
+            error(pass.where, label, "target '" + pass.target + "' is not declared");
+        std::string writes = ws_.passTargetName(pass);
+
+        std::set<std::string> samplerNames;
+        for (const Sampler& s : pass.samplers) {
+            std::string element = "<sampler name=\"" + s.uniform + "\">";
+            if (!samplerNames.insert(s.uniform).second)
+                error(s.where, element, "a second sampler named '" + s.uniform + "' in " + label);
+            if (!s.texture.empty()) {
+                const Texture* t = ws_.findTexture(s.texture);
+                if (!t) error(s.where, element, "texture '" + s.texture + "' is not declared");
+                else if (s.mipmap != MipmapMode::None && !t->mipmaps)
+                    error(s.where, element, "mipmap filtering, but texture '" + s.texture + "' has mipmaps=\"false\"");
+                continue;
+            }
+            const RenderTarget* t = ws_.findTarget(s.target);
+            bool implicit = s.target == Workspace::implicitOutputName && ws_.output.target.empty();
+            if (!t && !implicit) {
+                error(s.where, element, "target '" + s.target + "' is not declared");
+                continue;
+            }
+            if (s.target == writes && !s.previousFrame)
+                error(s.where, element, "pass '" + pass.name + "' samples target '" + s.target +
+                                            "', which it also writes (use frame=\"previous\" to read last frame's "
+                                            "contents, or a second target)");
+            if (s.mipmap != MipmapMode::None && !t)
+                error(s.where, element, "mipmap filtering, but the implicit output target has no mipmaps (declare a "
+                                        "target with mipmaps=\"true\" and name it in <output target=...>)");
+            else if (s.mipmap != MipmapMode::None && !t->mipmaps)
+                error(s.where, element, "mipmap filtering, but target '" + s.target + "' is declared without mipmaps=\"true\"");
+        }
+        for (const Variable& c : pass.constants) {
+            if (const Variable* v = ws_.findVariable(c.name); v && v->value.type != c.value.type)
+                error(c.where, "<" + std::string(valueTypeName(c.value.type)) + " name=\"" + c.name + "\">",
+                      "pass constant '" + c.name + "' is a " + typeWithWidth(c.value.type) + " but variable '" +
+                          c.name + "' (" + at(v->where) + ") is a " + typeWithWidth(v->value.type));
+        }
+        // Every effect asked for, switches deciding: the form that keeps every read of the shader.
+        std::set<std::string> all;
+        for (const Effect& e : ws_.effects) all.insert(e.name);
+        ShaderPrelude prelude = effectPrelude(ws_, all);
+        auto program = assemblePassProgram(ws_, pass, prelude.defines, out_, prelude.declarations);
+        if (!program || !options_.compileShaders) return;
+        std::vector<std::string> inputs;
+        auto uniforms = checkPassProgram(*program, label, out_, &inputs);
+        if (!uniforms) return;
+        // Built-in streams are checked by the GL executor, which sees the driver's list of inputs.
+        for (const VertexStream& stream : pass.streams)
+            if (!stream.shared && !stream.attribute.empty() &&
+                std::find(inputs.begin(), inputs.end(), stream.attribute) == inputs.end())
+                warning(stream.where, label, "stream to attribute '" + stream.attribute + "' (line " +
+                                                 std::to_string(stream.where.line) + "), which the shaders do not read");
+        std::set<std::string> active;
+        const std::set<std::string> initialized = uniformsWithInitializers(*program);
+        for (const ActiveUniform& u : *uniforms) {
+            active.insert(u.name);
+            if (u.name.rfind("rmfx_effect_", 0) == 0 && ws_.findEffect(u.name.substr(12))) continue;
+            UniformSource source = resolveUniform(ws_, pass, u.name);
+            if (std::holds_alternative<Unbound>(source) && initialized.count(u.name)) continue;  // keeps its value
+            std::string why = bindingMismatch(ws_, source, u.name, u.type, u.arraySize);
+            if (why.empty()) continue;
+            SourceLocation where = findUniformDeclaration(*program, u.name).value_or(pass.where);
+            error(where, label, why);
+        }
+        for (const Sampler& s : pass.samplers)
+            if (!active.count(s.uniform))
+                warning(s.where, "<sampler name=\"" + s.uniform + "\">",
+                        "the shaders of pass '" + pass.name + "' do not use sampler '" + s.uniform + "'");
+    }
+
+    const Workspace& ws_;
+    const ValidationOptions& options_;
+    Diagnostics& out_;
+};
+
+}  // namespace
+
+Diagnostics validateWorkspace(const Workspace& ws, const ValidationOptions& options) {
+    Diagnostics out;
+    try {
+        Validator(ws, options, out).run();
+    } catch (const std::filesystem::filesystem_error& e) {
+        // A file name the file system refuses (a component over 255 bytes, a symlink loop, a folder
+        // it may not search) ends validation with an error naming it, not with a crash.
+        out.push_back({Diagnostic::Severity::Error, {ws.path.string(), 0}, "",
+                       "cannot look up file '" + e.path1().string().substr(0, 300) + "': " + e.code().message()});
+    }
+    return out;
+}
+
+}  // namespace rmfx

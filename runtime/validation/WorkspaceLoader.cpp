@@ -1,0 +1,74 @@
+#include "validation/WorkspaceLoader.h"
+
+#include "frontend/rfx/RfxCameraFraming.h"
+#include "frontend/rfx/RfxImporter.h"
+#include "frontend/workspace/DefaultWorkspace.h"
+#include "frontend/workspace/WorkspaceParser.h"
+
+namespace rmfx {
+
+static LoadedWorkspace validated(ParsedWorkspace parsed, const ValidationOptions& options, bool imported = false) {
+    LoadedWorkspace out;
+    out.diagnostics = std::move(parsed.diagnostics);
+    if (!parsed.workspace) return out;
+    // References are resolved once, here: what validation, the executor and hot reload open.
+    // Until they all resolve nothing reads them (a shader outside the sandbox is not even compiled).
+    Diagnostics unresolved = resolveWorkspaceMedia(*parsed.workspace, options.media);
+    out.diagnostics.insert(out.diagnostics.end(), unresolved.begin(), unresolved.end());
+    if (hasErrors(unresolved)) return out;
+    if (imported) frameDrawnModels(*parsed.workspace);
+    Diagnostics found = validateWorkspace(*parsed.workspace, options);
+    out.diagnostics.insert(out.diagnostics.end(), found.begin(), found.end());
+    if (!hasErrors(out.diagnostics)) out.workspace = std::move(parsed.workspace);
+    return out;
+}
+
+LoadedWorkspace loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options,
+                              const WorkspaceLoadOptions& load) {
+    if (isRfxPath(path)) return validated(importRfxFile(path, {load.effect}), options, true);
+    if (!load.effect.empty()) {
+        LoadedWorkspace out;
+        out.diagnostics.push_back({Diagnostic::Severity::Error, {path.string(), 0}, "--effect " + load.effect,
+                                   "--effect chooses an effect of a RenderMonkey .rfx file; this is an rmfx workspace "
+                                   "(use --effects to choose its <effect> groups)"});
+        return out;
+    }
+    return validated(parseWorkspaceFile(path), options);
+}
+
+LoadedWorkspace loadDefaultWorkspace(const ValidationOptions& options) {
+    return validated(parseWorkspaceText(defaultWorkspaceText(), defaultWorkspaceName, "."), options);
+}
+
+Diagnostics applyOverrides(Workspace& ws, const std::vector<std::pair<std::string, std::string>>& overrides) {
+    Diagnostics out;
+    for (const auto& [name, text] : overrides) {
+        Variable* v = ws.findVariable(name);
+        std::string element = "--set " + name;
+        if (!v) {
+            std::string known;
+            for (const Variable& each : ws.variables) known += (known.empty() ? "" : ", ") + each.name;
+            out.push_back({Diagnostic::Severity::Error, {ws.path.string(), 0}, element,
+                           "the workspace has no variable '" + name + "'" +
+                               (known.empty() ? " (it declares none)" : " (it has: " + known + ")")});
+            continue;
+        }
+        std::string why;
+        auto value = parseValue(v->value.type, text, &why);
+        if (value && value->type != v->value.type) {
+            // A colour's count is fixed by its default (the uniform is a vec3 or a vec4).
+            bool rgb = v->value.type == ValueType::Color3;
+            value.reset();
+            why = std::string("this color takes ") + (rgb ? "3 numbers (rgb), got 4" : "4 numbers (rgba), got 3");
+        }
+        if (!value) {
+            out.push_back({Diagnostic::Severity::Error, v->where, element,
+                           "variable '" + name + "' (" + valueTypeName(v->value.type) + "): " + why});
+            continue;
+        }
+        v->value = *value;
+    }
+    return out;
+}
+
+}  // namespace rmfx

@@ -1,0 +1,36 @@
+#pragma once
+// Parse + validate in one step: what every front end (CLI, editor, tests) does before GL.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "core/Diagnostic.h"
+#include "model/Workspace.h"
+#include "validation/Validation.h"
+
+namespace rmfx {
+
+struct LoadedWorkspace {
+    std::optional<Workspace> workspace;  // present when parsing and validation found no error
+    Diagnostics diagnostics;             // errors and warnings, in file order per stage
+};
+
+// How a file becomes a workspace, beyond validation.
+struct WorkspaceLoadOptions {
+    // RenderMonkey (.rfx) files: the effect to import (dotted path or name); empty: the active one.
+    // An rmfx workspace holds one effect graph, so a non-empty choice is an error for it.
+    std::string effect;
+};
+
+// Dispatches on the extension: .rfx (any case) to the RenderMonkey importer, else the XML format.
+LoadedWorkspace loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options = {},
+                              const WorkspaceLoadOptions& load = {});
+// The built-in default workspace; its relative paths resolve in the current folder.
+LoadedWorkspace loadDefaultWorkspace(const ValidationOptions& options = {});
+
+// Applies NAME=VALUE overrides to the workspace's variable defaults, checking names and types.
+// Each problem is a diagnostic naming the variable.
+Diagnostics applyOverrides(Workspace& ws, const std::vector<std::pair<std::string, std::string>>& overrides);
+
+}  // namespace rmfx

@@ -1,0 +1,211 @@
+#include "tests/support/GlTestSupport.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "frontend/workspace/WorkspaceParser.h"
+#include "gl/GlContext.h"
+#include "io/image/ImageIO.h"
+#include "tests/support/TestSupport.h"
+#include "validation/WorkspaceLoader.h"
+
+namespace rmfx::test {
+namespace {
+
+struct SharedContext {
+    std::unique_ptr<GlContext> context;
+    std::string error;
+};
+
+SharedContext createContext(GlProfile profile) {
+    SharedContext s;
+    auto created = GlContext::createHeadless(profile);
+    if (created) s.context = std::move(*created);
+    else s.error = created.error();
+    return s;
+}
+
+const SharedContext& sharedContext() {
+    static SharedContext shared = createContext(GlProfile::Core);
+    return shared;
+}
+
+const SharedContext& compatibilityContext() {
+    static SharedContext shared = createContext(GlProfile::Compatibility);
+    return shared;
+}
+
+}  // namespace
+
+void GlTest::SetUp() {
+    const SharedContext& shared = sharedContext();
+    ASSERT_TRUE(shared.context) << "no headless GL context: " << shared.error;
+    shared.context->makeCurrent();
+}
+
+void CompatibilityGlTest::SetUp() {
+    GlTest::SetUp();  // the core context exists first, so TearDown can return to it
+    const SharedContext& compatibility = compatibilityContext();
+    ASSERT_TRUE(compatibility.context) << "no compatibility-profile GL context: " << compatibility.error;
+    compatibility.context->makeCurrent();
+}
+
+void CompatibilityGlTest::TearDown() {
+    if (sharedContext().context) sharedContext().context->makeCurrent();
+}
+
+std::unique_ptr<Workspace> workspaceFromText(const std::string& xml, const std::filesystem::path& folder) {
+    ParsedWorkspace parsed = parseWorkspaceText(xml, folder / "test-workspace.xml", folder);
+    Diagnostics diagnostics = parsed.diagnostics;
+    if (parsed.workspace) {
+        Diagnostics found = resolveWorkspaceMedia(*parsed.workspace, {});
+        if (!hasErrors(found)) found = validateWorkspace(*parsed.workspace);
+        diagnostics.insert(diagnostics.end(), found.begin(), found.end());
+    }
+    if (!parsed.workspace || hasErrors(diagnostics)) {
+        ADD_FAILURE() << "workspace does not load:\n" << formatAll(diagnostics) << "\n" << xml;
+        return nullptr;
+    }
+    return std::make_unique<Workspace>(std::move(*parsed.workspace));
+}
+
+std::unique_ptr<Workspace> effectWorkspace(const std::string& file, const Overrides& overrides) {
+    LoadedWorkspace loaded = loadWorkspace(sourceDir() / "effects" / file);
+    if (!loaded.workspace) {
+        ADD_FAILURE() << file << " does not load:\n" << formatAll(loaded.diagnostics);
+        return nullptr;
+    }
+    auto ws = std::make_unique<Workspace>(std::move(*loaded.workspace));
+    if (Diagnostics bad = applyOverrides(*ws, overrides); !bad.empty()) {
+        ADD_FAILURE() << formatAll(bad);
+        return nullptr;
+    }
+    return ws;
+}
+
+std::unique_ptr<Workspace> stageWorkspace(const std::string& file, const std::filesystem::path& input,
+                                          const Overrides& overrides) {
+    const std::filesystem::path folder = sourceDir() / "effects" / "variants";
+    std::string xml = readText(folder / file);
+    const std::string media = "file=\"../../samples/media/hdr_scene.exr\"";
+    size_t at = xml.find(media);
+    if (at == std::string::npos) {
+        ADD_FAILURE() << file << " has no " << media;
+        return nullptr;
+    }
+    xml.replace(at, media.size(), "file=\"" + input.string() + "\"");
+    auto ws = workspaceFromText(xml, folder);
+    if (!ws) return nullptr;
+    if (Diagnostics bad = applyOverrides(*ws, overrides); !bad.empty()) {
+        ADD_FAILURE() << formatAll(bad);
+        return nullptr;
+    }
+    return ws;
+}
+
+void writeFloatExr(const std::filesystem::path& file, const RefImage& image) {
+    Image out;
+    out.width = image.width;
+    out.height = image.height;
+    out.channels = 4;
+    out.highDynamicRange = true;
+    out.pixels.resize(size_t(image.width) * image.height * 4);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            for (int c = 0; c < 4; ++c) out.at(x, image.height - 1 - y, c) = static_cast<float>(image.at(x, y)[c]);
+    auto written = writeImage(file, out);
+    if (!written) ADD_FAILURE() << written.error();
+}
+
+void replaceSceneWithLight(Workspace& ws, const std::string& scenePass, glm::ivec2 from, glm::ivec2 to) {
+    auto found = std::find_if(ws.passes.begin(), ws.passes.end(), [&](const Pass& p) { return p.name == scenePass; });
+    if (found == ws.passes.end()) {
+        ADD_FAILURE() << "no pass '" << scenePass << "'";
+        return;
+    }
+    for (Pass& pass : ws.passes)
+        if (&pass != &*found && pass.target == found->target) pass.enabled = false;
+    found->samplers.clear();
+    found->constants.clear();
+    ShaderSource fragment;
+    fragment.code = "out vec4 fragColor;\n"
+                    "void main() {\n"
+                    "    ivec2 p = ivec2(gl_FragCoord.xy);\n"
+                    "    bool lit = all(greaterThanEqual(p, ivec2(" + std::to_string(from.x) + ", " + std::to_string(from.y) +
+                    "))) && all(lessThan(p, ivec2(" + std::to_string(to.x) + ", " + std::to_string(to.y) + ")));\n"
+                    "    fragColor = lit ? vec4(1.0) : vec4(0.0);\n"
+                    "}\n";
+    fragment.codeLine = found->where.line;
+    fragment.where = found->where;
+    found->shaders = {fragment};
+}
+
+void replaceSceneWithPattern(Workspace& ws, const std::string& target, const std::string& pattern) {
+    for (Pass& pass : ws.passes)
+        if (pass.target == target) pass.enabled = false;
+    Pass replacement;
+    replacement.name = "test_pattern";
+    replacement.target = target;
+    ShaderSource fragment;
+    fragment.stage = ShaderStage::Fragment;
+    fragment.code = "#version 450 core\nout vec4 fragColor;\n" + pattern;
+    replacement.shaders.push_back(fragment);
+    replacement.draw.mesh = BuiltinMesh::FullscreenTriangle;
+    ws.passes.insert(ws.passes.begin(), replacement);
+}
+
+std::string singlePixelPattern(glm::ivec2 pixel, double value) {
+    return "void main() { fragColor = vec4(ivec2(gl_FragCoord.xy) == ivec2(" + std::to_string(pixel.x) + ", " +
+           std::to_string(pixel.y) + ") ? vec3(" + glslFloat(value) + ") : vec3(0.0), 1.0); }\n";
+}
+
+std::string EdgePixelCase::name() const {
+    return std::to_string(size.x) + "x" + std::to_string(size.y) + ", pixel " + std::to_string(pixel.x) + "," +
+           std::to_string(pixel.y);
+}
+
+std::vector<EdgePixelCase> edgePixelCases(glm::ivec2 largePixel) {
+    return {{{1, 1}, {0, 0}}, {{3, 5}, {2, 2}}, {{3, 5}, {1, 4}}, {{3, 5}, {2, 4}}, {{1921, 1081}, largePixel}};
+}
+
+GlRun runWorkspace(std::unique_ptr<Workspace> ws, const RunSettings& settings, const ExecutorOptions& options) {
+    GlRun run;
+    run.ws = std::move(ws);
+    if (!run.ws) return run;
+    run.exec = runHeadless(*run.ws, settings, run.diagnostics, options);
+    if (!run.exec || hasErrors(run.diagnostics))
+        ADD_FAILURE() << "runHeadless failed:\n" << formatAll(run.diagnostics);
+    return run;
+}
+
+GlRun runWorkspace(const std::string& xml, const RunSettings& settings) {
+    return runWorkspace(workspaceFromText(xml), settings);
+}
+
+Image readBack(const GlExecutor& exec, const std::string& target) {
+    auto image = exec.readTarget(target);
+    if (!image) {
+        ADD_FAILURE() << "readTarget(" << target << "): " << image.error();
+        return {};
+    }
+    return *image;
+}
+
+RefImage readRef(const GlRun& run, const std::string& target) { return fromImage(readBack(*run.exec, target)); }
+
+void expectWithin(const std::string& what, double error, double tolerance) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.3g of %.3g", error, tolerance);  // to_string would print 1e-7 as 0.000000
+    ::testing::Test::RecordProperty(what, text);
+    EXPECT_LE(error, tolerance) << what;
+}
+
+std::string glslFloat(double value) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(static_cast<float>(value)));
+    std::string s = buffer;
+    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+    return s;
+}
+
+}  // namespace rmfx::test
