@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
     for (int i = 0; i < 10; ++i) {
         auto frameStart = Clock::now();
         live->executor().renderFrame({});
-        live->executor().readTarget(live->workspace().outputTargetName());  // waits for the GPU
+        (void)live->executor().readTarget(live->workspace().outputTargetName());  // waits for the GPU
         steadyFrames.push_back(std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count());
     }
     std::vector<double> firstFrames, visible;
@@ -157,7 +157,7 @@ int main(int argc, char** argv) {
             reported.push_back(live->lastReloadMilliseconds());
             auto frameStart = Clock::now();
             live->executor().renderFrame({});
-            live->executor().readTarget(live->workspace().outputTargetName());  // waits for the GPU
+            (void)live->executor().readTarget(live->workspace().outputTargetName());  // waits for the GPU
             firstFrames.push_back(std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count());
             visible.push_back(std::chrono::duration<double, std::milli>(Clock::now() - written).count());
         }
