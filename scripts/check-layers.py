@@ -84,7 +84,7 @@ def main():
         print(p)
     if problems:
         sys.stdout.flush()
-    print(f"check-layers: {len(problems)} include(s) break the layering, in {files} files", file=sys.stderr)
+        print(f"check-layers: {len(problems)} include(s) break the layering, in {files} files", file=sys.stderr)
         return 1
     print(f"check-layers: {files} files, every include within the layering ({' → '.join(LAYERS)})")
     return 0
