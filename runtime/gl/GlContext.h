@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/Result.h"
-#include "model/Workspace.h"
+#include "model/GlProfile.h"
 
 namespace rmfx {
 

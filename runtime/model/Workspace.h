@@ -14,6 +14,7 @@
 
 #include "core/Diagnostic.h"
 #include "core/Value.h"
+#include "model/GlProfile.h"
 #include "model/Image.h"
 #include "model/Mesh.h"
 
@@ -230,10 +231,6 @@ struct OrbitCameraSettings {
     float nearPlane = 0.05f, farPlane = 100.0f;
     SourceLocation where;
 };
-
-// Core: rmfx's own workspaces. Compatibility: a compatibility-profile context, for legacy GLSL
-// and the fixed-function matrices and lights it reads (RenderMonkey imports).
-enum class GlProfile { Core, Compatibility };
 
 struct Workspace {
     GlProfile profile = GlProfile::Core;

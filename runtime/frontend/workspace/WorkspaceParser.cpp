@@ -5,7 +5,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "io/mesh/BuiltinMeshes.h"
+#include "model/BuiltinMeshNames.h"
 #include "io/xml/XmlElementReader.h"
 #include "model/EffectSelection.h"
 

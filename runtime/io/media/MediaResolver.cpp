@@ -1,6 +1,6 @@
 #include "io/media/MediaResolver.h"
 
-#include "io/mesh/BuiltinMeshes.h"
+#include "model/BuiltinMeshNames.h"
 
 #include <algorithm>
 #include <cctype>

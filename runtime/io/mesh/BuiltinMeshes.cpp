@@ -112,35 +112,4 @@ Mesh makeMesh(BuiltinMesh which) {
     return {};
 }
 
-namespace {
-
-constexpr std::array<BuiltinMesh, 6> kAllBuiltins{BuiltinMesh::FullscreenTriangle, BuiltinMesh::Cube, BuiltinMesh::Sphere,
-                                                  BuiltinMesh::Plane, BuiltinMesh::Teapot, BuiltinMesh::Quad};
-
-bool equalsIgnoringCase(std::string_view a, std::string_view b) {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
-           });
-}
-
-}  // namespace
-
-std::optional<BuiltinMesh> builtinMeshFromName(std::string_view name) {
-    for (BuiltinMesh m : kAllBuiltins)
-        if (equalsIgnoringCase(name, builtinMeshName(m))) return m;
-    return std::nullopt;
-}
-
-const char* builtinMeshName(BuiltinMesh which) {
-    switch (which) {
-        case BuiltinMesh::FullscreenTriangle: return "fullscreen";
-        case BuiltinMesh::Cube: return "cube";
-        case BuiltinMesh::Sphere: return "sphere";
-        case BuiltinMesh::Plane: return "plane";
-        case BuiltinMesh::Teapot: return "teapot";
-        case BuiltinMesh::Quad: return "quad";
-    }
-    return "?";
-}
-
 }  // namespace rmfx

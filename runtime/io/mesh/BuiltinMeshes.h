@@ -4,6 +4,7 @@
 #include <optional>
 #include <string_view>
 
+#include "model/BuiltinMeshNames.h"
 #include "model/Mesh.h"
 
 namespace rmfx {
@@ -26,9 +27,5 @@ Mesh makeQuad();
 // (subdivisions+1)^2 vertices, patch after patch in the classic order (rim, body, handle,
 // spout, lid, bottom). Texcoords are the patch parameters.
 Mesh makeTeapot(int subdivisions = 10);
-
-// "fullscreen", "cube", "sphere", "plane", "teapot", "quad" (case-insensitive).
-std::optional<BuiltinMesh> builtinMeshFromName(std::string_view name);
-const char* builtinMeshName(BuiltinMesh which);
 
 }  // namespace rmfx
