@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (CMake preset "fuzz": clang, ASan + UBSan) and runs each for
-# FUZZ_SECONDS (default 60) on a working corpus under build-fuzz/fuzz-corpus/<target>/, seeded
+# Builds the libFuzzer targets (build preset "fuzz" of the "asan" configuration: clang, ASan + UBSan,
+# the same build the sanitizer suite runs from) and runs each for FUZZ_SECONDS (default 60),
+# FUZZ_JOBS (default 2) at a time, on a working corpus under build-asan/fuzz-corpus/<target>/, seeded
 # from the repository's workspaces, shaders and replay manifests. Prints per target executions,
-# exec/s, corpus size, new coverage and the outcome, writes build-fuzz/fuzz-summary.tsv, and
+# exec/s, corpus size, new coverage and the outcome, writes build-asan/fuzz-summary.tsv, and
 # exits non-zero on any crash, leak, timeout or out-of-memory, keeping the input that caused it.
 #   FUZZ_SECONDS=600 scripts/fuzz.sh             longer runs
 #   FUZZ_TARGETS="workspace" scripts/fuzz.sh     some targets only
@@ -10,10 +11,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 seconds=${FUZZ_SECONDS:-60}
-build=build-fuzz
+build=build-asan
+jobs=${FUZZ_JOBS:-2}
 summary=$build/fuzz-summary.tsv
 
-cmake --preset fuzz >/dev/null
+cmake --preset asan >/dev/null
 cmake --build --preset fuzz
 
 # Per target: -max_len (bytes), -timeout (s per input), -rss_limit_mb. Workspaces carry the
@@ -94,9 +96,9 @@ make_dictionary() {
   local t=$1 out=$build/fuzz-dict/$1.dict sources=()
   mkdir -p "$build/fuzz-dict"
   case $t in
-    workspace | variable_value_writer) sources=(runtime/WorkspaceParser.cpp runtime/Value.cpp runtime/BuiltinMeshes.cpp) ;;
-    rfx_import) sources=(runtime/Rfx*.cpp) ;;
-    replay_manifest) sources=(runtime/ReplayManifest.cpp runtime/ImageCompare.cpp) ;;
+    workspace | variable_value_writer) sources=(runtime/frontend/workspace/WorkspaceParser.cpp runtime/core/Value.cpp runtime/io/mesh/BuiltinMeshes.cpp) ;;
+    rfx_import) sources=(runtime/frontend/rfx/*.cpp runtime/frontend/rfx/detail/*.cpp) ;;
+    replay_manifest) sources=(runtime/frontend/replay/ReplayManifest.cpp runtime/io/image/ImageCompare.cpp) ;;
   esac
   {
     [ "$t" = shader_preprocessor ] || cat fuzz/dictionaries/xml.dict
@@ -127,37 +129,65 @@ make_seeds
 mkdir -p "$build/fuzz-logs"
 printf 'target\tseconds\texecutions\texec_per_s\tcorpus_files\tnew_units\tcoverage\tfeatures\tpeak_rss_mb\toutcome\tinput\n' >"$summary"
 targets=${FUZZ_TARGETS:-$(find "$build/fuzz" -maxdepth 1 -type f -executable -name 'rmfx_fuzz_*' | sed 's|.*/rmfx_fuzz_||' | sort)}
-failed=0
-for t in $targets; do
+
+# fuzz_target T: runs one target; its summary row goes to $build/fuzz-logs/T.row, what it prints to
+# $build/fuzz-logs/T.out (targets run side by side, so their reports are printed in order after).
+fuzz_target() {
+  local t=$1 binary corpus artifacts log dictionary status outcome input coverage features row
   binary=$build/fuzz/rmfx_fuzz_$t
   corpus=$build/fuzz-corpus/$t
   artifacts=$build/fuzz-artifacts/$t/
   log=$build/fuzz-logs/$t.log
   mkdir -p "$corpus" "$artifacts"
   dictionary=$(make_dictionary "$t")
-  echo "== fuzz $t: ${seconds}s, $(ls "$corpus" | wc -l) inputs to start from"
-  status=0
-  "$binary" -max_total_time="$seconds" -print_final_stats=1 -rss_limit_mb=$rss_limit_mb \
-    -timeout="${timeout[$t]:-10}" -max_len="${max_len[$t]:-16384}" -dict="$dictionary" \
-    -artifact_prefix="$artifacts" "$corpus" >"$log" 2>&1 || status=$?
-  outcome=$(outcome_of "$status" "$log")
-  input=$(sed -n 's/.*Test unit written to \(.*\)$/\1/p' "$log" | tail -1)
-  coverage=$({ grep -o 'cov: [0-9]*' "$log" || true; } | tail -1 | cut -d' ' -f2)
-  features=$({ grep -o 'ft: [0-9]*' "$log" || true; } | tail -1 | cut -d' ' -f2)
-  row=("$t" "$seconds" "$(final_stat number_of_executed_units "$log")" "$(final_stat average_exec_per_sec "$log")"
-       "$(ls "$corpus" | wc -l)" "$(final_stat new_units_added "$log")" "${coverage:-}" "${features:-}"
-       "$(final_stat peak_rss_mb "$log")" "$outcome" "${input:-}")
-  (IFS=$'\t'; echo "${row[*]}") >>"$summary"
-  echo "   executions ${row[2]}, ${row[3]} exec/s, corpus ${row[4]} files (${row[5]} new), coverage ${row[6]} edges, ${row[7]} features: $outcome"
-  if [ "$outcome" != ok ]; then
-    failed=1
-    echo "   log: $log"
-    grep -m1 -A12 'ERROR:\|runtime error:\|FuzzPropertyViolation' "$log" | sed 's/^/   | /' || true
-    if [ -n "$input" ]; then
-      echo "   input kept: $input"
-      echo "   reproduce:  $binary $input"
-      echo "   after the fix, keep it as a regression test: cp $input tests/fuzz-regressions/$t/<what-it-found>"
+  {
+    echo "== fuzz $t: ${seconds}s, $(ls "$corpus" | wc -l) inputs to start from"
+    status=0
+    "$binary" -max_total_time="$seconds" -print_final_stats=1 -rss_limit_mb=$rss_limit_mb \
+      -timeout="${timeout[$t]:-10}" -max_len="${max_len[$t]:-16384}" -dict="$dictionary" \
+      -artifact_prefix="$artifacts" "$corpus" >"$log" 2>&1 || status=$?
+    outcome=$(outcome_of "$status" "$log")
+    input=$(sed -n 's/.*Test unit written to \(.*\)$/\1/p' "$log" | tail -1)
+    coverage=$({ grep -o 'cov: [0-9]*' "$log" || true; } | tail -1 | cut -d' ' -f2)
+    features=$({ grep -o 'ft: [0-9]*' "$log" || true; } | tail -1 | cut -d' ' -f2)
+    row=("$t" "$seconds" "$(final_stat number_of_executed_units "$log")" "$(final_stat average_exec_per_sec "$log")"
+         "$(ls "$corpus" | wc -l)" "$(final_stat new_units_added "$log")" "${coverage:-}" "${features:-}"
+         "$(final_stat peak_rss_mb "$log")" "$outcome" "${input:-}")
+    (IFS=$'\t'; echo "${row[*]}") >"$build/fuzz-logs/$t.row"
+    echo "   executions ${row[2]}, ${row[3]} exec/s, corpus ${row[4]} files (${row[5]} new), coverage ${row[6]} edges, ${row[7]} features: $outcome"
+    if [ "$outcome" != ok ]; then
+      echo "   log: $log"
+      grep -m1 -A12 'ERROR:\|runtime error:\|FuzzPropertyViolation' "$log" | sed 's/^/   | /' || true
+      if [ -n "$input" ]; then
+        echo "   input kept: $input"
+        echo "   reproduce:  $binary $input"
+        echo "   after the fix, keep it as a regression test: cp $input tests/fuzz-regressions/$t/<what-it-found>"
+      fi
     fi
+  } >"$build/fuzz-logs/$t.out"
+}
+
+echo "fuzzing $(echo $targets | wc -w) targets for ${seconds}s each, $jobs at a time"
+running=0
+for t in $targets; do
+  rm -f "$build/fuzz-logs/$t.row" "$build/fuzz-logs/$t.out"
+  fuzz_target "$t" &
+  running=$((running + 1))
+  if [ "$running" -ge "$jobs" ]; then
+    wait -n || true
+    running=$((running - 1))
+  fi
+done
+wait || true
+
+failed=0
+for t in $targets; do
+  cat "$build/fuzz-logs/$t.out" 2>/dev/null || echo "== fuzz $t: no report (the run did not finish)"
+  if [ -f "$build/fuzz-logs/$t.row" ]; then
+    cat "$build/fuzz-logs/$t.row" >>"$summary"
+    [ "$(cut -f10 "$build/fuzz-logs/$t.row")" = ok ] || failed=1
+  else
+    failed=1
   fi
 done
 echo "summary: $summary"

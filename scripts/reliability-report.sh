@@ -3,7 +3,7 @@
 # what the last runs left behind:
 #   build/ctest-junit.xml        the normal suite      (cmake --workflow --preset default)
 #   build-asan/sanitizer-junit.xml the sanitizer suite   (cmake --workflow --preset asan)
-#   build-fuzz/fuzz-summary.tsv  the fuzzers           (scripts/fuzz.sh)
+#   build-asan/fuzz-summary.tsv  the fuzzers           (scripts/fuzz.sh)
 # A missing file is reported as "not run", never invented. RELIABILITY_NORMAL, RELIABILITY_ASAN and
 # RELIABILITY_FUZZ name other files (e.g. a CI run's).
 # Usage: scripts/reliability-report.sh [--print]   (--print: to stdout, leave the doc alone)
@@ -13,7 +13,7 @@ cd "$(dirname "$0")/.."
 doc=docs/reliability.md
 normal=${RELIABILITY_NORMAL:-build/ctest-junit.xml}
 asan=${RELIABILITY_ASAN:-build-asan/sanitizer-junit.xml}
-fuzz=${RELIABILITY_FUZZ:-build-fuzz/fuzz-summary.tsv}
+fuzz=${RELIABILITY_FUZZ:-build-asan/fuzz-summary.tsv}
 
 # One line per test case: "STATUS NAME" (STATUS: run = passed, fail, notrun/disabled = skipped;
 # names of parameterised tests may hold spaces, so the status comes first).
