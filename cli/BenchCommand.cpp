@@ -177,8 +177,9 @@ std::optional<std::vector<BenchInput>> gatherInputs(const BenchArguments& a, con
     for (const auto& [name, file] : files) {
         auto image = readInput(file);
         if (!image) {
+            const fs::path& path = file;  // clang 14 cannot capture a structured binding
             bool sceneFile = std::any_of(manifest.scenes.begin(), manifest.scenes.end(),
-                                         [&](const SceneSpec& s) { return s.file == file; });
+                                         [&](const SceneSpec& s) { return s.file == path; });
             std::cerr << "rmfx bench: input '" << name << "': " << image.error()
                       << (sceneFile && !fs::exists(file) ? " (the build writes the sample media: cmake --build BUILD "
                                                            "--target rmfx_sample_media; or --no-scenes)"
