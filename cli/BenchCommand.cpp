@@ -273,14 +273,14 @@ std::string sizesOf(const std::vector<BenchInput>& inputs) {
 int benchCommand(const std::vector<std::string>& args) {
     auto a = parseArguments(args);
     if (!a) return 1;
-    ParsedVariantManifest parsed = parseVariantManifestFile(a->manifest);
-    std::cerr << formatAll(parsed.diagnostics);
-    if (!parsed.manifest) {
+    Result<VariantManifest> parsed = parseVariantManifestFile(a->manifest);
+    std::cerr << formatAll(parsed.diagnostics());
+    if (!parsed) {
         if (!fs::exists(a->manifest))
             std::cerr << "rmfx bench: run it in the repository root, or name the manifest (bench/variants.xml)\n";
         return 1;
     }
-    const VariantManifest& manifest = *parsed.manifest;
+    const VariantManifest& manifest = *parsed;
     auto plans = planStages(*a, manifest);
     if (!plans) return 1;
     for (const fs::path& file : a->inputs)

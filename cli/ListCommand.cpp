@@ -139,14 +139,14 @@ int listCommand(const std::vector<std::string>& args) {
     int status = 0;
     for (const RfxEffectSummary& e : list.effects) {
         std::cout << "  effect '" << e.path << "' (" << e.api << (e.active ? ", active" : "") << "), line " << e.line << "\n";
-        ParsedWorkspace parsed = importRfxFile(path, {e.path});
+        Result<Workspace> parsed = importRfxFile(path, {e.path});
         // Warnings about the file as a whole come once, with the list above; per-effect ones here.
-        for (const Diagnostic& d : parsed.diagnostics) std::cout << "    " << d.format() << "\n";
-        if (!parsed.workspace) {
+        for (const Diagnostic& d : parsed.diagnostics()) std::cout << "    " << d.format() << "\n";
+        if (!parsed) {
             status = 1;
             continue;
         }
-        describeWorkspace(std::cout, *parsed.workspace);
+        describeWorkspace(std::cout, *parsed);
     }
     return status;
 }

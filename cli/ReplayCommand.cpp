@@ -204,10 +204,10 @@ private:
 int replayCommand(const std::vector<std::string>& args) {
     auto a = parseArguments(args);
     if (!a) return 1;
-    ParsedManifest parsed = parseReplayManifestFile(*a->manifest);
-    std::cerr << formatAll(parsed.diagnostics);
-    if (!parsed.manifest) return 1;
-    const ReplayManifest& manifest = *parsed.manifest;
+    Result<ReplayManifest> parsed = parseReplayManifestFile(*a->manifest);
+    std::cerr << formatAll(parsed.diagnostics());
+    if (!parsed) return 1;
+    const ReplayManifest& manifest = *parsed;
     auto cases = selectCases(manifest, a->cases);
     if (!cases) return 1;
 
