@@ -38,6 +38,7 @@
 #include <epoxy/gl.h>
 
 #include "bench/HandWrittenShader5.h"
+#include "core/Percentile.h"
 #include "gl/GlContext.h"
 #include "gl/GlExecutor.h"
 #include "validation/WorkspaceLoader.h"
@@ -50,12 +51,7 @@ using WallClock = std::chrono::steady_clock;
 glm::ivec2 frameSize{512, 512};
 std::map<std::string, std::unique_ptr<Workspace>> workspaces;
 
-double median(std::vector<double> values) {
-    if (values.empty()) return 0.0;
-    std::sort(values.begin(), values.end());
-    size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
+double median(std::vector<double> values) { return values.empty() ? 0.0 : percentile(std::move(values), 0.5); }
 
 double minimum(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end()); }
 double maximum(const std::vector<double>& v) { return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end()); }

@@ -19,11 +19,13 @@
 #include <thread>
 #include <vector>
 
+#include "core/Percentile.h"
 #include "gl/GlContext.h"
 #include "run/LiveWorkspace.h"
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
+using rmfx::percentile;
 
 namespace {
 
@@ -46,12 +48,6 @@ void saveAtomically(const fs::path& file, const std::string& text) {
         out << text;
     }
     fs::rename(temporary, file);
-}
-
-double percentile(std::vector<double> values, double p) {
-    std::sort(values.begin(), values.end());
-    size_t index = static_cast<size_t>(p * static_cast<double>(values.size() - 1) + 0.5);
-    return values[std::min(index, values.size() - 1)];
 }
 
 void printRow(const std::string& label, const std::vector<double>& ms) {

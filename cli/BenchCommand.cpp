@@ -19,6 +19,7 @@
 #include "bench/accuracy/StageIdeal.h"
 #include "bench/accuracy/VariantManifest.h"
 #include "bench/accuracy/VariantRun.h"
+#include "cli/ArgumentParser.h"
 #include "cli/Commands.h"
 #include "gl/GlContext.h"
 #include "io/image/ImageIO.h"
@@ -50,10 +51,6 @@ struct BenchArguments {
 std::optional<BenchArguments> parseArguments(const std::vector<std::string>& args) {
     BenchArguments a;
     bool manifestGiven = false;
-    auto fail = [](const std::string& message) -> std::optional<BenchArguments> {
-        std::cerr << "rmfx bench: " << message << "\n";
-        return std::nullopt;
-    };
     auto count = [](const std::string& text, int low, int& out) {
         char* end = nullptr;
         long n = std::strtol(text.c_str(), &end, 10);
@@ -61,49 +58,45 @@ std::optional<BenchArguments> parseArguments(const std::vector<std::string>& arg
         out = static_cast<int>(n);
         return true;
     };
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& arg = args[i];
-        if (auto media = takeMediaArgument(args, i, a.load.media)) {
-            if (!media->empty()) return fail(*media);
-        } else if (arg == "--input" || arg == "--size" || arg == "--frames" || arg == "--warmup" || arg == "--stage" ||
-            arg == "--variant" || arg == "--out" || arg == "--time") {
-            if (i + 1 >= args.size() || args[i + 1].empty()) return fail(arg + " needs a value");
-            const std::string& value = args[++i];
-            if (arg == "--input") {
-                a.inputs.push_back(value);
-            } else if (arg == "--size") {
-                auto size = xml::parseSize(value);
-                if (!size || size->first > 16384 || size->second > 16384)
-                    return fail("--size: expected WIDTHxHEIGHT between 1x1 and 16384x16384, got '" + value + "'");
-                a.size = {size->first, size->second};
-            } else if (arg == "--frames") {
-                if (!count(value, 1, a.counts.frames)) return fail("--frames: expected a count from 1 to 100000, got '" + value + "'");
-            } else if (arg == "--warmup") {
-                if (!count(value, 0, a.counts.warmup)) return fail("--warmup: expected a count from 0 to 100000, got '" + value + "'");
-            } else if (arg == "--stage") {
-                a.stages.push_back(value);
-            } else if (arg == "--variant") {
-                a.variants.push_back(value);
-            } else if (arg == "--time") {
-                if (value != "gpu" && value != "wall" && value != "auto")
-                    return fail("--time: expected gpu, wall or auto, got '" + value + "'");
-                if (value == "auto") a.ranked.reset();
-                else a.ranked = value == "gpu" ? TimeSource::Gpu : TimeSource::Wall;
-            } else {
-                a.out = value;
-            }
-        } else if (arg == "--scenes" || arg == "--no-scenes") {
-            a.scenes = arg == "--scenes";
-        } else if (arg == "-q" || arg == "--quiet") {
-            a.quiet = true;
-        } else if (!arg.empty() && arg[0] == '-') {
-            return fail("unknown option '" + arg + "' (see rmfx --help)");
-        } else if (manifestGiven) {
-            return fail("one manifest at a time; got '" + a.manifest.string() + "' and '" + arg + "'");
-        } else {
+    ArgumentParser parser;
+    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, a.load.media); })
+        .option({"--input"}, [&](const std::string& value) { a.inputs.push_back(value); return ""; })
+        .option({"--size"}, [&](const std::string& value) -> std::string {
+            auto size = xml::parseSize(value);
+            if (!size || size->first > 16384 || size->second > 16384)
+                return "--size: expected WIDTHxHEIGHT between 1x1 and 16384x16384, got '" + value + "'";
+            a.size = {size->first, size->second};
+            return "";
+        })
+        .option({"--frames"}, [&](const std::string& value) -> std::string {
+            if (!count(value, 1, a.counts.frames)) return "--frames: expected a count from 1 to 100000, got '" + value + "'";
+            return "";
+        })
+        .option({"--warmup"}, [&](const std::string& value) -> std::string {
+            if (!count(value, 0, a.counts.warmup)) return "--warmup: expected a count from 0 to 100000, got '" + value + "'";
+            return "";
+        })
+        .option({"--stage"}, [&](const std::string& value) { a.stages.push_back(value); return ""; })
+        .option({"--variant"}, [&](const std::string& value) { a.variants.push_back(value); return ""; })
+        .option({"--out"}, [&](const std::string& value) { a.out = value; return ""; })
+        .option({"--time"}, [&](const std::string& value) -> std::string {
+            if (value != "gpu" && value != "wall" && value != "auto") return "--time: expected gpu, wall or auto, got '" + value + "'";
+            if (value == "auto") a.ranked.reset();
+            else a.ranked = value == "gpu" ? TimeSource::Gpu : TimeSource::Wall;
+            return "";
+        })
+        .flag({"--scenes"}, [&] { a.scenes = true; })
+        .flag({"--no-scenes"}, [&] { a.scenes = false; })
+        .flag({"-q", "--quiet"}, [&] { a.quiet = true; })
+        .positional([&](const std::string& arg) -> std::string {
+            if (manifestGiven) return "one manifest at a time; got '" + a.manifest.string() + "' and '" + arg + "'";
             a.manifest = arg;
             manifestGiven = true;
-        }
+            return "";
+        });
+    if (std::string message = parser.parse(args); !message.empty()) {
+        std::cerr << "rmfx bench: " << message << "\n";
+        return std::nullopt;
     }
     return a;
 }
@@ -274,14 +267,14 @@ std::string sizesOf(const std::vector<BenchInput>& inputs) {
 int benchCommand(const std::vector<std::string>& args) {
     auto a = parseArguments(args);
     if (!a) return 1;
-    ParsedVariantManifest parsed = parseVariantManifestFile(a->manifest);
-    std::cerr << formatAll(parsed.diagnostics);
-    if (!parsed.manifest) {
+    Result<VariantManifest> parsed = parseVariantManifestFile(a->manifest);
+    std::cerr << formatAll(parsed.diagnostics());
+    if (!parsed) {
         if (!fs::exists(a->manifest))
             std::cerr << "rmfx bench: run it in the repository root, or name the manifest (bench/variants.xml)\n";
         return 1;
     }
-    const VariantManifest& manifest = *parsed.manifest;
+    const VariantManifest& manifest = *parsed;
     auto plans = planStages(*a, manifest);
     if (!plans) return 1;
     for (const fs::path& file : a->inputs)

@@ -4,6 +4,7 @@
 #include <set>
 #include <sstream>
 
+#include "cli/ArgumentParser.h"
 #include "cli/Commands.h"
 #include "core/IdentifierSearch.h"
 #include "frontend/rfx/RfxImporter.h"
@@ -123,11 +124,14 @@ void describeWorkspace(std::ostream& out, const Workspace& ws) {
 }  // namespace
 
 int listCommand(const std::vector<std::string>& args) {
-    if (args.size() != 1 || (!args[0].empty() && args[0][0] == '-')) {
+    std::vector<std::string> files;
+    ArgumentParser parser;
+    parser.positional([&](const std::string& file) { files.push_back(file); return ""; });
+    if (!parser.parse(args).empty() || files.size() != 1) {
         std::cerr << "rmfx list: usage: rmfx list FILE.rfx\n";
         return 1;
     }
-    const std::string& path = args[0];
+    const std::string& path = files[0];
     if (!isRfxPath(path)) {
         std::cerr << "rmfx list: '" << path << "' is not a RenderMonkey .rfx file\n";
         return 1;
@@ -139,14 +143,14 @@ int listCommand(const std::vector<std::string>& args) {
     int status = 0;
     for (const RfxEffectSummary& e : list.effects) {
         std::cout << "  effect '" << e.path << "' (" << e.api << (e.active ? ", active" : "") << "), line " << e.line << "\n";
-        ParsedWorkspace parsed = importRfxFile(path, {e.path});
+        Result<Workspace> parsed = importRfxFile(path, {e.path});
         // Warnings about the file as a whole come once, with the list above; per-effect ones here.
-        for (const Diagnostic& d : parsed.diagnostics) std::cout << "    " << d.format() << "\n";
-        if (!parsed.workspace) {
+        for (const Diagnostic& d : parsed.diagnostics()) std::cout << "    " << d.format() << "\n";
+        if (!parsed) {
             status = 1;
             continue;
         }
-        describeWorkspace(std::cout, *parsed.workspace);
+        describeWorkspace(std::cout, *parsed);
     }
     return status;
 }

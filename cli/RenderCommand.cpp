@@ -2,6 +2,7 @@
 #include <iostream>
 #include <optional>
 
+#include "cli/ArgumentParser.h"
 #include "cli/Commands.h"
 #include "core/FrameWatchdog.h"
 #include "frontend/rfx/RfxImporter.h"
@@ -34,84 +35,80 @@ struct RenderArguments {
 std::optional<RenderArguments> parseArguments(const std::vector<std::string>& args) {
     RenderArguments a;
     a.run.frameBudgetSeconds = kDefaultFrameBudgetSeconds;
-    auto fail = [](const std::string& message) -> std::optional<RenderArguments> {
+    using Empty = ArgumentParser::EmptyValue;
+    ArgumentParser parser;
+    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, a.media); })
+        .option({"-o", "--output"}, [&](const std::string& value) { a.output = value; return ""; }, Empty::Allowed)
+        .option({"--size"}, [&](const std::string& value) -> std::string {
+            int w = 0, h = 0;
+            char x = 0, extra = 0;
+            if (std::sscanf(value.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 ||
+                w > 16384 || h > 16384)
+                return "--size: expected WIDTHxHEIGHT between 1x1 and 16384x16384, got '" + value + "'";
+            a.run.size = {w, h};
+            return "";
+        }, Empty::Allowed)
+        .option({"--frames"}, [&](const std::string& value) -> std::string {
+            char* end = nullptr;
+            long n = std::strtol(value.c_str(), &end, 10);
+            if (*end || n < 1 || n > 1000000) return "--frames: expected a count from 1 to 1000000, got '" + value + "'";
+            a.run.frames = static_cast<int>(n);
+            return "";
+        }, Empty::Allowed)
+        .option({"--dt"}, [&](const std::string& value) -> std::string {
+            char* end = nullptr;
+            double dt = std::strtod(value.c_str(), &end);
+            if (*end || !std::isfinite(dt) || dt < 0) return "--dt: expected seconds ≥ 0, got '" + value + "'";
+            a.run.deltaTime = static_cast<float>(dt);
+            return "";
+        }, Empty::Allowed)
+        .option({"--set"}, [&](const std::string& value) -> std::string {
+            auto eq = value.find('=');
+            if (eq == std::string::npos || eq == 0) return "--set: expected NAME=VALUE, got '" + value + "'";
+            a.overrides.emplace_back(value.substr(0, eq), value.substr(eq + 1));
+            return "";
+        }, Empty::Allowed)
+        .option({"--target"}, [&](const std::string& value) { a.target = value; return ""; }, Empty::Allowed)
+        .option({"--transform"}, [&](const std::string& value) -> std::string {
+            if (value == "none") a.transform = DisplayTransform::None;
+            else if (value == "srgb") a.transform = DisplayTransform::Srgb;
+            else return "--transform: expected none or srgb, got '" + value + "'";
+            return "";
+        }, Empty::Allowed)
+        .option({"--effects"}, [&](const std::string& value) -> std::string {
+            if (value.find_first_not_of(", ") == std::string::npos && !value.empty())
+                return "--effects: expected names separated by commas, got '" + value + "'";
+            a.executor.effects = splitNameList(value);
+            return "";
+        }, Empty::Allowed)
+        .option({"--memory-budget"}, [&](const std::string& value) -> std::string {
+            char* end = nullptr;
+            double mib = std::strtod(value.c_str(), &end);
+            if (*end || !std::isfinite(mib) || mib <= 0 || mib > 1048576)
+                return "--memory-budget: expected MiB of render-target memory (up to 1048576), got '" + value + "'";
+            a.executor.memoryBudget = static_cast<std::size_t>(mib * 1048576.0);
+            return "";
+        }, Empty::Allowed)
+        .option({"--frame-budget"}, [&](const std::string& value) -> std::string {
+            char* end = nullptr;
+            double seconds = std::strtod(value.c_str(), &end);
+            if (*end || !std::isfinite(seconds) || seconds < 0)
+                return "--frame-budget: expected seconds ≥ 0 (0: no limit), got '" + value + "'";
+            a.run.frameBudgetSeconds = seconds;
+            return "";
+        }, Empty::Allowed)
+        .option({"--effect"}, [&](const std::string& value) { a.load.effect = value; return ""; }, Empty::Allowed)
+        .flag({"-q", "--quiet"}, [&] { a.quiet = true; })
+        .flag({"--explain"}, [&] { a.explain = true; })
+        .flag({"--no-pool"}, [&] { a.executor.poolTargets = false; })
+        .positional([&](const std::string& arg) -> std::string {
+            if (a.workspace) return "one workspace at a time; got '" + *a.workspace + "' and '" + arg + "'";
+            a.workspace = arg;
+            return "";
+        });
+    if (std::string message = parser.parse(args); !message.empty()) {
         std::cerr << "rmfx render: " << message << "\n";
         return std::nullopt;
-    };
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& arg = args[i];
-        auto next = [&]() -> std::optional<std::string> {
-            if (i + 1 >= args.size()) return std::nullopt;
-            return args[++i];
-        };
-        if (auto media = takeMediaArgument(args, i, a.media)) {
-            if (!media->empty()) return fail(*media);
-        } else if (arg == "-o" || arg == "--output" || arg == "--size" || arg == "--frames" || arg == "--dt" ||
-            arg == "--set" || arg == "--target" || arg == "--transform" || arg == "--effects" ||
-            arg == "--memory-budget" || arg == "--frame-budget" || arg == "--effect") {
-            auto value = next();
-            if (!value) return fail(arg + " needs a value");
-            if (arg == "-o" || arg == "--output") {
-                a.output = *value;
-            } else if (arg == "--size") {
-                int w = 0, h = 0;
-                char x = 0, extra = 0;
-                if (std::sscanf(value->c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 ||
-                    w > 16384 || h > 16384)
-                    return fail("--size: expected WIDTHxHEIGHT between 1x1 and 16384x16384, got '" + *value + "'");
-                a.run.size = {w, h};
-            } else if (arg == "--frames") {
-                char* end = nullptr;
-                long n = std::strtol(value->c_str(), &end, 10);
-                if (*end || n < 1 || n > 1000000) return fail("--frames: expected a count from 1 to 1000000, got '" + *value + "'");
-                a.run.frames = static_cast<int>(n);
-            } else if (arg == "--dt") {
-                char* end = nullptr;
-                double dt = std::strtod(value->c_str(), &end);
-                if (*end || !std::isfinite(dt) || dt < 0) return fail("--dt: expected seconds ≥ 0, got '" + *value + "'");
-                a.run.deltaTime = static_cast<float>(dt);
-            } else if (arg == "--set") {
-                auto eq = value->find('=');
-                if (eq == std::string::npos || eq == 0) return fail("--set: expected NAME=VALUE, got '" + *value + "'");
-                a.overrides.emplace_back(value->substr(0, eq), value->substr(eq + 1));
-            } else if (arg == "--target") {
-                a.target = *value;
-            } else if (arg == "--frame-budget") {
-                char* end = nullptr;
-                double seconds = std::strtod(value->c_str(), &end);
-                if (*end || !std::isfinite(seconds) || seconds < 0)
-                    return fail("--frame-budget: expected seconds ≥ 0 (0: no limit), got '" + *value + "'");
-                a.run.frameBudgetSeconds = seconds;
-            } else if (arg == "--memory-budget") {
-                char* end = nullptr;
-                double mib = std::strtod(value->c_str(), &end);
-                if (*end || !std::isfinite(mib) || mib <= 0 || mib > 1048576)
-                    return fail("--memory-budget: expected MiB of render-target memory (up to 1048576), got '" + *value + "'");
-                a.executor.memoryBudget = static_cast<std::size_t>(mib * 1048576.0);
-            } else if (arg == "--effect") {
-                a.load.effect = *value;
-            } else if (arg == "--effects") {
-                if (value->find_first_not_of(", ") == std::string::npos && !value->empty())
-                    return fail("--effects: expected names separated by commas, got '" + *value + "'");
-                a.executor.effects = splitNameList(*value);
-            } else {
-                if (*value == "none") a.transform = DisplayTransform::None;
-                else if (*value == "srgb") a.transform = DisplayTransform::Srgb;
-                else return fail("--transform: expected none or srgb, got '" + *value + "'");
-            }
-        } else if (arg == "-q" || arg == "--quiet") {
-            a.quiet = true;
-        } else if (arg == "--explain") {
-            a.explain = true;
-        } else if (arg == "--no-pool") {
-            a.executor.poolTargets = false;
-        } else if (!arg.empty() && arg[0] == '-') {
-            return fail("unknown option '" + arg + "' (see rmfx --help)");
-        } else if (a.workspace) {
-            return fail("one workspace at a time; got '" + *a.workspace + "' and '" + arg + "'");
-        } else {
-            a.workspace = arg;
-        }
     }
     return a;
 }

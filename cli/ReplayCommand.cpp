@@ -10,6 +10,7 @@
 #include <iostream>
 #include <optional>
 
+#include "cli/ArgumentParser.h"
 #include "cli/Commands.h"
 #include "core/FrameWatchdog.h"
 #include "frontend/replay/ReplayManifest.h"
@@ -42,37 +43,35 @@ std::optional<ReplayArguments> parseArguments(const std::vector<std::string>& ar
         std::cerr << "rmfx replay: " << message << "\n";
         return std::nullopt;
     };
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& arg = args[i];
-        MediaOptions media;
-        if (auto taken = takeMediaArgument(args, i, media)) {
-            if (!taken->empty()) return fail(*taken);
-            if (arg == "--media") a.media.push_back(media.searchPath[0]);
-            else a.sandbox = media.sandbox;
-        } else if (arg == "--out" || arg == "--junit" || arg == "--case" || arg == "--frame-budget") {
-            if (i + 1 >= args.size() || args[i + 1].empty()) return fail(arg + " needs a value");
-            const std::string& value = args[++i];
-            if (arg == "--out") a.out = value;
-            else if (arg == "--junit") a.junit = value;
-            else if (arg == "--case") a.cases.push_back(value);
-            else {
-                char* end = nullptr;
-                a.frameBudget = std::strtod(value.c_str(), &end);
-                if (*end || !std::isfinite(a.frameBudget) || a.frameBudget < 0)
-                    return fail("--frame-budget: expected seconds ≥ 0 (0: no limit), got '" + value + "'");
-            }
-        } else if (arg == "--update") {
-            a.update = true;
-        } else if (arg == "-q" || arg == "--quiet") {
-            a.quiet = true;
-        } else if (!arg.empty() && arg[0] == '-') {
-            return fail("unknown option '" + arg + "' (see rmfx --help)");
-        } else if (a.manifest) {
-            return fail("one manifest at a time; got '" + *a.manifest + "' and '" + arg + "'");
-        } else {
+    ArgumentParser parser;
+    parser.own([&](const std::vector<std::string>& all, size_t& i) {
+              MediaOptions media;
+              const std::string& arg = all[i];
+              auto taken = takeMediaArgument(all, i, media);
+              if (taken && taken->empty()) {
+                  if (arg == "--media") a.media.push_back(media.searchPath[0]);
+                  else a.sandbox = media.sandbox;
+              }
+              return taken;
+          })
+        .option({"--out"}, [&](const std::string& value) { a.out = value; return ""; })
+        .option({"--junit"}, [&](const std::string& value) { a.junit = value; return ""; })
+        .option({"--case"}, [&](const std::string& value) { a.cases.push_back(value); return ""; })
+        .option({"--frame-budget"}, [&](const std::string& value) -> std::string {
+            char* end = nullptr;
+            a.frameBudget = std::strtod(value.c_str(), &end);
+            if (*end || !std::isfinite(a.frameBudget) || a.frameBudget < 0)
+                return "--frame-budget: expected seconds ≥ 0 (0: no limit), got '" + value + "'";
+            return "";
+        })
+        .flag({"--update"}, [&] { a.update = true; })
+        .flag({"-q", "--quiet"}, [&] { a.quiet = true; })
+        .positional([&](const std::string& arg) -> std::string {
+            if (a.manifest) return "one manifest at a time; got '" + *a.manifest + "' and '" + arg + "'";
             a.manifest = arg;
-        }
-    }
+            return "";
+        });
+    if (std::string message = parser.parse(args); !message.empty()) return fail(message);
     if (!a.manifest) return fail("name a manifest file (see rmfx --help and docs/replay.md)");
     return a;
 }
@@ -204,10 +203,10 @@ private:
 int replayCommand(const std::vector<std::string>& args) {
     auto a = parseArguments(args);
     if (!a) return 1;
-    ParsedManifest parsed = parseReplayManifestFile(*a->manifest);
-    std::cerr << formatAll(parsed.diagnostics);
-    if (!parsed.manifest) return 1;
-    const ReplayManifest& manifest = *parsed.manifest;
+    Result<ReplayManifest> parsed = parseReplayManifestFile(*a->manifest);
+    std::cerr << formatAll(parsed.diagnostics());
+    if (!parsed) return 1;
+    const ReplayManifest& manifest = *parsed;
     auto cases = selectCases(manifest, a->cases);
     if (!cases) return 1;
 

@@ -1,5 +1,6 @@
 #include <iostream>
 
+#include "cli/ArgumentParser.h"
 #include "cli/Commands.h"
 #include "io/media/MediaArguments.h"
 #include "validation/WorkspaceLoader.h"
@@ -18,25 +19,15 @@ int validateCommand(const std::vector<std::string>& args) {
     ValidationOptions options;
     WorkspaceLoadOptions load;
     std::vector<std::string> paths;
-    for (size_t i = 0; i < args.size(); ++i) {
-        if (auto media = takeMediaArgument(args, i, options.media)) {
-            if (media->empty()) continue;
-            std::cerr << "rmfx validate: " << *media << "\n";
-            return 1;
-        }
-        if (args[i] == "--effect") {
-            if (i + 1 >= args.size()) {
-                std::cerr << "rmfx validate: --effect needs a value\n";
-                return 1;
-            }
-            load.effect = args[++i];
-            continue;
-        }
-        if (!args[i].empty() && args[i][0] == '-') {
-            std::cerr << "rmfx validate: unknown option '" << args[i] << "'\n";
-            return 1;
-        }
-        paths.push_back(args[i]);
+    ArgumentParser parser;
+    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, options.media); })
+        .option({"--effect"}, [&](const std::string& value) { load.effect = value; return ""; },
+                ArgumentParser::EmptyValue::Allowed)
+        .positional([&](const std::string& path) { paths.push_back(path); return ""; })
+        .unknownOptionHint("");
+    if (std::string message = parser.parse(args); !message.empty()) {
+        std::cerr << "rmfx validate: " << message << "\n";
+        return 1;
     }
     if (paths.empty()) {
         std::cerr << "rmfx validate: name one or more workspace files\n";

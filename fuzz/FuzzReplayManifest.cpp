@@ -11,14 +11,14 @@ namespace rmfx::fuzz {
 void fuzzReplayManifest(const std::uint8_t* data, std::size_t size) {
     std::string text(reinterpret_cast<const char*>(data), size);
     const std::filesystem::path& folder = freshScratchFolder();
-    ParsedManifest parsed = parseReplayManifestText(text, folder / "manifest.xml", folder);
-    formatAll(parsed.diagnostics);
-    fuzzCheck(parsed.manifest.has_value() == !hasErrors(parsed.diagnostics),
+    Result<ReplayManifest> parsed = parseReplayManifestText(text, folder / "manifest.xml", folder);
+    formatAll(parsed.diagnostics());
+    fuzzCheck(parsed.ok() == !hasErrors(parsed.diagnostics()),
               "the parser returned a manifest together with errors, or neither");
-    if (!parsed.manifest) return;
-    for (const ReplayCase& c : parsed.manifest->cases) {
+    if (!parsed) return;
+    for (const ReplayCase& c : parsed->cases) {
         fuzzCheck(!c.compares.empty(), "case '" + c.name + "' has no compare");
-        fuzzCheck(parsed.manifest->findCase(c.name) == &c, "case '" + c.name + "' is not found by its name");
+        fuzzCheck(parsed->findCase(c.name) == &c, "case '" + c.name + "' is not found by its name");
         c.overrides();
         for (const ReplayCompare& compare : c.compares) compare.label();
     }

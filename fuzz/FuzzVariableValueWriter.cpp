@@ -43,9 +43,9 @@ Values valuesFromLines(const std::string& text) {
 // Every declared variable with a different value of its type.
 Values changedValues(const std::string& text) {
     Values out;
-    ParsedWorkspace parsed = parseWorkspaceText(text, "fuzz.xml", ".");
-    if (!parsed.workspace) return out;
-    for (const Variable& v : parsed.workspace->variables) {
+    Result<Workspace> parsed = parseWorkspaceText(text, "fuzz.xml", ".");
+    if (!parsed) return out;
+    for (const Variable& v : parsed->variables) {
         Value changed = v.value;
         if (v.value.type == ValueType::Bool) changed.data[0] = v.value.asBool() ? 0.0f : 1.0f;
         else if (v.value.type == ValueType::Int) changed.data[0] = v.value.data[0] >= 16777216.0f ? 0.0f : v.value.data[0] + 1.0f;

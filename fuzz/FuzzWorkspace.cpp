@@ -63,12 +63,12 @@ void planFrame(const Workspace& ws) {
 
 }  // namespace
 
-void checkParsedWorkspace(const ParsedWorkspace& parsed) {
-    formatAll(parsed.diagnostics);
-    fuzzCheck(parsed.workspace.has_value() == !hasErrors(parsed.diagnostics),
+void checkParsedWorkspace(const Result<Workspace>& parsed) {
+    formatAll(parsed.diagnostics());
+    fuzzCheck(parsed.ok() == !hasErrors(parsed.diagnostics()),
               "the front end returned a workspace together with errors, or neither");
-    if (!parsed.workspace) return;
-    const Workspace& ws = *parsed.workspace;
+    if (!parsed) return;
+    const Workspace& ws = *parsed;
     Diagnostics found = validateWorkspace(ws, {.compileShaders = false});
     formatAll(found);
     findWorkspaceDependencies(ws);

@@ -8,6 +8,6 @@
 
 namespace rmfx::fuzz {
 
-void checkParsedWorkspace(const ParsedWorkspace& parsed);
+void checkParsedWorkspace(const Result<Workspace>& parsed);
 
 }  // namespace rmfx::fuzz

@@ -15,15 +15,15 @@ namespace {
 using test::lines;
 
 std::string errorsOf(const std::string& text) {
-    ParsedVariantManifest p = parseVariantManifestText(text, "m.xml");
-    EXPECT_FALSE(p.manifest.has_value());
-    return formatAll(p.diagnostics);
+    Result<VariantManifest> p = parseVariantManifestText(text, "m.xml");
+    EXPECT_FALSE(p.ok());
+    return formatAll(p.diagnostics());
 }
 
 const char* kStageOpen = R"(  <stage name="bloom" workspace="bloom.xml" ideal="bloom" output="result">)";
 
 TEST(VariantManifest, ParsesScenesStagesAndAxes) {
-    ParsedVariantManifest p = parseVariantManifestText(
+    Result<VariantManifest> p = parseVariantManifestText(
         lines({"<bench-variants>",
                R"(  <scene name="a" file="in/a.exr"/>)",
                R"(  <scene name="b" workspace="w.xml" target="scene"/>)",
@@ -34,8 +34,8 @@ TEST(VariantManifest, ParsesScenesStagesAndAxes) {
                "  </stage>",
                "</bench-variants>"}),
         "dir/m.xml");
-    ASSERT_TRUE(p.manifest) << formatAll(p.diagnostics);
-    const VariantManifest& m = *p.manifest;
+    ASSERT_TRUE(p.ok()) << formatAll(p.diagnostics());
+    const VariantManifest& m = *p;
     ASSERT_EQ(m.scenes.size(), 2u);
     EXPECT_EQ(m.scenes[0].file, std::filesystem::path("dir/in/a.exr"));
     EXPECT_EQ(m.scenes[1].workspace, std::filesystem::path("dir/w.xml"));
@@ -88,15 +88,15 @@ TEST(VariantManifest, ErrorsNameFileLineAndElement) {
     EXPECT_EQ(errorsOf(lines({"<bench-variants>", "  <stages/>", "</bench-variants>"})),
               "m.xml:2: error: unknown element <stages> in <bench-variants> (expected <scene> or <stage>)\n"
               "m.xml:1: error: <bench-variants>: no <stage>: the manifest names nothing to measure\n");
-    EXPECT_EQ(formatAll(parseVariantManifestFile("no/such/variants.xml").diagnostics),
+    EXPECT_EQ(formatAll(parseVariantManifestFile("no/such/variants.xml").diagnostics()),
               "no/such/variants.xml: error: cannot open the file\n");
 }
 
 StageSpec stageOf(const std::string& axes) {
-    ParsedVariantManifest p = parseVariantManifestText(
+    Result<VariantManifest> p = parseVariantManifestText(
         lines({"<bench-variants>", kStageOpen, axes, "  </stage>", "</bench-variants>"}), "m.xml");
-    EXPECT_TRUE(p.manifest) << formatAll(p.diagnostics);
-    return p.manifest ? p.manifest->stages[0] : StageSpec{};
+    EXPECT_TRUE(p.ok()) << formatAll(p.diagnostics());
+    return p ? p->stages[0] : StageSpec{};
 }
 
 std::vector<std::string> namesOf(const std::vector<Variant>& variants) {
@@ -131,14 +131,14 @@ TEST(VariantManifest, WithoutCrossedAxesEachValueOfEachAxisOnce) {
 }
 
 TEST(VariantManifest, TheRepositorysManifestParsesAndExpandsAsDocumented) {
-    ParsedVariantManifest p = parseVariantManifestFile(test::sourceDir() / "bench/variants.xml");
-    ASSERT_TRUE(p.manifest) << formatAll(p.diagnostics);
+    Result<VariantManifest> p = parseVariantManifestFile(test::sourceDir() / "bench/variants.xml");
+    ASSERT_TRUE(p.ok()) << formatAll(p.diagnostics());
     std::map<std::string, size_t> counts;
-    for (const StageSpec& s : p.manifest->stages) counts[s.name] = expandVariants(s).size();
+    for (const StageSpec& s : p->stages) counts[s.name] = expandVariants(s).size();
     // bloom: 8 blurs × 3 downsample factors + 5 other formats; streak: 3 × 3 + 5; luminance:
     // 3 algorithms + 2 percentile pairs of the histogram; tone map: 4 curves + 5 formats.
     EXPECT_EQ(counts, (std::map<std::string, size_t>{{"bloom", 29}, {"streak", 14}, {"luminance", 5}, {"tonemap", 9}}));
-    EXPECT_EQ(p.manifest->scenes.size(), 3u);
+    EXPECT_EQ(p->scenes.size(), 3u);
 }
 
 }  // namespace

@@ -10,7 +10,7 @@ struct TimeSummary {
     double median = 0.0, p10 = 0.0, p90 = 0.0, min = 0.0, max = 0.0;  // milliseconds
 };
 
-// Percentiles by linear interpolation between the sorted samples (position p · (n − 1)).
+// Percentiles as core/Percentile.h defines them (linear interpolation between closest ranks).
 TimeSummary summariseTimes(std::vector<double> milliseconds);
 
 }  // namespace rmfx::accuracy

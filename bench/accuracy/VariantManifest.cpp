@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "io/xml/XmlDocumentParser.h"
 #include "io/xml/XmlElementReader.h"
 
 namespace rmfx::accuracy {
@@ -259,23 +260,17 @@ const StageSpec* VariantManifest::findStage(const std::string& name) const {
     return nullptr;
 }
 
-ParsedVariantManifest parseVariantManifestText(const std::string& text, const fs::path& path) {
-    ParsedVariantManifest out;
-    tinyxml2::XMLDocument doc;
-    const XMLElement* root = xml::parseDocument(doc, text, path.string(), "bench-variants", out.diagnostics);
-    if (!root) return out;
-    VariantManifest manifest;
-    manifest.path = path;
-    Parser(path.string(), path.parent_path(), out.diagnostics).parse(root, manifest);
-    if (!hasErrors(out.diagnostics)) out.manifest = std::move(manifest);
-    return out;
+Result<VariantManifest> parseVariantManifestText(const std::string& text, const fs::path& path) {
+    return xml::parseXmlText(text, path.string(), "bench-variants", [&](const XMLElement* root, Diagnostics& diagnostics) {
+        VariantManifest manifest;
+        manifest.path = path;
+        Parser(path.string(), path.parent_path(), diagnostics).parse(root, manifest);
+        return manifest;
+    });
 }
 
-ParsedVariantManifest parseVariantManifestFile(const fs::path& path) {
-    ParsedVariantManifest out;
-    auto text = xml::readTextFile(path, out.diagnostics);
-    if (!text) return out;
-    return parseVariantManifestText(*text, path);
+Result<VariantManifest> parseVariantManifestFile(const fs::path& path) {
+    return xml::parseXmlFile(path, [&](const std::string& text) { return parseVariantManifestText(text, path); });
 }
 
 std::string Variant::settingsText() const {

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/Diagnostic.h"
+#include "core/Result.h"
 
 namespace rmfx::accuracy {
 
@@ -70,14 +71,10 @@ struct VariantManifest {
     const StageSpec* findStage(const std::string& name) const;
 };
 
-struct ParsedVariantManifest {
-    std::optional<VariantManifest> manifest;  // present when there are no errors
-    Diagnostics diagnostics;
-};
-
-ParsedVariantManifest parseVariantManifestFile(const std::filesystem::path& path);
+// The manifest with its warnings, or the diagnostics with at least one error.
+Result<VariantManifest> parseVariantManifestFile(const std::filesystem::path& path);
 // `path` names the text in diagnostics; relative paths resolve against its folder.
-ParsedVariantManifest parseVariantManifestText(const std::string& text, const std::filesystem::path& path);
+Result<VariantManifest> parseVariantManifestText(const std::string& text, const std::filesystem::path& path);
 
 // One variant of a stage: the effect it asks for and the variables it sets (every variable axis,
 // default or not).

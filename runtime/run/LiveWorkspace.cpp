@@ -63,8 +63,8 @@ std::optional<LiveWorkspace::Build> LiveWorkspace::load(Diagnostics& diagnostics
     append(diagnostics, loaded.diagnostics);
     if (!loaded.workspace) {
         // Watch what the broken file names too (a texture it names that is not there yet, say).
-        ParsedWorkspace parsed = isRfxPath(file_) ? importRfxFile(file_, {loadOptions_.effect}) : parseWorkspaceFile(file_);
-        if (parsed.workspace) failedDependencies_ = findWorkspaceDependencies(*parsed.workspace);
+        Result<Workspace> parsed = isRfxPath(file_) ? importRfxFile(file_, {loadOptions_.effect}) : parseWorkspaceFile(file_);
+        if (parsed) failedDependencies_ = findWorkspaceDependencies(*parsed);
         return std::nullopt;
     }
     Build build;

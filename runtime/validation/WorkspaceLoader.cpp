@@ -7,19 +7,19 @@
 
 namespace rmfx {
 
-static LoadedWorkspace validated(ParsedWorkspace parsed, const ValidationOptions& options, bool imported = false) {
+static LoadedWorkspace validated(Result<Workspace> parsed, const ValidationOptions& options, bool imported = false) {
     LoadedWorkspace out;
-    out.diagnostics = std::move(parsed.diagnostics);
-    if (!parsed.workspace) return out;
+    out.diagnostics = parsed.takeDiagnostics();
+    if (!parsed) return out;
     // References are resolved once, here: what validation, the executor and hot reload open.
     // Until they all resolve nothing reads them (a shader outside the sandbox is not even compiled).
-    Diagnostics unresolved = resolveWorkspaceMedia(*parsed.workspace, options.media);
+    Diagnostics unresolved = resolveWorkspaceMedia(*parsed, options.media);
     out.diagnostics.insert(out.diagnostics.end(), unresolved.begin(), unresolved.end());
     if (hasErrors(unresolved)) return out;
-    if (imported) frameDrawnModels(*parsed.workspace);
-    Diagnostics found = validateWorkspace(*parsed.workspace, options);
+    if (imported) frameDrawnModels(*parsed);
+    Diagnostics found = validateWorkspace(*parsed, options);
     out.diagnostics.insert(out.diagnostics.end(), found.begin(), found.end());
-    if (!hasErrors(out.diagnostics)) out.workspace = std::move(parsed.workspace);
+    if (!hasErrors(out.diagnostics)) out.workspace = std::move(*parsed);
     return out;
 }
 

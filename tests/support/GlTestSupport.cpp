@@ -55,18 +55,18 @@ void CompatibilityGlTest::TearDown() {
 }
 
 std::unique_ptr<Workspace> workspaceFromText(const std::string& xml, const std::filesystem::path& folder) {
-    ParsedWorkspace parsed = parseWorkspaceText(xml, folder / "test-workspace.xml", folder);
-    Diagnostics diagnostics = parsed.diagnostics;
-    if (parsed.workspace) {
-        Diagnostics found = resolveWorkspaceMedia(*parsed.workspace, {});
-        if (!hasErrors(found)) found = validateWorkspace(*parsed.workspace);
+    Result<Workspace> parsed = parseWorkspaceText(xml, folder / "test-workspace.xml", folder);
+    Diagnostics diagnostics = parsed.diagnostics();
+    if (parsed) {
+        Diagnostics found = resolveWorkspaceMedia(*parsed, {});
+        if (!hasErrors(found)) found = validateWorkspace(*parsed);
         diagnostics.insert(diagnostics.end(), found.begin(), found.end());
     }
-    if (!parsed.workspace || hasErrors(diagnostics)) {
+    if (!parsed || hasErrors(diagnostics)) {
         ADD_FAILURE() << "workspace does not load:\n" << formatAll(diagnostics) << "\n" << xml;
         return nullptr;
     }
-    return std::make_unique<Workspace>(std::move(*parsed.workspace));
+    return std::make_unique<Workspace>(std::move(*parsed));
 }
 
 std::unique_ptr<Workspace> effectWorkspace(const std::string& file, const Overrides& overrides) {

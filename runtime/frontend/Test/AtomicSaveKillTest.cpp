@@ -39,11 +39,11 @@ std::string workspaceText(double gain) {
 std::optional<double> gainOf(const fs::path& file) {
     auto text = readWholeFile(file);
     if (!text) return std::nullopt;
-    ParsedWorkspace parsed = parseWorkspaceText(*text, file, "fx");
-    if (!parsed.workspace || parsed.workspace->variables.size() != 1) return std::nullopt;
+    Result<Workspace> parsed = parseWorkspaceText(*text, file, "fx");
+    if (!parsed.ok() || parsed->variables.size() != 1) return std::nullopt;
     const std::string tail = " -->\n  <pass name=\"p\"/>\n</workspace>\n";
     if (text->find(std::string(1 << 20, 'x') + tail) == std::string::npos) return std::nullopt;
-    return parsed.workspace->variables[0].value.asFloat();
+    return parsed->variables[0].value.asFloat();
 }
 
 TEST(AtomicSaveKill, KillingTheWriterAtRandomMomentsLeavesACompleteFile) {

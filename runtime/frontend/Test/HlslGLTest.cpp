@@ -19,12 +19,12 @@ class HlslGLTest : public GlTest {};
 // Parses `xml`, marks the shaders of passes named hlsl* as HLSL (vs_2_0 / ps_2_0, entry "main")
 // and validates it, as an imported Direct3D effect would be.
 std::unique_ptr<Workspace> hlslWorkspace(const std::string& xml, const std::filesystem::path& folder = ".") {
-    ParsedWorkspace parsed = parseWorkspaceText(xml, folder / "hlsl-test.xml", folder);
-    if (!parsed.workspace) {
-        ADD_FAILURE() << formatAll(parsed.diagnostics);
+    Result<Workspace> parsed = parseWorkspaceText(xml, folder / "hlsl-test.xml", folder);
+    if (!parsed.ok()) {
+        ADD_FAILURE() << formatAll(parsed.diagnostics());
         return nullptr;
     }
-    for (Pass& pass : parsed.workspace->passes) {
+    for (Pass& pass : parsed->passes) {
         if (pass.name.rfind("hlsl", 0) != 0) continue;
         for (ShaderSource& s : pass.shaders) {
             s.dialect = ShaderDialect::Hlsl;
@@ -32,12 +32,12 @@ std::unique_ptr<Workspace> hlslWorkspace(const std::string& xml, const std::file
             s.profile = s.stage == ShaderStage::Vertex ? "vs_2_0" : "ps_2_0";
         }
     }
-    Diagnostics d = validateWorkspace(*parsed.workspace);
+    Diagnostics d = validateWorkspace(*parsed);
     if (hasErrors(d)) {
         ADD_FAILURE() << formatAll(d);
         return nullptr;
     }
-    return std::make_unique<Workspace>(std::move(*parsed.workspace));
+    return std::make_unique<Workspace>(std::move(*parsed));
 }
 
 // Passes the mesh's position and first texture coordinates on, with a chosen clip-space z and w.
@@ -171,7 +171,7 @@ float4 main(float2 uv : TEXCOORD0, float4 far : TEXCOORD3, float3 colour : COLOR
 
 // An input fixed-function processing does not give is an error naming the semantic.
 TEST_F(HlslGLTest, PixelShaderWithoutAVertexShaderReadingANormalIsAnError) {
-    ParsedWorkspace parsed = parseWorkspaceText(R"(<workspace version="1" name="hlsl" size="4x4">
+    Result<Workspace> parsed = parseWorkspaceText(R"(<workspace version="1" name="hlsl" size="4x4">
   <pass name="hlsl">
     <shader stage="fragment" dialect="hlsl"><![CDATA[
 float4 main(float3 n : NORMAL) : COLOR { return float4(n, 1); }
@@ -179,8 +179,8 @@ float4 main(float3 n : NORMAL) : COLOR { return float4(n, 1); }
   </pass>
 </workspace>)",
                                                 "hlsl-test.xml", ".");
-    ASSERT_TRUE(parsed.workspace) << formatAll(parsed.diagnostics);
-    std::string all = formatAll(validateWorkspace(*parsed.workspace));
+    ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
+    std::string all = formatAll(validateWorkspace(*parsed));
     EXPECT_NE(all.find("hlsl-test.xml:3: error: <pass name=\"hlsl\">: the HLSL pixel shader reads NORMAL0, which a pass "
                        "without a vertex shader"),
               std::string::npos)

@@ -234,14 +234,14 @@ TEST(HlslTranslator, ValidationReportsHlslErrorsAtTheWorkspaceLine) {
         "  </pass>",
         "</workspace>",
     });
-    ParsedWorkspace parsed = parseWorkspaceText(xml, "hlsl.xml", ".");
-    ASSERT_TRUE(parsed.workspace) << formatAll(parsed.diagnostics);
-    for (Pass& pass : parsed.workspace->passes)
+    Result<Workspace> parsed = parseWorkspaceText(xml, "hlsl.xml", ".");
+    ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
+    for (Pass& pass : parsed->passes)
         for (ShaderSource& s : pass.shaders) {
             s.dialect = ShaderDialect::Hlsl;
             s.profile = "ps_2_0";
         }
-    Diagnostics d = validateWorkspace(*parsed.workspace);
+    Diagnostics d = validateWorkspace(*parsed);
     ASSERT_TRUE(hasErrors(d));
     EXPECT_EQ(d[0].where.file, "hlsl.xml");
     EXPECT_EQ(d[0].where.line, 6) << formatAll(d);

@@ -13,7 +13,7 @@
 namespace rmfx {
 namespace {
 
-ParsedWorkspace parse(const std::string& xml) { return parseWorkspaceText(xml, "legacy.xml", "."); }
+Result<Workspace> parse(const std::string& xml) { return parseWorkspaceText(xml, "legacy.xml", "."); }
 
 const char* kLegacyWorkspace = R"(<workspace version="1" name="legacy" profile="compatibility">
   <mat4 name="matViewProjection" semantic="ViewProjection"/>
@@ -38,10 +38,10 @@ void main() { gl_FragColor = vec4(uv, gl_LightSource[0].diffuse.r, gl_FrontMater
 </workspace>)";
 
 TEST(LegacyDialects, ParserReadsProfileDialectSemanticAndStreams) {
-    ParsedWorkspace parsed = parse(kLegacyWorkspace);
-    ASSERT_TRUE(parsed.workspace) << formatAll(parsed.diagnostics);
-    EXPECT_TRUE(parsed.diagnostics.empty()) << formatAll(parsed.diagnostics);
-    const Workspace& ws = *parsed.workspace;
+    Result<Workspace> parsed = parse(kLegacyWorkspace);
+    ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
+    EXPECT_TRUE(parsed.diagnostics().empty()) << formatAll(parsed.diagnostics());
+    const Workspace& ws = *parsed;
     EXPECT_EQ(ws.profile, GlProfile::Compatibility);
     EXPECT_EQ(ws.variables.at(0).semantic, "ViewProjection");
     const Pass& pass = ws.passes.at(0);
@@ -57,7 +57,7 @@ TEST(LegacyDialects, ParserReadsProfileDialectSemanticAndStreams) {
 }
 
 TEST(LegacyDialects, ParserRejectsBadStreamsAndDialects) {
-    ParsedWorkspace parsed = parse(R"(<workspace version="1" profile="modern">
+    Result<Workspace> parsed = parse(R"(<workspace version="1" profile="modern">
   <pass name="p">
     <stream usage="uv"/>
     <stream usage="normal" index="2"/>
@@ -66,7 +66,7 @@ TEST(LegacyDialects, ParserRejectsBadStreamsAndDialects) {
     <shader stage="vertex" entry="main">void main() {}</shader>
   </pass>
 </workspace>)");
-    std::string all = formatAll(parsed.diagnostics);
+    std::string all = formatAll(parsed.diagnostics());
     EXPECT_NE(all.find("legacy.xml:1: error: <workspace>: attribute 'profile': 'modern' is not one of: core, compatibility"),
               std::string::npos) << all;
     EXPECT_NE(all.find("legacy.xml:3: error: <stream>: attribute 'usage': 'uv'"), std::string::npos) << all;
@@ -104,18 +104,18 @@ TEST(LegacyDialects, EachDialectGetsItsVersionLineAndTheDefinesFollowIt) {
 }
 
 TEST(LegacyDialects, GlslangAcceptsLegacyBuiltinsAndValidationBindsTheSemantic) {
-    ParsedWorkspace parsed = parse(kLegacyWorkspace);
-    ASSERT_TRUE(parsed.workspace);
-    Diagnostics d = validateWorkspace(*parsed.workspace);
+    Result<Workspace> parsed = parse(kLegacyWorkspace);
+    ASSERT_TRUE(parsed.ok());
+    Diagnostics d = validateWorkspace(*parsed);
     EXPECT_FALSE(hasErrors(d)) << formatAll(d);
 }
 
 TEST(LegacyDialects, ValidationWarnsAboutAStreamToAnAttributeTheShadersLack) {
     std::string xml = kLegacyWorkspace;
     xml.replace(xml.find("attribute=\"rm_Vertex\""), 21, "attribute=\"rm_Vertexx\"");
-    ParsedWorkspace parsed = parse(xml);
-    ASSERT_TRUE(parsed.workspace) << formatAll(parsed.diagnostics);
-    std::string all = formatAll(validateWorkspace(*parsed.workspace));
+    Result<Workspace> parsed = parse(xml);
+    ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
+    std::string all = formatAll(validateWorkspace(*parsed));
     EXPECT_NE(all.find("legacy.xml:4: warning: <pass name=\"mesh\">: stream to attribute 'rm_Vertexx' (line 4), which the shaders do not read"),
               std::string::npos) << all;
 }
@@ -123,16 +123,16 @@ TEST(LegacyDialects, ValidationWarnsAboutAStreamToAnAttributeTheShadersLack) {
 TEST(LegacyDialects, LegacyGlslInACoreWorkspaceIsAnError) {
     std::string xml = kLegacyWorkspace;
     xml.replace(xml.find(" profile=\"compatibility\""), 24, "");
-    ParsedWorkspace parsed = parse(xml);
-    ASSERT_TRUE(parsed.workspace) << formatAll(parsed.diagnostics);
-    std::string all = formatAll(validateWorkspace(*parsed.workspace));
+    Result<Workspace> parsed = parse(xml);
+    ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
+    std::string all = formatAll(validateWorkspace(*parsed));
     EXPECT_NE(all.find("legacy.xml:7: error: <shader>: legacy GLSL (dialect=\"glsl110\") in <pass name=\"mesh\"> needs a "
                        "compatibility-profile context"),
               std::string::npos) << all;
 }
 
 TEST(LegacyDialects, GlslangRejectsLegacyBuiltinsInEs100WithTheLine) {
-    ParsedWorkspace parsed = parse(R"(<workspace version="1">
+    Result<Workspace> parsed = parse(R"(<workspace version="1">
   <pass name="es">
     <shader stage="fragment" dialect="glsles100"><![CDATA[
 precision mediump float;
@@ -140,8 +140,8 @@ void main() { gl_FragColor = gl_FrontMaterial.diffuse; }
 ]]></shader>
   </pass>
 </workspace>)");
-    ASSERT_TRUE(parsed.workspace);
-    std::string all = formatAll(validateWorkspace(*parsed.workspace));
+    ASSERT_TRUE(parsed.ok());
+    std::string all = formatAll(validateWorkspace(*parsed));
     EXPECT_NE(all.find("legacy.xml:5: error"), std::string::npos) << all;
     EXPECT_NE(all.find("gl_FrontMaterial"), std::string::npos) << all;
 }

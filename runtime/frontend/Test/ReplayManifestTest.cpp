@@ -15,7 +15,7 @@ const std::string at = kPath + ":";
 using Lines = std::vector<std::string>;
 using test::lines;
 
-ParsedManifest parse(const std::string& text) { return parseReplayManifestText(text, kPath, "ci"); }
+Result<ReplayManifest> parse(const std::string& text) { return parseReplayManifestText(text, kPath, "ci"); }
 
 // A manifest whose body starts on line 2.
 std::string manifest(std::initializer_list<std::string> body) {
@@ -25,18 +25,18 @@ std::string manifest(std::initializer_list<std::string> body) {
 }
 
 std::vector<std::string> errorsOf(const std::string& text) {
-    ParsedManifest p = parse(text);
-    EXPECT_FALSE(p.manifest.has_value());
+    Result<ReplayManifest> p = parse(text);
+    EXPECT_FALSE(p.ok());
     std::vector<std::string> out;
-    for (const Diagnostic& d : p.diagnostics) out.push_back(d.format());
+    for (const Diagnostic& d : p.diagnostics()) out.push_back(d.format());
     return out;
 }
 
 ReplayManifest parsedOk(const std::string& text) {
-    ParsedManifest p = parse(text);
-    EXPECT_EQ(formatAll(p.diagnostics), "");
-    EXPECT_TRUE(p.manifest.has_value());
-    return p.manifest.value_or(ReplayManifest{});
+    Result<ReplayManifest> p = parse(text);
+    EXPECT_EQ(formatAll(p.diagnostics()), "");
+    EXPECT_TRUE(p.ok());
+    return (p ? *p : ReplayManifest{});
 }
 
 // A case with one valid compare, for tests about other elements (lines: case, compare, </case>).
@@ -274,15 +274,15 @@ TEST(ReplayManifest, SetsAndDefaults) {
 TEST(ReplayManifest, ReadsFilesAndResolvesInTheirFolder) {
     test::ScratchDir dir;
     auto file = dir.write("sub/replay.xml", manifest({"  <case name=\"a\" workspace=\"fx/a.xml\">", kCompare, "  </case>"}));
-    ParsedManifest p = parseReplayManifestFile(file);
-    ASSERT_TRUE(p.manifest) << formatAll(p.diagnostics);
-    EXPECT_EQ(p.manifest->folder, dir / "sub");
-    EXPECT_EQ(p.manifest->cases.at(0).workspace, dir / "sub" / "fx/a.xml");
-    EXPECT_EQ(p.manifest->cases.at(0).compares.at(0).reference, dir / "sub" / "refs/a.exr");
+    Result<ReplayManifest> p = parseReplayManifestFile(file);
+    ASSERT_TRUE(p.ok()) << formatAll(p.diagnostics());
+    EXPECT_EQ(p->folder, dir / "sub");
+    EXPECT_EQ(p->cases.at(0).workspace, dir / "sub" / "fx/a.xml");
+    EXPECT_EQ(p->cases.at(0).compares.at(0).reference, dir / "sub" / "refs/a.exr");
 
-    ParsedManifest missing = parseReplayManifestFile(dir / "none.xml");
-    EXPECT_FALSE(missing.manifest);
-    EXPECT_EQ(formatAll(missing.diagnostics), (dir / "none.xml").string() + ": error: cannot open the file\n");
+    Result<ReplayManifest> missing = parseReplayManifestFile(dir / "none.xml");
+    EXPECT_FALSE(missing.ok());
+    EXPECT_EQ(formatAll(missing.diagnostics()), (dir / "none.xml").string() + ": error: cannot open the file\n");
 }
 
 }  // namespace
@@ -313,13 +313,13 @@ TEST(ReplayManifest, SandboxIsOnUnlessTheManifestTurnsItOff) {
     ReplayManifest on = parsedOk(manifest({"  <case name=\"a\" workspace=\"a.xml\">", kCompare, "  </case>"}));
     EXPECT_TRUE(on.media.sandbox);
     EXPECT_TRUE(on.media.searchPath.empty());
-    ParsedManifest off = parse("<replay version=\"1\" sandbox=\"false\">\n  <case name=\"a\" workspace=\"a.xml\">\n" +
+    Result<ReplayManifest> off = parse("<replay version=\"1\" sandbox=\"false\">\n  <case name=\"a\" workspace=\"a.xml\">\n" +
                                kCompare + "\n  </case>\n</replay>\n");
-    ASSERT_TRUE(off.manifest) << formatAll(off.diagnostics);
-    EXPECT_FALSE(off.manifest->media.sandbox);
+    ASSERT_TRUE(off.ok()) << formatAll(off.diagnostics());
+    EXPECT_FALSE(off->media.sandbox);
     EXPECT_EQ(formatAll(parse("<replay version=\"1\" sandbox=\"maybe\">\n  <case name=\"a\" workspace=\"a.xml\">\n" +
                               kCompare + "\n  </case>\n</replay>\n")
-                            .diagnostics)
+                            .diagnostics())
                   .find(at + "1: error: <replay>:"),
               0u);
 }
@@ -329,15 +329,15 @@ TEST(ReplayManifest, MediaFoldersResolveInTheManifestFolderAndMustExist) {
     std::filesystem::create_directories(dir / "samples/media");
     auto file = dir.write("ci/replay.xml", manifest({"  <media dir=\"../samples/media\"/>", "  <case name=\"a\" workspace=\"a.xml\">",
                                                      kCompare, "  </case>", "  <media dir=\".\"/>"}));
-    ParsedManifest p = parseReplayManifestFile(file);
-    ASSERT_TRUE(p.manifest) << formatAll(p.diagnostics);
-    EXPECT_EQ(p.manifest->media.searchPath,
+    Result<ReplayManifest> p = parseReplayManifestFile(file);
+    ASSERT_TRUE(p.ok()) << formatAll(p.diagnostics());
+    EXPECT_EQ(p->media.searchPath,
               (std::vector<std::filesystem::path>{dir / "samples/media", dir / "ci/"}));
     auto bad = dir.write("ci/bad.xml", manifest({"  <media dir=\"nowhere\"/>", "  <media/>", "  <case name=\"a\" workspace=\"a.xml\">",
                                                  kCompare, "  </case>"}));
-    ParsedManifest q = parseReplayManifestFile(bad);
-    EXPECT_FALSE(q.manifest);
-    EXPECT_EQ(formatAll(q.diagnostics), bad.string() + ":2: error: <media>: media folder 'nowhere' is not a folder (looked for " +
+    Result<ReplayManifest> q = parseReplayManifestFile(bad);
+    EXPECT_FALSE(q.ok());
+    EXPECT_EQ(formatAll(q.diagnostics()), bad.string() + ":2: error: <media>: media folder 'nowhere' is not a folder (looked for " +
                                             (dir / "ci/nowhere").string() + ")\n" + bad.string() +
                                             ":3: error: <media>: missing attribute 'dir'\n");
 }

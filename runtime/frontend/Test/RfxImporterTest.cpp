@@ -27,14 +27,14 @@ int lineOf(const std::filesystem::path& file, const std::string& needle) {
 }
 
 Workspace imported(const std::string& name, const std::string& effect = "") {
-    ParsedWorkspace p = importRfxFile(rfxDir() / name, {effect});
-    EXPECT_FALSE(hasErrors(p.diagnostics)) << formatAll(p.diagnostics);
-    EXPECT_TRUE(p.workspace.has_value());
-    return p.workspace ? *p.workspace : Workspace{};
+    Result<Workspace> p = importRfxFile(rfxDir() / name, {effect});
+    EXPECT_FALSE(hasErrors(p.diagnostics())) << formatAll(p.diagnostics());
+    EXPECT_TRUE(p.ok());
+    return p ? *p : Workspace{};
 }
 
 std::string allWarnings(const std::string& name, const std::string& effect = "") {
-    return formatAll(importRfxFile(rfxDir() / name, {effect}).diagnostics);
+    return formatAll(importRfxFile(rfxDir() / name, {effect}).diagnostics());
 }
 
 const Variable& variable(const Workspace& ws, const std::string& name) {
@@ -50,9 +50,9 @@ void expectColor(glm::vec4 actual, glm::vec4 expected) {
 
 // Errors of an .rfx text (named t.rfx): its formatted diagnostics.
 std::string errorsOf(const std::string& text, const std::string& effect = "") {
-    ParsedWorkspace p = importRfxText(text, "t.rfx", ".", {effect});
-    EXPECT_FALSE(p.workspace.has_value());
-    return formatAll(p.diagnostics);
+    Result<Workspace> p = importRfxText(text, "t.rfx", ".", {effect});
+    EXPECT_FALSE(p.ok());
+    return formatAll(p.diagnostics());
 }
 
 // An OpenGL effect "E" in workspace "W" whose body starts on line 4.
@@ -174,9 +174,9 @@ TEST(RfxImporter, Direct3dSeparateAlphaBlendingCarriesOverWithTheOtherStates) {
                        "<RmDirectXEffect NAME=\"E\" API=\"D3D\">\n" +
                        pass(0, state(27, 1) + state(206, 1) + state(207, 2) + state(208, 2)) + pass(1, state(19, 5)) +
                        pass(2, state(206, 0)) + pass(3, state(206, 1)) + "</RmDirectXEffect>\n</RmEffectWorkspace>\n</RENDER_MONKEY>\n";
-    ParsedWorkspace p = importRfxText(text, "t.rfx", ".", {""});
-    ASSERT_TRUE(p.workspace) << formatAll(p.diagnostics);
-    const std::vector<Pass>& passes = p.workspace->passes;
+    Result<Workspace> p = importRfxText(text, "t.rfx", ".", {""});
+    ASSERT_TRUE(p.ok()) << formatAll(p.diagnostics());
+    const std::vector<Pass>& passes = p->passes;
     ASSERT_EQ(passes.size(), 4u);
     EXPECT_TRUE(passes[1].blend.enabled);
     EXPECT_EQ(passes[1].blend.srcColor, BlendFactor::SrcAlpha);
@@ -368,7 +368,7 @@ TEST(RfxImporter, CameraBecomesTheOrbitThatSeesTheSame) {
 }
 
 TEST(RfxImporter, ActiveCameraNamingNoCameraWarns) {
-    auto warnings = [](const std::string& text) { return formatAll(importRfxText(text, "t.rfx", ".", {}).diagnostics); };
+    auto warnings = [](const std::string& text) { return formatAll(importRfxText(text, "t.rfx", ".", {}).diagnostics()); };
     const std::string pass = "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n" + std::string(kFragment) + "\n</RmGLPass>\n";
     std::string none = glEffect(pass);
     none.replace(none.find("API=\"OpenGL\">"), 14, "API=\"OpenGL\" ACTIVE_CAMERA=\"Camera\">");
@@ -387,7 +387,7 @@ TEST(RfxImporter, ActiveCameraNamingNoCameraWarns) {
 TEST(RfxImporter, ModelOrientationOtherThanZeroWarns) {
     std::string text = glEffect("<RmModelData NAME=\"M\" FILE_NAME=\"m.obj\" ORIENTATION=\"1\"/>\n"
                                 "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n" + std::string(kFragment) + "\n</RmGLPass>\n");
-    std::string all = formatAll(importRfxText(text, "t.rfx", ".", {}).diagnostics);
+    std::string all = formatAll(importRfxText(text, "t.rfx", ".", {}).diagnostics());
     EXPECT_NE(all.find("t.rfx:4: warning: <RmModelData NAME=\"M\">: ORIENTATION 1 is not applied"), std::string::npos) << all;
     EXPECT_EQ(allWarnings("gl_legacy.rfx").find("ORIENTATION"), std::string::npos);
 }
@@ -413,7 +413,7 @@ TEST(RfxImporter, EffectChosenByDottedPathOrName) {
         EXPECT_NE(ws.findTexture("Noise"), nullptr);
     }
     EXPECT_EQ(imported("gl_legacy.rfx").findTexture("Noise"), nullptr);  // the sibling's declarations are not visible
-    std::string errors = formatAll(importRfxFile(rfxDir() / "gl_legacy.rfx", {"Nope"}).diagnostics);
+    std::string errors = formatAll(importRfxFile(rfxDir() / "gl_legacy.rfx", {"Nope"}).diagnostics());
     EXPECT_NE(errors.find("error: --effect Nope: no effect 'Nope'; it has: 'Tests.Group.Legacy' (OpenGL, active), "
                           "'Tests.Group.Other' (OpenGL)"),
               std::string::npos)
@@ -533,11 +533,11 @@ TEST(RfxImporter, BadInputsAreErrorsWithFileAndLine) {
                                 usedFragment + "</RmGLPass>\n"))
                   .find("t.rfx:5: error: <RmShaderConstant NAME=\"Nope\">: no variable 'Nope' is visible from the pass"),
               std::string::npos);
-    ParsedWorkspace unused = importRfxText(pass("<RmShaderConstant NAME=\"light0\"/>\n"), "t.rfx", ".");
-    EXPECT_TRUE(unused.workspace.has_value());
-    EXPECT_NE(formatAll(unused.diagnostics).find("t.rfx:6: warning: <RmShaderConstant NAME=\"light0\">: no variable 'light0' "
+    Result<Workspace> unused = importRfxText(pass("<RmShaderConstant NAME=\"light0\"/>\n"), "t.rfx", ".");
+    EXPECT_TRUE(unused.ok());
+    EXPECT_NE(formatAll(unused.diagnostics()).find("t.rfx:6: warning: <RmShaderConstant NAME=\"light0\">: no variable 'light0' "
                                                  "is visible from the pass (pass, effect, group or workspace); its shaders do not use it"),
-              std::string::npos) << formatAll(unused.diagnostics);
+              std::string::npos) << formatAll(unused.diagnostics());
     EXPECT_NE(errorsOf(pass("<RmTextureObject NAME=\"s\"><RmTextureReference NAME=\"missing\"/></RmTextureObject>\n"))
                   .find("t.rfx:6: error: <RmTextureReference NAME=\"missing\">: no texture variable or renderable texture"),
               std::string::npos);
@@ -581,8 +581,8 @@ TEST(RfxImporter, TruncatedAndDamagedFilesNeverCrash) {
         std::string text = test::readText(rfxDir() / name);
         ASSERT_FALSE(text.empty());
         for (size_t cut = 0; cut < text.size(); cut += 53) {
-            ParsedWorkspace p = importRfxText(text.substr(0, cut), "t.rfx", ".");
-            EXPECT_TRUE(p.workspace.has_value() || hasErrors(p.diagnostics)) << name << " cut at " << cut;
+            Result<Workspace> p = importRfxText(text.substr(0, cut), "t.rfx", ".");
+            EXPECT_TRUE(p.ok() || hasErrors(p.diagnostics())) << name << " cut at " << cut;
         }
         unsigned seed = 12345;
         for (int round = 0; round < 300; ++round) {
@@ -592,8 +592,8 @@ TEST(RfxImporter, TruncatedAndDamagedFilesNeverCrash) {
                 size_t at = (seed >> 8) % damaged.size();
                 damaged[at] = "<>\"=&;]x9-. \n"[(seed >> 4) % 14];
             }
-            ParsedWorkspace p = importRfxText(damaged, "t.rfx", ".");
-            EXPECT_TRUE(p.workspace.has_value() || hasErrors(p.diagnostics)) << name << " round " << round;
+            Result<Workspace> p = importRfxText(damaged, "t.rfx", ".");
+            EXPECT_TRUE(p.ok() || hasErrors(p.diagnostics())) << name << " round " << round;
         }
     }
 }

@@ -53,9 +53,9 @@ Value vec(ValueType type, std::initializer_list<float> components) {
 }
 
 Workspace parsed(const std::string& text, const std::string& file = "test.xml") {
-    ParsedWorkspace p = parseWorkspaceText(text, file, test::sourceDir() / "effects");
-    EXPECT_TRUE(p.workspace) << formatAll(p.diagnostics);
-    return p.workspace ? *p.workspace : Workspace{};
+    Result<Workspace> p = parseWorkspaceText(text, file, test::sourceDir() / "effects");
+    EXPECT_TRUE(p.ok()) << formatAll(p.diagnostics());
+    return p ? *p : Workspace{};
 }
 
 // A workspace around `body` (its top-level declarations) that the parser accepts.
@@ -309,10 +309,10 @@ TEST(VariableValueWriter, AnyFloatSurvivesWritingAndReading) {
     for (float f : floats) {
         auto out = rewriteVariableValues(text, "test.xml", {{"F", Value::ofFloat(f)}});
         ASSERT_TRUE(out.ok()) << out.error();
-        ParsedWorkspace p = parseWorkspaceText(*out, "test.xml", ".");
-        ASSERT_TRUE(p.workspace) << formatAll(p.diagnostics);
-        ASSERT_EQ(p.workspace->variables.size(), 1u);
-        ASSERT_TRUE(sameBits(p.workspace->variables[0].value, Value::ofFloat(f)));
+        Result<Workspace> p = parseWorkspaceText(*out, "test.xml", ".");
+        ASSERT_TRUE(p.ok()) << formatAll(p.diagnostics());
+        ASSERT_EQ(p->variables.size(), 1u);
+        ASSERT_TRUE(sameBits(p->variables[0].value, Value::ofFloat(f)));
         ++checked;
     }
     EXPECT_GT(checked, 60000u);

@@ -50,9 +50,9 @@ out vec4 c; void main() { c = vec4(top()); }
 </workspace>
 )";
         fs::path file = dir_.write("ws.xml", xml);
-        ParsedWorkspace parsed = parseWorkspaceFile(file);
-        ASSERT_TRUE(parsed.workspace) << formatAll(parsed.diagnostics);
-        ws_ = std::move(*parsed.workspace);
+        Result<Workspace> parsed = parseWorkspaceFile(file);
+        ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
+        ws_ = std::move(*parsed);
         deps_ = findWorkspaceDependencies(ws_);
     }
 

@@ -19,7 +19,7 @@ std::string workspace(std::initializer_list<std::string> body) {
     return out + "  <pass name=\"last\"/>\n</workspace>\n";
 }
 
-ParsedWorkspace parse(const std::string& text) { return parseWorkspaceText(text, kPath, "fx"); }
+Result<Workspace> parse(const std::string& text) { return parseWorkspaceText(text, kPath, "fx"); }
 
 std::vector<std::string> formatted(const Diagnostics& diagnostics) {
     std::vector<std::string> out;
@@ -29,17 +29,17 @@ std::vector<std::string> formatted(const Diagnostics& diagnostics) {
 
 // The formatted diagnostics of text that must fail to parse.
 std::vector<std::string> errorsOf(const std::string& text) {
-    ParsedWorkspace p = parse(text);
-    EXPECT_FALSE(p.workspace.has_value());
-    return formatted(p.diagnostics);
+    Result<Workspace> p = parse(text);
+    EXPECT_FALSE(p.ok());
+    return formatted(p.diagnostics());
 }
 
 // Text that must parse without any diagnostic.
 Workspace parsedOk(const std::string& text) {
-    ParsedWorkspace p = parse(text);
-    EXPECT_EQ(formatAll(p.diagnostics), "");
-    EXPECT_TRUE(p.workspace.has_value());
-    return p.workspace.value_or(Workspace{});
+    Result<Workspace> p = parse(text);
+    EXPECT_EQ(formatAll(p.diagnostics()), "");
+    EXPECT_TRUE(p.ok());
+    return (p ? *p : Workspace{});
 }
 
 using Lines = std::vector<std::string>;
@@ -188,8 +188,8 @@ TEST(WorkspaceParser, BadEnumWordListsTheChoices) {
 
 TEST(WorkspaceParser, FormatListFollowsTheFormatByVariable) {
     auto parsed = parse(workspace({"  <target name=\"t\" format=\"rgba16f, rgba16 rgba8\" format-by=\"Enc\"/>"}));
-    ASSERT_TRUE(parsed.workspace);
-    const RenderTarget& t = parsed.workspace->targets.at(0);
+    ASSERT_TRUE(parsed.ok());
+    const RenderTarget& t = parsed->targets.at(0);
     EXPECT_EQ(t.formatVariable, "Enc");
     EXPECT_EQ(t.formats, (std::vector<TargetFormat>{TargetFormat::RGBA16F, TargetFormat::RGBA16, TargetFormat::RGBA8}));
     EXPECT_EQ(t.format, TargetFormat::RGBA16F);
@@ -411,18 +411,18 @@ TEST(WorkspaceParser, NoPassIsAnErrorOnTheWorkspaceElement) {
 }
 
 TEST(WorkspaceParser, MissingFileCannotBeOpened) {
-    ParsedWorkspace p = parseWorkspaceFile("no/such/workspace.xml");
-    EXPECT_EQ(formatted(p.diagnostics), (Lines{"no/such/workspace.xml: error: cannot open the file"}));
+    Result<Workspace> p = parseWorkspaceFile("no/such/workspace.xml");
+    EXPECT_EQ(formatted(p.diagnostics()), (Lines{"no/such/workspace.xml: error: cannot open the file"}));
 }
 
 // ---- the model ----
 
 TEST(WorkspaceParser, DefaultWorkspace) {
     const auto path = test::sourceDir() / "effects" / "default.xml";
-    ParsedWorkspace p = parseWorkspaceFile(path);
-    ASSERT_EQ(formatAll(p.diagnostics), "");
-    ASSERT_TRUE(p.workspace);
-    const Workspace& ws = *p.workspace;
+    Result<Workspace> p = parseWorkspaceFile(path);
+    ASSERT_EQ(formatAll(p.diagnostics()), "");
+    ASSERT_TRUE(p.ok());
+    const Workspace& ws = *p;
     const std::string file = path.string();
     EXPECT_EQ(ws.name, "default");
     EXPECT_EQ(ws.folder, path.parent_path());

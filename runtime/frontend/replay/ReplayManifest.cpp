@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <map>
 
+#include "io/xml/XmlDocumentParser.h"
 #include "io/xml/XmlElementReader.h"
 
 namespace rmfx {
@@ -273,28 +274,22 @@ const ReplayCase* ReplayManifest::findCase(std::string_view name) const {
     return nullptr;
 }
 
-ParsedManifest parseReplayManifestText(const std::string& text, const fs::path& path, const fs::path& folder) {
-    ParsedManifest result;
+Result<ReplayManifest> parseReplayManifestText(const std::string& text, const fs::path& path, const fs::path& folder) {
     std::string file = path.string();
-    tinyxml2::XMLDocument doc;
-    const XMLElement* root = xml::parseDocument(doc, text, file, "replay", result.diagnostics);
-    if (!root) return result;
-    ReplayManifest manifest;
-    manifest.path = path;
-    manifest.folder = folder;
-    ManifestParser(file, folder, result.diagnostics).parse(root, manifest);
-    // <defaults> is read before the cases wherever it stands: report in line order.
-    std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
-                     [](const Diagnostic& a, const Diagnostic& b) { return a.where.line < b.where.line; });
-    if (!hasErrors(result.diagnostics)) result.manifest = std::move(manifest);
-    return result;
+    return xml::parseXmlText(text, file, "replay", [&](const XMLElement* root, Diagnostics& diagnostics) {
+        ReplayManifest manifest;
+        manifest.path = path;
+        manifest.folder = folder;
+        ManifestParser(file, folder, diagnostics).parse(root, manifest);
+        // <defaults> is read before the cases wherever it stands: report in line order.
+        std::stable_sort(diagnostics.begin(), diagnostics.end(),
+                         [](const Diagnostic& a, const Diagnostic& b) { return a.where.line < b.where.line; });
+        return manifest;
+    });
 }
 
-ParsedManifest parseReplayManifestFile(const fs::path& path) {
-    ParsedManifest result;
-    auto text = xml::readTextFile(path, result.diagnostics);
-    if (!text) return result;
-    return parseReplayManifestText(*text, path, path.parent_path().empty() ? "." : path.parent_path());
+Result<ReplayManifest> parseReplayManifestFile(const fs::path& path) {
+    return xml::parseXmlFile(path, [&](const std::string& text) { return parseReplayManifestText(text, path, xml::folderOf(path)); });
 }
 
 }  // namespace rmfx

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/Diagnostic.h"
+#include "core/Result.h"
 #include "io/image/ImageCompare.h"
 #include "io/media/MediaResolver.h"
 #include "model/RunSettings.h"
@@ -59,14 +60,10 @@ struct ReplayManifest {
     const ReplayCase* findCase(std::string_view name) const;
 };
 
-struct ParsedManifest {
-    std::optional<ReplayManifest> manifest;  // present when there are no errors
-    Diagnostics diagnostics;
-};
-
-ParsedManifest parseReplayManifestFile(const std::filesystem::path& path);
+// The manifest with its warnings, or the diagnostics with at least one error.
+Result<ReplayManifest> parseReplayManifestFile(const std::filesystem::path& path);
 // `path` names the text in diagnostics; `folder` is where relative paths resolve.
-ParsedManifest parseReplayManifestText(const std::string& text, const std::filesystem::path& path,
-                                       const std::filesystem::path& folder);
+Result<ReplayManifest> parseReplayManifestText(const std::string& text, const std::filesystem::path& path,
+                                               const std::filesystem::path& folder);
 
 }  // namespace rmfx

@@ -8,6 +8,7 @@
 #include "frontend/rfx/detail/RfxEffectCatalogue.h"
 #include "frontend/rfx/detail/RfxPassReader.h"
 #include "frontend/rfx/detail/RfxRenderStates.h"
+#include "io/xml/XmlDocumentParser.h"
 #include "io/xml/XmlElementReader.h"
 
 namespace rmfx {
@@ -56,10 +57,9 @@ void readCamera(const RfxEffectEntry& effect, const std::string& file, Diagnosti
     if (chosen) ws.camera = orbitFromRmCamera(RfxElement(chosen, file, diagnostics));
 }
 
-ParsedWorkspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path& path,
-                             const std::filesystem::path& folder, Diagnostics diagnostics) {
+Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path& path,
+                       const std::filesystem::path& folder, Diagnostics& diagnostics) {
     const std::string file = path.string();
-    ParsedWorkspace out;
     Workspace ws;
     ws.path = path;
     ws.folder = folder;
@@ -159,9 +159,7 @@ ParsedWorkspace importEffect(const RfxEffectEntry& effect, const std::filesystem
     if (ws.passes.empty())
         diagnostics.push_back({Diagnostic::Severity::Error, {file, effect.element->GetLineNum()}, "<" + std::string(effect.element->Name()) + " NAME=\"" + effect.name + "\">",
                                "the effect has no passes"});
-    out.diagnostics = std::move(diagnostics);
-    if (!hasErrors(out.diagnostics)) out.workspace = std::move(ws);
-    return out;
+    return ws;
 }
 
 }  // namespace
@@ -172,25 +170,19 @@ bool isRfxPath(const std::filesystem::path& path) {
     return ext == ".rfx";
 }
 
-ParsedWorkspace importRfxText(const std::string& text, const std::filesystem::path& path,
-                              const std::filesystem::path& folder, const RfxImportOptions& options) {
-    ParsedWorkspace out;
+Result<Workspace> importRfxText(const std::string& text, const std::filesystem::path& path,
+                                const std::filesystem::path& folder, const RfxImportOptions& options) {
     const std::string file = path.string();
-    tinyxml2::XMLDocument doc;
-    const XMLElement* root = xml::parseDocument(doc, blankDoctype(text), file, "RENDER_MONKEY", out.diagnostics);
-    if (!root) return out;
-    RfxCatalogue catalogue = readCatalogue(root, file, out.diagnostics);
-    const RfxEffectEntry* effect = chooseEffect(catalogue, options.effect, file, out.diagnostics);
-    if (!effect || hasErrors(out.diagnostics)) return out;
-    return importEffect(*effect, path, folder, std::move(out.diagnostics));
+    return xml::parseXmlText(blankDoctype(text), file, "RENDER_MONKEY", [&](const XMLElement* root, Diagnostics& diagnostics) {
+        RfxCatalogue catalogue = readCatalogue(root, file, diagnostics);
+        const RfxEffectEntry* effect = chooseEffect(catalogue, options.effect, file, diagnostics);
+        if (!effect || hasErrors(diagnostics)) return Workspace{};
+        return importEffect(*effect, path, folder, diagnostics);
+    });
 }
 
-ParsedWorkspace importRfxFile(const std::filesystem::path& path, const RfxImportOptions& options) {
-    ParsedWorkspace out;
-    auto text = xml::readTextFile(path, out.diagnostics);
-    if (!text) return out;
-    std::filesystem::path folder = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
-    return importRfxText(*text, path, folder, options);
+Result<Workspace> importRfxFile(const std::filesystem::path& path, const RfxImportOptions& options) {
+    return xml::parseXmlFile(path, [&](const std::string& text) { return importRfxText(text, path, xml::folderOf(path), options); });
 }
 
 RfxEffectList listRfxEffects(const std::filesystem::path& path) {

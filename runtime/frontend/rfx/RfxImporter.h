@@ -18,10 +18,10 @@ struct RfxImportOptions {
     std::string effect;
 };
 
-ParsedWorkspace importRfxFile(const std::filesystem::path& path, const RfxImportOptions& options = {});
+Result<Workspace> importRfxFile(const std::filesystem::path& path, const RfxImportOptions& options = {});
 // `path` names the text in diagnostics; `folder` is where relative file references resolve.
-ParsedWorkspace importRfxText(const std::string& text, const std::filesystem::path& path,
-                              const std::filesystem::path& folder, const RfxImportOptions& options = {});
+Result<Workspace> importRfxText(const std::string& text, const std::filesystem::path& path,
+                                const std::filesystem::path& folder, const RfxImportOptions& options = {});
 
 struct RfxEffectSummary {
     std::string path;  // dotted path, what --effect takes

@@ -185,15 +185,15 @@ Result<bool> saveVariableValues(const std::filesystem::path& workspaceFile, cons
     if (*rewritten == *text) return true;  // every value is already in the file
 
     std::filesystem::path folder = workspaceFile.parent_path().empty() ? "." : workspaceFile.parent_path();
-    ParsedWorkspace parsed = parseWorkspaceText(*rewritten, workspaceFile, folder);
-    if (!parsed.workspace) {
+    Result<Workspace> parsed = parseWorkspaceText(*rewritten, workspaceFile, folder);
+    if (!parsed) {
         std::vector<std::string> problems;
-        for (const Diagnostic& d : parsed.diagnostics)
+        for (const Diagnostic& d : parsed.diagnostics())
             if (d.severity == Diagnostic::Severity::Error) problems.push_back(d.format());
         return Error{"not saved: with the new values, " + file + " would not load:\n" + joined(problems, "\n")};
     }
     for (const auto& [name, value] : values) {
-        const Variable* v = parsed.workspace->findVariable(name);
+        const Variable* v = parsed->findVariable(name);
         if (!v || !sameBits(v->value, value))
             return Error{errorLine(file, v ? v->where.line : 0, "variable '" + name + "'",
                                    "not saved: the rewritten file reads " +

@@ -4,22 +4,17 @@
 // shaders are checked by validateWorkspace.
 
 #include <filesystem>
-#include <optional>
 #include <string>
 
-#include "core/Diagnostic.h"
+#include "core/Result.h"
 #include "model/Workspace.h"
 
 namespace rmfx {
 
-struct ParsedWorkspace {
-    std::optional<Workspace> workspace;  // present when there are no errors
-    Diagnostics diagnostics;
-};
-
-ParsedWorkspace parseWorkspaceFile(const std::filesystem::path& path);
+// The workspace with its warnings, or the diagnostics with at least one error.
+Result<Workspace> parseWorkspaceFile(const std::filesystem::path& path);
 // `path` names the text in diagnostics; `folder` is where relative file references resolve.
-ParsedWorkspace parseWorkspaceText(const std::string& text, const std::filesystem::path& path,
+Result<Workspace> parseWorkspaceText(const std::string& text, const std::filesystem::path& path,
                                    const std::filesystem::path& folder);
 
 }  // namespace rmfx

@@ -188,11 +188,11 @@ void main() { color = matViewProjection; }
 ]]></shader>
   </pass>
 </workspace>)";
-    ParsedWorkspace parsed = parseWorkspaceText(xml, "mismatch.xml", ".");
-    ASSERT_TRUE(parsed.workspace) << formatAll(parsed.diagnostics);
-    for (const Diagnostics& d : {validateWorkspace(*parsed.workspace), [&] {
+    Result<Workspace> parsed = parseWorkspaceText(xml, "mismatch.xml", ".");
+    ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
+    for (const Diagnostics& d : {validateWorkspace(*parsed), [&] {
              Diagnostics found;
-             GlExecutor::create(*parsed.workspace, {4, 4}, found);
+             GlExecutor::create(*parsed, {4, 4}, found);
              return found;
          }()}) {
         std::string all = formatAll(d);
@@ -217,9 +217,9 @@ void main() { color = odd; }
 ]]></shader>
   </pass>
 </workspace>)";
-    ParsedWorkspace parsed = parseWorkspaceText(xml, "unknown.xml", ".");
-    ASSERT_TRUE(parsed.workspace);
-    std::string all = formatAll(validateWorkspace(*parsed.workspace));
+    Result<Workspace> parsed = parseWorkspaceText(xml, "unknown.xml", ".");
+    ASSERT_TRUE(parsed.ok());
+    std::string all = formatAll(validateWorkspace(*parsed));
     EXPECT_NE(all.find("unknown.xml:2: warning"), std::string::npos) << all;
     EXPECT_NE(all.find("variable 'odd'"), std::string::npos) << all;
     EXPECT_NE(all.find("NoSuchSemantic"), std::string::npos) << all;

@@ -20,10 +20,10 @@ using test::passXml;
 using Names = std::vector<std::string>;
 
 std::unique_ptr<Workspace> parse(const std::string& xml) {
-    ParsedWorkspace parsed = parseWorkspaceText(xml, "graph.xml", ".");
-    EXPECT_FALSE(hasErrors(parsed.diagnostics)) << formatAll(parsed.diagnostics);
-    if (!parsed.workspace) return nullptr;
-    return std::make_unique<Workspace>(std::move(*parsed.workspace));
+    Result<Workspace> parsed = parseWorkspaceText(xml, "graph.xml", ".");
+    EXPECT_FALSE(hasErrors(parsed.diagnostics())) << formatAll(parsed.diagnostics());
+    if (!parsed.ok()) return nullptr;
+    return std::make_unique<Workspace>(std::move(*parsed));
 }
 
 std::string workspace(const std::string& body, const Names& targets) {

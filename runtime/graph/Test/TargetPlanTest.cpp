@@ -23,9 +23,9 @@ struct Planned {
 
 Planned planText(const std::string& xml, FrameRequest request = {}, bool pool = true) {
     Planned p;
-    ParsedWorkspace parsed = parseWorkspaceText(xml, "plan.xml", ".");
-    EXPECT_FALSE(hasErrors(parsed.diagnostics)) << formatAll(parsed.diagnostics);
-    p.ws = std::make_unique<Workspace>(std::move(*parsed.workspace));
+    Result<Workspace> parsed = parseWorkspaceText(xml, "plan.xml", ".");
+    EXPECT_FALSE(hasErrors(parsed.diagnostics())) << formatAll(parsed.diagnostics());
+    p.ws = std::make_unique<Workspace>(std::move(*parsed));
     Diagnostics d;
     p.graph = buildPassGraph(*p.ws, request, d);
     EXPECT_FALSE(hasErrors(d)) << formatAll(d);
@@ -127,9 +127,9 @@ TEST(TargetPlan, OnePlanForSeveralGraphsCoversEveryLifetime) {
     std::string xml =
         workspace(target("t1") + target("t2"), "  <effect name=\"fx\" passes=\"b\"/>\n" + passXml("a", "t1", {}) +
                                                    passXml("b", "t2", {}) + passXml("use", "", {"t1", "t2"}));
-    ParsedWorkspace parsed = parseWorkspaceText(xml, "plan.xml", ".");
-    ASSERT_TRUE(parsed.workspace) << formatAll(parsed.diagnostics);
-    Workspace& ws = *parsed.workspace;
+    Result<Workspace> parsed = parseWorkspaceText(xml, "plan.xml", ".");
+    ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
+    Workspace& ws = *parsed;
     Diagnostics d;
     PassGraph on = buildPassGraph(ws, {{}, {"fx"}, {}}, d);
     PassGraph off = buildPassGraph(ws, {{}, {"fx"}, {"fx"}}, d);
