@@ -191,9 +191,7 @@ void main() { color = matViewProjection; }
     ParsedWorkspace parsed = parseWorkspaceText(xml, "mismatch.xml", ".");
     ASSERT_TRUE(parsed.workspace) << formatAll(parsed.diagnostics);
     for (const Diagnostics& d : {validateWorkspace(*parsed.workspace), [&] {
-             Diagnostics found;
-             GlExecutor::create(*parsed.workspace, {4, 4}, found);
-             return found;
+             return GlExecutor::create(std::make_shared<const Workspace>(*parsed.workspace), {4, 4}).takeDiagnostics();
          }()}) {
         std::string all = formatAll(d);
         EXPECT_TRUE(hasErrors(d)) << all;
