@@ -74,7 +74,7 @@ std::unique_ptr<bench::HandWrittenShader5> handWritten, secondHandWritten;
 // Frames before timing: llvmpipe compiles shader variants at their first draws.
 bool warmUp(benchmark::State& state, GlExecutor& executor, int frames) {
     for (int i = 0; i < frames; ++i) {
-        Diagnostics d = executor.renderFrame({});
+        Diagnostics d = executor.renderFrame({}).takeDiagnostics();
         if (!d.empty()) {
             state.SkipWithError(("frame: " + formatAll(d)).c_str());
             return false;
@@ -91,12 +91,12 @@ GlExecutor* executorFor(benchmark::State& state, const std::string& key, const W
     options.outputs = {"output"};
     options.effects = effects;
     options.poolTargets = poolTargets;
-    Diagnostics diagnostics;
-    auto executor = GlExecutor::create(ws, frameSize, diagnostics, options);
-    if (!executor) {
-        state.SkipWithError(("executor: " + formatAll(diagnostics)).c_str());
+    auto created = GlExecutor::create(std::make_shared<const Workspace>(ws), frameSize, options);
+    if (!created) {
+        state.SkipWithError(("executor: " + formatAll(created.diagnostics())).c_str());
         return nullptr;
     }
+    std::unique_ptr<GlExecutor> executor = std::move(*created);
     if (!warmUp(state, *executor, 3)) return nullptr;
     return (executors[key] = std::move(executor)).get();
 }
@@ -108,7 +108,7 @@ void frameTime(benchmark::State& state, std::string key, const Workspace* ws,
     if (!executor) return;
     FrameClock clock{0.0f, 1.0f / 60.0f};
     for (auto _ : state) {
-        executor->renderFrame(clock);
+        (void)executor->renderFrame(clock);
         glFinish();
         clock.time += clock.deltaTime;
     }
@@ -116,7 +116,7 @@ void frameTime(benchmark::State& state, std::string key, const Workspace* ws,
     executor->setTimingEnabled(true);
     std::vector<double> gpu;
     for (int i = 0; i < 10; ++i) {
-        executor->renderFrame(clock);
+        (void)executor->renderFrame(clock);
         glFinish();  // the frame's queries are complete: passTimings collects this frame
         executor->passTimings();
         if (i >= 2) gpu.push_back(executor->frameGpuMilliseconds());
@@ -174,7 +174,7 @@ void oneEffectVsWorkspace(benchmark::State& state, std::string effect, std::stri
     if (!combined || !single) return;
     FrameClock clock{0.0f, 1.0f / 60.0f};
     std::vector<FrameSamples> samples;
-    interleave(state, {[&] { combined->renderFrame(clock); }, [&] { single->renderFrame(clock); }}, samples);
+    interleave(state, {[&] { (void)combined->renderFrame(clock); }, [&] { (void)single->renderFrame(clock); }}, samples);
     double ms5 = median(samples[0].frame), msN = median(samples[1].frame);
     state.counters["shader_5_ms"] = ms5;
     state.counters["workspace_ms"] = msN;
@@ -207,7 +207,7 @@ void interpreterVsHand(benchmark::State& state) {
     // A second, identical hand-written loop measures the method's own noise: its "overhead" over
     // the first would be 0 with perfect timing.
     interleave(state,
-               {[&] { hand.renderFrame(); }, [&] { pooled->renderFrame(clock); }, [&] { ownMemory->renderFrame(clock); },
+               {[&] { hand.renderFrame(); }, [&] { (void)pooled->renderFrame(clock); }, [&] { (void)ownMemory->renderFrame(clock); },
                 [&] { secondHand.renderFrame(); }},
                samples);
     const char* names[4] = {"hand", "interp", "interp_own", "hand2"};

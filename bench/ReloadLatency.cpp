@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "%s", rmfx::formatAll(diagnostics).c_str());
         return 1;
     }
-    live->executor().renderFrame({});
+    (void)live->executor().renderFrame({});
     std::printf("%s\n", context.value()->description().c_str());
     std::printf("workspace %s: %zu passes, %zu watched files; first build %.1f ms\n", workspaceFile.string().c_str(),
                 live->workspace().passes.size(), live->watchedFiles().size(), openMs);
@@ -121,7 +121,7 @@ int main(int argc, char** argv) {
     std::vector<double> steadyFrames;
     for (int i = 0; i < 10; ++i) {
         auto frameStart = Clock::now();
-        live->executor().renderFrame({});
+        (void)live->executor().renderFrame({});
         (void)live->executor().readTarget(live->workspace().outputTargetName());  // waits for the GPU
         steadyFrames.push_back(std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count());
     }
@@ -152,7 +152,7 @@ int main(int argc, char** argv) {
             latencies.push_back(std::chrono::duration<double, std::milli>(done - written).count());
             reported.push_back(live->lastReloadMilliseconds());
             auto frameStart = Clock::now();
-            live->executor().renderFrame({});
+            (void)live->executor().renderFrame({});
             (void)live->executor().readTarget(live->workspace().outputTargetName());  // waits for the GPU
             firstFrames.push_back(std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count());
             visible.push_back(std::chrono::duration<double, std::milli>(Clock::now() - written).count());

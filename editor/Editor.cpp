@@ -33,7 +33,7 @@ public:
         handleMouse();
         GlExecutor& executor = session_.executor();
         executor.setTimingEnabled(true);
-        frameErrors_ = executor.renderFrame(clock);
+        frameErrors_ = executor.renderFrame(clock).takeDiagnostics();
         timing_.record(executor);
         targets_.setOutput(session_.workspace().outputTargetName(), session_.workspace().output.transform);
         targets_.updateThumbnails(executor, session_.workspace(), blit_);

@@ -126,8 +126,8 @@ void VariablesPanel::draw(LiveWorkspace& session) {
             ImGui::SetTooltip("reset to the default, %s", formatValue(v.value).c_str());
         ImGui::SameLine();
         if (editValue(v, chooseWidget(v), value)) {
-            if (std::string error = session.setVariable(v.name, value); !error.empty()) {
-                status_ = error;
+            if (auto set = session.setVariable(v.name, value); !set) {
+                status_ = set.error();
                 statusIsError_ = true;
             }
         }

@@ -32,16 +32,16 @@ Result<VariantMeasurement> measureVariant(const Workspace& stageWorkspace, const
     ExecutorOptions options;
     options.outputs = {stage.output};
     options.effects = std::vector<std::string>{variant.effect};
-    Diagnostics diagnostics;
-    auto executor = GlExecutor::create(ws, size, diagnostics, options);
-    if (!executor) return Error{what + formatAll(diagnostics)};
+    auto created = GlExecutor::create(std::make_shared<const Workspace>(ws), size, options);
+    if (!created) return Error{what + formatAll(created.diagnostics())};
+    std::unique_ptr<GlExecutor> executor = std::move(*created);
 
     executor->setTimingEnabled(true);
     FrameClock clock{0.0f, 1.0f / 60.0f};
     std::vector<double> milliseconds, wallMilliseconds;
     for (int i = 0; i < counts.warmup + counts.frames; ++i) {
         auto started = std::chrono::steady_clock::now();
-        if (Diagnostics failed = executor->renderFrame(clock); hasErrors(failed)) return Error{what + formatAll(failed)};
+        if (auto frame = executor->renderFrame(clock); !frame) return Error{what + formatAll(frame.diagnostics())};
         glFinish();  // this frame's queries are complete: passTimings collects this very frame
         double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
         executor->passTimings();

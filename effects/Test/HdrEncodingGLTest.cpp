@@ -103,12 +103,12 @@ TEST_F(HdrEncodingSwitchGLTest, SettingTheVariableReallocatesTheTarget) {
     GlRun run = runWorkspace(roundTripWorkspace(0), {{kWidth, kHeight}, 1, 1.0f / 60.0f});
     ASSERT_TRUE(run.exec);
     for (HdrEncoding e : {HdrEncoding::Rgb9e5, HdrEncoding::Rgb16, HdrEncoding::Rgbe8}) {
-        EXPECT_EQ(run.exec->setVariable("HDR_Encoding", Value::ofInt(static_cast<int>(e))), "");
-        Diagnostics d = run.exec->renderFrame({});
+        EXPECT_EQ(run.exec->setVariable("HDR_Encoding", Value::ofInt(static_cast<int>(e))).error(), "");
+        Diagnostics d = run.exec->renderFrame({}).takeDiagnostics();
         EXPECT_TRUE(d.empty()) << formatAll(d);
         EXPECT_EQ(compareWithTwin(*run.exec, e), 0);
     }
-    EXPECT_EQ(run.exec->setVariable("HDR_Encoding", Value::ofInt(6)),
+    EXPECT_EQ(run.exec->setVariable("HDR_Encoding", Value::ofInt(6)).error(),
               "variable 'HDR_Encoding' = 6 picks none of the 6 formats of target 'encoded'");
     EXPECT_EQ(run.exec->variable("HDR_Encoding")->asInt(), static_cast<int>(HdrEncoding::Rgbe8));  // unchanged
 }

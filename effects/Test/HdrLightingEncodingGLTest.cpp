@@ -236,8 +236,8 @@ TEST_F(HdrLightingEncodingGLTest, SwitchingTheEncodingBetweenFramesRendersAsAFre
     ASSERT_TRUE(run.exec);
     for (HdrEncoding e : {HdrEncoding::Rgb9e5, HdrEncoding::Rgba8x64, HdrEncoding::Rgb32, HdrEncoding::Float}) {
         SCOPED_TRACE(hdrEncodingName(e));
-        ASSERT_EQ(run.exec->setVariable("HDR_Encoding", Value::ofInt(static_cast<int>(e))), "");
-        Diagnostics d = run.exec->renderFrame({});
+        ASSERT_EQ(run.exec->setVariable("HDR_Encoding", Value::ofInt(static_cast<int>(e))).error(), "");
+        Diagnostics d = run.exec->renderFrame({}).takeDiagnostics();
         ASSERT_TRUE(d.empty()) << formatAll(d);
         GlRun fresh = runWorkspace(effectWorkspace("hdr_lighting.xml", withEncoding(still, e)), oneFrame);
         ASSERT_TRUE(fresh.exec);

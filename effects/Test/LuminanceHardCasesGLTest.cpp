@@ -50,7 +50,7 @@ void expectModel(const GlRun& run, const std::string& variant, const RefImage& i
 // Renders the next image on the same executor: the Input file rewritten and reloaded.
 void renderImage(GlRun& run, const ScratchDir& dir, const RefImage& input) {
     writeFloatExr(dir / "input.exr", input);
-    Diagnostics d = run.exec->reloadTexture("Input");
+    Diagnostics d = run.exec->reloadTexture("Input").takeDiagnostics();
     ASSERT_TRUE(d.empty()) << formatAll(d);
     renderAgain(run);
 }

@@ -27,12 +27,12 @@ inline GlRun runStage(const std::string& workspace, const std::string& effect, c
 
 // Renders one more frame (after setVariable or a texture reload); a test failure on error.
 inline void renderAgain(GlRun& run) {
-    Diagnostics d = run.exec->renderFrame({0.0f, 1.0f / 60.0f});
+    Diagnostics d = run.exec->renderFrame({0.0f, 1.0f / 60.0f}).takeDiagnostics();
     EXPECT_TRUE(d.empty()) << formatAll(d);
 }
 
 inline void setVariable(GlRun& run, const std::string& name, const Value& value) {
-    std::string error = run.exec->setVariable(name, value);
+    std::string error = run.exec->setVariable(name, value).error();
     EXPECT_EQ(error, "") << name;
 }
 

@@ -1,11 +1,11 @@
 #pragma once
-// Runs a validated workspace as ordered OpenGL passes. Owns every GL object it creates:
-// textures, render targets (double-buffered where a pass reads them with frame="previous"),
-// meshes, programs and sampler objects. Needs a current GL 4.5 context (GlContext).
+// Runs a workspace's frame plan (graph/FramePlan) as ordered OpenGL passes. Owns every GL object
+// it creates: render targets (double-buffered where a pass reads them with frame="previous"),
+// textures, meshes, programs and sampler objects. Shares ownership of the workspace it runs, so
+// the caller may let its own copy go. Needs a current GL 4.5 context (GlContext), current also
+// when it is destroyed.
 
-#include <map>
 #include <memory>
-#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -13,11 +13,9 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "core/Diagnostic.h"
 #include "core/Result.h"
-#include "graph/PassGraph.h"
-#include "graph/ResourceLimits.h"
-#include "graph/TargetPlan.h"
+#include "gl/GlUniformUpload.h"
+#include "graph/FramePlan.h"
 #include "model/Image.h"
 #include "model/OrbitCamera.h"
 #include "model/PassTiming.h"
@@ -25,48 +23,38 @@
 
 namespace rmfx {
 
-struct ExecutorOptions {
-    // The targets the caller reads after a frame (readTarget). Only the passes they need run, and
-    // targets whose lifetimes do not overlap share memory. Empty: every target a running pass
-    // writes is an output, so every one can be inspected and none is shared.
-    std::vector<std::string> outputs;
-    // The effects asked for (--effects); nullopt: the workspace's <output effects>, else all.
-    std::optional<std::vector<std::string>> effects;
-    bool poolTargets = true;
-    // The most render-target memory a frame may hold (--memory-budget); a workspace that needs
-    // more fails before anything is allocated.
-    std::size_t memoryBudget = kDefaultMemoryBudget;
-};
-
-struct FrameClock {
-    float time = 0.0f;       // seconds since the first frame
-    float deltaTime = 0.0f;  // seconds since the previous frame
-};
+using ExecutorOptions = FramePlanOptions;
 
 class GlExecutor {
 public:
-    // Builds the pass graph for the outputs and effects asked for, compiles the passes it can run
-    // (under any setting of the effect switches), loads their textures and meshes and allocates
-    // the targets they use for `viewport`. On any error returns nullptr with diagnostics naming
-    // the pass, target or texture.
-    static std::unique_ptr<GlExecutor> create(const Workspace& ws, glm::ivec2 viewport, Diagnostics& diagnostics,
-                                              const ExecutorOptions& options = {});
+    // Plans the frame for the outputs and effects asked for, compiles the passes it can run (under
+    // any setting of the effect switches), loads their textures and meshes and allocates the
+    // targets they use for `viewport`. Errors name the pass, target or texture; warnings (vertex
+    // streams the shaders do not read, …) come with the executor.
+    static Result<std::unique_ptr<GlExecutor>> create(std::shared_ptr<const Workspace> ws, glm::ivec2 viewport,
+                                                      const FramePlanOptions& options = {});
+    // create() for a reload of the workspace file, with `previous`'s options: the textures named in
+    // `reusableTextures` that `previous` holds with the same declaration and files are copied from
+    // it on the GPU instead of being read and decoded again (the caller knows their files did not
+    // change). `previous` is not modified.
+    static Result<std::unique_ptr<GlExecutor>> createReusing(std::shared_ptr<const Workspace> ws, glm::ivec2 viewport,
+                                                             const GlExecutor& previous,
+                                                             const std::vector<std::string>& reusableTextures);
     ~GlExecutor();
     GlExecutor(const GlExecutor&) = delete;
     GlExecutor& operator=(const GlExecutor&) = delete;
 
     // Runs the scheduled passes once: the graph of the current effect switches. Errors (GL errors,
     // incomplete framebuffers) name the pass.
-    Diagnostics renderFrame(const FrameClock& clock);
+    Result<void> renderFrame(const FrameClock& clock);
     int frameIndex() const { return frame_; }  // frames rendered so far
 
     // Current value of a workspace variable; setVariable checks the type (a colour takes rgb or
-    // rgba as declared) and returns an error sentence, empty on success. Targets whose format the
-    // variable picks (format-by) are allocated anew in the new format, back to their initial value.
-    // A switch variable of an effect culls or restores its passes from the next frame on, with no
-    // recompile and no allocation.
+    // rgba as declared). Targets whose format or size the variable picks are allocated anew, back
+    // to their initial value. A switch variable of an effect culls or restores its passes from the
+    // next frame on, with no recompile and no allocation.
     const Value* variable(const std::string& name) const;
-    std::string setVariable(const std::string& name, const Value& value);
+    Result<void> setVariable(const std::string& name, const Value& value);
 
     // Per-pass GPU timing. Off by default: queries cost a little. Results arrive a frame or two
     // late (never stalling the pipeline); passTimings() holds the newest completed frame, in
@@ -93,40 +81,35 @@ public:
     // (ImGui::Image) only; it stays owned by the executor and may change after setVariable.
     unsigned targetTexture(const std::string& name) const;
 
-    // What the executor decided: the graph of the current effect switches (its schedule is what
-    // the next frame runs), the target plan, the effects asked for and those switched off.
+    const Workspace& workspace() const;
+    // What the executor runs: the frame plan (its targets are what is allocated now), the graph of
+    // the current effect switches (its schedule is what the next frame runs), the effects asked
+    // for and those switched off.
+    const FramePlan& framePlan() const;
     const PassGraph& graph() const;
     const TargetPlan& targetPlan() const;
     const std::set<std::string>& askedEffects() const;
     const std::set<std::string>& switchedOffEffects() const;
     // The passes the last frame ran, in order.
     const std::vector<std::string>& passesRun() const;
-    // GL textures holding target memory now (for tests: culled targets hold none, shared ones one).
-    int allocatedTextureCount() const;
+
     // Hot reload (LiveWorkspace). Each is all or nothing: on any error the executor is left
     // exactly as it was, and the diagnostics say why.
     // Compiles and links the named passes' programs anew from their files; only when every one
     // succeeds are they swapped in (uniforms and samplers bound anew) and the old ones deleted.
-    Diagnostics recompilePasses(const std::vector<std::string>& passNames);
+    Result<void> recompilePasses(const std::vector<std::string>& passNames);
     // Reads a texture's image files again and replaces its GL texture.
-    Diagnostics reloadTexture(const std::string& name);
+    Result<void> reloadTexture(const std::string& name);
     // Reads a model file again (as a pass's <draw file="…"> names it) and replaces its mesh.
-    Diagnostics reloadModel(const std::string& file);
+    Result<void> reloadModel(const std::string& file);
     // The GL program of an enabled pass (0 for none): a different one once the pass is recompiled.
     unsigned passProgram(const std::string& pass) const;
     // The GL texture object of a workspace texture (0 for none): a different one once reloaded.
     unsigned textureObject(const std::string& name) const;
-    // create() for a reload of the workspace file: the textures named in `reusableTextures` that
-    // `previous` holds with the same declaration and files are copied from it on the GPU instead
-    // of being read and decoded again (the caller knows their files did not change). `previous`
-    // is not modified.
-    static std::unique_ptr<GlExecutor> createReusing(const Workspace& ws, glm::ivec2 viewport, Diagnostics& diagnostics,
-                                                     const GlExecutor& previous,
-                                                     const std::vector<std::string>& reusableTextures);
-
-    struct Impl;
 
 private:
+    struct Impl;
+    struct Build;
     explicit GlExecutor(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;
     OrbitCamera camera_;

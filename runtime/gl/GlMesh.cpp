@@ -78,11 +78,11 @@ GlMesh::GlMesh(const Mesh& mesh) : indexCount_(mesh.indices.size()), compatibili
         interleaved.insert(interleaved.end(),
                            {p.x, p.y, p.z, n.x, n.y, n.z, t.x, t.y, u.x, u.y, u.z, v.x, v.y, v.z, 1.0f, 1.0f, 1.0f, 1.0f});
     }
-    glCreateBuffers(1, &vertexBuffer_);
-    glNamedBufferStorage(vertexBuffer_, static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)),
+    vertexBuffer_ = createBuffer();
+    glNamedBufferStorage(vertexBuffer_.get(), static_cast<GLsizeiptr>(interleaved.size() * sizeof(float)),
                          interleaved.data(), 0);
-    glCreateBuffers(1, &indexBuffer_);
-    glNamedBufferStorage(indexBuffer_, static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(uint32_t)),
+    indexBuffer_ = createBuffer();
+    glNamedBufferStorage(indexBuffer_.get(), static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(uint32_t)),
                          mesh.indices.data(), 0);
     const VertexUsage defaults[3] = {VertexUsage::Position, VertexUsage::Normal, VertexUsage::TexCoord};
     std::vector<StreamBinding> layout;
@@ -90,23 +90,17 @@ GlMesh::GlMesh(const Mesh& mesh) : indexCount_(mesh.indices.size()), compatibili
         layout.push_back({defaults[a], 0, a});
         if (compatibility_) layout.push_back({defaults[a], 0, -1});
     }
-    vertexArray_ = streamVertexArray(layout);
-    streamArrays_.clear();  // the default array is owned apart
-}
-
-GlMesh::~GlMesh() {
-    glDeleteVertexArrays(1, &vertexArray_);
-    for (auto& [streams, array] : streamArrays_) glDeleteVertexArrays(1, &array);
-    glDeleteBuffers(1, &vertexBuffer_);
-    glDeleteBuffers(1, &indexBuffer_);
+    streamVertexArray(layout);
+    vertexArray_ = std::move(streamArrays_.at(layout));  // the default array is kept apart
+    streamArrays_.clear();
 }
 
 unsigned GlMesh::streamVertexArray(const std::vector<StreamBinding>& streams) const {
-    if (auto it = streamArrays_.find(streams); it != streamArrays_.end()) return it->second;
-    GLuint array = 0;
-    glCreateVertexArrays(1, &array);
-    glVertexArrayVertexBuffer(array, 0, vertexBuffer_, 0, kStride * sizeof(float));
-    glVertexArrayElementBuffer(array, indexBuffer_);
+    if (auto it = streamArrays_.find(streams); it != streamArrays_.end()) return it->second.get();
+    VertexArrayHandle handle = createVertexArray();
+    const GLuint array = handle.get();
+    glVertexArrayVertexBuffer(array, 0, vertexBuffer_.get(), 0, kStride * sizeof(float));
+    glVertexArrayElementBuffer(array, indexBuffer_.get());
     bool builtins = false;
     for (const StreamBinding& s : streams) {
         if (s.location < 0) {
@@ -122,18 +116,18 @@ unsigned GlMesh::streamVertexArray(const std::vector<StreamBinding>& streams) co
     if (builtins && compatibility_) {
         // The built-in arrays have no direct-state-access entry points: bind, point, unbind.
         glBindVertexArray(array);
-        glBindBuffer(GL_ARRAY_BUFFER, vertexBuffer_);
+        glBindBuffer(GL_ARRAY_BUFFER, vertexBuffer_.get());
         for (const StreamBinding& s : streams)
             if (s.location < 0) enableBuiltinArray(s.usage, s.usageIndex);
         glBindBuffer(GL_ARRAY_BUFFER, 0);
         glBindVertexArray(0);
     }
-    streamArrays_[streams] = array;
+    streamArrays_[streams] = std::move(handle);
     return array;
 }
 
 void GlMesh::draw(const std::vector<StreamBinding>& streams) const {
-    glBindVertexArray(streams.empty() ? vertexArray_ : streamVertexArray(streams));
+    glBindVertexArray(streams.empty() ? vertexArray_.get() : streamVertexArray(streams));
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(indexCount_), GL_UNSIGNED_INT, nullptr);
 }
 

@@ -8,6 +8,7 @@
 #include <map>
 #include <vector>
 
+#include "gl/GlHandles.h"
 #include "model/Mesh.h"
 #include "model/Workspace.h"
 
@@ -24,9 +25,6 @@ struct StreamBinding {
 class GlMesh {
 public:
     explicit GlMesh(const Mesh& mesh);
-    ~GlMesh();
-    GlMesh(const GlMesh&) = delete;
-    GlMesh& operator=(const GlMesh&) = delete;
 
     // With streams: a vertex array feeding exactly those (made on first use, then kept).
     // Built-in streams need a compatibility-profile context.
@@ -36,10 +34,11 @@ public:
 private:
     unsigned streamVertexArray(const std::vector<StreamBinding>& streams) const;
 
-    unsigned vertexArray_ = 0, vertexBuffer_ = 0, indexBuffer_ = 0;
+    VertexArrayHandle vertexArray_;
+    BufferHandle vertexBuffer_, indexBuffer_;
     size_t indexCount_ = 0;
     bool compatibility_ = false;
-    mutable std::map<std::vector<StreamBinding>, unsigned> streamArrays_;
+    mutable std::map<std::vector<StreamBinding>, VertexArrayHandle> streamArrays_;
 };
 
 }  // namespace rmfx

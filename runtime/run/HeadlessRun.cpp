@@ -11,13 +11,16 @@ namespace rmfx {
 std::unique_ptr<GlExecutor> runHeadless(const Workspace& ws, const RunSettings& settings, Diagnostics& diagnostics,
                                         const ExecutorOptions& options) {
     glm::ivec2 size = settings.size.x > 0 ? settings.size : glm::ivec2(ws.width, ws.height);
-    auto executor = GlExecutor::create(ws, size, diagnostics, options);
-    if (!executor) return nullptr;
+    auto created = GlExecutor::create(std::make_shared<const Workspace>(ws), size, options);
+    const Diagnostics& found = created.diagnostics();
+    diagnostics.insert(diagnostics.end(), found.begin(), found.end());
+    if (!created) return nullptr;
+    std::unique_ptr<GlExecutor> executor = std::move(*created);
     std::optional<FrameWatchdog> watchdog;
     if (settings.frameBudgetSeconds > 0) watchdog.emplace(settings.frameBudgetSeconds, settings.onFrameBudget);
     for (int i = 0; i < settings.frames; ++i) {
         if (watchdog) watchdog->arm("frame " + std::to_string(i + 1) + " of " + ws.path.string());
-        Diagnostics frame = executor->renderFrame({static_cast<float>(i) * settings.deltaTime, settings.deltaTime});
+        Diagnostics frame = executor->renderFrame({static_cast<float>(i) * settings.deltaTime, settings.deltaTime}).takeDiagnostics();
         if (watchdog) {
             glFinish();
             watchdog->disarm();

@@ -16,7 +16,7 @@
 namespace rmfx {
 
 // Frame i runs at time i·dt with deltaTime dt; with a frame budget each frame is waited for. Returns the executor after the last frame, or
-// nullptr with diagnostics when creation or a frame failed.
+// nullptr with diagnostics when creation or a frame failed. The executor runs its own copy of `ws`.
 std::unique_ptr<GlExecutor> runHeadless(const Workspace& ws, const RunSettings& settings, Diagnostics& diagnostics,
                                         const ExecutorOptions& options = {});
 

@@ -68,7 +68,7 @@ std::optional<LiveWorkspace::Build> LiveWorkspace::load(Diagnostics& diagnostics
         return std::nullopt;
     }
     Build build;
-    build.workspace = std::make_unique<Workspace>(std::move(*loaded.workspace));
+    build.workspace = std::make_shared<Workspace>(std::move(*loaded.workspace));
     // Overrides from the command line: errors the first time; after that a variable the edited
     // file no longer declares only loses its override (the file stays loadable).
     for (const auto& override : overrides_) {
@@ -96,11 +96,16 @@ std::optional<LiveWorkspace::Build> LiveWorkspace::load(Diagnostics& diagnostics
         std::vector<std::string> reusable;
         for (const Texture& t : workspace_->textures)
             if (!pendingTextures_.count(t.name) && !staleTextures.count(t.name)) reusable.push_back(t.name);
-        build.executor = GlExecutor::createReusing(*build.workspace, viewport, diagnostics, *executor_, reusable);
+        auto created = GlExecutor::createReusing(build.workspace, viewport, *executor_, reusable);
+        append(diagnostics, created.diagnostics());
+        if (!created) return std::nullopt;
+        build.executor = std::move(*created);
     } else {
-        build.executor = GlExecutor::create(*build.workspace, viewport, diagnostics);
+        auto created = GlExecutor::create(build.workspace, viewport);
+        append(diagnostics, created.diagnostics());
+        if (!created) return std::nullopt;
+        build.executor = std::move(*created);
     }
-    if (!build.executor) return std::nullopt;
     return build;
 }
 
@@ -117,8 +122,8 @@ void LiveWorkspace::adopt(Build build, Diagnostics warnings) {
             why = "the workspace no longer declares it";
         else if (v->value.type != it->second.type)
             why = std::string("it is now a ") + valueTypeName(v->value.type) + ", not a " + valueTypeName(it->second.type);
-        else if (std::string refused = exec.setVariable(name, it->second); !refused.empty())
-            why = refused;
+        else if (auto set = exec.setVariable(name, it->second); !set)
+            why = set.error();
         if (why.empty()) {
             ++it;
             continue;
@@ -161,7 +166,7 @@ void LiveWorkspace::recompilePendingPasses() {
     std::vector<std::string> names;  // in schedule order
     for (const Pass& pass : workspace_->passes)
         if (pendingPasses_.count(pass.name)) names.push_back(pass.name);
-    Diagnostics found = executor_->recompilePasses(names);
+    Diagnostics found = executor_->recompilePasses(names).takeDiagnostics();
     append(warnings_, withSeverity(found, Diagnostic::Severity::Warning));
     if (hasErrors(found)) {
         failures_["passes"] = withSeverity(found, Diagnostic::Severity::Error);
@@ -175,7 +180,7 @@ void LiveWorkspace::recompilePendingPasses() {
 
 void LiveWorkspace::reloadPendingTextures() {
     for (auto it = pendingTextures_.begin(); it != pendingTextures_.end();) {
-        Diagnostics found = executor_->reloadTexture(*it);
+        Diagnostics found = executor_->reloadTexture(*it).takeDiagnostics();
         if (hasErrors(found)) {
             failures_["texture " + *it] = found;
             lastReload_.failed = true;
@@ -190,7 +195,7 @@ void LiveWorkspace::reloadPendingTextures() {
 
 void LiveWorkspace::reloadPendingModels() {
     for (auto it = pendingModels_.begin(); it != pendingModels_.end();) {
-        Diagnostics found = executor_->reloadModel(*it);
+        Diagnostics found = executor_->reloadModel(*it).takeDiagnostics();
         if (hasErrors(found)) {
             failures_["model " + *it] = found;
             lastReload_.failed = true;
@@ -284,15 +289,15 @@ const Diagnostics& LiveWorkspace::errors() const { return errors_; }
 double LiveWorkspace::lastReloadMilliseconds() const { return lastReloadMilliseconds_; }
 std::vector<std::filesystem::path> LiveWorkspace::watchedFiles() const { return watcher_.files(); }
 
-std::string LiveWorkspace::setVariable(const std::string& name, const Value& value) {
-    std::string why = executor_->setVariable(name, value);
-    if (why.empty()) tweaks_[name] = value;
-    return why;
+Result<void> LiveWorkspace::setVariable(const std::string& name, const Value& value) {
+    auto set = executor_->setVariable(name, value);
+    if (set) tweaks_[name] = value;
+    return set;
 }
 
 void LiveWorkspace::resetVariable(const std::string& name) {
     tweaks_.erase(name);
-    if (const Variable* v = workspace_->findVariable(name)) executor_->setVariable(name, v->value);
+    if (const Variable* v = workspace_->findVariable(name)) (void)executor_->setVariable(name, v->value);
 }
 
 Diagnostics LiveWorkspace::setViewport(glm::ivec2 viewport) {
@@ -300,13 +305,15 @@ Diagnostics LiveWorkspace::setViewport(glm::ivec2 viewport) {
     glm::ivec2 previous = requestedViewport_;
     requestedViewport_ = viewport;
     Build build;
-    build.workspace = std::make_unique<Workspace>(*workspace_);
+    build.workspace = std::make_shared<Workspace>(*workspace_);
     build.dependencies = dependencies_;
-    build.executor = GlExecutor::create(*build.workspace, viewportFor(*build.workspace), found);
-    if (!build.executor) {
+    auto created = GlExecutor::create(build.workspace, viewportFor(*build.workspace));
+    found = created.takeDiagnostics();
+    if (!created) {
         requestedViewport_ = previous;
         return found;
     }
+    build.executor = std::move(*created);
     // The new build read every shader, image and model as they are now, but not the workspace
     // file: a failure of that stays.
     bool workspaceFailed = workspacePending_;

@@ -62,7 +62,7 @@ public:
     GlExecutor& executor();             // the last good build
     const Workspace& workspace() const; // the workspace of the last good build
     const Diagnostics& errors() const;  // diagnostics of the last failed reload; empty after a good one
-    std::string setVariable(const std::string& name, const Value& value);  // as GlExecutor::setVariable, and remembered across reloads
+    Result<void> setVariable(const std::string& name, const Value& value);  // as GlExecutor::setVariable, and remembered across reloads
     void resetVariable(const std::string& name);  // back to the file's default, forgets the tweak
     double lastReloadMilliseconds() const;        // from the file event to the end of the rebuild
     std::vector<std::filesystem::path> watchedFiles() const;
@@ -81,7 +81,7 @@ public:
 
 private:
     struct Build {
-        std::unique_ptr<Workspace> workspace;  // first: the executor refers to it
+        std::shared_ptr<Workspace> workspace;  // shared with the executor
         std::unique_ptr<GlExecutor> executor;
         WorkspaceDependencies dependencies;
     };
@@ -106,7 +106,7 @@ private:
     MediaOptions media_;  // every reload resolves file references as the first load did
     WorkspaceLoadOptions loadOptions_;  // the .rfx effect chosen with --effect
 
-    std::unique_ptr<Workspace> workspace_;  // before executor_: destroyed after it
+    std::shared_ptr<Workspace> workspace_;  // shared with executor_
     std::unique_ptr<GlExecutor> executor_;
     WorkspaceDependencies dependencies_;
     WorkspaceDependencies failedDependencies_;  // of a workspace file that failed to build

@@ -76,7 +76,7 @@ std::unique_ptr<Workspace> stageWorkspace(const std::string& file, const std::fi
 void writeFloatExr(const std::filesystem::path& file, const RefImage& image);
 
 struct GlRun {
-    std::unique_ptr<Workspace> ws;     // declared first: the executor refers to it and dies first
+    std::unique_ptr<Workspace> ws;     // the workspace run (the executor runs its own copy)
     std::unique_ptr<GlExecutor> exec;  // null when creation or a frame failed
     Diagnostics diagnostics;
 };

@@ -240,9 +240,9 @@ TEST_F(GlslEsGLTest, CompatibilityWorkspaceInACoreContextIsAClearError) {
 void main() { gl_FragColor = vec4(1.0); }
 ]]></shader>)"));
     ASSERT_TRUE(ws);
-    Diagnostics d;
-    auto exec = GlExecutor::create(*ws, {kSize, kSize}, d);
+    auto exec = GlExecutor::create(std::move(ws), {kSize, kSize});
     EXPECT_FALSE(exec);
+    const Diagnostics& d = exec.diagnostics();
     EXPECT_NE(formatAll(d).find("compatibility-profile context"), std::string::npos) << formatAll(d);
 }
 

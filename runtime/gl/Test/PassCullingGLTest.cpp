@@ -40,7 +40,7 @@ long long primitivesOfFrame(GlExecutor& exec) {
     GLuint query = 0;
     glCreateQueries(GL_PRIMITIVES_GENERATED, 1, &query);
     glBeginQuery(GL_PRIMITIVES_GENERATED, query);
-    Diagnostics d = exec.renderFrame({0.0f, 1.0f / 60.0f});
+    Diagnostics d = exec.renderFrame({0.0f, 1.0f / 60.0f}).takeDiagnostics();
     glEndQuery(GL_PRIMITIVES_GENERATED);
     GLuint64 count = 0;
     glGetQueryObjectui64v(query, GL_QUERY_RESULT, &count);
@@ -104,7 +104,7 @@ TEST_F(PassCullingGLTest, EffectsLeftOutNeverDrawAndHoldNoMemory) {
     // 16x16 glare levels ping-pong between 3 textures of 16·16·8 = 2048 (glare_4, _5 and _6 live
     // until the composite); the output 64·64·8 = 32768. Declared: scene, 16 quarter-size targets
     // and the output.
-    EXPECT_EQ(run.exec->allocatedTextureCount(), 5);
+    EXPECT_EQ(targetTextureCount(run.exec->targetPlan()), 5);
     EXPECT_EQ(run.exec->targetPlan().allocatedBytes, 49152u + 3 * 2048 + 32768);
     EXPECT_EQ(run.exec->targetPlan().declaredBytes, 49152u + 16 * 2048 + 32768);
 }
@@ -143,15 +143,15 @@ TEST_F(PassCullingGLTest, SwitchingAnEffectOffAndOnMatchesTheWorkspaceWithoutAnd
     std::map<std::string, unsigned> programs, textures;
     for (const Pass& p : live.ws->passes) programs[p.name] = live.exec->passProgram(p.name);
     for (const std::string& t : live.exec->targetNames()) textures[t] = live.exec->targetTexture(t);
-    int textureCount = live.exec->allocatedTextureCount();
+    int textureCount = targetTextureCount(live.exec->targetPlan());
 
     for (const Switch& s : switches) {
         std::map<std::string, Value> before;
         for (const std::string& v : s.variables) {
             before[v] = *live.exec->variable(v);
-            ASSERT_EQ(live.exec->setVariable(v, Value::ofFloat(0.0f)), "");
+            ASSERT_EQ(live.exec->setVariable(v, Value::ofFloat(0.0f)).error(), "");
         }
-        ASSERT_TRUE(live.exec->renderFrame({0.0f, 1.0f / 60.0f}).empty());
+        ASSERT_TRUE(live.exec->renderFrame({0.0f, 1.0f / 60.0f}).takeDiagnostics().empty());
         Names off = live.exec->passesRun();
         for (const std::string& p : withPrefix(live, s.effect + "_"))
             EXPECT_EQ(std::count(off.begin(), off.end(), p), 0) << p << " ran with " << s.effect << " off";
@@ -166,8 +166,8 @@ TEST_F(PassCullingGLTest, SwitchingAnEffectOffAndOnMatchesTheWorkspaceWithoutAnd
         EXPECT_EQ(off, without.exec->passesRun()) << s.effect;
         expectSameBits(readBack(*live.exec, "output"), readBack(*without.exec, "output"), s.effect + " switched off");
 
-        for (const auto& [v, value] : before) ASSERT_EQ(live.exec->setVariable(v, value), "");
-        ASSERT_TRUE(live.exec->renderFrame({0.0f, 1.0f / 60.0f}).empty());
+        for (const auto& [v, value] : before) ASSERT_EQ(live.exec->setVariable(v, value).error(), "");
+        ASSERT_TRUE(live.exec->renderFrame({0.0f, 1.0f / 60.0f}).takeDiagnostics().empty());
         EXPECT_EQ(live.exec->passesRun(), allPasses);
         expectSameBits(readBack(*live.exec, "output"), allOn, s.effect + " switched back on");
     }
@@ -175,7 +175,7 @@ TEST_F(PassCullingGLTest, SwitchingAnEffectOffAndOnMatchesTheWorkspaceWithoutAnd
         EXPECT_EQ(live.exec->passProgram(p.name), programs[p.name]) << p.name << " recompiled";
     for (const std::string& t : live.exec->targetNames())
         EXPECT_EQ(live.exec->targetTexture(t), textures[t]) << t << " reallocated";
-    EXPECT_EQ(live.exec->allocatedTextureCount(), textureCount);
+    EXPECT_EQ(targetTextureCount(live.exec->targetPlan()), textureCount);
 }
 
 TEST_F(PassCullingGLTest, AnEffectSwitchedOffDrawsNothingOfIt) {
@@ -194,7 +194,7 @@ TEST_F(PassCullingGLTest, SharingMemoryChangesNoPixel) {
     GlRun unpooled = shader5(own);
     GlRun kept = shader5({});
     ASSERT_TRUE(pooled.exec && unpooled.exec && kept.exec);
-    EXPECT_LT(pooled.exec->allocatedTextureCount(), unpooled.exec->allocatedTextureCount());
+    EXPECT_LT(targetTextureCount(pooled.exec->targetPlan()), targetTextureCount(unpooled.exec->targetPlan()));
     expectSameBits(readBack(*pooled.exec, "output"), readBack(*unpooled.exec, "output"), "shader_5 pooled vs not");
     expectSameBits(readBack(*pooled.exec, "output"), readBack(*kept.exec, "output"),
                    "shader_5 pooled vs every target kept");
@@ -226,12 +226,12 @@ TEST_F(PassCullingGLTest, HdrLightingWithoutBloomAndStarSkipsTheirSharedSourcesT
     for (const char* kept : {"teapot", "luminance1", "adaptation", "final"})
         EXPECT_EQ(std::count(noEffects.begin(), noEffects.end(), kept), 1) << kept;
 
-    ASSERT_EQ(live.exec->setVariable("Bloom_Scale", Value::ofFloat(0.0f)), "");
-    ASSERT_EQ(live.exec->setVariable("Star_Scale", Value::ofFloat(0.0f)), "");
+    ASSERT_EQ(live.exec->setVariable("Bloom_Scale", Value::ofFloat(0.0f)).error(), "");
+    ASSERT_EQ(live.exec->setVariable("Star_Scale", Value::ofFloat(0.0f)).error(), "");
     // The frames before the switch left the same adaptation state in both: 3 frames each.
     for (int i = 3; i < 5; ++i) {
-        ASSERT_TRUE(live.exec->renderFrame({0.1f * i, 0.1f}).empty());
-        ASSERT_TRUE(none.exec->renderFrame({0.1f * i, 0.1f}).empty());
+        ASSERT_TRUE(live.exec->renderFrame({0.1f * i, 0.1f}).takeDiagnostics().empty());
+        ASSERT_TRUE(none.exec->renderFrame({0.1f * i, 0.1f}).takeDiagnostics().empty());
     }
     EXPECT_EQ(live.exec->passesRun(), noEffects);
     expectSameBits(readBack(*live.exec, "output"), readBack(*none.exec, "output"), "bloom and star switched off");
@@ -277,9 +277,9 @@ TEST_F(PassCullingGLTest, AnUnguardedReadOfALeftOutEffectIsAnErrorAndAGuardedOne
     ExecutorOptions none = outputOnly(Names{});
     auto ws = workspaceFromText(guarded(""));
     ASSERT_TRUE(ws);
-    Diagnostics d;
-    auto exec = GlExecutor::create(*ws, {4, 4}, d, none);
+    auto exec = GlExecutor::create(std::move(ws), {4, 4}, none);
     EXPECT_FALSE(exec);
+    const Diagnostics& d = exec.diagnostics();
     ASSERT_FALSE(d.empty());
     EXPECT_NE(d.front().message.find("guard the read with `if (RMFX_EFFECT_fx)`"), std::string::npos) << formatAll(d);
 

@@ -18,7 +18,7 @@ TEST_F(PassTimingGLTest, TimesEveryPassOfTheNewestCompletedFrame) {
     EXPECT_TRUE(run.exec->passTimings().empty()) << "timing is off by default";
 
     run.exec->setTimingEnabled(true);
-    for (int i = 0; i < 4; ++i) ASSERT_TRUE(run.exec->renderFrame({0.1f * i, 0.1f}).empty());
+    for (int i = 0; i < 4; ++i) ASSERT_TRUE(run.exec->renderFrame({0.1f * i, 0.1f}).takeDiagnostics().empty());
     const std::vector<PassTiming>& timings = run.exec->passTimings();
     std::vector<std::string> expected;
     for (const Pass& p : run.ws->passes)

@@ -191,9 +191,7 @@ void main() { color = matViewProjection; }
     Result<Workspace> parsed = parseWorkspaceText(xml, "mismatch.xml", ".");
     ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
     for (const Diagnostics& d : {validateWorkspace(*parsed), [&] {
-             Diagnostics found;
-             GlExecutor::create(*parsed, {4, 4}, found);
-             return found;
+             return GlExecutor::create(std::make_shared<const Workspace>(*parsed), {4, 4}).takeDiagnostics();
          }()}) {
         std::string all = formatAll(d);
         EXPECT_TRUE(hasErrors(d)) << all;

@@ -42,8 +42,8 @@ TEST_F(TargetScaleByGLTest, TheVariablePicksTheSizeAndSettingItReallocates) {
     EXPECT_EQ(run.exec->targetSize("reduced"), glm::ivec2(10, 7));  // ceil(27 / 4) = 7
 
     for (auto [value, size] : {std::pair{2, glm::ivec2(5, 4)}, std::pair{0, glm::ivec2(20, 14)}}) {
-        ASSERT_EQ(run.exec->setVariable("Downsample", Value::ofInt(value)), "");
-        Diagnostics d = run.exec->renderFrame({});
+        ASSERT_EQ(run.exec->setVariable("Downsample", Value::ofInt(value)).error(), "");
+        Diagnostics d = run.exec->renderFrame({}).takeDiagnostics();
         ASSERT_TRUE(d.empty()) << formatAll(d);
         EXPECT_EQ(run.exec->targetSize("reduced"), size);
         const TargetPlan& plan = run.exec->targetPlan();
@@ -53,7 +53,7 @@ TEST_F(TargetScaleByGLTest, TheVariablePicksTheSizeAndSettingItReallocates) {
         ASSERT_EQ(reduced.width, size.x);
         EXPECT_EQ(reduced.at(size.x - 1, 0, 0), size.x - 0.5f);
     }
-    EXPECT_EQ(run.exec->setVariable("Downsample", Value::ofInt(3)),
+    EXPECT_EQ(run.exec->setVariable("Downsample", Value::ofInt(3)).error(),
               "variable 'Downsample' = 3 picks none of the 3 scales of target 'reduced'");
     EXPECT_EQ(run.exec->variable("Downsample")->asInt(), 0);  // unchanged
 }

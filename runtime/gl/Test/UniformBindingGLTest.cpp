@@ -129,27 +129,27 @@ TEST_F(UniformBindingGLTest, SetVariableChangesTheNextFrame) {
     Expected e = declaredValues();
     expectAllTypes(readBack(exec, "out"), e);
 
-    EXPECT_EQ(exec.setVariable("F", Value::ofFloat(2.5f)), "");
-    EXPECT_EQ(exec.setVariable("I", Value::ofInt(42)), "");
-    EXPECT_EQ(exec.setVariable("B", Value::ofBool(false)), "");
+    EXPECT_EQ(exec.setVariable("F", Value::ofFloat(2.5f)).error(), "");
+    EXPECT_EQ(exec.setVariable("I", Value::ofInt(42)).error(), "");
+    EXPECT_EQ(exec.setVariable("B", Value::ofBool(false)).error(), "");
     Value c4;
     c4.type = ValueType::Color4;
     c4.data = {0.5f, 0.25f, 0.125f, 1.0f};
-    EXPECT_EQ(exec.setVariable("C4", c4), "");
+    EXPECT_EQ(exec.setVariable("C4", c4).error(), "");
     Value m;
     m.type = ValueType::Mat4;
     for (int i = 0; i < 16; ++i) m.data[static_cast<size_t>(i)] = -static_cast<float>(i) * 0.5f;
-    EXPECT_EQ(exec.setVariable("M", m), "");
+    EXPECT_EQ(exec.setVariable("M", m).error(), "");
     // Wrong types are refused and change nothing.
-    EXPECT_NE(exec.setVariable("F", Value::ofInt(1)), "");
+    EXPECT_NE(exec.setVariable("F", Value::ofInt(1)).error(), "");
     Value rgb;
     rgb.type = ValueType::Color3;
-    EXPECT_NE(exec.setVariable("C4", rgb), "");
-    EXPECT_NE(exec.setVariable("Nope", Value::ofFloat(1)), "");
+    EXPECT_NE(exec.setVariable("C4", rgb).error(), "");
+    EXPECT_NE(exec.setVariable("Nope", Value::ofFloat(1)).error(), "");
 
     // Not visible until the next frame renders.
     expectAllTypes(readBack(exec, "out"), e);
-    Diagnostics frame = exec.renderFrame({1.0f / 60.0f, 1.0f / 60.0f});
+    Diagnostics frame = exec.renderFrame({1.0f / 60.0f, 1.0f / 60.0f}).takeDiagnostics();
     ASSERT_FALSE(hasErrors(frame)) << formatAll(frame);
     e.F = 2.5f;
     e.I = 42.0f;
@@ -199,8 +199,8 @@ void main() { fragColor = vec4(K, W); }
         EXPECT_EQ(b.at(0, 0, c), expectB[c]) << c;
     }
     // setVariable changes the variable, not the pass constant that shadows it.
-    EXPECT_EQ(run.exec->setVariable("K", Value::ofFloat(11.0f)), "");
-    ASSERT_FALSE(hasErrors(run.exec->renderFrame({0.1f, 0.1f})));
+    EXPECT_EQ(run.exec->setVariable("K", Value::ofFloat(11.0f)).error(), "");
+    ASSERT_FALSE(hasErrors(run.exec->renderFrame({0.1f, 0.1f}).takeDiagnostics()));
     EXPECT_EQ(readBack(*run.exec, "a").at(0, 0, 0), 7.25f);
     EXPECT_EQ(readBack(*run.exec, "b").at(0, 0, 0), 11.0f);
 }

@@ -120,7 +120,7 @@ protected:
 
     // Renders a frame and reads pixel (0, 0) of a target.
     glm::vec4 pixel(const std::string& target) {
-        Diagnostics frame = live_->executor().renderFrame({});
+        Diagnostics frame = live_->executor().renderFrame({}).takeDiagnostics();
         EXPECT_FALSE(hasErrors(frame)) << formatAll(frame);
         Image image = readBack(live_->executor(), target);
         if (image.empty()) return glm::vec4(-1.0f);
@@ -342,7 +342,7 @@ TEST_F(LiveModelGLTest, ReplacedModelReloadsItsMesh) {
     auto live = LiveWorkspace::open(dir / "ws.xml", {0, 0}, {}, diagnostics);
     ASSERT_TRUE(live) << formatAll(diagnostics);
     auto render = [&] {
-        EXPECT_FALSE(hasErrors(live->executor().renderFrame({})));
+        EXPECT_FALSE(hasErrors(live->executor().renderFrame({}).takeDiagnostics()));
         return readBack(live->executor(), "output");
     };
     Image before = render();
@@ -418,16 +418,18 @@ TEST_F(TextureCopyGLTest, CopiedCubeMapMatchesTheLoadedOne) {
     });
     auto ws = workspaceFromText(xml, dir.path());
     ASSERT_TRUE(ws);
-    Diagnostics d;
-    auto loaded = GlExecutor::create(*ws, {6, 3}, d);
-    ASSERT_TRUE(loaded) << formatAll(d);
-    auto copied = GlExecutor::createReusing(*ws, {6, 3}, d, *loaded, {"Sky"});
-    ASSERT_TRUE(copied) << formatAll(d);
+    std::shared_ptr<const Workspace> shared = std::move(ws);
+    auto loadedResult = GlExecutor::create(shared, {6, 3});
+    ASSERT_TRUE(loadedResult) << formatAll(loadedResult.diagnostics());
+    auto& loaded = *loadedResult;
+    auto copiedResult = GlExecutor::createReusing(shared, {6, 3}, *loaded, {"Sky"});
+    ASSERT_TRUE(copiedResult) << formatAll(copiedResult.diagnostics());
+    auto& copied = *copiedResult;
     EXPECT_NE(copied->textureObject("Sky"), loaded->textureObject("Sky"));
-    auto nothingReused = GlExecutor::createReusing(*ws, {6, 3}, d, *loaded, {});
-    ASSERT_TRUE(nothingReused) << formatAll(d);
-    ASSERT_FALSE(hasErrors(loaded->renderFrame({})));
-    ASSERT_FALSE(hasErrors(copied->renderFrame({})));
+    auto nothingReused = GlExecutor::createReusing(shared, {6, 3}, *loaded, {});
+    ASSERT_TRUE(nothingReused) << formatAll(nothingReused.diagnostics());
+    ASSERT_FALSE(hasErrors(loaded->renderFrame({}).takeDiagnostics()));
+    ASSERT_FALSE(hasErrors(copied->renderFrame({}).takeDiagnostics()));
     Image expected = readBack(*loaded, "output"), actual = readBack(*copied, "output");
     ASSERT_EQ(expected.pixels.size(), 6u * 3u * 4u);
     EXPECT_EQ(actual.pixels, expected.pixels);
@@ -457,7 +459,7 @@ TEST_F(LiveWorkspaceGLTest, UnreadableTextureKeepsTheOldOne) {
 }
 
 TEST_F(LiveWorkspaceGLTest, TweakedValueAndCameraSurviveAWorkspaceReload) {
-    ASSERT_EQ(live_->setVariable("Gain", Value::ofFloat(3.0f)), "");
+    ASSERT_EQ(live_->setVariable("Gain", Value::ofFloat(3.0f)).error(), "");
     EXPECT_EQ(pixel("output").r, 3.0f);
     live_->executor().camera().orbit(20.0f, 10.0f);  // yaw 30 → 50, pitch 15 → 25
     // (f) a new default for Gain and a new pass
@@ -493,7 +495,7 @@ TEST_F(LiveWorkspaceGLTest, EditedCameraElementIsTakenFromTheFile) {
 }
 
 TEST_F(LiveWorkspaceGLTest, TweakOfAVariableThatChangedTypeIsDroppedWithAWarning) {
-    ASSERT_EQ(live_->setVariable("Gain", Value::ofFloat(3.0f)), "");
+    ASSERT_EQ(live_->setVariable("Gain", Value::ofFloat(3.0f)).error(), "");
     std::string edited = replaced(workspaceXml, R"(<float name="Gain" value="1"/>)", R"(<int name="Gain" value="4"/>)");
     edited = replaced(edited, "uniform float Gain;", "uniform int Gain;");
     edited = replaced(edited, "vec4(Gain, 0.0", "vec4(float(Gain), 0.0");
@@ -508,7 +510,7 @@ TEST_F(LiveWorkspaceGLTest, TweakOfAVariableThatChangedTypeIsDroppedWithAWarning
 }
 
 TEST_F(LiveWorkspaceGLTest, BrokenWorkspaceFileKeepsTheLastGoodBuildAndRecovers) {
-    ASSERT_EQ(live_->setVariable("Gain", Value::ofFloat(3.0f)), "");
+    ASSERT_EQ(live_->setVariable("Gain", Value::ofFloat(3.0f)).error(), "");
     pixel("output");
     auto before = programs();
     // Line 9: pass b writes a target that does not exist.
@@ -583,7 +585,7 @@ TEST_F(LiveWorkspaceGLTest, OverridesActAsTheFileDefaults) {
 }
 
 TEST_F(LiveWorkspaceGLTest, NewViewportKeepsTweaks) {
-    ASSERT_EQ(live_->setVariable("Gain", Value::ofFloat(3.0f)), "");
+    ASSERT_EQ(live_->setVariable("Gain", Value::ofFloat(3.0f)).error(), "");
     Diagnostics resized = live_->setViewport({8, 2});
     EXPECT_FALSE(hasErrors(resized)) << formatAll(resized);
     EXPECT_EQ(live_->executor().targetSize("output"), glm::ivec2(8, 2));

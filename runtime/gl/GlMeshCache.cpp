@@ -1,0 +1,44 @@
+#include "gl/GlMeshCache.h"
+
+#include "io/mesh/BuiltinMeshes.h"
+#include "io/mesh/ModelLoader.h"
+
+namespace rmfx {
+namespace {
+
+Diagnostics drawError(const DrawCall& draw, const std::string& message) {
+    return {{Diagnostic::Severity::Error, draw.where, "<draw>", message}};
+}
+
+}  // namespace
+
+Result<const GlMesh*> GlMeshCache::meshFor(const Workspace& ws, const DrawCall& draw) {
+    std::string key = draw.mesh ? std::string("builtin:") + builtinMeshName(*draw.mesh) : "file:" + draw.file;
+    if (auto it = meshes_.find(key); it != meshes_.end()) return static_cast<const GlMesh*>(it->second.get());
+    Mesh mesh;
+    if (draw.mesh) {
+        mesh = makeMesh(*draw.mesh);
+    } else {
+        auto loaded = loadModel(ws.folder / draw.file);
+        if (!loaded) return Result<const GlMesh*>::failure(drawError(draw, loaded.error()));
+        mesh = std::move(*loaded);
+    }
+    auto& slot = meshes_[key];
+    slot = std::make_unique<GlMesh>(mesh);
+    return static_cast<const GlMesh*>(slot.get());
+}
+
+Result<std::unique_ptr<GlMesh>> GlMeshCache::loadAgain(const Workspace& ws, const std::string& file, const DrawCall& user) {
+    auto loaded = loadModel(ws.folder / file);
+    if (!loaded) return Result<std::unique_ptr<GlMesh>>::failure(drawError(user, loaded.error()));
+    return std::make_unique<GlMesh>(*loaded);
+}
+
+void GlMeshCache::replace(const std::string& file, std::unique_ptr<GlMesh> mesh) { meshes_["file:" + file] = std::move(mesh); }
+
+const GlMesh* GlMeshCache::loadedModel(const std::string& file) const {
+    auto it = meshes_.find("file:" + file);
+    return it == meshes_.end() ? nullptr : it->second.get();
+}
+
+}  // namespace rmfx

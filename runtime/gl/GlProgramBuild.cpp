@@ -1,0 +1,99 @@
+#include "gl/GlProgramBuild.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include <epoxy/gl.h>
+
+#include "frontend/shader/PassProgram.h"
+#include "validation/GlslangCheck.h"
+
+namespace rmfx {
+namespace {
+
+template <class GetLength, class GetLog>
+std::string infoLog(GetLength getLength, GetLog getLog) {
+    GLint length = 0;
+    getLength(&length);
+    std::string log(static_cast<size_t>(std::max(length, 1)), '\0');
+    getLog(length, log.data());
+    log.resize(std::strlen(log.c_str()));
+    return log;
+}
+
+}  // namespace
+
+Result<PassGlProgram> buildPassProgram(const Workspace& ws, const Pass& pass, const ShaderPrelude& prelude) {
+    Diagnostics d;
+    auto source = assemblePassProgram(ws, pass, prelude.defines, d, prelude.declarations);
+    if (!source && !hasErrors(d)) d.push_back({Diagnostic::Severity::Error, pass.where, passLabel(pass), "no program to compile"});
+    if (!source || hasErrors(d)) return Result<PassGlProgram>::failure(std::move(d));
+    PassGlProgram built;
+    built.initializedUniforms = uniformsWithInitializers(*source);
+    std::string label = passLabel(pass);
+    built.program = createProgram();
+    const GLuint program = built.program.get();
+    bool ok = true;
+    for (const PassStage& stage : source->stages) {
+        ShaderHandle shader = createShader(stage.stage == ShaderStage::Vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER);
+        const char* text = stage.shader.code.c_str();
+        glShaderSource(shader.get(), 1, &text, nullptr);
+        glCompileShader(shader.get());
+        GLint compiled = 0;
+        glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &compiled);
+        if (!compiled) {
+            std::string log = infoLog([&](GLint* n) { glGetShaderiv(shader.get(), GL_INFO_LOG_LENGTH, n); },
+                                      [&](GLint n, char* text) { glGetShaderInfoLog(shader.get(), n, nullptr, text); });
+            auto mapped = mapCompilerLog(log, stage.shader, stage.where, label);
+            if (mapped.empty()) mapped.push_back({Diagnostic::Severity::Error, stage.where, label, "shader failed to compile"});
+            d.insert(d.end(), mapped.begin(), mapped.end());
+            ok = false;
+        }
+        glAttachShader(program, shader.get());
+    }
+    if (!ok) return Result<PassGlProgram>::failure(std::move(d));
+    // The built-in vertex shaders' attributes, for dialects without layout qualifiers.
+    for (GLuint a = 0; a < 3; ++a) glBindAttribLocation(program, a, builtinAttributeLocations[a]);
+    glLinkProgram(program);
+    GLint linked = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &linked);
+    if (!linked) {
+        std::string log = infoLog([&](GLint* n) { glGetProgramiv(program, GL_INFO_LOG_LENGTH, n); },
+                                  [&](GLint n, char* text) { glGetProgramInfoLog(program, n, nullptr, text); });
+        d.push_back({Diagnostic::Severity::Error, pass.where, label, "shaders failed to link: " + log});
+        return Result<PassGlProgram>::failure(std::move(d));
+    }
+    return Result<PassGlProgram>(std::move(built), std::move(d));
+}
+
+std::vector<ProgramUniform> programUniforms(unsigned program) {
+    std::vector<ProgramUniform> uniforms;
+    GLint count = 0;
+    glGetProgramInterfaceiv(program, GL_UNIFORM, GL_ACTIVE_RESOURCES, &count);
+    for (GLint i = 0; i < count; ++i) {
+        const GLenum props[4] = {GL_TYPE, GL_LOCATION, GL_ARRAY_SIZE, GL_BLOCK_INDEX};
+        GLint values[4] = {};
+        glGetProgramResourceiv(program, GL_UNIFORM, static_cast<GLuint>(i), 4, props, 4, nullptr, values);
+        if (values[3] != -1 || values[1] < 0) continue;  // block members are not rmfx variables
+        char nameBuffer[256] = {};
+        glGetProgramResourceName(program, GL_UNIFORM, static_cast<GLuint>(i), sizeof nameBuffer, nullptr, nameBuffer);
+        std::string name = nameBuffer;
+        if (name.size() > 3 && name.compare(name.size() - 3, 3, "[0]") == 0) name.resize(name.size() - 3);
+        uniforms.push_back({name, values[0], values[1], values[2]});
+    }
+    return uniforms;
+}
+
+std::set<std::string> activeInputs(unsigned program) {
+    std::set<std::string> inputs;
+    GLint count = 0;
+    glGetProgramInterfaceiv(program, GL_PROGRAM_INPUT, GL_ACTIVE_RESOURCES, &count);
+    for (GLint i = 0; i < count; ++i) {
+        char name[256] = {};
+        glGetProgramResourceName(program, GL_PROGRAM_INPUT, static_cast<GLuint>(i), sizeof name, nullptr, name);
+        inputs.insert(name);
+    }
+    return inputs;
+}
+
+}  // namespace rmfx

@@ -1,0 +1,37 @@
+#pragma once
+// A pass's shaders compiled and linked into a GL program, and what the linked program exposes:
+// its active uniforms and vertex inputs. Needs a current GL context.
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/Result.h"
+#include "gl/GlHandles.h"
+#include "model/EffectSelection.h"
+#include "model/Workspace.h"
+
+namespace rmfx {
+
+struct PassGlProgram {
+    ProgramHandle program;
+    std::set<std::string> initializedUniforms;  // declared with a value: unbound, they keep it
+};
+
+// Assembles the pass's program source with the prelude of the effects asked for, compiles and
+// links it. Compiler errors are mapped to the shader files' lines; warnings of assembly come along.
+Result<PassGlProgram> buildPassProgram(const Workspace& ws, const Pass& pass, const ShaderPrelude& prelude);
+
+// A uniform outside any block, as reflection gives it ("name[0]" as "name").
+struct ProgramUniform {
+    std::string name;
+    int glType = 0;
+    int location = -1;
+    int arraySize = 1;
+};
+std::vector<ProgramUniform> programUniforms(unsigned program);
+
+// The names of the active vertex inputs, built-ins (gl_Vertex, …) included.
+std::set<std::string> activeInputs(unsigned program);
+
+}  // namespace rmfx
