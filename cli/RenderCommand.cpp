@@ -4,6 +4,7 @@
 
 #include "cli/ArgumentParser.h"
 #include "cli/Commands.h"
+#include "cli/OptionValues.h"
 #include "core/FrameWatchdog.h"
 #include "frontend/rfx/RfxImporter.h"
 #include "gl/GlContext.h"
@@ -39,35 +40,10 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
     ArgumentParser parser;
     parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, a.media); })
         .option({"-o", "--output"}, [&](const std::string& value) { a.output = value; return ""; }, Empty::Allowed)
-        .option({"--size"}, [&](const std::string& value) -> std::string {
-            int w = 0, h = 0;
-            char x = 0, extra = 0;
-            if (std::sscanf(value.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 ||
-                w > 16384 || h > 16384)
-                return "--size: expected WIDTHxHEIGHT between 1x1 and 16384x16384, got '" + value + "'";
-            a.run.size = {w, h};
-            return "";
-        }, Empty::Allowed)
-        .option({"--frames"}, [&](const std::string& value) -> std::string {
-            char* end = nullptr;
-            long n = std::strtol(value.c_str(), &end, 10);
-            if (*end || n < 1 || n > 1000000) return "--frames: expected a count from 1 to 1000000, got '" + value + "'";
-            a.run.frames = static_cast<int>(n);
-            return "";
-        }, Empty::Allowed)
-        .option({"--dt"}, [&](const std::string& value) -> std::string {
-            char* end = nullptr;
-            double dt = std::strtod(value.c_str(), &end);
-            if (*end || !std::isfinite(dt) || dt < 0) return "--dt: expected seconds ≥ 0, got '" + value + "'";
-            a.run.deltaTime = static_cast<float>(dt);
-            return "";
-        }, Empty::Allowed)
-        .option({"--set"}, [&](const std::string& value) -> std::string {
-            auto eq = value.find('=');
-            if (eq == std::string::npos || eq == 0) return "--set: expected NAME=VALUE, got '" + value + "'";
-            a.overrides.emplace_back(value.substr(0, eq), value.substr(eq + 1));
-            return "";
-        }, Empty::Allowed)
+        .option({"--size"}, sizeValue(a.run.size), Empty::Allowed)
+        .option({"--frames"}, frameCountValue(a.run.frames), Empty::Allowed)
+        .option({"--dt"}, secondsValue(a.run.deltaTime), Empty::Allowed)
+        .option({"--set"}, overrideValue(a.overrides), Empty::Allowed)
         .option({"--target"}, [&](const std::string& value) { a.target = value; return ""; }, Empty::Allowed)
         .option({"--transform"}, [&](const std::string& value) -> std::string {
             if (value == "none") a.transform = DisplayTransform::None;

@@ -1,0 +1,26 @@
+#pragma once
+// The option values more than one command reads (render and edit): each returns a handler for
+// ArgumentParser::option that stores the value, or says what was expected.
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "cli/ArgumentParser.h"
+
+namespace rmfx::cli {
+
+// --size WIDTHxHEIGHT, each side from 1 to 16384.
+ArgumentParser::TakeValue sizeValue(glm::ivec2& size);
+// --frames N, from 1 to 1000000.
+ArgumentParser::TakeValue frameCountValue(int& frames);
+ArgumentParser::TakeValue frameCountValue(std::optional<int>& frames);
+// --dt SECONDS, finite and ≥ 0; `given` (if any) becomes true.
+ArgumentParser::TakeValue secondsValue(float& seconds, bool* given = nullptr);
+// --set NAME=VALUE, appended in order.
+ArgumentParser::TakeValue overrideValue(std::vector<std::pair<std::string, std::string>>& overrides);
+
+}  // namespace rmfx::cli
