@@ -1,6 +1,6 @@
 #include "frontend/shader/PassProgram.h"
 
-#include "frontend/shader/HlslTranslator.h"
+#include "frontend/shader/HlslTranslationCache.h"
 
 namespace rmfx {
 
@@ -95,7 +95,8 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
         PassStage stage{s.stage, preprocessShader(input, diagnostics), s.where, false, s.dialect};
         if (s.dialect == ShaderDialect::Hlsl && !failed()) {
             HlslStage hlsl{s.stage, s.entryPoint, s.profile};
-            Result<HlslTranslation> translated = translateHlslStage(stage.shader, hlsl, s.where, passLabel(pass));
+            Result<HlslTranslation> translated =
+                HlslTranslationCache::shared().translate(stage.shader, hlsl, s.where, passLabel(pass));
             diagnostics.insert(diagnostics.end(), translated.diagnostics().begin(), translated.diagnostics().end());
             if (translated) {
                 stage.shader = std::move(translated->glsl);
