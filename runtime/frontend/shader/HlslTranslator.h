@@ -28,9 +28,13 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/Diagnostic.h"
+#include "core/Result.h"
+#include "frontend/shader/HlslSemantics.h"
 #include "frontend/shader/ShaderPreprocessor.h"
+#include "frontend/shader/SpirvToGlsl.h"
 #include "model/Workspace.h"
 
 namespace rmfx {
@@ -41,27 +45,33 @@ struct HlslStage {
     std::string profile;     // "vs_2_0", "ps_3_0"…; empty: not checked
 };
 
+struct HlslTranslation {
+    PreprocessedShader glsl;
+    std::vector<ReflectedVariable> inputs;  // the stage inputs with a semantic, from SPIRV-Cross's reflection
+};
+
 // Translates one preprocessed HLSL stage. Errors are reported at the HLSL source's file and line
-// (through hlsl.origin) under `element`; returns nullopt when the code does not compile. The
+// (through hlsl.origin) under `element`, as are the warnings that come with a translation. The
 // result's lineOrigins all point at `where` (the generated GLSL has no lines of the user's).
+Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const HlslStage& stage,
+                                           const SourceLocation& where, const std::string& element);
+
+// translateHlslStage with its diagnostics appended to `diagnostics`; nullopt when the code does
+// not compile.
 std::optional<PreprocessedShader> translateHlsl(const PreprocessedShader& hlsl, const HlslStage& stage,
                                                 const SourceLocation& where, const std::string& element,
                                                 Diagnostics& diagnostics);
 
 // For a pass with an HLSL pixel shader and no vertex shader, what Direct3D 9's fixed-function
 // vertex processing hands the pixel shader: GLSL 4.50 declarations and assignments, for rmfx's
-// built-in vertex shader, of every input of `pixelGlsl` (the translated pixel shader):
-// TEXCOORDn the mesh's texture coordinates as (u, v, 0, 1), COLORn opaque white (the material
-// colour with lighting off). nullopt, with the semantic in `unsupported`, for any other input.
+// built-in vertex shader, of every input of the translated pixel shader (its
+// HlslTranslation::inputs): TEXCOORDn the mesh's texture coordinates as (u, v, 0, 1), COLORn
+// opaque white (the material colour with lighting off). Fails, saying which semantic, for any
+// other input (or one that is not a float scalar or vector).
 struct FixedFunctionVaryings {
     std::string declarations;  // `out vec2 rm_hlsl_TEXCOORD0;` …
     std::string assignments;   // statements for the end of main(), reading vec2 rm_TexCoordIn
 };
-std::optional<FixedFunctionVaryings> hlslFixedFunctionVaryings(const std::string& pixelGlsl, std::string& unsupported);
-
-// "TEXCOORD" → rm_hlsl_TEXCOORD0, "color1" → rm_hlsl_COLOR1: the GLSL name of a varying.
-std::string hlslVaryingName(const std::string& semantic);
-// The GLSL attribute name of a vertex input with that usage: (TexCoord, 1) → rm_hlsl_in_TEXCOORD1.
-std::string hlslVertexInputName(VertexUsage usage, int usageIndex);
+Result<FixedFunctionVaryings> hlslFixedFunctionVaryings(const std::vector<ReflectedVariable>& pixelInputs);
 
 }  // namespace rmfx

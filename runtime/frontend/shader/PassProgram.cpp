@@ -1,7 +1,6 @@
 #include "frontend/shader/PassProgram.h"
 
-
-#include "frontend/shader/HlslTranslator.h"
+#include "frontend/shader/HlslTranslationCache.h"
 
 namespace rmfx {
 
@@ -58,6 +57,7 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
                                                      Diagnostics& diagnostics,
                                                      const std::vector<std::string>& declarations) {
     PassProgramSource program;
+    std::vector<ReflectedVariable> pixelInputs;  // of an HLSL fragment shader
     bool ok = true;
     const ShaderSource* vertex = nullptr;
     const ShaderSource* fragment = nullptr;
@@ -95,7 +95,13 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
         PassStage stage{s.stage, preprocessShader(input, diagnostics), s.where, false, s.dialect};
         if (s.dialect == ShaderDialect::Hlsl && !failed()) {
             HlslStage hlsl{s.stage, s.entryPoint, s.profile};
-            if (auto glsl = translateHlsl(stage.shader, hlsl, s.where, passLabel(pass), diagnostics)) stage.shader = std::move(*glsl);
+            Result<HlslTranslation> translated =
+                HlslTranslationCache::shared().translate(stage.shader, hlsl, s.where, passLabel(pass));
+            diagnostics.insert(diagnostics.end(), translated.diagnostics().begin(), translated.diagnostics().end());
+            if (translated) {
+                stage.shader = std::move(translated->glsl);
+                if (s.stage == ShaderStage::Fragment) pixelInputs = std::move(translated->inputs);
+            }
             stage.dialect = ShaderDialect::Glsl;
         }
         if (!s.file.empty()) stage.shader.files.insert(stage.shader.files.begin(), ws.folder / s.file);
@@ -115,15 +121,11 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
         if (hlsl && ok) {
             // Direct3D runs a pass without a vertex shader through its fixed-function vertex
             // processing; the built-in vertex shader hands the pixel shader what that would.
-            std::string unsupported;
-            if (auto varyings = hlslFixedFunctionVaryings(program.stages.back().shader.code, unsupported)) {
+            if (Result<FixedFunctionVaryings> varyings = hlslFixedFunctionVaryings(pixelInputs)) {
                 input.code.insert(input.code.find("void main() {"), varyings->declarations);
                 input.code.insert(input.code.rfind('}'), varyings->assignments);
             } else {
-                diagnostics.push_back({Diagnostic::Severity::Error, fragment->where, passLabel(pass),
-                                       "the HLSL pixel shader reads " + unsupported +
-                                           ", which a pass without a vertex shader (Direct3D's fixed-function "
-                                           "vertex processing) does not provide: give the pass a vertex shader"});
+                diagnostics.push_back({Diagnostic::Severity::Error, fragment->where, passLabel(pass), varyings.error()});
                 ok = false;
             }
         }
