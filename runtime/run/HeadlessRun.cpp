@@ -8,11 +8,13 @@
 
 namespace rmfx {
 
-std::unique_ptr<GlExecutor> runHeadless(const Workspace& ws, const RunSettings& settings, Diagnostics& diagnostics,
-                                        const ExecutorOptions& options) {
+Result<std::unique_ptr<GlExecutor>> runHeadless(const Workspace& ws, const RunSettings& settings,
+                                                const ExecutorOptions& options) {
+    using Run = Result<std::unique_ptr<GlExecutor>>;
     glm::ivec2 size = settings.size.x > 0 ? settings.size : glm::ivec2(ws.width, ws.height);
+    Diagnostics diagnostics;
     auto executor = GlExecutor::create(ws, size, diagnostics, options);
-    if (!executor) return nullptr;
+    if (!executor) return Run::failure(std::move(diagnostics));
     std::optional<FrameWatchdog> watchdog;
     if (settings.frameBudgetSeconds > 0) watchdog.emplace(settings.frameBudgetSeconds, settings.onFrameBudget);
     for (int i = 0; i < settings.frames; ++i) {
@@ -23,9 +25,9 @@ std::unique_ptr<GlExecutor> runHeadless(const Workspace& ws, const RunSettings& 
             watchdog->disarm();
         }
         diagnostics.insert(diagnostics.end(), frame.begin(), frame.end());
-        if (hasErrors(frame)) return nullptr;
+        if (hasErrors(frame)) return Run::failure(std::move(diagnostics));
     }
-    return executor;
+    return Run(std::move(executor), std::move(diagnostics));
 }
 
 }  // namespace rmfx
