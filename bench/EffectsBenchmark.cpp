@@ -415,12 +415,12 @@ int main(int argc, char** argv) {
         return 1;
     }
     for (const char* name : {"shader_2", "shader_3", "shader_4", "shader_5"}) {
-        LoadedWorkspace loaded = loadWorkspace(std::filesystem::path(RMFX_SOURCE_DIR) / "effects" / (std::string(name) + ".xml"));
-        if (!loaded.workspace) {
-            std::fprintf(stderr, "%s", formatAll(loaded.diagnostics).c_str());
+        Result<Workspace> loaded = loadWorkspace(std::filesystem::path(RMFX_SOURCE_DIR) / "effects" / (std::string(name) + ".xml"));
+        if (!loaded.ok()) {
+            std::fprintf(stderr, "%s", formatAll(loaded.diagnostics()).c_str());
             return 1;
         }
-        workspaces[name] = std::make_unique<Workspace>(std::move(*loaded.workspace));
+        workspaces[name] = std::make_unique<Workspace>(std::move(*loaded));
     }
 
     auto statistics = [](benchmark::internal::Benchmark* b) {

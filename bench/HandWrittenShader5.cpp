@@ -189,7 +189,7 @@ struct HandWrittenShader5::State {
     // A pass: uniforms the program does not use are dropped (GL removed them), sampler uniforms
     // get units 0, 1, … in the order given. Every active uniform must be given: a uniform left
     // out would make the frame differ from the executor's.
-    Result<bool> add(const std::string& name, GLuint framebuffer, glm::ivec2 size, GLuint program, const GlMesh& mesh,
+    Result<void> add(const std::string& name, GLuint framebuffer, glm::ivec2 size, GLuint program, const GlMesh& mesh,
                      HandPass states, std::vector<Uniform> uniforms, std::vector<Texture> textures) {
         HandPass p = states;
         p.framebuffer = framebuffer;
@@ -221,7 +221,7 @@ struct HandWrittenShader5::State {
             if (!given.count(uniform)) return Error{"pass '" + name + "' leaves uniform '" + uniform + "' unset"};
         }
         passes.push_back(p);
-        return true;
+        return {};
     }
 };
 
@@ -306,7 +306,7 @@ Result<std::unique_ptr<HandWrittenShader5>> HandWrittenShader5::create(const Wor
     const std::string fullscreenVertexText = builtinFullscreenVertexShader();
     const std::string modelVertexText = builtinModelVertexShader();
     const char* fullscreenVertex = fullscreenVertexText.c_str();
-    std::vector<Result<bool>> added;
+    std::vector<Result<void>> added;
     // One program per pass, as the executor compiles them: the driver sees the same objects.
     auto check = [&](Result<GLuint> p) -> GLuint {
         if (!p) {
@@ -358,7 +358,7 @@ Result<std::unique_ptr<HandWrittenShader5>> HandWrittenShader5::create(const Wor
                             {"Texture5", streak16[1], linear}, {"Texture6", streak16[2], linear},
                             {"Texture7", streak16[3], linear}}));
     std::string errors;
-    for (const Result<bool>& r : added)
+    for (const Result<void>& r : added)
         if (!r) errors += (errors.empty() ? "" : "\n") + r.error();
     if (!errors.empty()) return Error{errors};
     if (GLenum e = glGetError(); e != GL_NO_ERROR) return Error{"GL error " + std::to_string(e) + " while setting up"};

@@ -94,14 +94,14 @@ int main(int argc, char** argv) {
     fs::copy(source / "samples" / "media", root / "samples" / "media", fs::copy_options::recursive);
     fs::path workspaceFile = root / "effects" / "shader_5.xml";
 
-    rmfx::Diagnostics diagnostics;
     auto opened = Clock::now();
-    auto live = rmfx::LiveWorkspace::open(workspaceFile, {0, 0}, {}, diagnostics);
+    auto session = rmfx::LiveWorkspace::open(workspaceFile, {0, 0}, {});
     double openMs = std::chrono::duration<double, std::milli>(Clock::now() - opened).count();
-    if (!live) {
-        std::fprintf(stderr, "%s", rmfx::formatAll(diagnostics).c_str());
+    if (!session) {
+        std::fprintf(stderr, "%s", rmfx::formatAll(session.diagnostics()).c_str());
         return 1;
     }
+    std::unique_ptr<rmfx::LiveWorkspace> live = std::move(*session);
     (void)live->executor().renderFrame({});
     std::printf("%s\n", context.value()->description().c_str());
     std::printf("workspace %s: %zu passes, %zu watched files; first build %.1f ms\n", workspaceFile.string().c_str(),

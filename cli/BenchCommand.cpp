@@ -120,16 +120,16 @@ std::string uniqueName(std::string name, const std::vector<BenchInput>& inputs) 
 Result<fs::path> renderScene(const SceneSpec& scene, glm::ivec2 size, const fs::path& folder,
                              const ValidationOptions& load) {
     std::string what = "scene '" + scene.name + "': ";
-    LoadedWorkspace loaded = loadWorkspace(scene.workspace, load);
-    if (!loaded.workspace) return Error{what + formatAll(loaded.diagnostics)};
-    if (!loaded.workspace->canReadTarget(scene.target))
+    Result<Workspace> loaded = loadWorkspace(scene.workspace, load);
+    if (!loaded) return Error{what + formatAll(loaded.diagnostics())};
+    if (!loaded->canReadTarget(scene.target))
         return Error{what + scene.workspace.string() + " has no target '" + scene.target + "' (" +
-                     loaded.workspace->describeTargets() + ")"};
-    Diagnostics diagnostics;
+                     loaded->describeTargets() + ")"};
     ExecutorOptions options;
     options.outputs = {scene.target};
-    auto executor = runHeadless(*loaded.workspace, {size, 1, 1.0f / 60.0f}, diagnostics, options);
-    if (!executor) return Error{what + formatAll(diagnostics)};
+    auto run = runHeadless(*loaded, {size, 1, 1.0f / 60.0f}, options);
+    if (!run) return Error{what + formatAll(run.diagnostics())};
+    std::unique_ptr<GlExecutor>& executor = *run;
     auto image = executor->readTarget(scene.target);
     if (!image) return Error{what + image.error()};
     fs::path file = folder / (scene.name + ".exr");
@@ -214,13 +214,13 @@ std::optional<std::vector<StagePlan>> planStages(const BenchArguments& a, const 
             if (wanted) plan.variants.push_back(std::move(v));
         }
         if (plan.variants.empty()) continue;
-        LoadedWorkspace loaded = loadWorkspace(stage.workspace, a.load);
-        if (!loaded.workspace) {
+        Result<Workspace> loaded = loadWorkspace(stage.workspace, a.load);
+        if (!loaded) {
             std::cerr << "rmfx bench: stage " << stage.name << " (" << stage.where.file << ":" << stage.where.line
-                      << "):\n" << formatAll(loaded.diagnostics);
+                      << "):\n" << formatAll(loaded.diagnostics());
             return std::nullopt;
         }
-        plan.workspace = std::move(*loaded.workspace);
+        plan.workspace = std::move(*loaded);
         plans.push_back(std::move(plan));
     }
     if (plans.empty()) {

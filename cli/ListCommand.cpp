@@ -136,12 +136,12 @@ int listCommand(const std::vector<std::string>& args) {
         std::cerr << "rmfx list: '" << path << "' is not a RenderMonkey .rfx file\n";
         return 1;
     }
-    RfxEffectList list = listRfxEffects(path);
-    std::cerr << formatAll(list.diagnostics);
-    if (hasErrors(list.diagnostics)) return 1;
-    std::cout << path << ": " << list.effects.size() << (list.effects.size() == 1 ? " effect" : " effects") << "\n";
+    Result<std::vector<RfxEffectSummary>> list = listRfxEffects(path);
+    std::cerr << formatAll(list.diagnostics());
+    if (!list) return 1;
+    std::cout << path << ": " << list->size() << (list->size() == 1 ? " effect" : " effects") << "\n";
     int status = 0;
-    for (const RfxEffectSummary& e : list.effects) {
+    for (const RfxEffectSummary& e : *list) {
         std::cout << "  effect '" << e.path << "' (" << e.api << (e.active ? ", active" : "") << "), line " << e.line << "\n";
         Result<Workspace> parsed = importRfxFile(path, {e.path});
         // Warnings about the file as a whole come once, with the list above; per-effect ones here.

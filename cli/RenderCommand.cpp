@@ -100,15 +100,15 @@ int renderCommand(const std::vector<std::string>& args) {
     }
     ValidationOptions options;
     options.media = a->media;
-    LoadedWorkspace loaded = a->workspace ? loadWorkspace(*a->workspace, options, a->load) : loadDefaultWorkspace(options);
-    if (!loaded.workspace) {
-        std::cerr << formatAll(loaded.diagnostics);
+    Result<Workspace> loaded = a->workspace ? loadWorkspace(*a->workspace, options, a->load) : loadDefaultWorkspace(options);
+    if (!loaded) {
+        std::cerr << formatAll(loaded.diagnostics());
         return 1;
     }
-    if (!a->quiet) std::cerr << formatAll(loaded.diagnostics);  // warnings
-    Workspace& ws = *loaded.workspace;
-    if (Diagnostics bad = applyOverrides(ws, a->overrides); !bad.empty()) {
-        std::cerr << formatAll(bad);
+    if (!a->quiet) std::cerr << formatAll(loaded.diagnostics());  // warnings
+    Workspace& ws = *loaded;
+    if (Result<void> set = applyOverrides(ws, a->overrides); !set) {
+        std::cerr << formatAll(set.diagnostics());
         return 1;
     }
     std::string targetName = a->target.value_or(ws.outputTargetName());
@@ -125,13 +125,13 @@ int renderCommand(const std::vector<std::string>& args) {
         std::cerr << "rmfx render: " << context.error() << "\n";
         return 2;
     }
-    Diagnostics diagnostics;
-    auto executor = runHeadless(ws, a->run, diagnostics, a->executor);
-    if (!executor) {
-        std::cerr << formatAll(diagnostics);
+    auto run = runHeadless(ws, a->run, a->executor);
+    if (!run) {
+        std::cerr << formatAll(run.diagnostics());
         return 2;
     }
-    if (!a->quiet) std::cerr << formatAll(diagnostics);  // warnings (streams no shader reads…)
+    if (!a->quiet) std::cerr << formatAll(run.diagnostics());  // warnings (streams no shader reads…)
+    std::unique_ptr<GlExecutor>& executor = *run;
     if (a->explain) {
         FrameExplanationInput explained{&ws, &executor->graph(), &executor->targetPlan(), executor->askedEffects(),
                                         executor->switchedOffEffects(), a->executor.poolTargets};

@@ -133,11 +133,11 @@ public:
 
     CaseOutcome run(const ReplayCase& c) {
         CaseOutcome o;
-        CaseRender render = renderReplayCase(c, media_, &contexts_);
-        for (const Diagnostic& d : render.diagnostics)
+        Result<std::vector<Image>> render = renderReplayCase(c, media_, &contexts_);
+        for (const Diagnostic& d : render.diagnostics())
             if (d.severity == Diagnostic::Severity::Error || !a_.quiet) o.line(d.format());
-        if (!render.ok()) {
-            for (const Diagnostic& d : render.diagnostics)
+        if (!render) {
+            for (const Diagnostic& d : render.diagnostics())
                 if (d.severity == Diagnostic::Severity::Error) {
                     o.fail(JUnitTestCase::Outcome::Error, d.format());
                     break;
@@ -146,8 +146,8 @@ public:
             return o;
         }
         for (size_t i = 0; i < c.compares.size(); ++i) {
-            if (a_.update) update(c.compares[i], render.images[i], o);
-            else compare(c, c.compares[i], render.images[i], o);
+            if (a_.update) update(c.compares[i], (*render)[i], o);
+            else compare(c, c.compares[i], (*render)[i], o);
         }
         return o;
     }

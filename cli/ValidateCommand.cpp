@@ -35,13 +35,13 @@ int validateCommand(const std::vector<std::string>& args) {
     }
     int status = 0;
     for (const std::string& path : paths) {
-        LoadedWorkspace loaded = loadWorkspace(path, options, load);
-        std::cerr << formatAll(loaded.diagnostics);
-        if (!loaded.workspace) {
+        Result<Workspace> loaded = loadWorkspace(path, options, load);
+        std::cerr << formatAll(loaded.diagnostics());
+        if (!loaded) {
             status = 1;
             continue;
         }
-        const Workspace& ws = *loaded.workspace;
+        const Workspace& ws = *loaded;
         std::cout << path << ": ok (" << counted(ws.passes.size(), "pass", "passes") << ", "
                   << counted(ws.targets.size(), "target", "targets") << ", "
                   << counted(ws.variables.size(), "variable", "variables") << ")\n";

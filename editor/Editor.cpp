@@ -46,7 +46,7 @@ public:
 
     void view(const std::string& target) { targets_.open(target); }
 
-    Result<bool> writeOutput(const std::filesystem::path& file) {
+    Result<void> writeOutput(const std::filesystem::path& file) {
         const Workspace& ws = session_.workspace();
         Result<Image> image = session_.executor().readTarget(ws.outputTargetName());
         if (!image) return Error{image.error()};
@@ -201,14 +201,15 @@ int runEditor(const EditorOptions& options) {
     // and its size sets the window's.
     ValidationOptions load;
     load.media = options.media;
-    LoadedWorkspace loaded = loadWorkspace(options.workspace, load, {options.effect});
-    Workspace* checked = loaded.workspace ? &*loaded.workspace : nullptr;
+    Result<Workspace> loaded = loadWorkspace(options.workspace, load, {options.effect});
+    Diagnostics diagnostics = loaded.diagnostics();
+    Workspace* checked = loaded ? &*loaded : nullptr;
     if (checked) {
-        Diagnostics bad = applyOverrides(*checked, options.overrides);
-        loaded.diagnostics.insert(loaded.diagnostics.end(), bad.begin(), bad.end());
-        if (hasErrors(bad)) checked = nullptr;
+        Result<void> set = applyOverrides(*checked, options.overrides);
+        diagnostics.insert(diagnostics.end(), set.diagnostics().begin(), set.diagnostics().end());
+        if (!set) checked = nullptr;
     }
-    std::cerr << formatAll(loaded.diagnostics);
+    std::cerr << formatAll(diagnostics);
     if (!checked) return 1;
     for (const std::string& target : options.viewTargets)
         if (!checked->canReadTarget(target)) {
@@ -223,14 +224,13 @@ int runEditor(const EditorOptions& options) {
         std::cerr << "rmfx edit: " << window.error() << "\n";
         return 2;
     }
-    Diagnostics diagnostics;
     // The size asked for, else 0: the workspace's, which a reload may change.
-    auto session = LiveWorkspace::open(options.workspace, options.size, options.overrides, diagnostics, options.media,
-                                       {options.effect});
-    if (!session) {
-        std::cerr << formatAll(diagnostics);
+    auto opened = LiveWorkspace::open(options.workspace, options.size, options.overrides, options.media, {options.effect});
+    if (!opened) {
+        std::cerr << formatAll(opened.diagnostics());
         return 2;
     }
+    std::unique_ptr<LiveWorkspace> session = std::move(*opened);
     auto blit = TextureBlit::create();
     if (!blit) {
         std::cerr << "rmfx edit: " << blit.error() << "\n";

@@ -126,7 +126,7 @@ void VariablesPanel::draw(LiveWorkspace& session) {
             ImGui::SetTooltip("reset to the default, %s", formatValue(v.value).c_str());
         ImGui::SameLine();
         if (editValue(v, chooseWidget(v), value)) {
-            if (auto set = session.setVariable(v.name, value); !set) {
+            if (Result<void> set = session.setVariable(v.name, value); !set) {
                 status_ = set.error();
                 statusIsError_ = true;
             }
@@ -154,7 +154,7 @@ void VariablesPanel::save(LiveWorkspace& session) {
     for (const Variable& v : session.workspace().variables)
         if (const Value* current = session.executor().variable(v.name)) values.emplace(v.name, *current);
     const std::string file = session.workspace().path.filename().string();
-    Result<bool> saved = saveVariableValues(session.workspace().path, values);
+    Result<void> saved = saveVariableValues(session.workspace().path, values);
     statusIsError_ = !saved;
     status_ = saved ? "saved the values to " + file + " at " + clockTime() : "not saved: " + saved.error();
 }

@@ -15,7 +15,7 @@ void fuzzRfxImport(const std::uint8_t* data, std::size_t size) {
     std::filesystem::create_directories(folder);
     writeParts(input.parts, folder);
     writeParts({{"fuzz.rfx", input.main}}, folder);
-    listRfxEffects(folder / "fuzz.rfx");
+    (void)listRfxEffects(folder / "fuzz.rfx");
     checkParsedWorkspace(importRfxText(input.main, folder / "fuzz.rfx", folder));
 }
 

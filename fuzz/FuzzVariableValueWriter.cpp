@@ -127,7 +127,7 @@ void checkRewrite(const std::string& before, const std::string& after, const Val
 void checkSave(const std::string& text, const Values& values, const Result<std::string>& rewritten) {
     std::filesystem::path file = freshScratchFolder() / "workspace.xml";
     writeParts({{"workspace.xml", text}}, file.parent_path());
-    Result<bool> saved = saveVariableValues(file, values);
+    Result<void> saved = saveVariableValues(file, values);
     auto now = readWholeFile(file);
     fuzzCheck(now.ok(), "the workspace file is gone after a save");
     if (!saved) {

@@ -62,7 +62,7 @@ Image makeDiscMask(int size) {
     return image;
 }
 
-Result<bool> writeTourMedia(const std::filesystem::path& folder) {
+Result<void> writeTourMedia(const std::filesystem::path& folder) {
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
     if (auto r = writeImage(folder / "mask.png", makeDiscMask(64)); !r) return r;
@@ -152,7 +152,7 @@ Image makeHdrTestScene(int width, int height) {
     return image;
 }
 
-Result<bool> writeChapterMedia(const std::filesystem::path& folder) {
+Result<void> writeChapterMedia(const std::filesystem::path& folder) {
     std::error_code ec;
     std::filesystem::create_directories(folder, ec);
     Image sky = makeSkyCross(256, kChapterSunDirection, kChapterSunIntensity, 4);

@@ -24,7 +24,7 @@ Image makeSkyCross(int faceSize, const glm::vec3& sunDirection, float sunIntensi
 Image makeDiscMask(int size);
 
 // Writes what samples/tour/tour.xml reads (mask.png, sky_cross.exr) into `folder`.
-Result<bool> writeTourMedia(const std::filesystem::path& folder);
+Result<void> writeTourMedia(const std::filesystem::path& folder);
 
 // The chapter's 8-bit HDR encoding: colour in rgb, brightness in alpha, decoded as
 // rgb * (1 + 64 a): HdrEncoding::Rgba8x64 (runtime/HdrEncoding.h) on every texel. Each texel gets
@@ -51,6 +51,6 @@ Image makeHdrTestScene(int width, int height);
 // Writes the media of the chapter-8 workspaces in effects/ into `folder`: sky_cross.exr (half
 // float, 256-texel faces, range 0.02 .. 2000), sky_cross_alpha64.png (the same sky in the
 // chapter's alpha encoding), ghost_mask.png and hdr_scene.exr (makeHdrTestScene, 512x512, float).
-Result<bool> writeChapterMedia(const std::filesystem::path& folder);
+Result<void> writeChapterMedia(const std::filesystem::path& folder);
 
 }  // namespace rmfx::samples

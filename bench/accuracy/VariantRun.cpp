@@ -25,7 +25,7 @@ Result<VariantMeasurement> measureVariant(const Workspace& stageWorkspace, const
 
     std::vector<std::pair<std::string, std::string>> settings = variant.settings;
     settings.insert(settings.end(), extra.begin(), extra.end());
-    if (Diagnostics bad = applyOverrides(ws, settings); !bad.empty()) return Error{what + formatAll(bad)};
+    if (Result<void> set = applyOverrides(ws, settings); !set) return Error{what + formatAll(set.diagnostics())};
     if (!ws.canReadTarget(stage.output))
         return Error{what + ws.path.string() + " has no target '" + stage.output + "' (" + ws.describeTargets() + ")"};
 

@@ -21,9 +21,9 @@ TEST_F(CliRenderGLTest, RenderWritesTheOutputTargetAsExr) {
     auto image = readImage(exr);
     ASSERT_TRUE(image) << image.error();
 
-    LoadedWorkspace loaded = loadDefaultWorkspace();
-    ASSERT_TRUE(loaded.workspace) << formatAll(loaded.diagnostics);
-    GlRun run = runWorkspace(std::make_unique<Workspace>(std::move(*loaded.workspace)), {{32, 32}, 1, 1.0f / 60.0f});
+    Result<Workspace> loaded = loadDefaultWorkspace();
+    ASSERT_TRUE(loaded.ok()) << formatAll(loaded.diagnostics());
+    GlRun run = runWorkspace(std::make_unique<Workspace>(std::move(*loaded)), {{32, 32}, 1, 1.0f / 60.0f});
     ASSERT_TRUE(run.exec);
     Image expected = readBack(*run.exec, "output");
     ASSERT_EQ(image->width, 32);

@@ -23,12 +23,12 @@ const std::string kLast = "average_" + std::to_string(kLevels);
 constexpr double kUlp = 1.0 / (1 << 24);  // float32 relative rounding (half an ulp is 2^-24)
 
 std::unique_ptr<Workspace> loadAutoExposure(const std::vector<std::pair<std::string, std::string>>& overrides = {}) {
-    LoadedWorkspace loaded = loadWorkspace(sourceDir() / "effects" / "auto_exposure.xml");
-    EXPECT_TRUE(loaded.workspace) << formatAll(loaded.diagnostics);
-    if (!loaded.workspace) return nullptr;
-    Diagnostics d = applyOverrides(*loaded.workspace, overrides);
-    EXPECT_TRUE(d.empty()) << formatAll(d);
-    return std::make_unique<Workspace>(std::move(*loaded.workspace));
+    Result<Workspace> loaded = loadWorkspace(sourceDir() / "effects" / "auto_exposure.xml");
+    EXPECT_TRUE(loaded.ok()) << formatAll(loaded.diagnostics());
+    if (!loaded) return nullptr;
+    Result<void> set = applyOverrides(*loaded, overrides);
+    EXPECT_TRUE(set.diagnostics().empty()) << formatAll(set.diagnostics());
+    return std::make_unique<Workspace>(std::move(*loaded));
 }
 
 float floatVariable(const Workspace& ws, const std::string& name) {

@@ -13,13 +13,13 @@ namespace rmfx::test {
 namespace {
 
 TEST(AutoExposureWorkspaceTest, ChainHalvesWithRoundingUpToOnePixelForEverySize) {
-    LoadedWorkspace loaded = loadWorkspace(sourceDir() / "effects" / "auto_exposure.xml");
-    ASSERT_TRUE(loaded.workspace) << formatAll(loaded.diagnostics);
-    EXPECT_TRUE(loaded.diagnostics.empty()) << formatAll(loaded.diagnostics);
+    Result<Workspace> loaded = loadWorkspace(sourceDir() / "effects" / "auto_exposure.xml");
+    ASSERT_TRUE(loaded.ok()) << formatAll(loaded.diagnostics());
+    EXPECT_TRUE(loaded.diagnostics().empty()) << formatAll(loaded.diagnostics());
     std::vector<const RenderTarget*> chain;
     for (int level = 1;; ++level) {
         const RenderTarget* t = nullptr;
-        for (const auto& target : loaded.workspace->targets)
+        for (const auto& target : loaded->targets)
             if (target.name == "average_" + std::to_string(level)) t = &target;
         if (!t) break;
         chain.push_back(t);

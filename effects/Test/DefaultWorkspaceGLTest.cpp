@@ -51,15 +51,15 @@ glm::dvec3 toneMapped(glm::dvec3 radiance, double exposure = 0.8) {
 }
 
 GlRun renderDefault(const std::vector<std::pair<std::string, std::string>>& overrides = {}) {
-    LoadedWorkspace loaded = loadDefaultWorkspace();
-    if (!loaded.workspace) {
-        ADD_FAILURE() << formatAll(loaded.diagnostics);
+    Result<Workspace> loaded = loadDefaultWorkspace();
+    if (!loaded) {
+        ADD_FAILURE() << formatAll(loaded.diagnostics());
         return {};
     }
-    auto ws = std::make_unique<Workspace>(std::move(*loaded.workspace));
-    Diagnostics bad = applyOverrides(*ws, overrides);
-    if (!bad.empty()) {
-        ADD_FAILURE() << formatAll(bad);
+    auto ws = std::make_unique<Workspace>(std::move(*loaded));
+    Result<void> set = applyOverrides(*ws, overrides);
+    if (!set) {
+        ADD_FAILURE() << formatAll(set.diagnostics());
         return {};
     }
     return runWorkspace(std::move(ws), {{kSize, kSize}, 1, 1.0f / 60.0f});

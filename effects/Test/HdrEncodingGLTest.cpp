@@ -24,14 +24,14 @@ namespace {
 constexpr int kWidth = 64, kHeight = 32;
 
 std::unique_ptr<Workspace> roundTripWorkspace(int encoding) {
-    LoadedWorkspace loaded = loadWorkspace(sourceDir() / "effects" / "hdr_encoding_roundtrip.xml");
-    if (!loaded.workspace) {
-        ADD_FAILURE() << formatAll(loaded.diagnostics);
+    Result<Workspace> loaded = loadWorkspace(sourceDir() / "effects" / "hdr_encoding_roundtrip.xml");
+    if (!loaded) {
+        ADD_FAILURE() << formatAll(loaded.diagnostics());
         return nullptr;
     }
-    auto ws = std::make_unique<Workspace>(std::move(*loaded.workspace));
-    if (Diagnostics bad = applyOverrides(*ws, {{"HDR_Encoding", std::to_string(encoding)}}); !bad.empty()) {
-        ADD_FAILURE() << formatAll(bad);
+    auto ws = std::make_unique<Workspace>(std::move(*loaded));
+    if (Result<void> set = applyOverrides(*ws, {{"HDR_Encoding", std::to_string(encoding)}}); !set) {
+        ADD_FAILURE() << formatAll(set.diagnostics());
         return nullptr;
     }
     return ws;
@@ -116,9 +116,9 @@ TEST_F(HdrEncodingSwitchGLTest, SettingTheVariableReallocatesTheTarget) {
 TEST_F(HdrEncodingSwitchGLTest, SetOutOfRangeFailsAtCreationNamingTheTarget) {
     auto ws = roundTripWorkspace(7);
     ASSERT_TRUE(ws);
-    Diagnostics d;
-    auto exec = runHeadless(*ws, {{kWidth, kHeight}, 1, 1.0f / 60.0f}, d);
+    auto exec = runHeadless(*ws, {{kWidth, kHeight}, 1, 1.0f / 60.0f});
     EXPECT_FALSE(exec);
+    const Diagnostics& d = exec.diagnostics();
     ASSERT_FALSE(d.empty());
     EXPECT_EQ(d.front().element, "<target name=\"encoded\">");
     EXPECT_EQ(d.front().message, "variable 'HDR_Encoding' = 7 picks none of the 6 formats of target 'encoded'");

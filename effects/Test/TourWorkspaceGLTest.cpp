@@ -23,11 +23,11 @@ std::unique_ptr<Workspace> loadTour(const ScratchDir& scratch) {
         std::filesystem::copy_file(sourceDir() / "samples" / "tour" / name, scratch / name);
     auto media = samples::writeTourMedia(scratch.path());
     EXPECT_TRUE(media) << (media ? "" : media.error());
-    LoadedWorkspace loaded = loadWorkspace(scratch / "tour.xml");
-    EXPECT_TRUE(loaded.workspace) << formatAll(loaded.diagnostics);
-    if (!loaded.workspace) return nullptr;
-    EXPECT_TRUE(loaded.diagnostics.empty()) << formatAll(loaded.diagnostics);
-    return std::make_unique<Workspace>(std::move(*loaded.workspace));
+    Result<Workspace> loaded = loadWorkspace(scratch / "tour.xml");
+    EXPECT_TRUE(loaded.ok()) << formatAll(loaded.diagnostics());
+    if (!loaded) return nullptr;
+    EXPECT_TRUE(loaded.diagnostics().empty()) << formatAll(loaded.diagnostics());
+    return std::make_unique<Workspace>(std::move(*loaded));
 }
 
 TEST_F(TourWorkspaceGLTest, SkyPassMatchesTheAnalyticSkyOfTheCrossImage) {

@@ -86,20 +86,26 @@ private:
 template <>
 class [[nodiscard]] Result<void> : public detail::ResultDiagnostics {
 public:
-    // Success, with any warnings.
+    // Success, with any warnings; a failure when they hold an error.
     Result(Diagnostics warnings = {}) {
-        if (hasErrors(warnings)) failWith(std::move(warnings));
-        else diagnostics_ = std::move(warnings);
+        if (hasErrors(warnings)) {
+            failWith(std::move(warnings));
+            failed_ = true;
+        } else {
+            diagnostics_ = std::move(warnings);
+        }
     }
     Result(Error error) : ResultDiagnostics(std::move(error)), failed_(true) {}
     static Result failure(Diagnostics diagnostics) {
         Result r;
         r.failWith(std::move(diagnostics));
+        r.failed_ = true;
         return r;
     }
 
+    // Decided once: taking the diagnostics away does not turn a failure into a success.
     explicit operator bool() const { return ok(); }
-    bool ok() const { return !failed_ && !hasErrors(diagnostics_); }
+    bool ok() const { return !failed_; }
 
 private:
     bool failed_ = false;

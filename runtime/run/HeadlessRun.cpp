@@ -8,13 +8,13 @@
 
 namespace rmfx {
 
-std::unique_ptr<GlExecutor> runHeadless(const Workspace& ws, const RunSettings& settings, Diagnostics& diagnostics,
-                                        const ExecutorOptions& options) {
+Result<std::unique_ptr<GlExecutor>> runHeadless(const Workspace& ws, const RunSettings& settings,
+                                                const ExecutorOptions& options) {
+    using Run = Result<std::unique_ptr<GlExecutor>>;
     glm::ivec2 size = settings.size.x > 0 ? settings.size : glm::ivec2(ws.width, ws.height);
     auto created = GlExecutor::create(std::make_shared<const Workspace>(ws), size, options);
-    const Diagnostics& found = created.diagnostics();
-    diagnostics.insert(diagnostics.end(), found.begin(), found.end());
-    if (!created) return nullptr;
+    if (!created) return Run::failure(created.takeDiagnostics());
+    Diagnostics diagnostics = created.takeDiagnostics();
     std::unique_ptr<GlExecutor> executor = std::move(*created);
     std::optional<FrameWatchdog> watchdog;
     if (settings.frameBudgetSeconds > 0) watchdog.emplace(settings.frameBudgetSeconds, settings.onFrameBudget);
@@ -26,9 +26,9 @@ std::unique_ptr<GlExecutor> runHeadless(const Workspace& ws, const RunSettings& 
             watchdog->disarm();
         }
         diagnostics.insert(diagnostics.end(), frame.begin(), frame.end());
-        if (hasErrors(frame)) return nullptr;
+        if (hasErrors(frame)) return Run::failure(std::move(diagnostics));
     }
-    return executor;
+    return Run(std::move(executor), std::move(diagnostics));
 }
 
 }  // namespace rmfx

@@ -9,15 +9,17 @@
 #include <glm/vec2.hpp>
 
 #include "core/Diagnostic.h"
+#include "core/Result.h"
 #include "gl/GlExecutor.h"
 #include "model/RunSettings.h"
 #include "model/Workspace.h"
 
 namespace rmfx {
 
-// Frame i runs at time i·dt with deltaTime dt; with a frame budget each frame is waited for. Returns the executor after the last frame, or
-// nullptr with diagnostics when creation or a frame failed. The executor runs its own copy of `ws`.
-std::unique_ptr<GlExecutor> runHeadless(const Workspace& ws, const RunSettings& settings, Diagnostics& diagnostics,
-                                        const ExecutorOptions& options = {});
+// Frame i runs at time i·dt with deltaTime dt; with a frame budget each frame is waited for. Returns the
+// executor after the last frame (with the warnings of creation and every frame), or the diagnostics
+// of the creation or frame that failed. The executor runs its own copy of `ws`.
+Result<std::unique_ptr<GlExecutor>> runHeadless(const Workspace& ws, const RunSettings& settings,
+                                                const ExecutorOptions& options = {});
 
 }  // namespace rmfx

@@ -30,49 +30,47 @@ LiveWorkspace::~LiveWorkspace() {
     executor_.reset();  // refers to workspace_
 }
 
-std::unique_ptr<LiveWorkspace> LiveWorkspace::open(const std::filesystem::path& file, glm::ivec2 viewport,
-                                                   const std::vector<std::pair<std::string, std::string>>& overrides,
-                                                   Diagnostics& diagnostics, const MediaOptions& media,
-                                                   const WorkspaceLoadOptions& load) {
+Result<std::unique_ptr<LiveWorkspace>> LiveWorkspace::open(const std::filesystem::path& file, glm::ivec2 viewport,
+                                                           const std::vector<std::pair<std::string, std::string>>& overrides,
+                                                           const MediaOptions& media, const WorkspaceLoadOptions& load) {
     std::unique_ptr<LiveWorkspace> live(new LiveWorkspace);
     live->loadOptions_ = load;
     live->file_ = file;
     live->media_ = media;
     live->requestedViewport_ = viewport;
     live->overrides_ = overrides;
-    Diagnostics found;
-    auto build = live->load(found);
-    append(diagnostics, found);
-    if (!build) return nullptr;
+    Result<Build> build = live->load();
+    Diagnostics found = build.diagnostics();
+    if (!build) return Result<std::unique_ptr<LiveWorkspace>>::failure(std::move(found));
     live->adopt(std::move(*build), withSeverity(found, Diagnostic::Severity::Warning));
-    return live;
+    return {std::move(live), std::move(found)};
 }
 
 glm::ivec2 LiveWorkspace::viewportFor(const Workspace& ws) const {
     return requestedViewport_ == glm::ivec2(0) ? glm::ivec2(ws.width, ws.height) : requestedViewport_;
 }
 
-std::optional<LiveWorkspace::Build> LiveWorkspace::load(Diagnostics& diagnostics, const std::set<std::string>& staleTextures) {
+Result<LiveWorkspace::Build> LiveWorkspace::load(const std::set<std::string>& staleTextures) {
     failedDependencies_ = {};
     // Reloads leave the shaders to the GL compiler, whose messages are mapped to file and line
     // just as glslang's are: that halves the time a reload of the workspace file takes.
     ValidationOptions validation;
     validation.compileShaders = !executor_;
     validation.media = media_;
-    LoadedWorkspace loaded = loadWorkspace(file_, validation, loadOptions_);
-    append(diagnostics, loaded.diagnostics);
-    if (!loaded.workspace) {
+    Result<Workspace> loaded = loadWorkspace(file_, validation, loadOptions_);
+    Diagnostics diagnostics = loaded.diagnostics();
+    if (!loaded) {
         // Watch what the broken file names too (a texture it names that is not there yet, say).
         Result<Workspace> parsed = isRfxPath(file_) ? importRfxFile(file_, {loadOptions_.effect}) : parseWorkspaceFile(file_);
         if (parsed) failedDependencies_ = findWorkspaceDependencies(*parsed);
-        return std::nullopt;
+        return Result<Build>::failure(std::move(diagnostics));
     }
     Build build;
-    build.workspace = std::make_shared<Workspace>(std::move(*loaded.workspace));
+    build.workspace = std::make_shared<Workspace>(std::move(*loaded));
     // Overrides from the command line: errors the first time; after that a variable the edited
     // file no longer declares only loses its override (the file stays loadable).
     for (const auto& override : overrides_) {
-        Diagnostics bad = applyOverrides(*build.workspace, {override});
+        Diagnostics bad = applyOverrides(*build.workspace, {override}).diagnostics();
         if (!executor_)
             append(diagnostics, bad);
         else
@@ -85,7 +83,7 @@ std::optional<LiveWorkspace::Build> LiveWorkspace::load(Diagnostics& diagnostics
     build.dependencies = findWorkspaceDependencies(*build.workspace);
     if (hasErrors(diagnostics)) {
         failedDependencies_ = std::move(build.dependencies);
-        return std::nullopt;
+        return Result<Build>::failure(std::move(diagnostics));
     }
     // Watched before the build reads them: a save during the build is then seen, not lost.
     failedDependencies_ = build.dependencies;
@@ -98,15 +96,15 @@ std::optional<LiveWorkspace::Build> LiveWorkspace::load(Diagnostics& diagnostics
             if (!pendingTextures_.count(t.name) && !staleTextures.count(t.name)) reusable.push_back(t.name);
         auto created = GlExecutor::createReusing(build.workspace, viewport, *executor_, reusable);
         append(diagnostics, created.diagnostics());
-        if (!created) return std::nullopt;
+        if (!created) return Result<Build>::failure(std::move(diagnostics));
         build.executor = std::move(*created);
     } else {
         auto created = GlExecutor::create(build.workspace, viewport);
         append(diagnostics, created.diagnostics());
-        if (!created) return std::nullopt;
+        if (!created) return Result<Build>::failure(std::move(diagnostics));
         build.executor = std::move(*created);
     }
-    return build;
+    return {std::move(build), std::move(diagnostics)};
 }
 
 void LiveWorkspace::adopt(Build build, Diagnostics warnings) {
@@ -149,8 +147,8 @@ void LiveWorkspace::adopt(Build build, Diagnostics warnings) {
 }
 
 bool LiveWorkspace::rebuildWorkspace(const std::set<std::string>& staleTextures) {
-    Diagnostics found;
-    auto build = load(found, staleTextures);
+    Result<Build> build = load(staleTextures);
+    const Diagnostics& found = build.diagnostics();
     if (!build) {
         workspacePending_ = true;
         failures_["workspace"] = withSeverity(found, Diagnostic::Severity::Error);
@@ -290,7 +288,7 @@ double LiveWorkspace::lastReloadMilliseconds() const { return lastReloadMillisec
 std::vector<std::filesystem::path> LiveWorkspace::watchedFiles() const { return watcher_.files(); }
 
 Result<void> LiveWorkspace::setVariable(const std::string& name, const Value& value) {
-    auto set = executor_->setVariable(name, value);
+    Result<void> set = executor_->setVariable(name, value);
     if (set) tweaks_[name] = value;
     return set;
 }
@@ -300,7 +298,7 @@ void LiveWorkspace::resetVariable(const std::string& name) {
     if (const Variable* v = workspace_->findVariable(name)) (void)executor_->setVariable(name, v->value);
 }
 
-Diagnostics LiveWorkspace::setViewport(glm::ivec2 viewport) {
+Result<void> LiveWorkspace::setViewport(glm::ivec2 viewport) {
     Diagnostics found;
     glm::ivec2 previous = requestedViewport_;
     requestedViewport_ = viewport;

@@ -22,6 +22,7 @@
 #include <glm/vec2.hpp>
 
 #include "core/Diagnostic.h"
+#include "core/Result.h"
 #include "core/Value.h"
 #include "frontend/workspace/WorkspaceDependencies.h"
 #include "gl/GlExecutor.h"
@@ -46,11 +47,12 @@ class LiveWorkspace {
 public:
     // Loads (runtime/WorkspaceLoader: loadWorkspace + applyOverrides), validates and builds the
     // workspace for `viewport` (0,0 = the workspace's size), watching every file it depends on.
-    // Returns nullptr with diagnostics when the FIRST build fails (nothing good to keep yet).
-    static std::unique_ptr<LiveWorkspace> open(const std::filesystem::path& file, glm::ivec2 viewport,
-                                               const std::vector<std::pair<std::string, std::string>>& overrides,
-                                               Diagnostics& diagnostics, const MediaOptions& media = {},
-                                               const WorkspaceLoadOptions& load = {});
+    // Fails with the diagnostics when the FIRST build fails (nothing good to keep yet); a success
+    // carries the first build's warnings.
+    static Result<std::unique_ptr<LiveWorkspace>> open(const std::filesystem::path& file, glm::ivec2 viewport,
+                                                       const std::vector<std::pair<std::string, std::string>>& overrides,
+                                                       const MediaOptions& media = {},
+                                                       const WorkspaceLoadOptions& load = {});
     ~LiveWorkspace();
     LiveWorkspace(const LiveWorkspace&) = delete;
     LiveWorkspace& operator=(const LiveWorkspace&) = delete;
@@ -75,7 +77,7 @@ public:
     const std::map<std::string, Value>& tweakedValues() const { return tweaks_; }
     // Builds the workspace anew for another viewport size (0,0 = the workspace's size), keeping
     // tweaks and camera; on failure the old build stays and the diagnostics say why.
-    Diagnostics setViewport(glm::ivec2 viewport);
+    Result<void> setViewport(glm::ivec2 viewport);
     // The watcher's own problems (inotify limits), one sentence each; watching goes on by time stamp.
     const std::vector<std::string>& watcherErrors() const { return watcher_.errors(); }
 
@@ -90,7 +92,7 @@ private:
     // Loads, validates and builds the workspace file; on failure fills failedDependencies_ with
     // what the broken file names, so that those files are watched too.
     // Textures named in staleTextures changed on disk: not copied from the running build.
-    std::optional<Build> load(Diagnostics& diagnostics, const std::set<std::string>& staleTextures = {});
+    Result<Build> load(const std::set<std::string>& staleTextures = {});
     bool rebuildWorkspace(const std::set<std::string>& staleTextures);
     void adopt(Build build, Diagnostics warnings);
     void recompilePendingPasses();

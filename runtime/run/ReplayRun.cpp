@@ -15,7 +15,7 @@ void add(Diagnostics& to, const Diagnostics& from) { to.insert(to.end(), from.be
 // <set> values go through applyOverrides one at a time, so that each problem points at its <set>.
 void applySets(const ReplayCase& c, Workspace& ws, Diagnostics& diagnostics) {
     for (const ReplaySet& set : c.sets)
-        for (const Diagnostic& d : applyOverrides(ws, {{set.name, set.value}}))
+        for (const Diagnostic& d : applyOverrides(ws, {{set.name, set.value}}).diagnostics())
             diagnostics.push_back(
                 {d.severity, set.where, "<set name=\"" + set.name + "\">", "case '" + c.name + "': " + d.message});
 }
@@ -31,21 +31,21 @@ void checkTargets(const ReplayCase& c, const Workspace& ws, Diagnostics& diagnos
 
 }  // namespace
 
-CaseRender renderReplayCase(const ReplayCase& c, const MediaOptions& media, HeadlessContexts* contexts) {
-    CaseRender out;
+Result<std::vector<Image>> renderReplayCase(const ReplayCase& c, const MediaOptions& media, HeadlessContexts* contexts) {
+    using Rendered = Result<std::vector<Image>>;
     ValidationOptions load;
     load.media = media;
-    LoadedWorkspace loaded = loadWorkspace(c.workspace, load);
-    out.diagnostics = std::move(loaded.diagnostics);
-    if (!loaded.workspace) return out;
-    Workspace& ws = *loaded.workspace;
-    applySets(c, ws, out.diagnostics);
-    checkTargets(c, ws, out.diagnostics);
-    if (!out.ok()) return out;
+    Result<Workspace> loaded = loadWorkspace(c.workspace, load);
+    Diagnostics diagnostics = loaded.takeDiagnostics();
+    if (!loaded) return Rendered::failure(std::move(diagnostics));
+    Workspace& ws = *loaded;
+    applySets(c, ws, diagnostics);
+    checkTargets(c, ws, diagnostics);
+    if (hasErrors(diagnostics)) return Rendered::failure(std::move(diagnostics));
     if (contexts)
         if (auto context = contexts->use(ws.profile); !context) {
-            out.diagnostics.push_back({Diagnostic::Severity::Error, c.where, "<case name=\"" + c.name + "\">", context.error()});
-            return out;
+            diagnostics.push_back({Diagnostic::Severity::Error, c.where, "<case name=\"" + c.name + "\">", context.error()});
+            return Rendered::failure(std::move(diagnostics));
         }
 
     // Only what the compares read is computed, as rmfx render would for each target.
@@ -53,23 +53,22 @@ CaseRender renderReplayCase(const ReplayCase& c, const MediaOptions& media, Head
     options.effects = c.effects;
     for (const ReplayCompare& compare : c.compares)
         options.outputs.push_back(compare.target.empty() ? ws.outputTargetName() : compare.target);
-    Diagnostics rendering;
-    auto executor = runHeadless(ws, c.run, rendering, options);
-    add(out.diagnostics, rendering);
-    if (!executor) return out;
+    auto run = runHeadless(ws, c.run, options);
+    add(diagnostics, run.diagnostics());
+    if (!run) return Rendered::failure(std::move(diagnostics));
+    GlExecutor& executor = **run;
     std::vector<Image> images;
     for (const ReplayCompare& compare : c.compares) {
         std::string target = compare.target.empty() ? ws.outputTargetName() : compare.target;
-        auto image = executor->readTarget(target);
+        auto image = executor.readTarget(target);
         if (!image) {
-            out.diagnostics.push_back({Diagnostic::Severity::Error, compare.where, "<compare>",
-                                       "case '" + c.name + "': " + image.error()});
-            return out;
+            diagnostics.push_back({Diagnostic::Severity::Error, compare.where, "<compare>",
+                                   "case '" + c.name + "': " + image.error()});
+            return Rendered::failure(std::move(diagnostics));
         }
         images.push_back(std::move(*image));
     }
-    out.images = std::move(images);
-    return out;
+    return Rendered(std::move(images), std::move(diagnostics));
 }
 
 ImageComparison compareWithReference(const Image& actual, const ReplayCompare& compare) {
@@ -84,7 +83,7 @@ ImageComparison compareWithReference(const Image& actual, const ReplayCompare& c
     return compareImages(actual, *reference, compare.limits);
 }
 
-Result<bool> storeReference(const Image& actual, const ReplayCompare& compare) {
+Result<void> storeReference(const Image& actual, const ReplayCompare& compare) {
     std::error_code ec;
     if (compare.reference.has_parent_path()) std::filesystem::create_directories(compare.reference.parent_path(), ec);
     if (ec) return Error{compare.reference.string() + ": cannot create the folder: " + ec.message()};

@@ -37,10 +37,11 @@ std::pair<int, EProfile> defaultVersion(ShaderDialect dialect) {
 
 }  // namespace
 
-std::optional<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSource& program,
-                                                           const std::string& element, Diagnostics& diagnostics,
-                                                           std::vector<std::string>* vertexInputs) {
+Result<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSource& program, const std::string& element,
+                                                    std::vector<std::string>* vertexInputs) {
+    using Checked = Result<std::vector<ActiveUniform>>;
     initializeGlslangOnce();
+    Diagnostics diagnostics;
     auto messages = static_cast<EShMessages>(EShMsgDefault);
     std::vector<std::unique_ptr<glslang::TShader>> shaders;
     glslang::TProgram linked;
@@ -64,7 +65,7 @@ std::optional<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSour
         linked.addShader(shader.get());
         shaders.push_back(std::move(shader));
     }
-    if (!ok) return std::nullopt;
+    if (!ok) return Checked::failure(std::move(diagnostics));
     if (!linked.link(messages)) {
         std::string log = linked.getInfoLog();
         SourceLocation where = program.stages.back().where;
@@ -73,7 +74,7 @@ std::optional<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSour
             d.message = "link: " + d.message;
             diagnostics.push_back(std::move(d));
         }
-        return std::nullopt;
+        return Checked::failure(std::move(diagnostics));
     }
     linked.buildReflection(EShReflectionDefault);
     if (vertexInputs)

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/Diagnostic.h"
+#include "core/Result.h"
 #include "frontend/shader/PassProgram.h"
 #include "model/UniformType.h"
 
@@ -20,11 +21,10 @@ struct ActiveUniform {
     int glType = 0;
 };
 
-// Returns the active uniforms, or nullopt (with diagnostics) when a stage fails to compile or link.
+// Returns the active uniforms, or the diagnostics of the stage that fails to compile or of the link.
 // With `vertexInputs`, also the names of the active vertex shader inputs (attributes).
-std::optional<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSource& program,
-                                                           const std::string& element, Diagnostics& diagnostics,
-                                                           std::vector<std::string>* vertexInputs = nullptr);
+Result<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSource& program, const std::string& element,
+                                                    std::vector<std::string>* vertexInputs = nullptr);
 
 // Where a uniform is declared, found by scanning the stage texts: the first `uniform TYPE NAME`.
 std::optional<SourceLocation> findUniformDeclaration(const PassProgramSource& program, const std::string& name);

@@ -214,7 +214,8 @@ private:
         auto program = assemblePassProgram(ws_, pass, prelude.defines, out_, prelude.declarations);
         if (!program || !options_.compileShaders) return;
         std::vector<std::string> inputs;
-        auto uniforms = checkPassProgram(*program, label, out_, &inputs);
+        auto uniforms = checkPassProgram(*program, label, &inputs);
+        out_.insert(out_.end(), uniforms.diagnostics().begin(), uniforms.diagnostics().end());
         if (!uniforms) return;
         // Built-in streams are checked by the GL executor, which sees the driver's list of inputs.
         for (const VertexStream& stream : pass.streams)

@@ -7,40 +7,38 @@
 
 namespace rmfx {
 
-static LoadedWorkspace validated(Result<Workspace> parsed, const ValidationOptions& options, bool imported = false) {
-    LoadedWorkspace out;
-    out.diagnostics = parsed.takeDiagnostics();
-    if (!parsed) return out;
+static Result<Workspace> validated(Result<Workspace> parsed, const ValidationOptions& options, bool imported = false) {
+    Diagnostics diagnostics = parsed.takeDiagnostics();
+    if (!parsed) return Result<Workspace>::failure(std::move(diagnostics));
     // References are resolved once, here: what validation, the executor and hot reload open.
     // Until they all resolve nothing reads them (a shader outside the sandbox is not even compiled).
-    Diagnostics unresolved = resolveWorkspaceMedia(*parsed, options.media);
-    out.diagnostics.insert(out.diagnostics.end(), unresolved.begin(), unresolved.end());
-    if (hasErrors(unresolved)) return out;
+    Result<void> resolved = resolveWorkspaceMedia(*parsed, options.media);
+    diagnostics.insert(diagnostics.end(), resolved.diagnostics().begin(), resolved.diagnostics().end());
+    if (!resolved) return Result<Workspace>::failure(std::move(diagnostics));
     if (imported) frameDrawnModels(*parsed);
     Diagnostics found = validateWorkspace(*parsed, options);
-    out.diagnostics.insert(out.diagnostics.end(), found.begin(), found.end());
-    if (!hasErrors(out.diagnostics)) out.workspace = std::move(*parsed);
-    return out;
+    diagnostics.insert(diagnostics.end(), found.begin(), found.end());
+    if (hasErrors(diagnostics)) return Result<Workspace>::failure(std::move(diagnostics));
+    return {std::move(*parsed), std::move(diagnostics)};
 }
 
-LoadedWorkspace loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options,
-                              const WorkspaceLoadOptions& load) {
+Result<Workspace> loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options,
+                                const WorkspaceLoadOptions& load) {
     if (isRfxPath(path)) return validated(importRfxFile(path, {load.effect}), options, true);
     if (!load.effect.empty()) {
-        LoadedWorkspace out;
-        out.diagnostics.push_back({Diagnostic::Severity::Error, {path.string(), 0}, "--effect " + load.effect,
-                                   "--effect chooses an effect of a RenderMonkey .rfx file; this is an rmfx workspace "
-                                   "(use --effects to choose its <effect> groups)"});
-        return out;
+        return Result<Workspace>::failure(
+            {{Diagnostic::Severity::Error, {path.string(), 0}, "--effect " + load.effect,
+              "--effect chooses an effect of a RenderMonkey .rfx file; this is an rmfx workspace "
+              "(use --effects to choose its <effect> groups)"}});
     }
     return validated(parseWorkspaceFile(path), options);
 }
 
-LoadedWorkspace loadDefaultWorkspace(const ValidationOptions& options) {
+Result<Workspace> loadDefaultWorkspace(const ValidationOptions& options) {
     return validated(parseWorkspaceText(defaultWorkspaceText(), defaultWorkspaceName, "."), options);
 }
 
-Diagnostics applyOverrides(Workspace& ws, const std::vector<std::pair<std::string, std::string>>& overrides) {
+Result<void> applyOverrides(Workspace& ws, const std::vector<std::pair<std::string, std::string>>& overrides) {
     Diagnostics out;
     for (const auto& [name, text] : overrides) {
         Variable* v = ws.findVariable(name);

@@ -6,15 +6,11 @@
 #include <string>
 
 #include "core/Diagnostic.h"
+#include "core/Result.h"
 #include "model/Workspace.h"
 #include "validation/Validation.h"
 
 namespace rmfx {
-
-struct LoadedWorkspace {
-    std::optional<Workspace> workspace;  // present when parsing and validation found no error
-    Diagnostics diagnostics;             // errors and warnings, in file order per stage
-};
 
 // How a file becomes a workspace, beyond validation.
 struct WorkspaceLoadOptions {
@@ -24,13 +20,15 @@ struct WorkspaceLoadOptions {
 };
 
 // Dispatches on the extension: .rfx (any case) to the RenderMonkey importer, else the XML format.
-LoadedWorkspace loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options = {},
-                              const WorkspaceLoadOptions& load = {});
+// The workspace when parsing and validation found no error; the diagnostics (errors and
+// warnings) are in file order per stage.
+Result<Workspace> loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options = {},
+                                const WorkspaceLoadOptions& load = {});
 // The built-in default workspace; its relative paths resolve in the current folder.
-LoadedWorkspace loadDefaultWorkspace(const ValidationOptions& options = {});
+Result<Workspace> loadDefaultWorkspace(const ValidationOptions& options = {});
 
 // Applies NAME=VALUE overrides to the workspace's variable defaults, checking names and types.
-// Each problem is a diagnostic naming the variable.
-Diagnostics applyOverrides(Workspace& ws, const std::vector<std::pair<std::string, std::string>>& overrides);
+// Each problem is an error naming the variable.
+Result<void> applyOverrides(Workspace& ws, const std::vector<std::pair<std::string, std::string>>& overrides);
 
 }  // namespace rmfx

@@ -58,7 +58,7 @@ std::unique_ptr<Workspace> workspaceFromText(const std::string& xml, const std::
     Result<Workspace> parsed = parseWorkspaceText(xml, folder / "test-workspace.xml", folder);
     Diagnostics diagnostics = parsed.diagnostics();
     if (parsed) {
-        Diagnostics found = resolveWorkspaceMedia(*parsed, {});
+        Diagnostics found = resolveWorkspaceMedia(*parsed, {}).diagnostics();
         if (!hasErrors(found)) found = validateWorkspace(*parsed);
         diagnostics.insert(diagnostics.end(), found.begin(), found.end());
     }
@@ -70,14 +70,14 @@ std::unique_ptr<Workspace> workspaceFromText(const std::string& xml, const std::
 }
 
 std::unique_ptr<Workspace> effectWorkspace(const std::string& file, const Overrides& overrides) {
-    LoadedWorkspace loaded = loadWorkspace(sourceDir() / "effects" / file);
-    if (!loaded.workspace) {
-        ADD_FAILURE() << file << " does not load:\n" << formatAll(loaded.diagnostics);
+    Result<Workspace> loaded = loadWorkspace(sourceDir() / "effects" / file);
+    if (!loaded) {
+        ADD_FAILURE() << file << " does not load:\n" << formatAll(loaded.diagnostics());
         return nullptr;
     }
-    auto ws = std::make_unique<Workspace>(std::move(*loaded.workspace));
-    if (Diagnostics bad = applyOverrides(*ws, overrides); !bad.empty()) {
-        ADD_FAILURE() << formatAll(bad);
+    auto ws = std::make_unique<Workspace>(std::move(*loaded));
+    if (Result<void> set = applyOverrides(*ws, overrides); !set) {
+        ADD_FAILURE() << formatAll(set.diagnostics());
         return nullptr;
     }
     return ws;
@@ -96,8 +96,8 @@ std::unique_ptr<Workspace> stageWorkspace(const std::string& file, const std::fi
     xml.replace(at, media.size(), "file=\"" + input.string() + "\"");
     auto ws = workspaceFromText(xml, folder);
     if (!ws) return nullptr;
-    if (Diagnostics bad = applyOverrides(*ws, overrides); !bad.empty()) {
-        ADD_FAILURE() << formatAll(bad);
+    if (Result<void> set = applyOverrides(*ws, overrides); !set) {
+        ADD_FAILURE() << formatAll(set.diagnostics());
         return nullptr;
     }
     return ws;
@@ -172,7 +172,9 @@ GlRun runWorkspace(std::unique_ptr<Workspace> ws, const RunSettings& settings, c
     GlRun run;
     run.ws = std::move(ws);
     if (!run.ws) return run;
-    run.exec = runHeadless(*run.ws, settings, run.diagnostics, options);
+    auto ran = runHeadless(*run.ws, settings, options);
+    run.diagnostics = ran.diagnostics();
+    if (ran) run.exec = std::move(*ran);
     if (!run.exec || hasErrors(run.diagnostics))
         ADD_FAILURE() << "runHeadless failed:\n" << formatAll(run.diagnostics);
     return run;

@@ -47,9 +47,9 @@ std::vector<ActiveUniform> linkPair(const std::string& vertex, const std::string
     PassProgramSource program;
     program.stages.push_back({ShaderStage::Vertex, *vs, {"effect.rfx", 7}, false});
     program.stages.push_back({ShaderStage::Fragment, *ps, {"effect.rfx", 7}, false});
-    auto uniforms = checkPassProgram(program, "<RmGLPass>", d);
+    auto uniforms = checkPassProgram(program, "<RmGLPass>");
     if (!uniforms) {
-        ADD_FAILURE() << formatAll(d) << "\n" << vs->code << "\n" << ps->code;
+        ADD_FAILURE() << formatAll(d) << formatAll(uniforms.diagnostics()) << "\n" << vs->code << "\n" << ps->code;
         return {};
     }
     return *uniforms;

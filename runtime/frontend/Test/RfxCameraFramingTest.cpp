@@ -37,9 +37,9 @@ std::string effectDrawing(const std::string& model, const std::string& camera = 
 }
 
 Workspace load(const test::ScratchDir& dir, const std::string& text) {
-    LoadedWorkspace loaded = loadWorkspace(dir.write("effect.rfx", text));
-    EXPECT_TRUE(loaded.workspace) << formatAll(loaded.diagnostics);
-    return loaded.workspace ? *loaded.workspace : Workspace{};
+    Result<Workspace> loaded = loadWorkspace(dir.write("effect.rfx", text));
+    EXPECT_TRUE(loaded.ok()) << formatAll(loaded.diagnostics());
+    return loaded.ok() ? *loaded : Workspace{};
 }
 
 TEST(RfxCameraFraming, WithoutAnRmCameraTheDrawnModelFillsTheView) {

@@ -395,11 +395,11 @@ TEST(RfxImporter, ModelOrientationOtherThanZeroWarns) {
 // RenderMonkey's stream maps are shared by every pass that names one: a channel a pass's shaders
 // do not read is normal there (a screen-aligned quad's pass ignores the normals), not a warning.
 TEST(RfxImporter, SharedStreamChannelsAPassDoesNotReadAreNotWarnedAbout) {
-    LoadedWorkspace loaded = loadWorkspace(rfxDir() / "d3d_hlsl.rfx");  // BINORMAL2: no shader reads it
-    ASSERT_TRUE(loaded.workspace) << formatAll(loaded.diagnostics);
-    for (const Pass& pass : loaded.workspace->passes)
+    Result<Workspace> loaded = loadWorkspace(rfxDir() / "d3d_hlsl.rfx");  // BINORMAL2: no shader reads it
+    ASSERT_TRUE(loaded.ok()) << formatAll(loaded.diagnostics());
+    for (const Pass& pass : loaded->passes)
         for (const VertexStream& stream : pass.streams) EXPECT_TRUE(stream.shared);
-    EXPECT_EQ(formatAll(loaded.diagnostics).find("do not read"), std::string::npos) << formatAll(loaded.diagnostics);
+    EXPECT_EQ(formatAll(loaded.diagnostics()).find("do not read"), std::string::npos) << formatAll(loaded.diagnostics());
 }
 
 TEST(RfxImporter, EffectChosenByDottedPathOrName) {
@@ -611,13 +611,13 @@ TEST(RfxImporter, LoaderDispatchesOnTheExtensionInAnyCase) {
     std::filesystem::copy_file(rfxDir() / "quad.obj", dir / "quad.obj", std::filesystem::copy_options::overwrite_existing);
     ValidationOptions structureOnly;
     structureOnly.compileShaders = false;
-    LoadedWorkspace loaded = loadWorkspace(dir / "Upper.RFX", structureOnly);
-    EXPECT_TRUE(loaded.workspace.has_value()) << formatAll(loaded.diagnostics);
-    LoadedWorkspace wrong = loadWorkspace(dir / "Upper.RFX", structureOnly, {"Nope"});
-    EXPECT_FALSE(wrong.workspace.has_value());
-    LoadedWorkspace xml = loadWorkspace(test::sourceDir() / "effects" / "shader_1.xml", structureOnly, {"Some.Effect"});
-    EXPECT_FALSE(xml.workspace.has_value());
-    EXPECT_NE(formatAll(xml.diagnostics).find("--effect chooses an effect of a RenderMonkey .rfx file"), std::string::npos);
+    Result<Workspace> loaded = loadWorkspace(dir / "Upper.RFX", structureOnly);
+    EXPECT_TRUE(loaded.ok()) << formatAll(loaded.diagnostics());
+    Result<Workspace> wrong = loadWorkspace(dir / "Upper.RFX", structureOnly, {"Nope"});
+    EXPECT_FALSE(wrong.ok());
+    Result<Workspace> xml = loadWorkspace(test::sourceDir() / "effects" / "shader_1.xml", structureOnly, {"Some.Effect"});
+    EXPECT_FALSE(xml.ok());
+    EXPECT_NE(formatAll(xml.diagnostics()).find("--effect chooses an effect of a RenderMonkey .rfx file"), std::string::npos);
 }
 
 TEST(RfxImporter, EditorSavesIntoAnRfxAreRefused) {
@@ -627,13 +627,14 @@ TEST(RfxImporter, EditorSavesIntoAnRfxAreRefused) {
 }
 
 TEST(RfxImporter, ListNamesEveryEffectWithItsApiAndActiveFlag) {
-    RfxEffectList list = listRfxEffects(rfxDir() / "gl_legacy.rfx");
-    ASSERT_EQ(list.effects.size(), 2u);
-    EXPECT_EQ(list.effects[0].path, "Tests.Group.Legacy");
-    EXPECT_EQ(list.effects[0].api, "OpenGL");
-    EXPECT_TRUE(list.effects[0].active);
-    EXPECT_EQ(list.effects[1].path, "Tests.Group.Other");
-    EXPECT_FALSE(list.effects[1].active);
+    Result<std::vector<RfxEffectSummary>> list = listRfxEffects(rfxDir() / "gl_legacy.rfx");
+    ASSERT_TRUE(list.ok()) << formatAll(list.diagnostics());
+    ASSERT_EQ(list->size(), 2u);
+    EXPECT_EQ((*list)[0].path, "Tests.Group.Legacy");
+    EXPECT_EQ((*list)[0].api, "OpenGL");
+    EXPECT_TRUE((*list)[0].active);
+    EXPECT_EQ((*list)[1].path, "Tests.Group.Other");
+    EXPECT_FALSE((*list)[1].active);
 }
 
 }  // namespace

@@ -46,13 +46,13 @@ const glm::dvec3 kMaterialDiffuse(0.8);
 std::unique_ptr<Workspace> loadRfxWithMedia(const std::filesystem::path& file, const std::filesystem::path& media) {
     ValidationOptions options;
     options.media.searchPath = {media};
-    LoadedWorkspace loaded = loadWorkspace(file, options);
-    if (!loaded.workspace) {
-        ADD_FAILURE() << formatAll(loaded.diagnostics);
+    Result<Workspace> loaded = loadWorkspace(file, options);
+    if (!loaded.ok()) {
+        ADD_FAILURE() << formatAll(loaded.diagnostics());
         return nullptr;
     }
-    EXPECT_EQ(loaded.workspace->profile, GlProfile::Compatibility) << file;
-    return std::make_unique<Workspace>(std::move(*loaded.workspace));
+    EXPECT_EQ(loaded->profile, GlProfile::Compatibility) << file;
+    return std::make_unique<Workspace>(std::move(*loaded));
 }
 
 // An 8-bit image file whose texel (i, j) (j from the bottom) is texel(i, j) / 255; returned as the

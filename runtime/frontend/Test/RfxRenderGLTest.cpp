@@ -19,13 +19,13 @@ namespace {
 constexpr int kSize = 16;
 
 std::unique_ptr<Workspace> loadRfx(const std::string& name, GlProfile expectedProfile) {
-    LoadedWorkspace loaded = loadWorkspace(sourceDir() / "tests" / "rfx" / name);
-    if (!loaded.workspace) {
-        ADD_FAILURE() << formatAll(loaded.diagnostics);
+    Result<Workspace> loaded = loadWorkspace(sourceDir() / "tests" / "rfx" / name);
+    if (!loaded.ok()) {
+        ADD_FAILURE() << formatAll(loaded.diagnostics());
         return nullptr;
     }
-    EXPECT_EQ(loaded.workspace->profile, expectedProfile) << name;
-    return std::make_unique<Workspace>(std::move(*loaded.workspace));
+    EXPECT_EQ(loaded->profile, expectedProfile) << name;
+    return std::make_unique<Workspace>(std::move(*loaded));
 }
 
 constexpr double kOutputRounding = 0.5 / 255.0;

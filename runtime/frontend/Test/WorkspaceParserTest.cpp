@@ -405,8 +405,8 @@ TEST(WorkspaceParser, NoPassIsAnErrorOnTheWorkspaceElement) {
                                                   "<workspace version=\"1\">", "</workspace>"}));
         return std::pair{path.string(), loadWorkspace(path)};
     }();
-    EXPECT_FALSE(loaded.second.workspace);
-    EXPECT_EQ(formatted(loaded.second.diagnostics),
+    EXPECT_FALSE(loaded.second.ok());
+    EXPECT_EQ(formatted(loaded.second.diagnostics()),
               (Lines{loaded.first + ":3: error: <workspace>: no <pass>: nothing to render"}));
 }
 

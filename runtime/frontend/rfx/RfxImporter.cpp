@@ -185,17 +185,20 @@ Result<Workspace> importRfxFile(const std::filesystem::path& path, const RfxImpo
     return xml::parseXmlFile(path, [&](const std::string& text) { return importRfxText(text, path, xml::folderOf(path), options); });
 }
 
-RfxEffectList listRfxEffects(const std::filesystem::path& path) {
-    RfxEffectList out;
-    auto text = xml::readTextFile(path, out.diagnostics);
-    if (!text) return out;
+Result<std::vector<RfxEffectSummary>> listRfxEffects(const std::filesystem::path& path) {
+    using Listed = Result<std::vector<RfxEffectSummary>>;
+    Diagnostics diagnostics;
+    auto text = xml::readTextFile(path, diagnostics);
+    if (!text) return Listed::failure(std::move(diagnostics));
     tinyxml2::XMLDocument doc;
-    const XMLElement* root = xml::parseDocument(doc, blankDoctype(*text), path.string(), "RENDER_MONKEY", out.diagnostics);
-    if (!root) return out;
-    RfxCatalogue catalogue = readCatalogue(root, path.string(), out.diagnostics);
+    const XMLElement* root = xml::parseDocument(doc, blankDoctype(*text), path.string(), "RENDER_MONKEY", diagnostics);
+    if (!root) return Listed::failure(std::move(diagnostics));
+    RfxCatalogue catalogue = readCatalogue(root, path.string(), diagnostics);
+    if (hasErrors(diagnostics)) return Listed::failure(std::move(diagnostics));
+    std::vector<RfxEffectSummary> effects;
     for (const RfxEffectEntry& e : catalogue.effects)
-        out.effects.push_back({e.path, rfxApiName(e.api), e.active, e.element->GetLineNum()});
-    return out;
+        effects.push_back({e.path, rfxApiName(e.api), e.active, e.element->GetLineNum()});
+    return Listed(std::move(effects), std::move(diagnostics));
 }
 
 }  // namespace rmfx

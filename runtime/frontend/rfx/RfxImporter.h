@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/Diagnostic.h"
+#include "core/Result.h"
 #include "frontend/workspace/WorkspaceParser.h"
 
 namespace rmfx {
@@ -30,12 +31,7 @@ struct RfxEffectSummary {
     int line = 0;
 };
 
-struct RfxEffectList {
-    std::vector<RfxEffectSummary> effects;
-    Diagnostics diagnostics;
-};
-
-RfxEffectList listRfxEffects(const std::filesystem::path& path);
+Result<std::vector<RfxEffectSummary>> listRfxEffects(const std::filesystem::path& path);
 
 // Whether the path names a RenderMonkey file: extension .rfx in any case.
 bool isRfxPath(const std::filesystem::path& path);

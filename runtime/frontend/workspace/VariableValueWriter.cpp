@@ -172,7 +172,7 @@ Result<std::string> rewriteVariableValues(std::string_view text, const std::stri
     return out;
 }
 
-Result<bool> saveVariableValues(const std::filesystem::path& workspaceFile, const std::map<std::string, Value>& values) {
+Result<void> saveVariableValues(const std::filesystem::path& workspaceFile, const std::map<std::string, Value>& values) {
     if (isRfxPath(workspaceFile))
         return Error{workspaceFile.string() +
                      ": error: saving tweaked values into a RenderMonkey .rfx file is not supported (rmfx never "
@@ -182,7 +182,7 @@ Result<bool> saveVariableValues(const std::filesystem::path& workspaceFile, cons
     const std::string file = workspaceFile.string();
     auto rewritten = rewriteVariableValues(*text, file, values);
     if (!rewritten) return Error{rewritten.error()};
-    if (*rewritten == *text) return true;  // every value is already in the file
+    if (*rewritten == *text) return {};  // every value is already in the file
 
     std::filesystem::path folder = workspaceFile.parent_path().empty() ? "." : workspaceFile.parent_path();
     Result<Workspace> parsed = parseWorkspaceText(*rewritten, workspaceFile, folder);

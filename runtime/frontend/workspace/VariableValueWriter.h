@@ -33,6 +33,6 @@ Result<std::string> rewriteVariableValues(std::string_view text, const std::stri
 // replaces the file with writeFileAtomically, keeping the previous version as FILE.bak. When no
 // value differs from the file, nothing is written. On any error the file is left as it was.
 // RenderMonkey .rfx files are refused with an error: they are imported, never rewritten.
-Result<bool> saveVariableValues(const std::filesystem::path& workspaceFile, const std::map<std::string, Value>& values);
+Result<void> saveVariableValues(const std::filesystem::path& workspaceFile, const std::map<std::string, Value>& values);
 
 }  // namespace rmfx

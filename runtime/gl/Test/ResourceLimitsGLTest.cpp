@@ -59,11 +59,10 @@ Diagnostics failsWithoutStorage(const std::string& target, glm::ivec2 viewport, 
     auto ws = workspaceFromText(workspaceWithTarget(target));
     if (!ws) return {};
     TextureStorageCounter storage;
-    Diagnostics d;
-    auto exec = runHeadless(*ws, {viewport, 1, 1.0f / 60.0f}, d, options);
+    auto exec = runHeadless(*ws, {viewport, 1, 1.0f / 60.0f}, options);
     EXPECT_FALSE(exec);
     EXPECT_EQ(storage.calls(), 0);
-    return d;
+    return exec.diagnostics();
 }
 
 TEST_F(ResourceLimitsGLTest, ATargetOfOneHundredThousandSquaredFailsAndAllocatesNothing) {

@@ -62,9 +62,9 @@ TEST_F(TargetScaleByGLTest, AValuePickingNoScaleFailsAtCreationNamingTheTarget) 
     auto ws = workspaceFromText(scaleByWorkspace(1));
     ASSERT_TRUE(ws);
     ws->findVariable("Downsample")->value = Value::ofInt(5);  // as --set Downsample=5 does
-    Diagnostics d;
-    auto exec = runHeadless(*ws, {{40, 27}, 1, 1.0f / 60.0f}, d);
+    auto exec = runHeadless(*ws, {{40, 27}, 1, 1.0f / 60.0f});
     EXPECT_FALSE(exec);
+    const Diagnostics& d = exec.diagnostics();
     ASSERT_FALSE(d.empty());
     EXPECT_EQ(d.front().element, "<target name=\"reduced\">");
     EXPECT_EQ(d.front().message, "variable 'Downsample' = 5 picks none of the 3 scales of target 'reduced'");

@@ -100,16 +100,16 @@ TEST_F(UniformBindingGLTest, EveryVariableTypeReachesItsUniformExactly) {
 TEST_F(UniformBindingGLTest, OverridesFromSetArriveInTheShader) {
     auto ws = workspaceFromText(allTypesWorkspace);
     ASSERT_TRUE(ws);
-    Diagnostics bad = applyOverrides(*ws, {{"F", "-0.75"},
-                                           {"I", "16777216"},
-                                           {"B", "false"},
-                                           {"V2", "7,8"},
-                                           {"V3", "1e-3 2e-3 3e-3"},
-                                           {"V4", "-1 -2 -3 -4"},
-                                           {"C3", "0.25 0.125 2"},
-                                           {"C4", "1 0 0.5 0.0625"},
-                                           {"M", "16 15 14 13 12 11 10 9 8 7 6 5 4 3 2 1"}});
-    ASSERT_TRUE(bad.empty()) << formatAll(bad);
+    Result<void> set = applyOverrides(*ws, {{"F", "-0.75"},
+                                            {"I", "16777216"},
+                                            {"B", "false"},
+                                            {"V2", "7,8"},
+                                            {"V3", "1e-3 2e-3 3e-3"},
+                                            {"V4", "-1 -2 -3 -4"},
+                                            {"C3", "0.25 0.125 2"},
+                                            {"C4", "1 0 0.5 0.0625"},
+                                            {"M", "16 15 14 13 12 11 10 9 8 7 6 5 4 3 2 1"}});
+    ASSERT_TRUE(set.diagnostics().empty()) << formatAll(set.diagnostics());
     GlRun run = runWorkspace(std::move(ws), {{10, 1}, 1, 1.0f / 60.0f});
     ASSERT_TRUE(run.exec);
     Expected e{-0.75f, 16777216.0f, 0.0f,

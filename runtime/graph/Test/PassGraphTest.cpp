@@ -138,10 +138,10 @@ TEST(PassGraph, AnOutputNothingWritesIsAnError) {
 // ---- effects ----
 
 std::unique_ptr<Workspace> shader5() {
-    LoadedWorkspace loaded = loadWorkspace(test::sourceDir() / "effects/shader_5.xml", {false});
-    EXPECT_TRUE(loaded.workspace) << formatAll(loaded.diagnostics);
-    if (!loaded.workspace) return nullptr;
-    return std::make_unique<Workspace>(std::move(*loaded.workspace));
+    Result<Workspace> loaded = loadWorkspace(test::sourceDir() / "effects/shader_5.xml", {false});
+    EXPECT_TRUE(loaded.ok()) << formatAll(loaded.diagnostics());
+    if (!loaded.ok()) return nullptr;
+    return std::make_unique<Workspace>(std::move(*loaded));
 }
 
 Names passesOf(const Workspace& ws, const std::string& prefix) {
@@ -272,9 +272,9 @@ TEST(PassOrder, ATargetNothingWritesIsAnErrorUnlessReadAsLastFrames) {
 TEST(PassOrder, EveryProjectWorkspaceIsInOrder) {
     for (const auto& entry : std::filesystem::directory_iterator(test::sourceDir() / "effects")) {
         if (entry.path().extension() != ".xml") continue;
-        LoadedWorkspace loaded = loadWorkspace(entry.path(), {false});
-        ASSERT_TRUE(loaded.workspace) << entry.path() << formatAll(loaded.diagnostics);
-        EXPECT_TRUE(checkPassOrder(*loaded.workspace).empty()) << entry.path();
+        Result<Workspace> loaded = loadWorkspace(entry.path(), {false});
+        ASSERT_TRUE(loaded.ok()) << entry.path() << formatAll(loaded.diagnostics());
+        EXPECT_TRUE(checkPassOrder(*loaded).empty()) << entry.path();
     }
 }
 

@@ -380,7 +380,7 @@ TEST(ImageIO, WriteErrorsNameTheFile) {
     test::ScratchDir dir;
     const Image image = makeImage(1, 1, 3, {0.1f, 0.2f, 0.3f});
     const auto unknown = dir / "a.xyz";
-    Result<bool> written = writeImage(unknown, image);
+    Result<void> written = writeImage(unknown, image);
     ASSERT_FALSE(written);
     expectErrorNames(written.error(), unknown);
     EXPECT_NE(written.error().find(".xyz"), std::string::npos);

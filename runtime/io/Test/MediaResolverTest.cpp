@@ -29,16 +29,16 @@ std::string textureWorkspace(const std::string& reference) {
                   kShader, "  </pass>", "</workspace>"});
 }
 
-LoadedWorkspace load(const fs::path& file, MediaOptions media = {}) {
+Result<Workspace> load(const fs::path& file, MediaOptions media = {}) {
     ValidationOptions options;
     options.compileShaders = false;  // resolution and #includes are checked all the same
     options.media = std::move(media);
     return loadWorkspace(file, options);
 }
 
-Lines errors(const LoadedWorkspace& loaded) {
+Lines errors(const Result<Workspace>& loaded) {
     Lines out;
-    for (const Diagnostic& d : loaded.diagnostics)
+    for (const Diagnostic& d : loaded.diagnostics())
         if (d.severity == Diagnostic::Severity::Error) out.push_back(d.format());
     return out;
 }
@@ -129,8 +129,8 @@ TEST(MediaResolver, NotFoundNamesTheReferenceItsLineAndElementAndEveryPlaceLooke
     test::ScratchDir dir;
     dir.write("media/readme.txt", "");
     fs::path ws = dir.write("ws/fx.xml", textureWorkspace("..\\Tex\\Missing.png"));
-    LoadedWorkspace l = load(ws, {{dir / "media"}, false});
-    EXPECT_FALSE(l.workspace);
+    Result<Workspace> l = load(ws, {{dir / "media"}, false});
+    EXPECT_FALSE(l.ok());
     EXPECT_EQ(errors(l), (Lines{ws.string() + ":2: error: <texture name=\"t\">: image file '..\\Tex\\Missing.png' not found: "
                                               "looked for " + (dir / "Tex/Missing.png").string() +
                                               " (ignoring case); in " + (dir / "media").string() +
@@ -154,25 +154,25 @@ TEST(MediaResolver, MissingStockRenderMonkeyModelsBecomeBuiltInMeshesWithAWarnin
     };
     const std::string quad = "C:\\Program Files\\AMD\\RenderMonkey 1.81\\Examples\\Media\\Models\\ScreenAlignedQuad.3ds";
     fs::path ws = dir.write("ws/quad.xml", drawWorkspace(quad));
-    LoadedWorkspace l = load(ws);
-    ASSERT_TRUE(l.workspace) << formatAll(l.diagnostics);
-    EXPECT_EQ(l.workspace->passes[0].draw.mesh, BuiltinMesh::Quad);
-    EXPECT_EQ(l.workspace->passes[0].draw.file, "");
-    ASSERT_EQ(l.diagnostics.size(), 1u);
-    EXPECT_EQ(l.diagnostics[0].severity, Diagnostic::Severity::Warning);
-    EXPECT_NE(l.diagnostics[0].format().find(":4: warning: <draw>: model file '" + quad + "' not found"), std::string::npos)
-        << l.diagnostics[0].format();
-    EXPECT_NE(l.diagnostics[0].format().find("drawing rmfx's built-in 'quad' in its place"), std::string::npos);
+    Result<Workspace> l = load(ws);
+    ASSERT_TRUE(l.ok()) << formatAll(l.diagnostics());
+    EXPECT_EQ(l->passes[0].draw.mesh, BuiltinMesh::Quad);
+    EXPECT_EQ(l->passes[0].draw.file, "");
+    ASSERT_EQ(l.diagnostics().size(), 1u);
+    EXPECT_EQ(l.diagnostics()[0].severity, Diagnostic::Severity::Warning);
+    EXPECT_NE(l.diagnostics()[0].format().find(":4: warning: <draw>: model file '" + quad + "' not found"), std::string::npos)
+        << l.diagnostics()[0].format();
+    EXPECT_NE(l.diagnostics()[0].format().find("drawing rmfx's built-in 'quad' in its place"), std::string::npos);
 
-    EXPECT_EQ(load(dir.write("ws/teapot.xml", drawWorkspace("..\\models\\TEAPOT.3DS"))).workspace->passes[0].draw.mesh,
+    EXPECT_EQ(load(dir.write("ws/teapot.xml", drawWorkspace("..\\models\\TEAPOT.3DS")))->passes[0].draw.mesh,
               BuiltinMesh::Teapot);
 
     // A stock model that is there is used as it is; any other missing model stays an error.
     dir.write("ws/Sphere.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    LoadedWorkspace found = load(dir.write("ws/sphere.xml", drawWorkspace("sphere.obj")));
-    ASSERT_TRUE(found.workspace) << formatAll(found.diagnostics);
-    EXPECT_EQ(found.workspace->passes[0].draw.file, "Sphere.obj");
-    EXPECT_FALSE(found.workspace->passes[0].draw.mesh);
+    Result<Workspace> found = load(dir.write("ws/sphere.xml", drawWorkspace("sphere.obj")));
+    ASSERT_TRUE(found.ok()) << formatAll(found.diagnostics());
+    EXPECT_EQ(found->passes[0].draw.file, "Sphere.obj");
+    EXPECT_FALSE(found->passes[0].draw.mesh);
     EXPECT_EQ(errors(load(dir.write("ws/elephant.xml", drawWorkspace("ElephantBody.3ds")))).size(), 1u);
 
     // Under the sandbox a stock model outside it is refused, not replaced.
@@ -211,13 +211,13 @@ TEST(MediaResolver, ReferencesAreResolvedOnceAndTheAnswerIsWhatEveryoneOpens) {
                                              "  </pass>",
                                              "</workspace>",
                                          }));
-    LoadedWorkspace l = load(ws);
-    ASSERT_TRUE(l.workspace) << formatAll(l.diagnostics);
-    EXPECT_EQ(l.workspace->textures[0].files[0], "../Media/Stone.tga");
-    EXPECT_EQ(l.workspace->passes[0].draw.file, "Models/Rock.obj");
-    EXPECT_EQ(l.workspace->passes[0].shaders[0].file, "Shaders/Main.frag");
+    Result<Workspace> l = load(ws);
+    ASSERT_TRUE(l.ok()) << formatAll(l.diagnostics());
+    EXPECT_EQ(l->textures[0].files[0], "../Media/Stone.tga");
+    EXPECT_EQ(l->passes[0].draw.file, "Models/Rock.obj");
+    EXPECT_EQ(l->passes[0].shaders[0].file, "Shaders/Main.frag");
     // Hot reload watches the same files.
-    WorkspaceDependencies deps = findWorkspaceDependencies(*l.workspace);
+    WorkspaceDependencies deps = findWorkspaceDependencies(*l);
     EXPECT_TRUE(deps.find(dir / "Media/Stone.tga"));
     EXPECT_TRUE(deps.find(dir / "ws/Models/Rock.obj"));
     EXPECT_TRUE(deps.find(dir / "ws/Shaders/Main.frag"));
@@ -230,9 +230,9 @@ TEST(MediaResolver, IncludesTakeBackslashesAndIgnoreCaseToo) {
     fs::path ws = dir.write("ws/fx.xml", lines({"<workspace version=\"1\">", "  <pass name=\"p\">",
                                                 "    <shader stage=\"fragment\" file=\"main.frag\"/>", "  </pass>",
                                                 "</workspace>"}));
-    LoadedWorkspace l = load(ws);
-    ASSERT_TRUE(l.workspace) << formatAll(l.diagnostics);
-    EXPECT_TRUE(findWorkspaceDependencies(*l.workspace).find(dir / "ws/Common/Util.glsl"));
+    Result<Workspace> l = load(ws);
+    ASSERT_TRUE(l.ok()) << formatAll(l.diagnostics());
+    EXPECT_TRUE(findWorkspaceDependencies(*l).find(dir / "ws/Common/Util.glsl"));
 }
 
 // ---- the sandbox ----
@@ -241,30 +241,30 @@ TEST(Sandbox, RefusesDotDotLeadingOutOfTheWorkspaceFolder) {
     test::ScratchDir dir;
     dir.write("secret.png", "s");
     fs::path ws = dir.write("ws/fx.xml", textureWorkspace("..\\secret.png"));
-    EXPECT_TRUE(load(ws).workspace);  // without the sandbox it loads
-    LoadedWorkspace l = load(ws, sandbox());
-    EXPECT_FALSE(l.workspace);
+    EXPECT_TRUE(load(ws).ok());  // without the sandbox it loads
+    Result<Workspace> l = load(ws, sandbox());
+    EXPECT_FALSE(l.ok());
     EXPECT_EQ(errors(l), (Lines{ws.string() + ":2: error: <texture name=\"t\">: image file '..\\secret.png' leads outside "
                                               "the sandbox: it is " + (dir / "secret.png").string() +
                                               ", and the sandbox allows only the workspace folder " + (dir / "ws").string() +
                                               " (give its folder with --media DIR, or run without --sandbox)"}));
     // The person running rmfx may allow the folder.
-    EXPECT_TRUE(load(ws, sandbox({dir.path()})).workspace);
+    EXPECT_TRUE(load(ws, sandbox({dir.path()})).ok());
 }
 
 TEST(Sandbox, RefusesAbsolutePaths) {
     test::ScratchDir dir;
     fs::path secret = dir.write("outside/secret.png", "s");
     fs::path ws = dir.write("ws/fx.xml", textureWorkspace(secret.string()));
-    EXPECT_TRUE(load(ws).workspace);
+    EXPECT_TRUE(load(ws).ok());
     dir.write("media/readme.txt", "");
-    LoadedWorkspace l = load(ws, sandbox({dir / "media"}));
+    Result<Workspace> l = load(ws, sandbox({dir / "media"}));
     EXPECT_EQ(errors(l), (Lines{ws.string() + ":2: error: <texture name=\"t\">: image file '" + secret.string() +
                                 "' leads outside the sandbox: it is " + secret.string() +
                                 ", and the sandbox allows only the workspace folder " + (dir / "ws").string() +
                                 " and the media folder " + (dir / "media").string() +
                                 " (give its folder with --media DIR, or run without --sandbox)"}));
-    EXPECT_TRUE(load(ws, sandbox({dir / "outside"})).workspace);
+    EXPECT_TRUE(load(ws, sandbox({dir / "outside"})).ok());
 }
 
 TEST(Sandbox, RefusesSymbolicLinksLeadingOutForEveryKindOfFile) {
@@ -285,8 +285,8 @@ TEST(Sandbox, RefusesSymbolicLinksLeadingOutForEveryKindOfFile) {
                                              "  </pass>",
                                              "</workspace>",
                                          }));
-    EXPECT_TRUE(load(ws).workspace);
-    LoadedWorkspace l = load(ws, sandbox());
+    EXPECT_TRUE(load(ws).ok());
+    Result<Workspace> l = load(ws, sandbox());
     const std::string allowed = ", and the sandbox allows only the workspace folder " + (dir / "ws").string() +
                                 " (give its folder with --media DIR, or run without --sandbox)";
     EXPECT_EQ(errors(l), (Lines{
@@ -311,7 +311,7 @@ TEST(Sandbox, RefusesAnIncludeThatIsASymbolicLinkLeadingOut) {
                                                 "    <shader stage=\"fragment\" file=\"main.frag\"/>", "  </pass>",
                                                 "</workspace>"}));
     for (bool on : {false, true}) {
-        LoadedWorkspace l = load(ws, {{}, on});
+        Result<Workspace> l = load(ws, {{}, on});
         EXPECT_EQ(errors(l), (Lines{(dir / "ws/main.frag").string() +
                                     ":1: error: #include: \"evil.glsl\" lies outside the workspace folder " +
                                     (dir / "ws").string()}));
@@ -326,13 +326,13 @@ TEST(Sandbox, AllowsAnIncludeRootOnlyInsideAnAllowedFolder) {
     fs::path ws = dir.write("lib/variants/fx.xml", lines({"<workspace version=\"1\" include-root=\"..\">", "  <pass name=\"p\">",
                                                           "    <shader stage=\"fragment\" file=\"main.frag\"/>",
                                                           "  </pass>", "</workspace>"}));
-    EXPECT_TRUE(load(ws).workspace);
-    LoadedWorkspace l = load(ws, sandbox());
+    EXPECT_TRUE(load(ws).ok());
+    Result<Workspace> l = load(ws, sandbox());
     EXPECT_EQ(errors(l), (Lines{ws.string() + ":1: error: <workspace include-root>: include-root " +
                                 (dir / "lib").string() + " (" + (dir / "lib").string() +
                                 ") lies outside the sandbox, which allows only the workspace folder " +
                                 (dir / "lib/variants").string() + " (give it with --media DIR, or run without --sandbox)"}));
-    EXPECT_TRUE(load(ws, sandbox({dir / "lib"})).workspace);
+    EXPECT_TRUE(load(ws, sandbox({dir / "lib"})).ok());
 }
 
 TEST(Sandbox, AllowedReferencesStillLoad) {
@@ -352,10 +352,10 @@ TEST(Sandbox, AllowedReferencesStillLoad) {
                                              "  </pass>",
                                              "</workspace>",
                                          }));
-    LoadedWorkspace l = load(ws, sandbox({dir / "media"}));
-    ASSERT_TRUE(l.workspace) << formatAll(l.diagnostics);
-    EXPECT_EQ(l.workspace->textures[0].files[0], "tex/a.png");
-    EXPECT_EQ(l.workspace->passes[0].draw.file, (dir / "media/Models/Rock.obj").string());
+    Result<Workspace> l = load(ws, sandbox({dir / "media"}));
+    ASSERT_TRUE(l.ok()) << formatAll(l.diagnostics());
+    EXPECT_EQ(l->textures[0].files[0], "tex/a.png");
+    EXPECT_EQ(l->passes[0].draw.file, (dir / "media/Models/Rock.obj").string());
 }
 
 TEST(MediaArguments, MediaSandboxAndNoSandbox) {

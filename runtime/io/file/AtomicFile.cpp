@@ -165,7 +165,7 @@ Result<std::string> readWholeFile(const fs::path& path) {
     return text;
 }
 
-Result<bool> writeFileAtomically(const fs::path& requested, std::string_view contents, bool keepBackup) {
+Result<void> writeFileAtomically(const fs::path& requested, std::string_view contents, bool keepBackup) {
     fs::path path = requested;
     std::error_code ec;
     if (fs::is_symlink(path, ec)) {
@@ -205,7 +205,7 @@ Result<bool> writeFileAtomically(const fs::path& requested, std::string_view con
         return failure(path, "the new contents are in place, but syncing the folder " + quoted(folder) + " failed",
                        error);
     }
-    return true;
+    return {};
 }
 
 }  // namespace rmfx

@@ -20,6 +20,6 @@ Result<std::string> readWholeFile(const std::filesystem::path& path);
 // so at every instant `path` holds either the old or the new complete file. A symbolic link at
 // `path` is kept: the file it points to is replaced.
 // Errors name the path and the system's reason; no temporary file is left behind.
-Result<bool> writeFileAtomically(const std::filesystem::path& path, std::string_view contents, bool keepBackup = true);
+Result<void> writeFileAtomically(const std::filesystem::path& path, std::string_view contents, bool keepBackup = true);
 
 }  // namespace rmfx

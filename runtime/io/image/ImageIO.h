@@ -26,9 +26,9 @@ struct WriteOptions {
 // The format comes from the extension: .exr and .hdr keep linear float data and ignore the
 // display transform; .png, .jpg/.jpeg, .tga, .bmp are integer formats: colour channels get the
 // transform (alpha never does), then each value is clamped to [0, 1] (NaN to 0) and rounded to
-// the nearest step. Returns true on success; errors name the file.
-Result<bool> writeImage(const std::filesystem::path& file, const Image& image, const WriteOptions& options);
-Result<bool> writeImage(const std::filesystem::path& file, const Image& image,
+// the nearest step. Errors name the file.
+Result<void> writeImage(const std::filesystem::path& file, const Image& image, const WriteOptions& options);
+Result<void> writeImage(const std::filesystem::path& file, const Image& image,
                         DisplayTransform transform = DisplayTransform::None);
 
 // The sRGB transfer functions, piecewise (linear segment below 0.0031308 / 0.04045).

@@ -86,13 +86,13 @@ std::vector<float> selectChannels(const Image& image, const std::vector<int>& ma
 
 }  // namespace
 
-Result<bool> writeImage(const fs::path& file, const Image& image, DisplayTransform transform) {
+Result<void> writeImage(const fs::path& file, const Image& image, DisplayTransform transform) {
     WriteOptions options;
     options.transform = transform;
     return writeImage(file, image, options);
 }
 
-Result<bool> writeImage(const fs::path& file, const Image& image, const WriteOptions& options) {
+Result<void> writeImage(const fs::path& file, const Image& image, const WriteOptions& options) {
     const std::optional<Target> target = targetFor(file);
     if (!target)
         return imageFileError(file, "unknown image file extension '" + file.extension().string() +
@@ -153,7 +153,7 @@ Result<bool> writeImage(const fs::path& file, const Image& image, const WriteOpt
         return imageFileError(file, "cannot write pixels: " + oneLine(out->geterror()));
     if (!out->close())
         return imageFileError(file, "cannot finish writing: " + oneLine(out->geterror()));
-    return true;
+    return {};
 }
 
 }  // namespace rmfx

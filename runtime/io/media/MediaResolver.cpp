@@ -252,7 +252,7 @@ std::optional<BuiltinMesh> stockModelStandIn(const std::string& reference) {
     return std::nullopt;
 }
 
-Diagnostics resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options) {
+Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options) {
     Diagnostics out;
     MediaResolver resolver(ws.folder, options);
     auto resolve = [&](std::string& reference, const SourceLocation& where, const std::string& element, const char* noun) {

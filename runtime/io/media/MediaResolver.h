@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/Diagnostic.h"
+#include "core/Result.h"
 #include "model/Workspace.h"
 
 namespace rmfx {
@@ -93,6 +94,6 @@ private:
 // ShaderSource::file then name the file found (relative to ws.folder when it lies there, else
 // absolute), which is what the executor, hot reload and listings use. Each reference that finds
 // nothing, finds two files, or (sandbox) leads outside gives an error naming its element.
-Diagnostics resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options);
+Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options);
 
 }  // namespace rmfx

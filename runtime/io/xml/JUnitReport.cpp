@@ -68,7 +68,7 @@ std::string formatJUnit(const JUnitTestSuite& suite) {
     return printer.CStr();
 }
 
-Result<bool> writeJUnit(const std::filesystem::path& file, const JUnitTestSuite& suite) {
+Result<void> writeJUnit(const std::filesystem::path& file, const JUnitTestSuite& suite) {
     std::error_code ec;
     if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
     if (ec) return Error{file.string() + ": cannot create the folder: " + ec.message()};
@@ -76,7 +76,7 @@ Result<bool> writeJUnit(const std::filesystem::path& file, const JUnitTestSuite&
     out << formatJUnit(suite);
     out.close();
     if (!out) return Error{file.string() + ": cannot write the file"};
-    return true;
+    return {};
 }
 
 }  // namespace rmfx

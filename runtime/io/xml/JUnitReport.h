@@ -34,6 +34,6 @@ struct JUnitTestSuite {
 // other than tab and line breaks) become '?', and line breaks in a message become spaces.
 std::string formatJUnit(const JUnitTestSuite& suite);
 // Writes the report, creating the file's folder. Errors name the file.
-Result<bool> writeJUnit(const std::filesystem::path& file, const JUnitTestSuite& suite);
+Result<void> writeJUnit(const std::filesystem::path& file, const JUnitTestSuite& suite);
 
 }  // namespace rmfx

@@ -101,9 +101,9 @@ protected:
         dir_.write("c.frag", cShader);
         dir_.write("common.glsl", commonGlsl(0.5));
         ASSERT_TRUE(writeImage(dir_ / "tex.exr", texel({0.125f, 0.25f, 0.375f, 0.5f})));
-        Diagnostics diagnostics;
-        live_ = LiveWorkspace::open(dir_ / "ws.xml", {0, 0}, {}, diagnostics);
-        ASSERT_TRUE(live_) << formatAll(diagnostics);
+        auto opened = LiveWorkspace::open(dir_ / "ws.xml", {0, 0}, {});
+        ASSERT_TRUE(opened) << formatAll(opened.diagnostics());
+        live_ = std::move(*opened);
         ASSERT_EQ(pixel("ta"), glm::vec4(0.25f, 0.5f, 0.0f, 1.0f));
     }
 
@@ -338,9 +338,9 @@ TEST_F(LiveModelGLTest, ReplacedModelReloadsItsMesh) {
         R"(]]></shader></pass>)",
         R"(</workspace>)",
     }));
-    Diagnostics diagnostics;
-    auto live = LiveWorkspace::open(dir / "ws.xml", {0, 0}, {}, diagnostics);
-    ASSERT_TRUE(live) << formatAll(diagnostics);
+    auto opened = LiveWorkspace::open(dir / "ws.xml", {0, 0}, {});
+    ASSERT_TRUE(opened) << formatAll(opened.diagnostics());
+    std::unique_ptr<LiveWorkspace> live = std::move(*opened);
     auto render = [&] {
         EXPECT_FALSE(hasErrors(live->executor().renderFrame({}).takeDiagnostics()));
         return readBack(live->executor(), "output");
@@ -567,27 +567,28 @@ TEST_F(LiveWorkspaceGLTest, DeletedFilesAreErrorsUntilTheyComeBack) {
 TEST_F(LiveWorkspaceGLTest, FirstBuildFailureReturnsNothing) {
     ScratchDir other;
     other.write("ws.xml", workspaceXml);  // no shader files there
-    Diagnostics diagnostics;
-    EXPECT_EQ(LiveWorkspace::open(other / "ws.xml", {0, 0}, {}, diagnostics), nullptr);
+    auto opened = LiveWorkspace::open(other / "ws.xml", {0, 0}, {});
+    EXPECT_FALSE(opened);
+    const Diagnostics& diagnostics = opened.diagnostics();
     EXPECT_TRUE(hasErrors(diagnostics));
     EXPECT_NE(formatAll(diagnostics).find("a.frag"), std::string::npos) << formatAll(diagnostics);
 }
 
 TEST_F(LiveWorkspaceGLTest, OverridesActAsTheFileDefaults) {
-    Diagnostics diagnostics;
-    auto live = LiveWorkspace::open(dir_ / "ws.xml", {2, 2}, {{"Gain", "7"}}, diagnostics);
-    ASSERT_TRUE(live) << formatAll(diagnostics);
+    auto opened = LiveWorkspace::open(dir_ / "ws.xml", {2, 2}, {{"Gain", "7"}});
+    ASSERT_TRUE(opened) << formatAll(opened.diagnostics());
+    std::unique_ptr<LiveWorkspace> live = std::move(*opened);
     EXPECT_EQ(live->executor().viewport(), glm::ivec2(2, 2));
     EXPECT_EQ(live->executor().variable("Gain")->asFloat(), 7.0f);
-    Diagnostics unknown;
-    EXPECT_EQ(LiveWorkspace::open(dir_ / "ws.xml", {0, 0}, {{"Nope", "1"}}, unknown), nullptr);
-    EXPECT_NE(formatAll(unknown).find("Nope"), std::string::npos);
+    auto unknown = LiveWorkspace::open(dir_ / "ws.xml", {0, 0}, {{"Nope", "1"}});
+    EXPECT_FALSE(unknown);
+    EXPECT_NE(formatAll(unknown.diagnostics()).find("Nope"), std::string::npos);
 }
 
 TEST_F(LiveWorkspaceGLTest, NewViewportKeepsTweaks) {
     ASSERT_EQ(live_->setVariable("Gain", Value::ofFloat(3.0f)).error(), "");
-    Diagnostics resized = live_->setViewport({8, 2});
-    EXPECT_FALSE(hasErrors(resized)) << formatAll(resized);
+    Result<void> resized = live_->setViewport({8, 2});
+    EXPECT_TRUE(resized) << formatAll(resized.diagnostics());
     EXPECT_EQ(live_->executor().targetSize("output"), glm::ivec2(8, 2));
     EXPECT_EQ(pixel("output").r, 3.0f);
 }

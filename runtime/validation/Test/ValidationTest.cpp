@@ -20,22 +20,19 @@ const std::string kPlainShader = "    <shader stage=\"fragment\">out vec4 c; voi
 struct Loaded {
     std::string path;       // the workspace file, as diagnostics name it
     std::string folder;     // its folder, with a trailing separator
-    LoadedWorkspace result;
+    Result<Workspace> result;
     Lines errors, warnings;
 };
 
 // Writes the workspace as fx.xml into the scratch folder (or `sub`folder of it) and loads it.
 Loaded load(const test::ScratchDir& dir, const std::string& xml, const std::string& sub = "") {
-    Loaded out;
     auto path = dir.write(sub.empty() ? "fx.xml" : sub + "/fx.xml", xml);
-    out.path = path.string();
-    out.folder = path.parent_path().string() + "/";
-    out.result = loadWorkspace(path);
-    for (const Diagnostic& d : out.result.diagnostics) {
+    Loaded out{path.string(), path.parent_path().string() + "/", loadWorkspace(path), {}, {}};
+    for (const Diagnostic& d : out.result.diagnostics()) {
         (d.severity == Diagnostic::Severity::Error ? out.errors : out.warnings).push_back(d.format());
     }
-    if (hasErrors(out.result.diagnostics)) {
-        EXPECT_FALSE(out.result.workspace);
+    if (hasErrors(out.result.diagnostics())) {
+        EXPECT_FALSE(out.result.ok());
     }
     return out;
 }
@@ -281,7 +278,7 @@ TEST(Validation, PreviousFrameOfTheWrittenTargetIsFine) {
                        }));
     EXPECT_EQ(l.errors, Lines{});
     EXPECT_EQ(l.warnings, Lines{});
-    EXPECT_TRUE(l.result.workspace);
+    EXPECT_TRUE(l.result.ok());
 }
 
 TEST(Validation, MipmapFilteringNeedsMipmaps) {
@@ -718,7 +715,7 @@ TEST(Validation, UnusedSamplerIsAWarningOnly) {
     EXPECT_EQ(l.errors, Lines{});
     EXPECT_EQ(l.warnings, (Lines{l.path + ":7: warning: <sampler name=\"image\">: the shaders of pass 'second' do not "
                                           "use sampler 'image'"}));
-    EXPECT_TRUE(l.result.workspace);
+    EXPECT_TRUE(l.result.ok());
 }
 
 TEST(Validation, StructureOnlyWhenCompilingIsOff) {
@@ -730,22 +727,22 @@ TEST(Validation, StructureOnlyWhenCompilingIsOff) {
                                         "  </pass>",
                                         "</workspace>",
                                     }));
-    LoadedWorkspace loaded = loadWorkspace(path, {.compileShaders = false});
-    EXPECT_EQ(formatAll(loaded.diagnostics), "");
-    EXPECT_TRUE(loaded.workspace);
-    EXPECT_TRUE(hasErrors(loadWorkspace(path).diagnostics));
+    Result<Workspace> loaded = loadWorkspace(path, {.compileShaders = false});
+    EXPECT_EQ(formatAll(loaded.diagnostics()), "");
+    EXPECT_TRUE(loaded.ok());
+    EXPECT_FALSE(loadWorkspace(path).ok());
 }
 
 // ---- whole workspaces ----
 
 TEST(Validation, DefaultWorkspaceLoadsCleanly) {
-    LoadedWorkspace fromFile = loadWorkspace(test::sourceDir() / "effects" / "default.xml");
-    EXPECT_EQ(formatAll(fromFile.diagnostics), "");
-    EXPECT_TRUE(fromFile.workspace);
-    LoadedWorkspace builtin = loadDefaultWorkspace();
-    EXPECT_EQ(formatAll(builtin.diagnostics), "");
-    ASSERT_TRUE(builtin.workspace);
-    EXPECT_EQ(builtin.workspace->path, defaultWorkspaceName);
+    Result<Workspace> fromFile = loadWorkspace(test::sourceDir() / "effects" / "default.xml");
+    EXPECT_EQ(formatAll(fromFile.diagnostics()), "");
+    EXPECT_TRUE(fromFile.ok());
+    Result<Workspace> builtin = loadDefaultWorkspace();
+    EXPECT_EQ(formatAll(builtin.diagnostics()), "");
+    ASSERT_TRUE(builtin.ok());
+    EXPECT_EQ(builtin->path, defaultWorkspaceName);
 }
 
 // ---- --set overrides ----
@@ -762,9 +759,11 @@ TEST(Validation, OverridesReplaceDefaults) {
                            "  </pass>",
                            "</workspace>",
                        }));
-    ASSERT_TRUE(l.result.workspace);
-    Workspace ws = *l.result.workspace;
-    EXPECT_EQ(formatAll(applyOverrides(ws, {{"Gain", "2.5"}, {"Tint", "0.5 0.25 0"}, {"On", "true"}})), "");
+    ASSERT_TRUE(l.result.ok());
+    Workspace ws = *l.result;
+    Result<void> set = applyOverrides(ws, {{"Gain", "2.5"}, {"Tint", "0.5 0.25 0"}, {"On", "true"}});
+    EXPECT_TRUE(set.ok());
+    EXPECT_EQ(formatAll(set.diagnostics()), "");
     EXPECT_EQ(ws.findVariable("Gain")->value, Value::ofFloat(2.5f));
     EXPECT_EQ(formatValue(ws.findVariable("Tint")->value), "0.5 0.25 0");
     EXPECT_EQ(ws.findVariable("On")->value, Value::ofBool(true));
@@ -783,15 +782,16 @@ TEST(Validation, OverrideErrorsNameTheVariable) {
                            "  </pass>",
                            "</workspace>",
                        }));
-    ASSERT_TRUE(l.result.workspace);
-    Workspace ws = *l.result.workspace;
-    Diagnostics d = applyOverrides(ws, {{"Gian", "2"},
-                                        {"Gain", "bright"},
-                                        {"Tint", "1 0 0 1"},
-                                        {"Fog", "1 0 0"},
-                                        {"Steps", "2.5"},
-                                        {"Gain", "3"}});
-    EXPECT_EQ(formatAll(d),
+    ASSERT_TRUE(l.result.ok());
+    Workspace ws = *l.result;
+    Result<void> set = applyOverrides(ws, {{"Gian", "2"},
+                                           {"Gain", "bright"},
+                                           {"Tint", "1 0 0 1"},
+                                           {"Fog", "1 0 0"},
+                                           {"Steps", "2.5"},
+                                           {"Gain", "3"}});
+    EXPECT_FALSE(set.ok());
+    EXPECT_EQ(formatAll(set.diagnostics()),
               l.path + ": error: --set Gian: the workspace has no variable 'Gian' (it has: Gain, Tint, Fog, Steps)\n" +
                   l.path + ":2: error: --set Gain: variable 'Gain' (float): expected numbers, got 'bright'\n" +
                   l.path + ":3: error: --set Tint: variable 'Tint' (color): this color takes 3 numbers (rgb), got 4\n" +
@@ -804,7 +804,7 @@ TEST(Validation, OverrideErrorsNameTheVariable) {
 
     Workspace empty;
     empty.path = "e.xml";
-    EXPECT_EQ(formatAll(applyOverrides(empty, {{"X", "1"}})),
+    EXPECT_EQ(formatAll(applyOverrides(empty, {{"X", "1"}}).diagnostics()),
               "e.xml: error: --set X: the workspace has no variable 'X' (it declares none)\n");
 }
 
