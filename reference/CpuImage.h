@@ -1,7 +1,8 @@
 #pragma once
-// Float64 images and GL-style sampling for the CPU references the GL tests compare with. The
-// effects' maths is re-implemented on these from the chapter's definitions, independently of the
-// shaders, and compared with what the GPU wrote.
+// Float64 images and GL-style sampling: the one image type of reference/, the float64 CPU
+// references that the GL tests compare the shaders with and that `rmfx bench` measures the variants
+// against (Ideal*.h). The effects' maths is re-implemented on these from the chapter's definitions,
+// independently of the shaders.
 
 #include <functional>
 #include <vector>
@@ -14,7 +15,8 @@
 
 namespace rmfx::test {
 
-// Row 0 is the BOTTOM row, as in a GL texture: uv (0, 0) is the bottom-left corner.
+// Row 0 is the BOTTOM row, as in a GL texture: uv (0, 0) is the bottom-left corner. Every RefImage
+// has this row order; fromImage flips a runtime Image (row 0 at the top) into it.
 struct RefImage {
     int width = 0;
     int height = 0;
@@ -26,8 +28,9 @@ struct RefImage {
     const glm::dvec4& at(int x, int y) const { return texels[size_t(y) * width + x]; }
 };
 
-// From an image read back with readTarget / readImage (row 0 at the top); missing channels are
-// 0 (rgb) or 1 (alpha), one channel fills rgb.
+// From an image read back with readTarget / readImage (row 0 at the top), rows flipped. One or two
+// channels: the first fills rgb, the second is alpha (as the runtime uploads them); a missing
+// alpha is 1.
 RefImage fromImage(const Image& image);
 
 // Largest |gl - ref| - (relative · |ref| + absolute) over rgb: <= 0 passes. +Inf when the sizes

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <random>
 
-
 namespace rmfx::test {
 namespace {
 
@@ -16,6 +15,12 @@ glm::dvec3 sanitisedTexel(glm::dvec4 texel) {
 }
 
 double rec709Luminance(glm::dvec3 rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b; }
+
+RefImage sanitisedInput(const Image& image) {
+    RefImage out = fromImage(image);
+    for (glm::dvec4& texel : out.texels) texel = glm::dvec4(sanitisedTexel(texel), texel.a);
+    return out;
+}
 
 RefImage syntheticHdrImage(int width, int height, unsigned seed, double minLog2, double maxLog2, double black,
                            double binWidthLog2) {

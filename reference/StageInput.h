@@ -13,6 +13,10 @@ namespace rmfx::test {
 glm::dvec3 sanitisedTexel(glm::dvec4 texel);
 double rec709Luminance(glm::dvec3 rgb);
 
+// The contract's input S: fromImage (row 0 at the bottom; one or two channels are grey, the second
+// alpha, as the runtime uploads them) with every texel's rgb sanitised; alpha as it is.
+RefImage sanitisedInput(const Image& image);
+
 // A deterministic test image: each pixel's luminance log-uniform in [2^minLog2, 2^maxLog2] (a
 // fraction `black` of them exactly 0), its colour a random chroma with that Rec.709 luminance.
 // `binWidthLog2` > 0 puts log2(Y) at most 0.3 bin widths from the centre of a bin of that width

@@ -3,10 +3,11 @@
 #include <cstdio>
 #include <optional>
 
-#include "bench/accuracy/IdealBloom.h"
-#include "bench/accuracy/IdealLuminance.h"
-#include "bench/accuracy/IdealStreak.h"
-#include "bench/accuracy/IdealToneMap.h"
+#include "reference/IdealBloom.h"
+#include "reference/IdealLuminance.h"
+#include "reference/IdealStreak.h"
+#include "reference/IdealToneMap.h"
+#include "reference/StageInput.h"
 
 namespace rmfx::accuracy {
 namespace {
@@ -42,33 +43,33 @@ std::string exactText(double v) {
 Result<StageIdeal> computeStageIdeal(IdealKind kind, const Workspace& ws, const Image& input) {
     StageIdeal ideal;
     ideal.kind = kind;
-    ideal.sanitisedInput = sanitisedInput(input);
-    const LinearImage& s = ideal.sanitisedInput;
+    ideal.sanitisedInput = test::sanitisedInput(input);
+    const test::RefImage& s = ideal.sanitisedInput;
     Parameters p(ws, kind);
     switch (kind) {
         case IdealKind::Bloom: {
-            BloomParameters b{p.get("Bloom_Threshold"), p.get("Bloom_Strength"), p.get("Bloom_Sigma")};
-            if (p.missing().empty()) ideal.image = idealBloom(s, b);
+            test::BloomParameters b{p.get("Bloom_Threshold"), p.get("Bloom_Strength"), p.get("Bloom_Sigma")};
+            if (p.missing().empty()) ideal.image = test::idealBloom(s, b);
             break;
         }
         case IdealKind::Streak: {
-            StreakParameters k{p.get("Streak_Threshold"), p.get("Streak_Strength"), p.get("Streak_Length")};
-            if (p.missing().empty()) ideal.image = idealStreak(s, k);
+            test::StreakParameters k{p.get("Streak_Threshold"), p.get("Streak_Strength"), p.get("Streak_Length")};
+            if (p.missing().empty()) ideal.image = test::idealStreak(s, k);
             break;
         }
         case IdealKind::Luminance:
-            ideal.logAverage = idealLuminance(s, p.get("Luminance_Delta")).logAverage;
+            ideal.logAverage = test::idealLuminance(s, p.get("Luminance_Delta")).logAverage;
             break;
         case IdealKind::ToneMap: {
-            ToneMapParameters t;
-            t.sceneLuminance = idealLuminance(s).logAverage;
+            test::ToneMapParameters t;
+            t.sceneLuminance = test::idealLuminance(s).logAverage;
             t.middleGray = p.get("Middle_Gray");
             t.whitePoint = p.get("White_Point");
             t.exposure = p.get("Exposure");
             p.get("Scene_Luminance");
             if (!p.missing().empty()) break;
             ideal.logAverage = t.sceneLuminance;
-            ideal.image = toneMapDisplay(s, t);
+            ideal.image = test::toneMapDisplay(s, t);
             ideal.settings = {{"Scene_Luminance", exactText(t.sceneLuminance)}};
             break;
         }
@@ -78,7 +79,7 @@ Result<StageIdeal> computeStageIdeal(IdealKind kind, const Workspace& ws, const 
 }
 
 Result<ErrorMetrics> stageMetrics(const StageIdeal& ideal, const Image& output) {
-    const LinearImage& s = ideal.sanitisedInput;
+    const test::RefImage& s = ideal.sanitisedInput;
     if (ideal.kind == IdealKind::Luminance) {
         if (output.empty()) return Error{"the luminance output is empty"};
         return luminanceStageMetrics(output.at(0, 0, 0), ideal.logAverage, s);
@@ -87,7 +88,7 @@ Result<ErrorMetrics> stageMetrics(const StageIdeal& ideal, const Image& output) 
         return Error{"the output is " + std::to_string(output.width) + "x" + std::to_string(output.height) +
                      ", the input " + std::to_string(s.width) + "x" + std::to_string(s.height) +
                      ": the stage's output must have the input's size"};
-    LinearImage actual = linearImageOf(output);
+    test::RefImage actual = test::fromImage(output);
     if (ideal.kind == IdealKind::ToneMap) return toneMapStageMetrics(actual, ideal.image);
     return imageStageMetrics(actual, ideal.image);
 }

@@ -7,18 +7,18 @@
 #include <vector>
 
 #include "bench/accuracy/AccuracyMetrics.h"
-#include "bench/accuracy/LinearImage.h"
 #include "bench/accuracy/VariantManifest.h"
 #include "core/Result.h"
 #include "model/Image.h"
 #include "model/Workspace.h"
+#include "reference/CpuImage.h"
 
 namespace rmfx::accuracy {
 
 struct StageIdeal {
     IdealKind kind = IdealKind::Bloom;
-    LinearImage sanitisedInput;
-    LinearImage image;        // bloom, streak: result*; tone map: the display values before the OETF
+    test::RefImage sanitisedInput;  // row 0 at the bottom, as every RefImage
+    test::RefImage image;           // bloom, streak: result*; tone map: the display values before the OETF
     double logAverage = 0.0;  // luminance: Lavg*; tone map: the Scene_Luminance it used (Lavg* of S)
     // Variables the bench sets in every variant so that it computes what the ideal does (the tone
     // map's Scene_Luminance = Lavg*).

@@ -10,8 +10,9 @@
 #include <gtest/gtest.h>
 
 #include "bench/accuracy/AccuracyMetrics.h"
-#include "bench/accuracy/IdealBloom.h"
 #include "io/image/ImageIO.h"
+#include "reference/IdealBloom.h"
+#include "reference/StageInput.h"
 #include "tests/support/GlTestSupport.h"
 #include "tests/support/JsonValue.h"
 #include "tests/support/TestSupport.h"
@@ -168,8 +169,8 @@ TEST_F(CliBenchGLTest, MeasuresEveryVariantOnEveryInputAndWritesTheResultFiles) 
     EXPECT_EQ((*copyOnInput)["settings"].string, "Gain=1");
 
     // The copy variant outputs the sanitised input: its error is that of S against S + ½ G*B.
-    accuracy::LinearImage s = accuracy::sanitisedInput(input);
-    accuracy::ErrorMetrics expected = accuracy::imageStageMetrics(s, accuracy::idealBloom(s, {1.0, 0.5, 0.03125}));
+    RefImage s = sanitisedInput(input);
+    accuracy::ErrorMetrics expected = accuracy::imageStageMetrics(s, idealBloom(s, {1.0, 0.5, 0.03125}));
     EXPECT_GT(expected.meanRelative, 1e-3);
     EXPECT_NEAR((*copyOnInput)["mean_rel_error"].number, expected.meanRelative, 1e-7 * expected.meanRelative);
     EXPECT_NEAR((*copyOnInput)["max_rel_error"].number, expected.maxRelative, 1e-7 * expected.maxRelative);
