@@ -128,22 +128,22 @@ TEST(HlslTranslationCache, ValidationAndALaterAssemblyShareOneTranslation) {
         "  </pass>",
         "</workspace>",
     });
-    ParsedWorkspace parsed = parseWorkspaceText(xml, "hlsl.xml", ".");
-    ASSERT_TRUE(parsed.workspace) << formatAll(parsed.diagnostics);
-    for (Pass& pass : parsed.workspace->passes)
+    Result<Workspace> parsed = parseWorkspaceText(xml, "hlsl.xml", ".");
+    ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
+    for (Pass& pass : parsed->passes)
         for (ShaderSource& s : pass.shaders) {
             s.dialect = ShaderDialect::Hlsl;
             s.profile = "ps_2_0";
         }
     HlslTranslationCache& cache = HlslTranslationCache::shared();
     const size_t before = cache.translations();
-    Diagnostics d = validateWorkspace(*parsed.workspace);
+    Diagnostics d = validateWorkspace(*parsed);
     ASSERT_FALSE(hasErrors(d)) << formatAll(d);
     EXPECT_EQ(cache.translations(), before + 1);
     // The executor's prelude: the effects asked for (none here).
-    ShaderPrelude prelude = effectPrelude(*parsed.workspace, {});
+    ShaderPrelude prelude = effectPrelude(*parsed, {});
     Diagnostics assembly;
-    auto program = assemblePassProgram(*parsed.workspace, parsed.workspace->passes[0], prelude.defines, assembly,
+    auto program = assemblePassProgram(*parsed, parsed->passes[0], prelude.defines, assembly,
                                        prelude.declarations);
     ASSERT_TRUE(program) << formatAll(assembly);
     EXPECT_EQ(cache.translations(), before + 1);
