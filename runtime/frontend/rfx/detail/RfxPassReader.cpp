@@ -7,7 +7,7 @@
 #include "frontend/rfx/detail/RfxPackedColor.h"
 #include "frontend/rfx/detail/RfxRenderStates.h"
 #include "frontend/rfx/detail/RfxSamplerStates.h"
-#include "frontend/shader/HlslTranslator.h"
+#include "frontend/shader/HlslSemantics.h"
 
 namespace rmfx::rfx {
 namespace {
