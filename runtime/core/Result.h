@@ -26,10 +26,14 @@ namespace detail {
 // What Result<T> and Result<void> share: the diagnostics, and whether there is an error.
 class ResultDiagnostics {
 public:
-    const Diagnostics& diagnostics() const { return diagnostics_; }
+    // A temporary's diagnostics and error text come by value, so that
+    // `for (const Diagnostic& d : f().diagnostics())` does not read a destroyed Result.
+    const Diagnostics& diagnostics() const& { return diagnostics_; }
+    Diagnostics diagnostics() && { return std::move(diagnostics_); }
     Diagnostics takeDiagnostics() { return std::move(diagnostics_); }
     // The errors' messages, one per line (as Error gave them, or formatted with their location).
-    const std::string& error() const { return error_; }
+    const std::string& error() const& { return error_; }
+    std::string error() && { return std::move(error_); }
 
 protected:
     ResultDiagnostics() = default;

@@ -15,7 +15,7 @@ void add(Diagnostics& to, const Diagnostics& from) { to.insert(to.end(), from.be
 // <set> values go through applyOverrides one at a time, so that each problem points at its <set>.
 void applySets(const ReplayCase& c, Workspace& ws, Diagnostics& diagnostics) {
     for (const ReplaySet& set : c.sets)
-        for (const Diagnostic& d : applyOverrides(ws, {{set.name, set.value}}).diagnostics())
+        for (const Diagnostic& d : applyOverrides(ws, {{set.name, set.value}}).takeDiagnostics())
             diagnostics.push_back(
                 {d.severity, set.where, "<set name=\"" + set.name + "\">", "case '" + c.name + "': " + d.message});
 }

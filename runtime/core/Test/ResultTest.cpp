@@ -3,6 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
 
 namespace rmfx {
 
@@ -107,6 +111,23 @@ TEST(Result, TakingTheDiagnosticsLeavesAFailureFailed) {
     Result<int> value = Result<int>::failure({error("e.xml", 2, "", "no value")});
     (void)value.takeDiagnostics();
     EXPECT_FALSE(value.ok());
+}
+
+// A range-for over a temporary's diagnostics once read a destroyed Result (ASan's
+// stack-use-after-scope in ReplayRun's applySets): a temporary hands them over by value.
+TEST(Result, ATemporaryHandsOverItsDiagnosticsAndErrorByValue) {
+    static_assert(std::is_same_v<decltype(std::declval<Result<void>>().diagnostics()), Diagnostics>);
+    static_assert(std::is_same_v<decltype(std::declval<Result<int>>().error()), std::string>);
+    static_assert(std::is_same_v<decltype(std::declval<Result<int>&>().diagnostics()), const Diagnostics&>);
+    auto twoWarnings = [] {
+        return Result<int>(7, {{Diagnostic::Severity::Warning, {"w.xml", 1}, "", "first"},
+                               {Diagnostic::Severity::Warning, {"w.xml", 2}, "", "second"}});
+    };
+    std::vector<int> lines;
+    for (const Diagnostic& d : twoWarnings().diagnostics()) lines.push_back(d.where.line);
+    EXPECT_EQ(lines, (std::vector<int>{1, 2}));
+    std::string text = Result<void>(Error{"gone"}).error();
+    EXPECT_EQ(text, "gone");
 }
 
 }  // namespace rmfx
