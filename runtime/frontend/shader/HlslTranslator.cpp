@@ -13,6 +13,7 @@
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
+#include "frontend/shader/BracketNesting.h"
 #include "frontend/shader/HlslGlobalInitializers.h"
 
 namespace rmfx {
@@ -161,6 +162,12 @@ Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const
     std::string code = hlsl.code;
     if (code.rfind("#version", 0) == 0) code.erase(0, code.find('\n'));
 
+    // Debian's glslang crashes on some mismatched brackets (BracketNesting.h): caught before it reads them.
+    if (std::optional<BracketMismatch> bad = findBracketMismatch(code)) {
+        SourceLocation at = hlsl.origin(bad->line);
+        diagnostics.push_back({Diagnostic::Severity::Error, at.file.empty() ? where : at, element, bad->message});
+        return Result<HlslTranslation>::failure(std::move(diagnostics));
+    }
     EShLanguage language = stage.stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
     glslang::TShader shader(language);
     const char* text = code.c_str();
