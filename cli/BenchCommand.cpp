@@ -45,7 +45,7 @@ struct BenchArguments {
     fs::path out = "bench-out";
     std::optional<TimeSource> ranked;  // nullopt: auto
     bool quiet = false;
-    ValidationOptions load;  // --media, --sandbox
+    WorkspaceLoadOptions load;  // --media, --sandbox
 };
 
 std::optional<BenchArguments> parseArguments(const std::vector<std::string>& args) {
@@ -118,9 +118,9 @@ std::string uniqueName(std::string name, const std::vector<BenchInput>& inputs) 
 
 // Renders a scene workspace's target at `size` into DIR/inputs/NAME.exr.
 Result<fs::path> renderScene(const SceneSpec& scene, glm::ivec2 size, const fs::path& folder,
-                             const ValidationOptions& load) {
+                             const WorkspaceLoadOptions& load) {
     std::string what = "scene '" + scene.name + "': ";
-    Result<Workspace> loaded = loadWorkspace(scene.workspace, load);
+    Result<Workspace> loaded = loadWorkspace(scene.workspace, {}, load);
     if (!loaded) return Error{what + formatAll(loaded.diagnostics())};
     if (!loaded->canReadTarget(scene.target))
         return Error{what + scene.workspace.string() + " has no target '" + scene.target + "' (" +
@@ -214,7 +214,7 @@ std::optional<std::vector<StagePlan>> planStages(const BenchArguments& a, const 
             if (wanted) plan.variants.push_back(std::move(v));
         }
         if (plan.variants.empty()) continue;
-        Result<Workspace> loaded = loadWorkspace(stage.workspace, a.load);
+        Result<Workspace> loaded = loadWorkspace(stage.workspace, {}, a.load);
         if (!loaded) {
             std::cerr << "rmfx bench: stage " << stage.name << " (" << stage.where.file << ":" << stage.where.line
                       << "):\n" << formatAll(loaded.diagnostics());

@@ -25,12 +25,11 @@ struct RenderArguments {
     RunSettings run;
     std::vector<std::pair<std::string, std::string>> overrides;
     std::optional<std::string> target;
-    WorkspaceLoadOptions load;  // --effect NAME (.rfx files)
+    WorkspaceLoadOptions load;  // --effect NAME (.rfx files), --media, --sandbox
     std::optional<DisplayTransform> transform;
     bool quiet = false;
     bool explain = false;
     ExecutorOptions executor;
-    MediaOptions media;
 };
 
 std::optional<RenderArguments> parseArguments(const std::vector<std::string>& args) {
@@ -38,7 +37,7 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
     a.run.frameBudgetSeconds = kDefaultFrameBudgetSeconds;
     using Empty = ArgumentParser::EmptyValue;
     ArgumentParser parser;
-    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, a.media); })
+    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, a.load.media); })
         .option({"-o", "--output"}, [&](const std::string& value) { a.output = value; return ""; }, Empty::Allowed)
         .option({"--size"}, sizeValue(a.run.size), Empty::Allowed)
         .option({"--frames"}, frameCountValue(a.run.frames), Empty::Allowed)
@@ -98,9 +97,7 @@ int renderCommand(const std::vector<std::string>& args) {
         std::cerr << "rmfx render: --effect chooses an effect of a RenderMonkey .rfx file; name the file\n";
         return 1;
     }
-    ValidationOptions options;
-    options.media = a->media;
-    Result<Workspace> loaded = a->workspace ? loadWorkspace(*a->workspace, options, a->load) : loadDefaultWorkspace(options);
+    Result<Workspace> loaded = a->workspace ? loadWorkspace(*a->workspace, {}, a->load) : loadDefaultWorkspace({}, a->load.media);
     if (!loaded) {
         std::cerr << formatAll(loaded.diagnostics());
         return 1;

@@ -20,7 +20,7 @@ int validateCommand(const std::vector<std::string>& args) {
     WorkspaceLoadOptions load;
     std::vector<std::string> paths;
     ArgumentParser parser;
-    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, options.media); })
+    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, load.media); })
         .option({"--effect"}, [&](const std::string& value) { load.effect = value; return ""; },
                 ArgumentParser::EmptyValue::Allowed)
         .positional([&](const std::string& path) { paths.push_back(path); return ""; })

@@ -35,7 +35,7 @@ Values valuesFromLines(const std::string& text) {
         std::getline(words, rest);
         auto valueType = valueTypeFromElement(type);
         if (name.empty() || !valueType) continue;
-        if (auto value = parseValue(*valueType, rest, nullptr)) out[name] = *value;
+        if (Result<Value> value = parseValue(*valueType, rest)) out[name] = *value;
     }
     return out;
 }
@@ -56,7 +56,7 @@ Values changedValues(const std::string& text) {
 }
 
 bool readsBackAs(ValueType declared, const std::string& text, const Value& wanted) {
-    auto value = parseValue(declared, text, nullptr);
+    Result<Value> value = parseValue(declared, text);
     if (!value || value->type != wanted.type) return false;
     if (wanted.type == ValueType::Bool) return value->asBool() == wanted.asBool();
     for (int i = 0; i < componentCount(wanted.type); ++i)

@@ -40,10 +40,10 @@ void planFrame(const Workspace& ws) {
     std::map<std::string, Value> values;
     for (const Variable& v : ws.variables) values.emplace(v.name, v.value);
     request.switchedOff = switchedOffEffects(ws, *asked, values);
-    Diagnostics found;
-    PassGraph graph = buildPassGraph(ws, request, found);
-    formatAll(found);
-    if (hasErrors(found)) return;
+    Result<PassGraph> built = buildPassGraph(ws, request);
+    formatAll(built.diagnostics());
+    if (!built) return;
+    PassGraph& graph = *built;
     for (const RenderTarget& t : ws.targets) {
         auto valueOf = [&](const std::string& name) -> const Value* {
             auto it = values.find(name);
@@ -53,10 +53,10 @@ void planFrame(const Workspace& ws) {
     }
     glm::ivec2 viewport{ws.width, ws.height};
     ResourceLimits limits;
-    if (!checkViewportLimits(viewport, limits, {ws.path.string(), 0}).empty()) return;
+    if (!checkViewportLimits(viewport, limits, {ws.path.string(), 0})) return;
     for (bool pool : {false, true}) {
         auto plan = planTargets(ws, {&graph}, viewport, values, pool);
-        if (plan) formatAll(checkPlanLimits(*plan, limits, {ws.path.string(), 0}));
+        if (plan) formatAll(checkPlanLimits(*plan, limits, {ws.path.string(), 0}).diagnostics());
     }
 }
 
@@ -68,7 +68,7 @@ void checkParsedWorkspace(const Result<Workspace>& parsed) {
               "the front end returned a workspace together with errors, or neither");
     if (!parsed) return;
     const Workspace& ws = *parsed;
-    Diagnostics found = validateWorkspace(ws, {.compileShaders = false});
+    Diagnostics found = validateWorkspace(ws, {.compileShaders = false}).diagnostics();
     formatAll(found);
     findWorkspaceDependencies(ws);
     if (hasErrors(found)) return;  // what loadWorkspace refuses goes no further

@@ -129,11 +129,8 @@ std::optional<std::vector<float>> parseFloatList(std::string_view text) {
     return values;
 }
 
-std::optional<Value> parseValue(ValueType type, std::string_view text, std::string* error) {
-    auto fail = [&](std::string message) -> std::optional<Value> {
-        if (error) *error = std::move(message);
-        return std::nullopt;
-    };
+Result<Value> parseValue(ValueType type, std::string_view text) {
+    auto fail = [](std::string message) { return Result<Value>(Error{std::move(message)}); };
     Value value;
     value.type = type;
     std::string_view t = trim(text);

@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/Result.h"
+
 namespace rmfx {
 
 // Mat2 and Mat3 come only from RenderMonkey imports (RmDynamicVariable); matrices are column-major.
@@ -35,9 +37,9 @@ const char* glslTypeName(ValueType type);
 std::optional<ValueType> valueTypeFromElement(std::string_view element);
 
 // Parses text into a value of the given type. Colours accept 3 or 4 numbers when
-// allowColorWidening; ints reject fractions; bools take true/false/1/0. On failure returns
-// nullopt and sets *error to a sentence saying what was expected.
-std::optional<Value> parseValue(ValueType type, std::string_view text, std::string* error);
+// allowColorWidening; ints reject fractions; bools take true/false/1/0. A failure's error() is a
+// sentence saying what was expected.
+Result<Value> parseValue(ValueType type, std::string_view text);
 
 // Inverse of parseValue: shortest text that parses back to the same floats.
 std::string formatValue(const Value& value);

@@ -144,9 +144,9 @@ struct GlExecutor::Build {
         drainGlErrors();
         auto impl = std::make_unique<Impl>(std::move(workspace));
         impl->maxTargetSize = queryMaxTargetSize();
-        if (Diagnostics over = checkViewportLimits(viewport, {impl->maxTargetSize, options.memoryBudget}, {ws.path.string(), 0});
-            !over.empty())
-            return Failure::failure(std::move(over));
+        if (Result<void> fits = checkViewportLimits(viewport, {impl->maxTargetSize, options.memoryBudget}, {ws.path.string(), 0});
+            !fits)
+            return Failure::failure(std::move(fits).diagnostics());
         impl->compatibility = ws.profile == GlProfile::Compatibility;
         if (impl->compatibility) {
             GLint mask = 0;

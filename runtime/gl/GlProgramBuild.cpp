@@ -24,10 +24,9 @@ std::string infoLog(GetLength getLength, GetLog getLog) {
 }  // namespace
 
 Result<PassGlProgram> buildPassProgram(const Workspace& ws, const Pass& pass, const ShaderPrelude& prelude) {
-    Diagnostics d;
-    auto source = assemblePassProgram(ws, pass, prelude.defines, d, prelude.declarations);
-    if (!source && !hasErrors(d)) d.push_back({Diagnostic::Severity::Error, pass.where, passLabel(pass), "no program to compile"});
-    if (!source || hasErrors(d)) return Result<PassGlProgram>::failure(std::move(d));
+    Result<PassProgramSource> source = assemblePassProgram(ws, pass, prelude.defines, prelude.declarations);
+    Diagnostics d = source.diagnostics();
+    if (!source) return Result<PassGlProgram>::failure(std::move(d));
     PassGlProgram built;
     built.initializedUniforms = uniformsWithInitializers(*source);
     std::string label = passLabel(pass);

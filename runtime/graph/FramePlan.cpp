@@ -95,14 +95,15 @@ Result<FramePlan> planFramePasses(const Workspace& ws, const FramePlanOptions& o
     for (const std::set<std::string>& off : switchCombinations(switched)) {
         FrameRequest request = plan.request;
         request.switchedOff = off;
-        Diagnostics found;
-        PassGraph g = buildPassGraph(ws, request, found);
-        if (hasErrors(found)) {
+        Result<PassGraph> g = buildPassGraph(ws, request);
+        if (!g) {
+            Diagnostics found = g.takeDiagnostics();
             std::string when = off.empty() ? "" : " (with effects " + joinNames(off) + " switched off)";
             for (Diagnostic& diagnostic : found) diagnostic.message += when;
             errors.insert(errors.end(), found.begin(), found.end());
+            continue;
         }
-        plan.graphs.emplace(off, std::move(g));
+        plan.graphs.emplace(off, std::move(*g));
     }
     if (hasErrors(errors)) return Result<FramePlan>::failure(std::move(errors));
     return plan;
@@ -124,16 +125,16 @@ Result<TargetPlan> planFrameTargets(const Workspace& ws, const FramePlan& plan, 
     auto planned = planTargets(ws, plan.allGraphs(), viewport, values, plan.pooled());
     if (!planned) return Result<TargetPlan>::failure(workspaceError(ws, "", planned.error()));
     const ResourceLimits limits{maxTargetSize, plan.options.memoryBudget};
-    if (Diagnostics over = checkPlanLimits(*planned, limits, {ws.path.string(), 0}); !over.empty())
-        return Result<TargetPlan>::failure(std::move(over));
+    if (Result<void> fits = checkPlanLimits(*planned, limits, {ws.path.string(), 0}); !fits)
+        return Result<TargetPlan>::failure(std::move(fits).diagnostics());
     return std::move(*planned);
 }
 
 Result<FramePlan> planFrame(const Workspace& ws, const FramePlanOptions& options, glm::ivec2 viewport,
                             const std::map<std::string, Value>& values, int maxTargetSize) {
     const ResourceLimits limits{maxTargetSize, options.memoryBudget};
-    if (Diagnostics over = checkViewportLimits(viewport, limits, {ws.path.string(), 0}); !over.empty())
-        return Result<FramePlan>::failure(std::move(over));
+    if (Result<void> fits = checkViewportLimits(viewport, limits, {ws.path.string(), 0}); !fits)
+        return Result<FramePlan>::failure(std::move(fits).diagnostics());
     auto plan = planFramePasses(ws, options);
     if (!plan) return plan;
     auto targets = planFrameTargets(ws, *plan, viewport, values, maxTargetSize);

@@ -57,7 +57,8 @@ int PassGraph::passIndex(const std::string& name) const {
     return -1;
 }
 
-PassGraph buildPassGraph(const Workspace& ws, const FrameRequest& request, Diagnostics& diagnostics) {
+Result<PassGraph> buildPassGraph(const Workspace& ws, const FrameRequest& request) {
+    Diagnostics diagnostics;
     PassGraph g;
     const int n = static_cast<int>(ws.passes.size());
     g.nodes.resize(ws.passes.size());
@@ -193,7 +194,8 @@ PassGraph buildPassGraph(const Workspace& ws, const FrameRequest& request, Diagn
             }
         }
     }
-    return g;
+    if (hasErrors(diagnostics)) return Result<PassGraph>::failure(std::move(diagnostics));
+    return {std::move(g), std::move(diagnostics)};
 }
 
 Diagnostics checkPassOrder(const Workspace& ws) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/Diagnostic.h"
+#include "core/Result.h"
 #include "model/Workspace.h"
 
 namespace rmfx {
@@ -54,7 +55,7 @@ struct PassGraph {
 
 // Errors name the pass and the target: an output nothing writes, a pass reading a target that no
 // running pass wrote earlier in the frame.
-PassGraph buildPassGraph(const Workspace& ws, const FrameRequest& request, Diagnostics& diagnostics);
+Result<PassGraph> buildPassGraph(const Workspace& ws, const FrameRequest& request);
 
 // The order problems validation reports, with every pass enabled and every effect on: a cycle of
 // passes reading each other's targets, and a pass reading a target nothing wrote earlier in the

@@ -14,14 +14,14 @@ std::string sizeText(glm::ivec2 size) { return std::to_string(size.x) + "x" + st
 
 }  // namespace
 
-Diagnostics checkViewportLimits(glm::ivec2 viewport, const ResourceLimits& limits, const SourceLocation& where) {
+Result<void> checkViewportLimits(glm::ivec2 viewport, const ResourceLimits& limits, const SourceLocation& where) {
     if (viewport.x <= limits.maxTargetSize && viewport.y <= limits.maxTargetSize) return {};
-    return {{Diagnostic::Severity::Error, where, "",
+    return Diagnostics{{Diagnostic::Severity::Error, where, "",
              "viewport size " + sizeText(viewport) + " is larger than this GL allows (" +
                  std::to_string(limits.maxTargetSize) + " per side); nothing was allocated"}};
 }
 
-Diagnostics checkPlanLimits(const TargetPlan& plan, const ResourceLimits& limits, const SourceLocation& workspace) {
+Result<void> checkPlanLimits(const TargetPlan& plan, const ResourceLimits& limits, const SourceLocation& workspace) {
     Diagnostics d;
     for (const PlannedTarget& t : plan.targets) {
         if (t.resource < 0) continue;

@@ -7,6 +7,7 @@
 #include <glm/vec2.hpp>
 
 #include "core/Diagnostic.h"
+#include "core/Result.h"
 #include "graph/TargetPlan.h"
 
 namespace rmfx {
@@ -19,11 +20,11 @@ struct ResourceLimits {
 // The budget a run gets unless the user gives one (--memory-budget).
 constexpr std::size_t kDefaultMemoryBudget = std::size_t(4) << 30;
 
-// An error for a viewport with a side beyond the limit; empty when it fits.
-Diagnostics checkViewportLimits(glm::ivec2 viewport, const ResourceLimits& limits, const SourceLocation& where);
+// An error for a viewport with a side beyond the limit.
+Result<void> checkViewportLimits(glm::ivec2 viewport, const ResourceLimits& limits, const SourceLocation& where);
 
 // Errors for each planned target with a side beyond the limit, and for a plan whose memory
-// exceeds the budget (naming the largest targets); empty when the plan fits.
-Diagnostics checkPlanLimits(const TargetPlan& plan, const ResourceLimits& limits, const SourceLocation& workspace);
+// exceeds the budget (naming the largest targets).
+Result<void> checkPlanLimits(const TargetPlan& plan, const ResourceLimits& limits, const SourceLocation& workspace);
 
 }  // namespace rmfx

@@ -32,11 +32,10 @@ LiveWorkspace::~LiveWorkspace() {
 
 Result<std::unique_ptr<LiveWorkspace>> LiveWorkspace::open(const std::filesystem::path& file, glm::ivec2 viewport,
                                                            const std::vector<std::pair<std::string, std::string>>& overrides,
-                                                           const MediaOptions& media, const WorkspaceLoadOptions& load) {
+                                                           const WorkspaceLoadOptions& load) {
     std::unique_ptr<LiveWorkspace> live(new LiveWorkspace);
     live->loadOptions_ = load;
     live->file_ = file;
-    live->media_ = media;
     live->requestedViewport_ = viewport;
     live->overrides_ = overrides;
     Result<Build> build = live->load();
@@ -56,7 +55,6 @@ Result<LiveWorkspace::Build> LiveWorkspace::load(const std::set<std::string>& st
     // just as glslang's are: that halves the time a reload of the workspace file takes.
     ValidationOptions validation;
     validation.compileShaders = !executor_;
-    validation.media = media_;
     Result<Workspace> loaded = loadWorkspace(file_, validation, loadOptions_);
     Diagnostics diagnostics = loaded.diagnostics();
     if (!loaded) {

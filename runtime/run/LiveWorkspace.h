@@ -51,7 +51,6 @@ public:
     // carries the first build's warnings.
     static Result<std::unique_ptr<LiveWorkspace>> open(const std::filesystem::path& file, glm::ivec2 viewport,
                                                        const std::vector<std::pair<std::string, std::string>>& overrides,
-                                                       const MediaOptions& media = {},
                                                        const WorkspaceLoadOptions& load = {});
     ~LiveWorkspace();
     LiveWorkspace(const LiveWorkspace&) = delete;
@@ -105,8 +104,7 @@ private:
     std::filesystem::path file_;
     glm::ivec2 requestedViewport_{0};
     std::vector<std::pair<std::string, std::string>> overrides_;
-    MediaOptions media_;  // every reload resolves file references as the first load did
-    WorkspaceLoadOptions loadOptions_;  // the .rfx effect chosen with --effect
+    WorkspaceLoadOptions loadOptions_;  // the .rfx effect chosen with --effect; media as the first load
 
     std::shared_ptr<Workspace> workspace_;  // shared with executor_
     std::unique_ptr<GlExecutor> executor_;

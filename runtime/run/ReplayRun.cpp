@@ -33,9 +33,9 @@ void checkTargets(const ReplayCase& c, const Workspace& ws, Diagnostics& diagnos
 
 Result<std::vector<Image>> renderReplayCase(const ReplayCase& c, const MediaOptions& media, HeadlessContexts* contexts) {
     using Rendered = Result<std::vector<Image>>;
-    ValidationOptions load;
+    WorkspaceLoadOptions load;
     load.media = media;
-    Result<Workspace> loaded = loadWorkspace(c.workspace, load);
+    Result<Workspace> loaded = loadWorkspace(c.workspace, {}, load);
     Diagnostics diagnostics = loaded.takeDiagnostics();
     if (!loaded) return Rendered::failure(std::move(diagnostics));
     Workspace& ws = *loaded;

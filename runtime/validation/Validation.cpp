@@ -211,7 +211,8 @@ private:
         std::set<std::string> all;
         for (const Effect& e : ws_.effects) all.insert(e.name);
         ShaderPrelude prelude = effectPrelude(ws_, all);
-        auto program = assemblePassProgram(ws_, pass, prelude.defines, out_, prelude.declarations);
+        Result<PassProgramSource> program = assemblePassProgram(ws_, pass, prelude.defines, prelude.declarations);
+        out_.insert(out_.end(), program.diagnostics().begin(), program.diagnostics().end());
         if (!program || !options_.compileShaders) return;
         std::vector<std::string> inputs;
         auto uniforms = checkPassProgram(*program, label, &inputs);
@@ -248,7 +249,7 @@ private:
 
 }  // namespace
 
-Diagnostics validateWorkspace(const Workspace& ws, const ValidationOptions& options) {
+Result<void> validateWorkspace(const Workspace& ws, const ValidationOptions& options) {
     Diagnostics out;
     try {
         Validator(ws, options, out).run();

@@ -4,16 +4,15 @@
 // references name (and whether they exist) is the loader's MediaResolver step, before this.
 
 #include "core/Diagnostic.h"
-#include "io/media/MediaResolver.h"
+#include "core/Result.h"
 #include "model/Workspace.h"
 
 namespace rmfx {
 
 struct ValidationOptions {
     bool compileShaders = true;  // off: structure and references only
-    MediaOptions media{};        // how loadWorkspace resolves file references (search path, sandbox)
 };
 
-Diagnostics validateWorkspace(const Workspace& ws, const ValidationOptions& options = {});
+Result<void> validateWorkspace(const Workspace& ws, const ValidationOptions& options = {});
 
 }  // namespace rmfx

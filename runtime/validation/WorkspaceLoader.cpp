@@ -7,16 +7,17 @@
 
 namespace rmfx {
 
-static Result<Workspace> validated(Result<Workspace> parsed, const ValidationOptions& options, bool imported = false) {
+static Result<Workspace> validated(Result<Workspace> parsed, const ValidationOptions& options, const MediaOptions& media,
+                                   bool imported = false) {
     Diagnostics diagnostics = parsed.takeDiagnostics();
     if (!parsed) return Result<Workspace>::failure(std::move(diagnostics));
     // References are resolved once, here: what validation, the executor and hot reload open.
     // Until they all resolve nothing reads them (a shader outside the sandbox is not even compiled).
-    Result<void> resolved = resolveWorkspaceMedia(*parsed, options.media);
+    Result<void> resolved = resolveWorkspaceMedia(*parsed, media);
     diagnostics.insert(diagnostics.end(), resolved.diagnostics().begin(), resolved.diagnostics().end());
     if (!resolved) return Result<Workspace>::failure(std::move(diagnostics));
     if (imported) frameDrawnModels(*parsed);
-    Diagnostics found = validateWorkspace(*parsed, options);
+    Diagnostics found = validateWorkspace(*parsed, options).diagnostics();
     diagnostics.insert(diagnostics.end(), found.begin(), found.end());
     if (hasErrors(diagnostics)) return Result<Workspace>::failure(std::move(diagnostics));
     return {std::move(*parsed), std::move(diagnostics)};
@@ -24,18 +25,18 @@ static Result<Workspace> validated(Result<Workspace> parsed, const ValidationOpt
 
 Result<Workspace> loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options,
                                 const WorkspaceLoadOptions& load) {
-    if (isRfxPath(path)) return validated(importRfxFile(path, {load.effect}), options, true);
+    if (isRfxPath(path)) return validated(importRfxFile(path, {load.effect}), options, load.media, true);
     if (!load.effect.empty()) {
         return Result<Workspace>::failure(
             {{Diagnostic::Severity::Error, {path.string(), 0}, "--effect " + load.effect,
               "--effect chooses an effect of a RenderMonkey .rfx file; this is an rmfx workspace "
               "(use --effects to choose its <effect> groups)"}});
     }
-    return validated(parseWorkspaceFile(path), options);
+    return validated(parseWorkspaceFile(path), options, load.media);
 }
 
-Result<Workspace> loadDefaultWorkspace(const ValidationOptions& options) {
-    return validated(parseWorkspaceText(defaultWorkspaceText(), defaultWorkspaceName, "."), options);
+Result<Workspace> loadDefaultWorkspace(const ValidationOptions& options, const MediaOptions& media) {
+    return validated(parseWorkspaceText(defaultWorkspaceText(), defaultWorkspaceName, "."), options, media);
 }
 
 Result<void> applyOverrides(Workspace& ws, const std::vector<std::pair<std::string, std::string>>& overrides) {
@@ -51,15 +52,14 @@ Result<void> applyOverrides(Workspace& ws, const std::vector<std::pair<std::stri
                                (known.empty() ? " (it declares none)" : " (it has: " + known + ")")});
             continue;
         }
-        std::string why;
-        auto value = parseValue(v->value.type, text, &why);
+        Result<Value> value = parseValue(v->value.type, text);
+        std::string why = value.error();
         if (value && value->type != v->value.type) {
             // A colour's count is fixed by its default (the uniform is a vec3 or a vec4).
             bool rgb = v->value.type == ValueType::Color3;
-            value.reset();
             why = std::string("this color takes ") + (rgb ? "3 numbers (rgb), got 4" : "4 numbers (rgba), got 3");
         }
-        if (!value) {
+        if (!why.empty()) {
             out.push_back({Diagnostic::Severity::Error, v->where, element,
                            "variable '" + name + "' (" + valueTypeName(v->value.type) + "): " + why});
             continue;

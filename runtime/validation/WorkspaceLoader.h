@@ -7,6 +7,7 @@
 
 #include "core/Diagnostic.h"
 #include "core/Result.h"
+#include "io/media/MediaResolver.h"
 #include "model/Workspace.h"
 #include "validation/Validation.h"
 
@@ -17,6 +18,8 @@ struct WorkspaceLoadOptions {
     // RenderMonkey (.rfx) files: the effect to import (dotted path or name); empty: the active one.
     // An rmfx workspace holds one effect graph, so a non-empty choice is an error for it.
     std::string effect;
+    // How the workspace's file references resolve (search path, sandbox), before validation.
+    MediaOptions media{};
 };
 
 // Dispatches on the extension: .rfx (any case) to the RenderMonkey importer, else the XML format.
@@ -25,7 +28,7 @@ struct WorkspaceLoadOptions {
 Result<Workspace> loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options = {},
                                 const WorkspaceLoadOptions& load = {});
 // The built-in default workspace; its relative paths resolve in the current folder.
-Result<Workspace> loadDefaultWorkspace(const ValidationOptions& options = {});
+Result<Workspace> loadDefaultWorkspace(const ValidationOptions& options = {}, const MediaOptions& media = {});
 
 // Applies NAME=VALUE overrides to the workspace's variable defaults, checking names and types.
 // Each problem is an error naming the variable.

@@ -59,7 +59,7 @@ std::unique_ptr<Workspace> workspaceFromText(const std::string& xml, const std::
     Diagnostics diagnostics = parsed.diagnostics();
     if (parsed) {
         Diagnostics found = resolveWorkspaceMedia(*parsed, {}).diagnostics();
-        if (!hasErrors(found)) found = validateWorkspace(*parsed);
+        if (!hasErrors(found)) found = validateWorkspace(*parsed).diagnostics();
         diagnostics.insert(diagnostics.end(), found.begin(), found.end());
     }
     if (!parsed || hasErrors(diagnostics)) {

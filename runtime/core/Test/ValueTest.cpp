@@ -8,18 +8,16 @@ namespace {
 
 // Parses text that must be valid.
 Value parsed(ValueType type, std::string_view text) {
-    std::string why;
-    auto v = parseValue(type, text, &why);
-    EXPECT_TRUE(v.has_value()) << "'" << text << "': " << why;
-    return v.value_or(Value{});
+    Result<Value> v = parseValue(type, text);
+    EXPECT_TRUE(v.ok()) << "'" << text << "': " << v.error();
+    return v ? *v : Value{};
 }
 
 // The error sentence for text that must be rejected.
 std::string rejection(ValueType type, std::string_view text) {
-    std::string why;
-    auto v = parseValue(type, text, &why);
-    EXPECT_FALSE(v.has_value()) << "'" << text << "' parsed as " << (v ? formatValue(*v) : "");
-    return why;
+    Result<Value> v = parseValue(type, text);
+    EXPECT_FALSE(v.ok()) << "'" << text << "' parsed as " << (v ? formatValue(*v) : "");
+    return v.error();
 }
 
 }  // namespace

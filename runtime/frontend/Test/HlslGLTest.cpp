@@ -32,7 +32,7 @@ std::unique_ptr<Workspace> hlslWorkspace(const std::string& xml, const std::file
             s.profile = s.stage == ShaderStage::Vertex ? "vs_2_0" : "ps_2_0";
         }
     }
-    Diagnostics d = validateWorkspace(*parsed);
+    Diagnostics d = validateWorkspace(*parsed).diagnostics();
     if (hasErrors(d)) {
         ADD_FAILURE() << formatAll(d);
         return nullptr;
@@ -180,7 +180,7 @@ float4 main(float3 n : NORMAL) : COLOR { return float4(n, 1); }
 </workspace>)",
                                                 "hlsl-test.xml", ".");
     ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
-    std::string all = formatAll(validateWorkspace(*parsed));
+    std::string all = formatAll(validateWorkspace(*parsed).diagnostics());
     EXPECT_NE(all.find("hlsl-test.xml:3: error: <pass name=\"hlsl\">: the HLSL pixel shader reads NORMAL0, which a pass "
                        "without a vertex shader"),
               std::string::npos)

@@ -137,15 +137,13 @@ TEST(HlslTranslationCache, ValidationAndALaterAssemblyShareOneTranslation) {
         }
     HlslTranslationCache& cache = HlslTranslationCache::shared();
     const size_t before = cache.translations();
-    Diagnostics d = validateWorkspace(*parsed);
+    Diagnostics d = validateWorkspace(*parsed).diagnostics();
     ASSERT_FALSE(hasErrors(d)) << formatAll(d);
     EXPECT_EQ(cache.translations(), before + 1);
     // The executor's prelude: the effects asked for (none here).
     ShaderPrelude prelude = effectPrelude(*parsed, {});
-    Diagnostics assembly;
-    auto program = assemblePassProgram(*parsed, parsed->passes[0], prelude.defines, assembly,
-                                       prelude.declarations);
-    ASSERT_TRUE(program) << formatAll(assembly);
+    Result<PassProgramSource> program = assemblePassProgram(*parsed, parsed->passes[0], prelude.defines, prelude.declarations);
+    ASSERT_TRUE(program) << formatAll(program.diagnostics());
     EXPECT_EQ(cache.translations(), before + 1);
     // The built-in vertex shader hands the pixel shader its TEXCOORD0, from the cached reflection.
     EXPECT_NE(program->stages[0].shader.code.find("out vec2 rm_hlsl_TEXCOORD0;"), std::string::npos)

@@ -30,9 +30,16 @@ PreprocessedShader preprocessed(const std::string& code, int line = 1) {
     return out;
 }
 
+// The GLSL of translateHlslStage, its diagnostics appended to `d`; nullopt when it fails.
+std::optional<PreprocessedShader> glslOf(Result<HlslTranslation> translated, Diagnostics& d) {
+    d.insert(d.end(), translated.diagnostics().begin(), translated.diagnostics().end());
+    if (!translated) return std::nullopt;
+    return std::move(translated->glsl);
+}
+
 std::optional<PreprocessedShader> translate(const std::string& code, ShaderStage stage, Diagnostics& d,
                                             const std::string& entry = "main", const std::string& profile = "") {
-    return translateHlsl(preprocessed(code), {stage, entry, profile}, {"effect.rfx", 7}, "<RmHLSLShader>", d);
+    return glslOf(translateHlslStage(preprocessed(code), {stage, entry, profile}, {"effect.rfx", 7}, "<RmHLSLShader>"), d);
 }
 
 // Translates a vertex/pixel pair and links the GLSL with glslang; returns the active uniforms.
@@ -193,7 +200,7 @@ TEST(HlslTranslator, ErrorsAreLocatedAtTheHlslLine) {
     input.start = {"effect.rfx", 40};  // the CDATA starts on line 40 of the .rfx
     Diagnostics d;
     PreprocessedShader hlsl = preprocessShader(input, d);
-    auto out = translateHlsl(hlsl, {ShaderStage::Fragment, "main", "ps_2_0"}, {"effect.rfx", 39}, "<RmHLSLShader>", d);
+    auto out = glslOf(translateHlslStage(hlsl, {ShaderStage::Fragment, "main", "ps_2_0"}, {"effect.rfx", 39}, "<RmHLSLShader>"), d);
     EXPECT_FALSE(out);
     ASSERT_FALSE(d.empty());
     EXPECT_EQ(d[0].where.file, "effect.rfx");
@@ -241,7 +248,7 @@ TEST(HlslTranslator, ValidationReportsHlslErrorsAtTheWorkspaceLine) {
             s.dialect = ShaderDialect::Hlsl;
             s.profile = "ps_2_0";
         }
-    Diagnostics d = validateWorkspace(*parsed);
+    Diagnostics d = validateWorkspace(*parsed).diagnostics();
     ASSERT_TRUE(hasErrors(d));
     EXPECT_EQ(d[0].where.file, "hlsl.xml");
     EXPECT_EQ(d[0].where.line, 6) << formatAll(d);

@@ -106,7 +106,7 @@ TEST(LegacyDialects, EachDialectGetsItsVersionLineAndTheDefinesFollowIt) {
 TEST(LegacyDialects, GlslangAcceptsLegacyBuiltinsAndValidationBindsTheSemantic) {
     Result<Workspace> parsed = parse(kLegacyWorkspace);
     ASSERT_TRUE(parsed.ok());
-    Diagnostics d = validateWorkspace(*parsed);
+    Diagnostics d = validateWorkspace(*parsed).diagnostics();
     EXPECT_FALSE(hasErrors(d)) << formatAll(d);
 }
 
@@ -115,7 +115,7 @@ TEST(LegacyDialects, ValidationWarnsAboutAStreamToAnAttributeTheShadersLack) {
     xml.replace(xml.find("attribute=\"rm_Vertex\""), 21, "attribute=\"rm_Vertexx\"");
     Result<Workspace> parsed = parse(xml);
     ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
-    std::string all = formatAll(validateWorkspace(*parsed));
+    std::string all = formatAll(validateWorkspace(*parsed).diagnostics());
     EXPECT_NE(all.find("legacy.xml:4: warning: <pass name=\"mesh\">: stream to attribute 'rm_Vertexx' (line 4), which the shaders do not read"),
               std::string::npos) << all;
 }
@@ -125,7 +125,7 @@ TEST(LegacyDialects, LegacyGlslInACoreWorkspaceIsAnError) {
     xml.replace(xml.find(" profile=\"compatibility\""), 24, "");
     Result<Workspace> parsed = parse(xml);
     ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
-    std::string all = formatAll(validateWorkspace(*parsed));
+    std::string all = formatAll(validateWorkspace(*parsed).diagnostics());
     EXPECT_NE(all.find("legacy.xml:7: error: <shader>: legacy GLSL (dialect=\"glsl110\") in <pass name=\"mesh\"> needs a "
                        "compatibility-profile context"),
               std::string::npos) << all;
@@ -141,7 +141,7 @@ void main() { gl_FragColor = gl_FrontMaterial.diffuse; }
   </pass>
 </workspace>)");
     ASSERT_TRUE(parsed.ok());
-    std::string all = formatAll(validateWorkspace(*parsed));
+    std::string all = formatAll(validateWorkspace(*parsed).diagnostics());
     EXPECT_NE(all.find("legacy.xml:5: error"), std::string::npos) << all;
     EXPECT_NE(all.find("gl_FrontMaterial"), std::string::npos) << all;
 }

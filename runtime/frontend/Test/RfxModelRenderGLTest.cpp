@@ -44,9 +44,9 @@ const glm::dvec3 kLightDiffuse(1.0);
 const glm::dvec3 kMaterialDiffuse(0.8);
 
 std::unique_ptr<Workspace> loadRfxWithMedia(const std::filesystem::path& file, const std::filesystem::path& media) {
-    ValidationOptions options;
-    options.media.searchPath = {media};
-    Result<Workspace> loaded = loadWorkspace(file, options);
+    WorkspaceLoadOptions load;
+    load.media.searchPath = {media};
+    Result<Workspace> loaded = loadWorkspace(file, {}, load);
     if (!loaded.ok()) {
         ADD_FAILURE() << formatAll(loaded.diagnostics());
         return nullptr;

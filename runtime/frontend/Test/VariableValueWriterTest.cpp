@@ -236,9 +236,8 @@ TEST(VariableValueWriter, EveryEffectWorkspaceChangesOnlyItsValues) {
             size_t close = after.find('"', newAt);
             ASSERT_NE(close, std::string::npos);
             std::string newText = after.substr(newAt, close - newAt);
-            std::string why;
-            auto value = parseValue(v.value.type, newText, &why);
-            ASSERT_TRUE(value) << v.name << " '" << newText << "': " << why;
+            Result<Value> value = parseValue(v.value.type, newText);
+            ASSERT_TRUE(value) << v.name << " '" << newText << "': " << value.error();
             EXPECT_TRUE(sameBits(*value, values.at(v.name))) << v.name << " written '" << newText << "'";
             newAt = close;
             oldAt = spans[i].end;

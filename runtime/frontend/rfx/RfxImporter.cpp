@@ -187,9 +187,9 @@ Result<Workspace> importRfxFile(const std::filesystem::path& path, const RfxImpo
 
 Result<std::vector<RfxEffectSummary>> listRfxEffects(const std::filesystem::path& path) {
     using Listed = Result<std::vector<RfxEffectSummary>>;
+    Result<std::string> text = xml::readTextFile(path);
+    if (!text) return Listed::failure(std::move(text).diagnostics());
     Diagnostics diagnostics;
-    auto text = xml::readTextFile(path, diagnostics);
-    if (!text) return Listed::failure(std::move(diagnostics));
     tinyxml2::XMLDocument doc;
     const XMLElement* root = xml::parseDocument(doc, blankDoctype(*text), path.string(), "RENDER_MONKEY", diagnostics);
     if (!root) return Listed::failure(std::move(diagnostics));

@@ -224,14 +224,4 @@ Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const
     return {std::move(out), std::move(diagnostics)};
 }
 
-std::optional<PreprocessedShader> translateHlsl(const PreprocessedShader& hlsl, const HlslStage& stage,
-                                                const SourceLocation& where, const std::string& element,
-                                                Diagnostics& diagnostics) {
-    Result<HlslTranslation> result = translateHlslStage(hlsl, stage, where, element);
-    const Diagnostics& found = result.diagnostics();
-    diagnostics.insert(diagnostics.end(), found.begin(), found.end());
-    if (!result) return std::nullopt;
-    return std::move(result->glsl);
-}
-
 }  // namespace rmfx

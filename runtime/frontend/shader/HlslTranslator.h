@@ -56,12 +56,6 @@ struct HlslTranslation {
 Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const HlslStage& stage,
                                            const SourceLocation& where, const std::string& element);
 
-// translateHlslStage with its diagnostics appended to `diagnostics`; nullopt when the code does
-// not compile.
-std::optional<PreprocessedShader> translateHlsl(const PreprocessedShader& hlsl, const HlslStage& stage,
-                                                const SourceLocation& where, const std::string& element,
-                                                Diagnostics& diagnostics);
-
 // For a pass with an HLSL pixel shader and no vertex shader, what Direct3D 9's fixed-function
 // vertex processing hands the pixel shader: GLSL 4.50 declarations and assignments, for rmfx's
 // built-in vertex shader, of every input of the translated pixel shader (its

@@ -52,10 +52,10 @@ void main() {
 
 std::string passLabel(const Pass& pass) { return "<pass name=\"" + pass.name + "\">"; }
 
-std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const Pass& pass,
-                                                     const std::vector<std::string>& defines,
-                                                     Diagnostics& diagnostics,
-                                                     const std::vector<std::string>& declarations) {
+Result<PassProgramSource> assemblePassProgram(const Workspace& ws, const Pass& pass,
+                                              const std::vector<std::string>& defines,
+                                              const std::vector<std::string>& declarations) {
+    Diagnostics diagnostics;
     PassProgramSource program;
     std::vector<ReflectedVariable> pixelInputs;  // of an HLSL fragment shader
     bool ok = true;
@@ -135,8 +135,8 @@ std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const 
         PassStage stage{ShaderStage::Vertex, preprocessShader(input, diagnostics), pass.where, true, dialect};
         program.stages.insert(program.stages.begin(), std::move(stage));
     }
-    if (!ok) return std::nullopt;
-    return program;
+    if (!ok || hasErrors(diagnostics)) return Result<PassProgramSource>::failure(std::move(diagnostics));
+    return {std::move(program), std::move(diagnostics)};
 }
 
 }  // namespace rmfx

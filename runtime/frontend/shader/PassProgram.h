@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/Diagnostic.h"
+#include "core/Result.h"
 #include "frontend/shader/ShaderPreprocessor.h"
 #include "model/Workspace.h"
 
@@ -25,12 +26,11 @@ struct PassProgramSource {
     std::vector<PassStage> stages;  // vertex first
 };
 
-// Reads and preprocesses a pass's shaders. Missing files, include errors and a missing
-// fragment shader are reported; returns nullopt when the program cannot be assembled.
-std::optional<PassProgramSource> assemblePassProgram(const Workspace& ws, const Pass& pass,
-                                                     const std::vector<std::string>& defines,
-                                                     Diagnostics& diagnostics,
-                                                     const std::vector<std::string>& declarations = {});
+// Reads and preprocesses a pass's shaders (HLSL translated to GLSL), with any warnings; fails
+// naming missing files, include errors, a missing fragment shader, HLSL that does not translate.
+Result<PassProgramSource> assemblePassProgram(const Workspace& ws, const Pass& pass,
+                                              const std::vector<std::string>& defines,
+                                              const std::vector<std::string>& declarations = {});
 
 std::string passLabel(const Pass& pass);  // <pass name="…">
 

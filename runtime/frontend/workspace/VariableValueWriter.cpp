@@ -128,7 +128,8 @@ Result<std::string> rewriteVariableValues(std::string_view text, const std::stri
         const xml::AttributeSpan* valueAttribute = tag.attribute("value");
         std::string currentText = valueAttribute ? attributeText(*valueAttribute) : std::string();
         std::optional<Value> current;
-        if (valueAttribute) current = parseValue(type, currentText, nullptr);
+        if (valueAttribute)
+            if (Result<Value> parsed = parseValue(type, currentText)) current = *parsed;
 
         bool isColor = type == ValueType::Color4;  // the element; its count comes from the value
         bool typeMatches = isColor ? (value.type == ValueType::Color3 || value.type == ValueType::Color4) &&

@@ -134,10 +134,9 @@ private:
             r.error("the prefix rm_ is reserved for predefined variables");
             return std::nullopt;
         }
-        std::string why;
-        auto value = text ? parseValue(type, *text, &why) : Value{type, {}};
+        Result<Value> value = text ? parseValue(type, *text) : Result<Value>(Value{type, {}});
         if (!value) {
-            r.error("attribute 'value': " + why);
+            r.error("attribute 'value': " + value.error());
             return std::nullopt;
         }
         v.value = *value;

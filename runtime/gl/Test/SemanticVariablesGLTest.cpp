@@ -190,7 +190,7 @@ void main() { color = matViewProjection; }
 </workspace>)";
     Result<Workspace> parsed = parseWorkspaceText(xml, "mismatch.xml", ".");
     ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
-    for (const Diagnostics& d : {validateWorkspace(*parsed), [&] {
+    for (const Diagnostics& d : {validateWorkspace(*parsed).diagnostics(), [&] {
              return GlExecutor::create(std::make_shared<const Workspace>(*parsed), {4, 4}).takeDiagnostics();
          }()}) {
         std::string all = formatAll(d);
@@ -217,7 +217,7 @@ void main() { color = odd; }
 </workspace>)";
     Result<Workspace> parsed = parseWorkspaceText(xml, "unknown.xml", ".");
     ASSERT_TRUE(parsed.ok());
-    std::string all = formatAll(validateWorkspace(*parsed));
+    std::string all = formatAll(validateWorkspace(*parsed).diagnostics());
     EXPECT_NE(all.find("unknown.xml:2: warning"), std::string::npos) << all;
     EXPECT_NE(all.find("variable 'odd'"), std::string::npos) << all;
     EXPECT_NE(all.find("NoSuchSemantic"), std::string::npos) << all;

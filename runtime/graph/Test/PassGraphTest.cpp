@@ -39,12 +39,11 @@ Names scheduled(const PassGraph& g) {
 }
 
 PassGraph build(const Workspace& ws, FrameRequest request = {}) {
-    Diagnostics d;
     if (request.effects.empty())
         for (const Effect& e : ws.effects) request.effects.insert(e.name);
-    PassGraph g = buildPassGraph(ws, request, d);
-    EXPECT_FALSE(hasErrors(d)) << formatAll(d);
-    return g;
+    Result<PassGraph> g = buildPassGraph(ws, request);
+    EXPECT_TRUE(g.ok()) << formatAll(g.diagnostics());
+    return g ? std::move(*g) : PassGraph{};
 }
 
 const PassNode& node(const PassGraph& g, const std::string& name) {
@@ -118,8 +117,9 @@ TEST(PassGraph, DisabledPassesAreCulledAndTheirReadersFail) {
     EXPECT_EQ(node(g, "off").fate, PassFate::Disabled);
     EXPECT_EQ(scheduled(g), (Names{"a", "final"}));
     // "other" reads what the disabled pass would have written: an error only when it is needed.
-    Diagnostics d;
-    buildPassGraph(*ws, {{"v"}, {}, {}}, d);
+    Result<PassGraph> built = buildPassGraph(*ws, {{"v"}, {}, {}});
+    EXPECT_FALSE(built.ok());
+    const Diagnostics& d = built.diagnostics();
     ASSERT_EQ(d.size(), 1u);
     EXPECT_EQ(d[0].format(),
               "graph.xml:16: error: <sampler name=\"s0\">: pass 'other' reads target 'u', which no running "
@@ -128,8 +128,9 @@ TEST(PassGraph, DisabledPassesAreCulledAndTheirReadersFail) {
 
 TEST(PassGraph, AnOutputNothingWritesIsAnError) {
     auto ws = parse(workspace(passXml("a", "t", {}) + passXml("final", "", {"t"}), {"t", "never"}));
-    Diagnostics d;
-    buildPassGraph(*ws, {{"never", "nope"}, {}, {}}, d);
+    Result<PassGraph> built = buildPassGraph(*ws, {{"never", "nope"}, {}, {}});
+    EXPECT_FALSE(built.ok());
+    const Diagnostics& d = built.diagnostics();
     ASSERT_EQ(d.size(), 2u);
     EXPECT_EQ(d[0].message, "no running pass writes target 'never', which is asked for");
     EXPECT_NE(d[1].message.find("no target named 'nope'"), std::string::npos) << d[1].message;

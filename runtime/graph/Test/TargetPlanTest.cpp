@@ -26,9 +26,9 @@ Planned planText(const std::string& xml, FrameRequest request = {}, bool pool = 
     Result<Workspace> parsed = parseWorkspaceText(xml, "plan.xml", ".");
     EXPECT_FALSE(hasErrors(parsed.diagnostics())) << formatAll(parsed.diagnostics());
     p.ws = std::make_unique<Workspace>(std::move(*parsed));
-    Diagnostics d;
-    p.graph = buildPassGraph(*p.ws, request, d);
-    EXPECT_FALSE(hasErrors(d)) << formatAll(d);
+    Result<PassGraph> graph = buildPassGraph(*p.ws, request);
+    EXPECT_TRUE(graph.ok()) << formatAll(graph.diagnostics());
+    if (graph) p.graph = std::move(*graph);
     std::map<std::string, Value> values;
     for (const Variable& v : p.ws->variables) values[v.name] = v.value;
     auto plan = planTargets(*p.ws, {&p.graph}, {p.ws->width, p.ws->height}, values, pool);
@@ -130,15 +130,15 @@ TEST(TargetPlan, OnePlanForSeveralGraphsCoversEveryLifetime) {
     Result<Workspace> parsed = parseWorkspaceText(xml, "plan.xml", ".");
     ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
     Workspace& ws = *parsed;
-    Diagnostics d;
-    PassGraph on = buildPassGraph(ws, {{}, {"fx"}, {}}, d);
-    PassGraph off = buildPassGraph(ws, {{}, {"fx"}, {"fx"}}, d);
-    ASSERT_FALSE(hasErrors(d)) << formatAll(d);
-    auto both = planTargets(ws, {&on, &off}, {8, 8}, {}, true);
+    Result<PassGraph> on = buildPassGraph(ws, {{}, {"fx"}, {}});
+    Result<PassGraph> off = buildPassGraph(ws, {{}, {"fx"}, {"fx"}});
+    ASSERT_TRUE(on.ok()) << formatAll(on.diagnostics());
+    ASSERT_TRUE(off.ok()) << formatAll(off.diagnostics());
+    auto both = planTargets(ws, {&on.value(), &off.value()}, {8, 8}, {}, true);
     ASSERT_TRUE(both);
     EXPECT_EQ(sharing(*both, "t1"), (Names{"t1"}));
     EXPECT_EQ(sharing(*both, "t2"), (Names{"t2"}));
-    auto offOnly = planTargets(ws, {&off}, {8, 8}, {}, true);
+    auto offOnly = planTargets(ws, {&off.value()}, {8, 8}, {}, true);
     ASSERT_TRUE(offOnly);
     EXPECT_FALSE(offOnly->targets[static_cast<size_t>(offOnly->find("t2"))].used);
 }

@@ -32,8 +32,9 @@ std::string textureWorkspace(const std::string& reference) {
 Result<Workspace> load(const fs::path& file, MediaOptions media = {}) {
     ValidationOptions options;
     options.compileShaders = false;  // resolution and #includes are checked all the same
-    options.media = std::move(media);
-    return loadWorkspace(file, options);
+    WorkspaceLoadOptions load;
+    load.media = std::move(media);
+    return loadWorkspace(file, options, load);
 }
 
 Lines errors(const Result<Workspace>& loaded) {

@@ -43,9 +43,8 @@ Result<T> parseXmlText(const std::string& text, const std::string& file, const c
 // open the file", at the file.
 template <class ParseText, class R = std::invoke_result_t<ParseText, const std::string&>>
 R parseXmlFile(const std::filesystem::path& path, ParseText&& parseText) {
-    Diagnostics diagnostics;
-    std::optional<std::string> text = readTextFile(path, diagnostics);
-    if (!text) return R::failure(std::move(diagnostics));
+    Result<std::string> text = readTextFile(path);
+    if (!text) return R::failure(std::move(text).diagnostics());
     return parseText(*text);
 }
 

@@ -173,12 +173,10 @@ const XMLElement* parseDocument(tinyxml2::XMLDocument& doc, const std::string& t
     return root;
 }
 
-std::optional<std::string> readTextFile(const std::filesystem::path& path, Diagnostics& diagnostics) {
+Result<std::string> readTextFile(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        diagnostics.push_back({Diagnostic::Severity::Error, {path.string(), 0}, "", "cannot open the file"});
-        return std::nullopt;
-    }
+    if (!in)
+        return Result<std::string>::failure({{Diagnostic::Severity::Error, {path.string(), 0}, "", "cannot open the file"}});
     std::stringstream buffer;
     buffer << in.rdbuf();
     return buffer.str();

@@ -16,6 +16,7 @@
 #include <tinyxml2.h>
 
 #include "core/Diagnostic.h"
+#include "core/Result.h"
 
 namespace rmfx::xml {
 
@@ -91,7 +92,7 @@ std::optional<std::pair<int, int>> parseSize(const std::string& text);
 const XMLElement* parseDocument(tinyxml2::XMLDocument& doc, const std::string& text, const std::string& file,
                                 const char* rootName, Diagnostics& diagnostics);
 
-// A whole file as text; nullopt with a "cannot open the file" diagnostic.
-std::optional<std::string> readTextFile(const std::filesystem::path& path, Diagnostics& diagnostics);
+// A whole file as text; or one error, "cannot open the file", at the file.
+Result<std::string> readTextFile(const std::filesystem::path& path);
 
 }  // namespace rmfx::xml

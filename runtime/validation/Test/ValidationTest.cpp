@@ -188,7 +188,7 @@ TEST(Validation, WorkspaceWithoutPasses) {
     // Built in memory: no file line to point at.
     Workspace ws;
     ws.path = "mem.xml";
-    EXPECT_EQ(formatAll(validateWorkspace(ws)), "mem.xml: error: <workspace>: no <pass>: nothing to render\n");
+    EXPECT_EQ(formatAll(validateWorkspace(ws).diagnostics()), "mem.xml: error: <workspace>: no <pass>: nothing to render\n");
 }
 
 // ---- references ----
