@@ -1,0 +1,120 @@
+// rmfx render with an image sequence: one output per input frame, in order, with dt = 1 / --fps
+// and frame="previous" targets carried from frame to frame; a gap or a bad frame stops the run
+// naming the file, keeping the frames already written.
+
+#include <gtest/gtest.h>
+
+#include "io/image/ImageIO.h"
+#include "tests/support/GlTestSupport.h"
+#include "tests/support/TestSupport.h"
+
+namespace rmfx::test {
+namespace {
+
+class CliSequenceGLTest : public GlTest {};
+
+// `sum` adds each frame's image times rm_DeltaTime to what it held after the last frame.
+const char* kAccumulate = R"(<workspace version="1" name="accumulate" size="5x3">
+  <target name="sum" format="rgba32f"/>
+  <input name="frame"/>
+  <pass name="accumulate" target="sum">
+    <sampler name="Previous" target="sum" frame="previous" filter="nearest"/>
+    <sampler name="Frame" texture="frame" filter="nearest"/>
+    <shader stage="fragment"><![CDATA[
+uniform sampler2D Previous;
+uniform sampler2D Frame;
+uniform float rm_DeltaTime;
+out vec4 c;
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    c = texelFetch(Previous, p, 0) + texelFetch(Frame, p, 0) * rm_DeltaTime;
+}
+]]></shader>
+  </pass>
+  <output target="sum" transform="none"/>
+</workspace>
+)";
+
+// Frame k: every channel of pixel (x, y) is k + x / 10 + y / 100.
+Image frameImage(int k) {
+    Image image;
+    image.width = 5;
+    image.height = 3;
+    image.channels = 4;
+    image.highDynamicRange = true;
+    image.pixels.resize(5 * 3 * 4);
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 5; ++x)
+            for (int c = 0; c < 4; ++c) image.at(x, y, c) = static_cast<float>(k) + 0.1f * x + 0.01f * y;
+    return image;
+}
+
+void writeFrames(const ScratchDir& dir, std::initializer_list<int> frames) {
+    std::filesystem::create_directories(dir / "shot");
+    for (int k : frames) {
+        char name[32];
+        std::snprintf(name, sizeof name, "shot/f.%04d.exr", k);
+        ASSERT_TRUE(writeImage(dir / name, frameImage(k)).ok());
+    }
+}
+
+TEST_F(CliSequenceGLTest, EachFrameIsRenderedInOrderCarryingTheLastFramesTargets) {
+    ScratchDir dir;
+    dir.write("acc.xml", kAccumulate);
+    writeFrames(dir, {1, 2, 3, 4});
+    CommandResult cli = runRmfx("render acc.xml --input frame=shot/f.%04d.exr --fps 8 -o out.####.exr", dir.path());
+    ASSERT_EQ(cli.status, 0) << cli.err;
+    EXPECT_NE(cli.err.find("rmfx: 4/4 frames"), std::string::npos) << cli.err;  // not a terminal: plain lines
+    EXPECT_NE(cli.err.find("rmfx: wrote 4 frames to out.####.exr"), std::string::npos) << cli.err;
+    const double dt = 1.0 / 8.0;
+    double sum[5][3] = {};
+    for (int k = 1; k <= 4; ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "out.%04d.exr", k);
+        Result<Image> out = readImage(dir / name);
+        ASSERT_TRUE(out.ok()) << out.error();
+        ASSERT_EQ(out->width, 5);
+        ASSERT_EQ(out->height, 3);
+        for (int y = 0; y < 3; ++y)
+            for (int x = 0; x < 5; ++x) {
+                sum[x][y] += (k + 0.1 * x + 0.01 * y) * dt;
+                EXPECT_NEAR(out->at(x, y, 0), sum[x][y], 1e-6 * sum[x][y]) << name << " pixel " << x << "," << y;
+            }
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.0005.exr"));
+}
+
+TEST_F(CliSequenceGLTest, AGapIsAnErrorNamingTheMissingFrameBeforeAnythingIsWritten) {
+    ScratchDir dir;
+    dir.write("acc.xml", kAccumulate);
+    writeFrames(dir, {1, 2, 4});
+    CommandResult cli = runRmfx("render acc.xml --input frame=shot/f.%04d.exr -o out.%04d.exr", dir.path());
+    EXPECT_NE(cli.status, 0);
+    EXPECT_NE(cli.err.find("f.0003.exr"), std::string::npos) << cli.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.0001.exr"));
+}
+
+TEST_F(CliSequenceGLTest, ABadFrameStopsTheRunNamingItAndKeepsTheFramesBefore) {
+    ScratchDir dir;
+    dir.write("acc.xml", kAccumulate);
+    writeFrames(dir, {1, 2, 3, 4});
+    dir.write("shot/f.0003.exr", "not an EXR");
+    CommandResult cli = runRmfx("render acc.xml --input frame=shot/f.%04d.exr -o out.%04d.exr", dir.path());
+    EXPECT_EQ(cli.status, 2);
+    EXPECT_NE(cli.err.find("f.0003.exr"), std::string::npos) << cli.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "out.0001.exr"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "out.0002.exr"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.0003.exr"));
+}
+
+TEST_F(CliSequenceGLTest, ASequenceNeedsAnOutputPattern) {
+    ScratchDir dir;
+    dir.write("acc.xml", kAccumulate);
+    writeFrames(dir, {1, 2});
+    CommandResult cli = runRmfx("render acc.xml --input frame=shot/f.%04d.exr -o out.exr", dir.path());
+    EXPECT_EQ(cli.status, 1);
+    EXPECT_NE(cli.err.find("name the output frames with a pattern too"), std::string::npos) << cli.err;
+}
+
+}  // namespace
+}  // namespace rmfx::test

@@ -1,0 +1,141 @@
+#include "run/SequenceRun.h"
+
+#include <chrono>
+#include <future>
+#include <memory>
+
+#include "io/image/InputImage.h"
+#include "io/media/ImageSequence.h"
+#include "validation/ImageInputs.h"
+
+namespace rmfx {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+struct ReadFrame {
+    Result<Image> image = Error{""};
+    double seconds = 0.0;
+};
+
+// One image of the sequence at the viewport's size.
+ReadFrame readFrame(const std::filesystem::path& file, const std::string& layer, glm::ivec2 viewport) {
+    Clock::time_point start = Clock::now();
+    ReadFrame out;
+    Result<InputImage> read = readInputImage(file, layer);
+    if (!read) {
+        out.image = Error{read.error()};
+    } else if (read->image.width != viewport.x || read->image.height != viewport.y) {
+        Result<Image> resampled = resampleImage(read->image, viewport.x, viewport.y);
+        out.image = resampled ? Result<Image>(std::move(*resampled)) : Result<Image>(Error{file.string() + ": " + resampled.error()});
+    } else {
+        out.image = std::move(read->image);
+    }
+    out.seconds = secondsSince(start);
+    return out;
+}
+
+struct WrittenFrame {
+    Result<void> written;
+    double seconds = 0.0;
+};
+
+WrittenFrame writeFrame(const std::filesystem::path& file, const Image& image, const WriteOptions& options) {
+    Clock::time_point start = Clock::now();
+    WrittenFrame out{writeImage(file, image, options)};
+    out.seconds = secondsSince(start);
+    return out;
+}
+
+}  // namespace
+
+Result<SequenceTimes> renderSequence(const Workspace& source, const SequenceSettings& settings, ExecutorOptions options,
+                                     const std::function<void(const SequenceProgress&)>& progress) {
+    using Run = Result<SequenceTimes>;
+    const Clock::time_point started = Clock::now();
+    Result<std::vector<SequenceFrame>> frames = findSequenceFrames(settings.inputPattern);
+    if (!frames) return Run::failure(std::move(frames).diagnostics());
+    Result<FramePattern> output = parseFramePattern(settings.outputPattern);
+    if (!output)
+        return Error{"-o " + settings.outputPattern + ": a sequence is written to a pattern such as out/frame.%04d.png (" +
+                     output.error() + ")"};
+    if (!(settings.fps > 0.0)) return Error{"--fps must be above 0"};
+
+    // The first frame goes through supplyInputs: it picks the input, sets the viewport and says
+    // how the file was decoded.
+    Workspace ws = source;
+    InputArgument first{settings.input, frames->front().path, settings.layer,
+                        (settings.input.empty() ? "" : settings.input + "=") + settings.inputPattern};
+    Result<SuppliedInputs> supplied = supplyInputs(ws, {first}, settings.size);
+    if (!supplied) return Run::failure(std::move(supplied).diagnostics());
+    Diagnostics warnings = supplied.takeDiagnostics();
+    const std::string input = *supplied->given.begin();
+    const glm::ivec2 viewport = supplied->viewport;
+    options.givenInputs = supplied->given;
+    const std::string target = settings.target.empty() ? ws.outputTargetName() : settings.target;
+    if (!ws.canReadTarget(target)) return Error{"the workspace has no target '" + target + "' (" + ws.describeTargets() + ")"};
+    if (options.outputs.empty()) options.outputs = {target};
+    auto created = GlExecutor::create(std::make_shared<const Workspace>(ws), viewport, options);
+    if (!created) return Run::failure(created.takeDiagnostics());
+    std::unique_ptr<GlExecutor> executor = std::move(*created);
+
+    SequenceTimes times;
+    times.frames = static_cast<int>(frames->size());
+    times.read = secondsSince(started);  // the first image, read by supplyInputs
+    const float dt = static_cast<float>(1.0 / settings.fps);
+    const std::launch policy = settings.overlap ? std::launch::async : std::launch::deferred;
+    std::future<ReadFrame> next;
+    std::future<WrittenFrame> writing;
+    std::filesystem::path writingFile;
+    // Waits for the write under way; its error ends the run.
+    auto finishWrite = [&]() -> Result<void> {
+        if (!writing.valid()) return {};
+        WrittenFrame done = writing.get();
+        times.write += done.seconds;
+        if (!done.written) return Error{writingFile.string() + ": " + done.written.error()};
+        return {};
+    };
+    auto fail = [&](const std::string& message) {
+        Result<void> pending = finishWrite();  // the frames before this one are written all the same
+        std::string all = message;
+        if (!pending) all = pending.error() + "\n" + all;
+        Diagnostics d = warnings;
+        d.push_back({Diagnostic::Severity::Error, {}, "", all});
+        return Run::failure(std::move(d));
+    };
+    for (size_t k = 0; k < frames->size(); ++k) {
+        const SequenceFrame& frame = (*frames)[k];
+        if (k + 1 < frames->size())
+            next = std::async(policy, readFrame, (*frames)[k + 1].path, settings.layer, viewport);
+        Clock::time_point renderStart = Clock::now();
+        Result<void> rendered = executor->renderFrame({static_cast<float>(k) * dt, dt});
+        if (!rendered) return fail("frame " + std::to_string(frame.frame) + " (" + frame.path.string() + "): " + rendered.error());
+        Result<Image> image = executor->readTarget(target);
+        if (!image) return fail(image.error());
+        times.render += secondsSince(renderStart);
+        if (Result<void> previous = finishWrite(); !previous) return fail(previous.error());
+        writingFile = output->fileName(frame.frame);
+        writing = std::async(policy, writeFrame, writingFile, std::move(*image), settings.write);
+        if (!settings.overlap) {
+            if (Result<void> done = finishWrite(); !done) return fail(done.error());
+        }
+        if (progress) progress({static_cast<int>(k), times.frames, secondsSince(started)});
+        if (k + 1 < frames->size()) {
+            ReadFrame read = next.get();
+            times.read += read.seconds;
+            if (!read.image) return fail(read.image.error());
+            Clock::time_point uploadStart = Clock::now();
+            Result<void> replaced = executor->replaceInputImage(input, std::make_shared<const Image>(std::move(*read.image)));
+            if (!replaced) return fail(replaced.error());
+            times.render += secondsSince(uploadStart);
+        }
+    }
+    if (Result<void> last = finishWrite(); !last) return fail(last.error());
+    times.total = secondsSince(started);
+    if (progress) progress({times.frames, times.frames, times.total});
+    return Run(times, std::move(warnings));
+}
+
+}  // namespace rmfx

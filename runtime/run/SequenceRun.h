@@ -1,0 +1,53 @@
+#pragma once
+// rmfx render --input scene=shot/frame.%04d.exr -o out/frame.%04d.png: one rendered frame per
+// image of a sequence, in frame order, with dt = 1 / fps, so light adaptation and every
+// frame="previous" target carry across frames as they do in a live run. Needs a current GL context.
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <glm/vec2.hpp>
+
+#include "core/Result.h"
+#include "gl/GlExecutor.h"
+#include "io/image/ImageIO.h"
+#include "model/Workspace.h"
+
+namespace rmfx {
+
+struct SequenceSettings {
+    std::string input;          // the <input> the frames fill; empty: the workspace's only input
+    std::string inputPattern;   // shot/frame.%04d.exr (io/media/ImageSequence.h)
+    std::string layer;          // an EXR part or layer of every frame; empty: the default
+    std::string outputPattern;  // out/frame.%04d.png: each frame keeps its input's number
+    std::string target;         // what is written; empty: the workspace's output
+    WriteOptions write;
+    double fps = 24.0;
+    std::optional<glm::ivec2> size;  // the viewport; none: the first frame's size
+    // Read the next image and write the last while the GPU renders (off: one after the other,
+    // for the benchmark's comparison).
+    bool overlap = true;
+};
+
+struct SequenceProgress {
+    int done = 0;   // frames written
+    int total = 0;
+    double seconds = 0.0;  // since the first frame was read
+};
+
+// Wall-clock seconds summed over the frames, per stage, and the whole run's.
+struct SequenceTimes {
+    int frames = 0;
+    double read = 0.0;    // decoding (and resampling) each image
+    double render = 0.0;  // uploading the image, the frame's passes, reading the target back
+    double write = 0.0;   // encoding and writing each output file
+    double total = 0.0;   // first read to last write
+};
+
+// Fails naming the file of the first frame that cannot be read or written, after every earlier
+// frame was written; the files written stay. Warnings: how the first image was decoded.
+Result<SequenceTimes> renderSequence(const Workspace& ws, const SequenceSettings& settings, ExecutorOptions options,
+                                     const std::function<void(const SequenceProgress&)>& progress = {});
+
+}  // namespace rmfx
