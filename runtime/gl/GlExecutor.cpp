@@ -73,6 +73,14 @@ struct GlExecutor::Impl {
         return nullptr;
     }
 
+    // Points every sampler of the texture at its GL object (after it was loaded anew).
+    void bindTexture(const std::string& name) {
+        const unsigned object = textures.object(name);
+        for (auto& p : passes)
+            for (SamplerSlot& slot : p->samplers)
+                if (!slot.target && slot.sampler->texture == name) slot.texture = object;
+    }
+
     GpuPass* findPass(const std::string& name) const {
         for (auto& p : passes)
             if (p->pass->name == name) return p.get();
@@ -407,10 +415,25 @@ Result<void> GlExecutor::reloadTexture(const std::string& name) {
     if (!spec) return Result<void>::failure({workspaceError(s.ws, "", "no texture named '" + name + "' to reload")});
     if (!s.textures.holds(name)) return {};  // no pass that can run samples it: nothing loaded
     if (auto reloaded = s.textures.reload(s.ws, *spec); !reloaded) return reloaded;
-    const unsigned fresh = s.textures.object(name);
-    for (auto& p : s.passes)
-        for (SamplerSlot& slot : p->samplers)
-            if (!slot.target && slot.sampler->texture == name) slot.texture = fresh;
+    s.bindTexture(name);
+    return {};
+}
+
+Result<void> GlExecutor::replaceInputImage(const std::string& name, std::shared_ptr<const Image> image) {
+    Impl& s = *impl_;
+    const Texture* spec = s.ws.findTexture(name);
+    if (!s.ws.findInput(name) || !spec)
+        return Result<void>::failure({workspaceError(s.ws, "", "no input named '" + name + "' to give an image")});
+    if (!s.plan.options.givenInputs.count(name))
+        return Result<void>::failure({workspaceError(s.ws, "<input name=\"" + name + "\">",
+                                                     "input '" + name + "' was given no image when the run began")});
+    if (!image || image->empty())
+        return Result<void>::failure({workspaceError(s.ws, "<input name=\"" + name + "\">", "an empty image for input '" + name + "'")});
+    if (!s.textures.holds(name)) return {};  // no pass that can run samples it
+    Texture next = *spec;
+    next.supplied = std::move(image);
+    if (auto replaced = s.textures.reload(s.ws, next); !replaced) return replaced;
+    s.bindTexture(name);
     return {};
 }
 

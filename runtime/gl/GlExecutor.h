@@ -100,6 +100,11 @@ public:
     Result<void> recompilePasses(const std::vector<std::string>& passNames);
     // Reads a texture's image files again and replaces its GL texture.
     Result<void> reloadTexture(const std::string& name);
+    // The next image of an <input> an image was given for at creation (FramePlanOptions::
+    // givenInputs), such as the next frame of a sequence; it replaces the input's GL texture from
+    // the next frame on. Unlike the creation's image it is not resampled: give it at the size the
+    // first one had where the input sets the viewport.
+    Result<void> replaceInputImage(const std::string& name, std::shared_ptr<const Image> image);
     // Reads a model file again (as a pass's <draw file="…"> names it) and replaces its mesh.
     Result<void> reloadModel(const std::string& file);
     // The GL program of an enabled pass (0 for none): a different one once the pass is recompiled.

@@ -74,31 +74,42 @@ std::string label(const Texture& t) {
     return std::string(t.kind == TextureKind::Cube ? "cubemap '" : "texture '") + t.name + "'";
 }
 
+GlTextureInfo uploadTexture2D(Image image, const Texture& texture) {
+    GlTextureInfo info;
+    UploadFormat f = chooseFormat(image, texture.colorSpace);
+    info.width = image.width;
+    info.height = image.height;
+    // Image rows run top to bottom; GL's t = 0 is the bottom row.
+    std::vector<float> flipped(image.pixels.size());
+    size_t row = static_cast<size_t>(image.width) * image.channels;
+    for (int y = 0; y < image.height; ++y)
+        std::copy_n(image.pixels.begin() + static_cast<long>(y * row), row,
+                    flipped.begin() + static_cast<long>((image.height - 1 - y) * row));
+    int levels = texture.mipmaps ? gl::mipLevels(info.width, info.height) : 1;
+    glCreateTextures(GL_TEXTURE_2D, 1, &info.name);
+    glTextureStorage2D(info.name, levels, f.internal, info.width, info.height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(info.name, 0, 0, 0, info.width, info.height, f.pixelFormat, GL_FLOAT, flipped.data());
+    if (f.swizzleGray) applySwizzle(info.name, image.channels);
+    if (texture.mipmaps) glGenerateTextureMipmap(info.name);
+    info.bytes = static_cast<size_t>(info.width) * info.height * bytesPerTexel(f.internal) * (texture.mipmaps ? 4 : 3) / 3;
+    return info;
+}
+
 }  // namespace
 
 Result<GlTextureInfo> loadGlTexture(const Workspace& ws, const Texture& texture) {
     GlTextureInfo info;
+    if (texture.supplied) {
+        if (texture.kind != TextureKind::Texture2D || texture.supplied->empty())
+            return Error{label(texture) + ": the image supplied for it is empty or not a 2D image"};
+        return uploadTexture2D(*texture.supplied, texture);
+    }
+    if (texture.files.empty()) return Error{label(texture) + ": no image was given for it (rmfx render --input " + texture.name + "=FILE)"};
     if (texture.kind == TextureKind::Texture2D) {
         auto image = readImage(ws.folder / texture.files[0]);
         if (!image) return Error{label(texture) + ": " + image.error()};
-        UploadFormat f = chooseFormat(*image, texture.colorSpace);
-        info.width = image->width;
-        info.height = image->height;
-        // Image rows run top to bottom; GL's t = 0 is the bottom row.
-        std::vector<float> flipped(image->pixels.size());
-        size_t row = static_cast<size_t>(image->width) * image->channels;
-        for (int y = 0; y < image->height; ++y)
-            std::copy_n(image->pixels.begin() + static_cast<long>(y * row), row,
-                        flipped.begin() + static_cast<long>((image->height - 1 - y) * row));
-        int levels = texture.mipmaps ? gl::mipLevels(info.width, info.height) : 1;
-        glCreateTextures(GL_TEXTURE_2D, 1, &info.name);
-        glTextureStorage2D(info.name, levels, f.internal, info.width, info.height);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTextureSubImage2D(info.name, 0, 0, 0, info.width, info.height, f.pixelFormat, GL_FLOAT, flipped.data());
-        if (f.swizzleGray) applySwizzle(info.name, image->channels);
-        if (texture.mipmaps) glGenerateTextureMipmap(info.name);
-        info.bytes = static_cast<size_t>(info.width) * info.height * bytesPerTexel(f.internal) * (texture.mipmaps ? 4 : 3) / 3;
-        return info;
+        return uploadTexture2D(std::move(*image), texture);
     }
 
     Result<CubeFaces> faces = Error{""};

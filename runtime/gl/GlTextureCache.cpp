@@ -58,7 +58,7 @@ bool GlTextureCache::copyFrom(const Workspace& ws, const Texture& t, const Textu
     auto it = reuse.cache->textures_.find(t.name);
     if (!old || it == reuse.cache->textures_.end() || old->kind != t.kind || old->layout != t.layout ||
         old->colorSpace != t.colorSpace || old->mipmaps != t.mipmaps || old->faceSize != t.faceSize ||
-        old->files.size() != t.files.size())
+        old->files.size() != t.files.size() || old->supplied != t.supplied)
         return false;
     for (size_t i = 0; i < t.files.size(); ++i)
         if ((reuse.ws->folder / old->files[i]).lexically_normal() != (ws.folder / t.files[i]).lexically_normal())

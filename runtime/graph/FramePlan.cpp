@@ -9,11 +9,14 @@ Diagnostics workspaceError(const Workspace& ws, const std::string& element, cons
 }
 
 // No outputs named: every target a running pass writes, so every one can be inspected.
-std::vector<std::string> everyWrittenTarget(const Workspace& ws, const std::set<std::string>& askedEffects) {
+std::vector<std::string> everyWrittenTarget(const Workspace& ws, const std::set<std::string>& askedEffects,
+                                            const std::set<std::string>& givenInputs) {
     std::set<std::string> written;
-    for (const Pass& p : ws.passes) {
+    for (size_t i = 0; i < ws.passes.size(); ++i) {
+        const Pass& p = ws.passes[i];
         const Effect* e = ws.effectOfPass(p.name);
-        if (p.enabled && (!e || askedEffects.count(e->name))) written.insert(ws.passTargetName(p));
+        if (p.enabled && (!e || askedEffects.count(e->name)) && !cullingByInputs(ws, givenInputs, static_cast<int>(i)))
+            written.insert(ws.passTargetName(p));
     }
     std::vector<std::string> outputs;
     for (const RenderTarget& t : ws.targets)
@@ -87,7 +90,9 @@ Result<FramePlan> planFramePasses(const Workspace& ws, const FramePlanOptions& o
     plan.askedEffects = *asked;
     plan.prelude = effectPrelude(ws, plan.askedEffects);
     plan.request.effects = plan.askedEffects;
-    plan.request.outputs = options.outputs.empty() ? everyWrittenTarget(ws, plan.askedEffects) : options.outputs;
+    plan.request.givenInputs = options.givenInputs;
+    plan.request.outputs =
+        options.outputs.empty() ? everyWrittenTarget(ws, plan.askedEffects, options.givenInputs) : options.outputs;
     std::vector<std::string> switched;
     for (const Effect& e : ws.effects)
         if (plan.askedEffects.count(e.name) && !e.switches.empty()) switched.push_back(e.name);

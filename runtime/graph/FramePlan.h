@@ -30,6 +30,8 @@ struct FramePlanOptions {
     std::vector<std::string> outputs;
     // The effects asked for (--effects); nullopt: the workspace's <output effects>, else all.
     std::optional<std::vector<std::string>> effects;
+    // The <input>s an image is given for (rmfx render --input): the passes they replace are culled.
+    std::set<std::string> givenInputs;
     bool poolTargets = true;
     // The most render-target memory a frame may hold (--memory-budget); a workspace that needs
     // more fails before anything is allocated.

@@ -20,6 +20,37 @@ std::string samplerLabel(const Sampler& s) { return "<sampler name=\"" + s.unifo
 
 std::string inQuotes(const std::string& name) { return "'" + name + "'"; }
 
+bool samplesTexture(const Pass& p, const std::string& texture) {
+    for (const Sampler& s : p.samplers)
+        if (s.texture == texture) return true;
+    return false;
+}
+
+}  // namespace
+
+std::optional<InputCulling> cullingByInputs(const Workspace& ws, const std::set<std::string>& givenInputs, int index) {
+    const Pass& pass = ws.passes[static_cast<size_t>(index)];
+    const std::string target = ws.passTargetName(pass);
+    for (const ImageInput& input : ws.inputs) {
+        if (input.replaces.empty()) continue;
+        const bool given = givenInputs.count(input.name) != 0;
+        if (!given && samplesTexture(pass, input.name))
+            return InputCulling{PassFate::InputNotGiven, "no image given for input '" + input.name + "' (rmfx render --input " +
+                                                             input.name + "=FILE): the workspace draws " +
+                                                             inQuotes(input.replaces) + " itself"};
+        if (!given || target != input.replaces) continue;
+        int first = -1;
+        for (size_t i = 0; i < ws.passes.size() && first < 0; ++i)
+            if (samplesTexture(ws.passes[i], input.name)) first = static_cast<int>(i);
+        if (first >= 0 && index < first)
+            return InputCulling{PassFate::InputGiven,
+                                inQuotes(input.replaces) + " comes from the image given for input '" + input.name + "'"};
+    }
+    return std::nullopt;
+}
+
+namespace {
+
 int lastWriterBefore(const std::vector<PassNode>& nodes, const std::string& target, int before) {
     for (int j = before - 1; j >= 0; --j)
         if (nodes[static_cast<size_t>(j)].active && nodes[static_cast<size_t>(j)].target == target) return j;
@@ -46,6 +77,8 @@ const char* passFateName(PassFate fate) {
         case PassFate::Disabled: return "culled: disabled";
         case PassFate::EffectLeftOut: return "culled: effect left out";
         case PassFate::EffectSwitchedOff: return "culled: effect switched off";
+        case PassFate::InputGiven: return "culled: input given";
+        case PassFate::InputNotGiven: return "culled: input not given";
         case PassFate::NotNeeded: return "culled: not needed";
     }
     return "?";
@@ -69,9 +102,14 @@ Result<PassGraph> buildPassGraph(const Workspace& ws, const FrameRequest& reques
         node.target = ws.passTargetName(pass);
         node.effect = ws.effectOfPass(pass.name);
         node.loadsTarget = passLoadsTarget(pass);
+        std::optional<InputCulling> culled =
+            pass.enabled ? cullingByInputs(ws, request.givenInputs, static_cast<int>(i)) : std::nullopt;
         if (!pass.enabled) {
             node.fate = PassFate::Disabled;
             node.why = "enabled=\"false\"";
+        } else if (culled) {
+            node.fate = culled->fate;
+            node.why = std::move(culled->why);
         } else if (node.effect && !request.effects.count(node.effect->name)) {
             node.fate = PassFate::EffectLeftOut;
             node.why = "effect '" + node.effect->name + "' not asked for (asked for: " + joinNames(request.effects) + ")";
@@ -166,6 +204,14 @@ Result<PassGraph> buildPassGraph(const Workspace& ws, const FrameRequest& reques
         for (size_t a = 0; a < node.carried.size(); ++a) need(node.carried[a], carriedWhy[static_cast<size_t>(k)][a]);
     }
 
+    for (int i = 0; i < n; ++i) {
+        if (!needed[static_cast<size_t>(i)]) continue;
+        for (const Sampler& s : g.nodes[static_cast<size_t>(i)].pass->samplers)
+            if (ws.findInput(s.texture) && !request.givenInputs.count(s.texture) && ws.findTexture(s.texture)->files.empty())
+                diagnostics.push_back({Diagnostic::Severity::Error, s.where, samplerLabel(s),
+                                       "pass '" + ws.passes[static_cast<size_t>(i)].name + "' samples input '" + s.texture +
+                                           "', and no image was given for it (rmfx render --input " + s.texture + "=FILE)"});
+    }
     for (const MissingInput& m : missing)
         if (needed[static_cast<size_t>(m.pass)])
             diagnostics.push_back({Diagnostic::Severity::Error, m.sampler->where, samplerLabel(*m.sampler),

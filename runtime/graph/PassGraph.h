@@ -5,6 +5,7 @@
 // mesh without clearing; it writes its target. From the outputs asked for, only the passes they
 // transitively need run, in document order. Pure: no GL.
 
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -20,6 +21,8 @@ enum class PassFate {
     Disabled,           // enabled="false"
     EffectLeftOut,      // its effect was not asked for
     EffectSwitchedOff,  // its effect's switch variables are all off
+    InputGiven,         // it draws a target an image given for an <input> replaces
+    InputNotGiven,      // it samples an <input> no image was given for (the workspace draws the target)
     NotNeeded,          // nothing asked for reads what it writes
 };
 
@@ -36,10 +39,20 @@ struct PassNode {
     std::vector<std::string> skippedInputs;  // targets of effects that are off, which its shaders skip
 };
 
+// Why an <input> culls a pass: an image was given for an input that replaces the target the pass
+// draws, and the pass comes before the first pass sampling the input (InputGiven); or the pass
+// samples an input that replaces a target and no image was given (InputNotGiven).
+struct InputCulling {
+    PassFate fate;
+    std::string why;
+};
+std::optional<InputCulling> cullingByInputs(const Workspace& ws, const std::set<std::string>& givenInputs, int passIndex);
+
 struct FrameRequest {
     std::vector<std::string> outputs;     // targets read after the frame; empty: the workspace's output
     std::set<std::string> effects;        // effects asked for
     std::set<std::string> switchedOff;    // asked for, but switched off this frame
+    std::set<std::string> givenInputs;    // <input>s an image was given for (rmfx render --input)
 };
 
 struct PassGraph {

@@ -16,6 +16,8 @@ static auto* findByName(T& items, std::string_view name) {
 const Variable* Workspace::findVariable(std::string_view name) const { return findByName(variables, name); }
 Variable* Workspace::findVariable(std::string_view name) { return findByName(variables, name); }
 const Texture* Workspace::findTexture(std::string_view name) const { return findByName(textures, name); }
+Texture* Workspace::findTexture(std::string_view name) { return findByName(textures, name); }
+const ImageInput* Workspace::findInput(std::string_view name) const { return findByName(inputs, name); }
 const RenderTarget* Workspace::findTarget(std::string_view name) const { return findByName(targets, name); }
 const Pass* Workspace::findPass(std::string_view name) const { return findByName(passes, name); }
 

@@ -4,6 +4,7 @@
 // no GL, no file access. Every object remembers where it was declared.
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,6 +51,23 @@ struct Texture {
     ColorSpace colorSpace = ColorSpace::Linear;
     bool mipmaps = true;
     int faceSize = 0;  // equirect → cube face size; 0: image height / 2
+    // An <input>'s texture has no files: its image is supplied at run time (rmfx render --input),
+    // decoded to linear RGBA at the size it is used at.
+    std::shared_ptr<const Image> supplied;
+    SourceLocation where;
+};
+
+// An image from outside the workspace (rmfx render --input [NAME=]FILE): a 2D texture of the same
+// name holds it. With `replaces`, the image stands in for that target: when it is given, the
+// passes that write the target before the first pass sampling the input are culled; when it is
+// not, the passes sampling the input are, and the workspace draws the target itself. Without
+// `replaces`, the texture's file (<input file>) is used when no image is given; with no file
+// either, the image is required.
+struct ImageInput {
+    std::string name;
+    std::string replaces;  // a render target; empty: none
+    bool sizesViewport = false;  // a given image sets the viewport's size (default: when it replaces a target)
+    std::string description;
     SourceLocation where;
 };
 
@@ -244,6 +262,7 @@ struct Workspace {
     std::vector<Variable> variables;
     std::vector<CodeSnippet> snippets;
     std::vector<Texture> textures;
+    std::vector<ImageInput> inputs;  // each with a texture of its name in `textures`
     std::vector<RenderTarget> targets;
     std::vector<Pass> passes;  // run in this order
     std::vector<Effect> effects;
@@ -255,6 +274,8 @@ struct Workspace {
     const Variable* findVariable(std::string_view name) const;
     Variable* findVariable(std::string_view name);
     const Texture* findTexture(std::string_view name) const;
+    Texture* findTexture(std::string_view name);
+    const ImageInput* findInput(std::string_view name) const;
     const RenderTarget* findTarget(std::string_view name) const;
     const Pass* findPass(std::string_view name) const;
     const Effect* findEffect(std::string_view name) const;

@@ -21,6 +21,7 @@ public:
     void run() {
         checkUniqueNames();
         checkTargets();
+        checkInputs();
         checkOutput();
         checkEffects();
         checkSemantics();
@@ -59,8 +60,10 @@ private:
 
     void checkUniqueNames() {
         unique(ws_.variables, "variable", [](const Variable& v) { return valueTypeName(v.value.type); });
-        unique(ws_.textures, "texture",
-               [](const Texture& t) { return t.kind == TextureKind::Cube ? "cubemap" : "texture"; });
+        unique(ws_.textures, "texture", [&](const Texture& t) {
+            if (t.files.empty() && ws_.findInput(t.name)) return "input";
+            return t.kind == TextureKind::Cube ? "cubemap" : "texture";
+        });
         unique(ws_.targets, "target", [](const RenderTarget&) { return "target"; });
         unique(ws_.passes, "pass", [](const Pass&) { return "pass"; });
         unique(ws_.snippets, "code snippet", [](const CodeSnippet&) { return "code"; });
@@ -79,6 +82,26 @@ private:
             if (!t.scaleVariable.empty())
                 checkChoiceVariable(t, "scale-by", t.scaleVariable, t.scales.size(), "scale",
                                     selectTargetSize(t, valueOf(t.scaleVariable)).has_value());
+        }
+    }
+
+    // An input that replaces a target needs a pass that puts its image there; one that replaces
+    // nothing is required, and unused it is a mistake worth a warning.
+    void checkInputs() {
+        for (const ImageInput& input : ws_.inputs) {
+            std::string element = "<input name=\"" + input.name + "\">";
+            bool sampled = false;
+            for (const Pass& p : ws_.passes)
+                for (const Sampler& s : p.samplers) sampled = sampled || s.texture == input.name;
+            if (!input.replaces.empty() && !ws_.findTarget(input.replaces)) {
+                error(input.where, element, "replaces target '" + input.replaces + "', which is not declared (" +
+                                                ws_.describeTargets() + ")");
+            } else if (!input.replaces.empty() && !sampled) {
+                error(input.where, element, "replaces target '" + input.replaces + "', but no pass samples input '" +
+                                                input.name + "': nothing would put the image into '" + input.replaces + "'");
+            } else if (!sampled) {
+                warning(input.where, element, "no pass samples input '" + input.name + "': an image given for it is not used");
+            }
         }
     }
 

@@ -60,6 +60,8 @@ public:
                 if (auto c = parseSnippet(e)) ws.snippets.push_back(std::move(*c));
             } else if (tag == "texture" || tag == "cubemap") {
                 if (auto t = parseTexture(e)) ws.textures.push_back(std::move(*t));
+            } else if (tag == "input") {
+                parseInput(e, ws);
             } else if (tag == "target") {
                 if (auto t = parseTarget(e)) ws.targets.push_back(std::move(*t));
             } else if (tag == "pass") {
@@ -77,7 +79,7 @@ public:
             } else {
                 unexpected(e, "unknown element <" + std::string(tag) +
                                   "> in <workspace> (expected description, camera, code, float, int, bool, vec2, vec3, "
-                                  "vec4, color, mat4, texture, cubemap, target, pass, effect, output)");
+                                  "vec4, color, mat4, texture, cubemap, input, target, pass, effect, output)");
             }
         }
         if (ws.passes.empty()) r.error("no <pass>: nothing to render");
@@ -207,6 +209,36 @@ private:
         c.code = text ? text : "";
         c.codeLine = e->FirstChild() ? e->FirstChild()->GetLineNum() : e->GetLineNum();
         return c;
+    }
+
+    // <input name="photo" replaces="scene"/>: an ImageInput and the 2D texture that holds its image.
+    void parseInput(const XMLElement* e, Workspace& ws) {
+        ElementReader r(e, file_, diagnostics_, {"name", "replaces", "file", "viewport", "colorspace", "mipmaps", "description"});
+        auto name = r.identifier("name");
+        ImageInput input;
+        input.where = r.where();
+        input.replaces = r.string("replaces").value_or("");
+        input.description = r.string("description").value_or("");
+        input.sizesViewport = r.choice<bool>("viewport", {{"image", true}, {"workspace", false}})
+                                  .value_or(!input.replaces.empty());
+        Texture t;
+        t.where = input.where;
+        t.mipmaps = r.boolean("mipmaps").value_or(false);
+        if (auto cs = r.choice<ColorSpace>("colorspace", {{"linear", ColorSpace::Linear}, {"srgb", ColorSpace::Srgb}}))
+            t.colorSpace = *cs;
+        if (auto file = r.string("file")) {
+            if (file->empty()) r.error("attribute 'file' is empty");
+            if (!input.replaces.empty())
+                r.error("an input that replaces a target has no default file: without an image given, the "
+                        "workspace draws '" + input.replaces + "' itself");
+            t.files = {*file};
+            t.fileLocations = {r.where()};
+        }
+        noChildren(e);
+        if (!name) return;
+        input.name = t.name = *name;
+        ws.inputs.push_back(std::move(input));
+        ws.textures.push_back(std::move(t));
     }
 
     std::optional<Texture> parseTexture(const XMLElement* e) {
