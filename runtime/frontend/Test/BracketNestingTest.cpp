@@ -9,7 +9,6 @@ TEST(BracketNesting, WellNestedCodeHasNoMismatch) {
     EXPECT_FALSE(findBracketMismatch("float4 main(float3 t[2] : TEXCOORD0) : COLOR0 { return t[(1)].xyzz; }"));
     EXPECT_FALSE(findBracketMismatch("float a[2] = {1, 2}; // ) ] }\n/* ( [ { */ float b = a[0] > 0 ? a[1] : 0;"));
     EXPECT_FALSE(findBracketMismatch("string s = \"(]\"; char c = ')';"));
-    EXPECT_FALSE(findBracketMismatch("void f( {"));  // left open: glslang reports it itself
 }
 
 TEST(BracketNesting, AnUnclosedBracketInAParameterListIsFoundAtItsCloser) {
@@ -25,6 +24,19 @@ TEST(BracketNesting, ACloserWithNoOpenerIsFound) {
     ASSERT_TRUE(bad);
     EXPECT_EQ(bad->line, 3);
     EXPECT_EQ(bad->message, "'}' closes nothing");
+}
+
+TEST(BracketNesting, AnOpenerNeverClosedIsFoundAtTheOpener) {
+    // What crashed glslang's HLSL grammar (tests/fuzz-regressions/rfx_import/hlsl-bracket-open-at-end).
+    auto bad = findBracketMismatch("struct{float T;}o[");
+    ASSERT_TRUE(bad);
+    EXPECT_EQ(bad->line, 1);
+    EXPECT_EQ(bad->message, "'[' is never closed");
+
+    bad = findBracketMismatch("void f(\n// )\nfloat a, {\n[\n");
+    ASSERT_TRUE(bad);
+    EXPECT_EQ(bad->line, 1);
+    EXPECT_EQ(bad->message, "'(' is never closed");
 }
 
 }  // namespace

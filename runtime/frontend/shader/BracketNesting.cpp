@@ -37,6 +37,10 @@ std::optional<BracketMismatch> findBracketMismatch(std::string_view code) {
             open.pop_back();
         }
     }
+    if (!open.empty()) {
+        // The outermost unclosed opener: the inner ones usually follow from it.
+        return BracketMismatch{open.front().line, std::string("'") + open.front().c + "' is never closed"};
+    }
     return std::nullopt;
 }
 
