@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# On a lent GPU machine (no Debian packages there): the render, the replay, the benchmarks and the
+# GL test suite, from a bundle of the programs made here (docs/performance.md, "On a GPU"):
+#
+#   python3 scripts/device-bundle.py /tmp/bundle build/rmfx build/rmfx_bench_effects build/tests/rmfx_gl_tests
+#   mkdir -p .devbundle && tar cf - -C /tmp bundle | xz -6 -T2 >.devbundle/bundle.tar.xz
+#   then, there, with .devbundle, .gl (the GL loaders' .debs) and samples/media carried:
+#   bash bench/run-on-device.sh
+#
+# Everything goes to $OUT (default /tmp/device-out): log.txt and results.tar.gz (the image, replay
+# JUnit report and failures, benchmark tables, GL test report). Each part has its own time limit,
+# so a failing one leaves time for the others. QUICK=1 runs a few seconds of each (a dry run).
+set -uo pipefail
+out=${OUT:-/tmp/device-out}
+quick=${QUICK:-0}
+mkdir -p "$out/results"
+exec > >(tee "$out/log.txt") 2>&1
+root=$PWD
+part() { echo; echo "=== $1 ($(date +%T))"; }
+
+if [ -d .gl ] && [ "$(id -u)" = 0 ] && ! [ -e /etc/debian_version ]; then
+  for f in .gl/*.deb; do dpkg -x "$f" /; done
+  ldconfig
+fi
+vendor=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
+[ -f "$vendor" ] && export __EGL_VENDOR_LIBRARY_FILENAMES=$vendor
+
+bundle=/tmp/rmfx-bundle
+rm -rf "$bundle" && mkdir -p "$bundle" && tar xJf .devbundle/bundle.tar.xz -C "$bundle" --strip-components=1
+export LD_LIBRARY_PATH=$bundle/lib
+for d in /usr/local/nvidia/lib64 /usr/local/nvidia/lib; do [ -d "$d" ] && LD_LIBRARY_PATH+=":$d"; done
+# The GL tests were built here with /work/main as their source folder and /work/main/build as the build.
+if [ "$root" != /work/main ]; then mkdir -p /work && ln -sfn "$root" /work/main; fi
+mkdir -p build/tests
+cp "$bundle/bin/rmfx" "$bundle/bin/rmfx_bench_effects" build/
+cp "$bundle/bin/rmfx_gl_tests" build/tests/
+
+part "machine"
+nvidia-smi -L 2>/dev/null || echo "no nvidia-smi"
+nproc
+
+part "render (README's first command)"
+timeout 60 build/rmfx render effects/hdr_lighting.xml --frames 30 --dt 0.5 -o "$out/results/hdr_lighting.png"
+
+part "replay tests/replay/effects.xml"
+timeout 120 build/rmfx replay tests/replay/effects.xml --out "$out/results/replay-out" --junit "$out/results/replay-junit.xml"
+echo "replay exit status: $?"
+
+part "rmfx_bench_effects (interpreter against the hand-written loop)"
+if [ "$quick" = 1 ]; then reps=1 min=0.01; else reps=5 min=0.5; fi
+for size in 512x512 1920x1080; do
+  timeout 150 build/rmfx_bench_effects --size="$size" --benchmark_repetitions=$reps --benchmark_report_aggregates_only=true \
+    --benchmark_min_time=$min --markdown="$out/results/effects-$size.md" >"$out/results/effects-$size.txt" 2>&1
+  echo "size $size: exit status $?"; cat "$out/results/effects-$size.md"
+done
+
+part "rmfx bench bench/variants.xml (accuracy against GPU time)"
+if [ "$quick" = 1 ]; then frames=2 warmup=1; else frames=20 warmup=5; fi
+timeout 150 build/rmfx bench bench/variants.xml --size 512x512 --frames $frames --warmup $warmup --time auto -q \
+  --out "$out/results/accuracy"
+echo "bench exit status: $?"
+cat "$out/results/accuracy/accuracy.md" 2>/dev/null
+
+part "GL test suite"
+if [ "$quick" = 1 ]; then filter=--gtest_filter='Glare*:CliInput*'; else filter=; fi
+timeout "${GL_TESTS_SECONDS:-200}" build/tests/rmfx_gl_tests $filter --gtest_output=json:"$out/results/gl-tests.json" \
+  >"$out/results/gl-tests.txt" 2>&1
+echo "GL tests exit status: $?"
+grep -E "^\[  FAILED|^\[  PASSED|^\[==========\]" "$out/results/gl-tests.txt" | tail -n 40
+
+tar czf "$out/results.tar.gz" -C "$out" results && rm -rf "$out/results"
+echo "=== done ($(date +%T))"
