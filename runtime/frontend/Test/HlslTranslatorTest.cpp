@@ -91,6 +91,29 @@ std::vector<std::string> names(const std::vector<ActiveUniform>& uniforms) {
     return out;
 }
 
+// Shapes that crash Debian's glslang HLSL front end (found by the rfx_import fuzzer): each is an
+// error on the shader's element, and rmfx goes on.
+TEST(HlslTranslator, ShadersThatCrashGlslangAreErrorsOnTheirElement) {
+    // a null read in TIntermediate::addBinaryMath (brackets balanced, so the guard lets it through)
+    const char* code = "float i=float4(5,5,0,0);cbuffer:register(b){float s;}float n(float Tangent:D):R{float3 "
+                       "r=abs(Tangent)s.b+b++()}";
+    Diagnostics d;
+    EXPECT_FALSE(translate(code, ShaderStage::Fragment, d, "main", "ps_2_0"));
+    ASSERT_EQ(d.size(), 1u) << formatAll(d);
+    EXPECT_EQ(d[0].severity, Diagnostic::Severity::Error);
+    EXPECT_EQ(d[0].where.file, "effect.rfx");
+    EXPECT_EQ(d[0].where.line, 7);
+    EXPECT_EQ(d[0].element, "<RmHLSLShader>");
+    EXPECT_EQ(d[0].message.rfind("glslang crashed (signal 11", 0), 0u) << d[0].message;
+
+    // An unclosed bracket never reaches glslang: it is reported at its own line.
+    Diagnostics unclosed;
+    EXPECT_FALSE(translate("float4 main() : COLOR0 { return 1; }\nstruct{float T;}o[", ShaderStage::Fragment, unclosed,
+                           "main", "ps_2_0"));
+    ASSERT_EQ(unclosed.size(), 1u) << formatAll(unclosed);
+    EXPECT_EQ(unclosed[0].message, "'[' is never closed");
+}
+
 }  // namespace
 
 TEST(HlslTranslator, UniformsAndSamplersKeepTheirHlslNamesAsPlainUniforms) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
+#include <cstring>
 #include <cstdio>
 #include <functional>
 #include <map>
@@ -13,6 +15,7 @@
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
+#include "core/IsolatedCall.h"
 #include "frontend/shader/BracketNesting.h"
 #include "frontend/shader/HlslGlobalInitializers.h"
 
@@ -22,6 +25,71 @@ namespace {
 void initializeGlslangOnce() {
     static std::once_flag flag;
     std::call_once(flag, [] { glslang::InitializeProcess(); });
+}
+
+// What glslang made of one HLSL stage, as it crosses from the child process (callIsolated).
+struct GlslangHlslOutcome {
+    enum Kind : char { Failed = 'F', NoEntryPoint = 'E', Compiled = 'S' };
+    Kind kind = Failed;
+    std::string log;              // Failed: glslang's info log
+    std::vector<unsigned> spirv;  // Compiled
+
+    std::string serialize() const {
+        std::string bytes(1, kind);
+        if (kind == Compiled) {
+            bytes.append(reinterpret_cast<const char*>(spirv.data()), spirv.size() * sizeof(unsigned));
+        } else {
+            bytes += log;
+        }
+        return bytes;
+    }
+    static GlslangHlslOutcome deserialize(const std::string& bytes) {
+        GlslangHlslOutcome out;
+        if (bytes.empty()) return out;
+        out.kind = static_cast<Kind>(bytes[0]);
+        if (out.kind == Compiled) {
+            out.spirv.resize((bytes.size() - 1) / sizeof(unsigned));
+            std::memcpy(out.spirv.data(), bytes.data() + 1, out.spirv.size() * sizeof(unsigned));
+        } else {
+            out.log = bytes.substr(1);
+        }
+        return out;
+    }
+};
+
+// Long enough for any real shader on a loaded machine; a glslang stalled on a lock another
+// thread held at the fork ends here.
+constexpr std::chrono::milliseconds kGlslangTimeout{30000};
+
+GlslangHlslOutcome compileHlslToSpirv(const std::string& code, ShaderStage stage, const std::string& entry) {
+    EShLanguage language = stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
+    glslang::TShader shader(language);
+    const char* text = code.c_str();
+    shader.setStrings(&text, 1);
+    shader.setEntryPoint(entry.c_str());
+    shader.setEnvInput(glslang::EShSourceHlsl, language, glslang::EShClientOpenGL, 100);
+    shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
+    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+    shader.setEnvTargetHlslFunctionality1();  // keeps the semantics in the SPIR-V
+    shader.setAutoMapLocations(true);
+    shader.setAutoMapBindings(true);
+    auto messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgHlslDX9Compatible | EShMsgSpvRules);
+    glslang::TProgram program;
+    GlslangHlslOutcome out;
+    bool parsed = shader.parse(GetDefaultResources(), 100, false, messages);
+    if (parsed) program.addShader(&shader);
+    if (!parsed || !program.link(messages)) {
+        out.log = parsed ? program.getInfoLog() : shader.getInfoLog();
+        return out;
+    }
+    // glslang only warns when the entry point is missing, and compiles an empty shader.
+    if (std::string(program.getInfoLog()).find("Entry point not found") != std::string::npos) {
+        out.kind = GlslangHlslOutcome::NoEntryPoint;
+        return out;
+    }
+    out.kind = GlslangHlslOutcome::Compiled;
+    glslang::GlslangToSpv(*program.getIntermediate(language), out.spirv);
+    return out;
 }
 
 std::string upper(std::string s) {
@@ -162,31 +230,25 @@ Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const
     std::string code = hlsl.code;
     if (code.rfind("#version", 0) == 0) code.erase(0, code.find('\n'));
 
-    // Debian's glslang crashes on some mismatched brackets (BracketNesting.h): caught before it reads them.
+    // Debian's glslang crashes on mismatched brackets (BracketNesting.h): reported here, with their line.
     if (std::optional<BracketMismatch> bad = findBracketMismatch(code)) {
         SourceLocation at = hlsl.origin(bad->line);
         diagnostics.push_back({Diagnostic::Severity::Error, at.file.empty() ? where : at, element, bad->message});
         return Result<HlslTranslation>::failure(std::move(diagnostics));
     }
-    EShLanguage language = stage.stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
-    glslang::TShader shader(language);
-    const char* text = code.c_str();
-    shader.setStrings(&text, 1);
     std::string entry = stage.entryPoint.empty() ? "main" : stage.entryPoint;
-    shader.setEntryPoint(entry.c_str());
-    shader.setEnvInput(glslang::EShSourceHlsl, language, glslang::EShClientOpenGL, 100);
-    shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
-    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
-    shader.setEnvTargetHlslFunctionality1();  // keeps the semantics in the SPIR-V
-    shader.setAutoMapLocations(true);
-    shader.setAutoMapBindings(true);
-    auto messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgHlslDX9Compatible | EShMsgSpvRules);
-    glslang::TProgram program;
-    bool parsed = shader.parse(GetDefaultResources(), 100, false, messages);
-    if (parsed) program.addShader(&shader);
-    if (!parsed || !program.link(messages)) {
-        std::string log = parsed ? program.getInfoLog() : shader.getInfoLog();
-        Diagnostics mapped = mapCompilerLog(log, hlsl, where, element);
+    // In a child process: Debian's glslang crashes on some malformed HLSL (IsolatedCall.h).
+    Result<std::string> isolated = callIsolated([&] { return compileHlslToSpirv(code, stage.stage, entry).serialize(); },
+                                                kGlslangTimeout);
+    if (!isolated) {
+        diagnostics.push_back({Diagnostic::Severity::Error, where, element,
+                               "glslang " + isolated.error() + " reading this HLSL shader: most likely a syntax "
+                               "error that Debian's glslang cannot report"});
+        return Result<HlslTranslation>::failure(std::move(diagnostics));
+    }
+    GlslangHlslOutcome compiled = GlslangHlslOutcome::deserialize(*isolated);
+    if (compiled.kind == GlslangHlslOutcome::Failed) {
+        Diagnostics mapped = mapCompilerLog(compiled.log, hlsl, where, element);
         // glslang closes its located errors with an unlocated summary ("HLSL parsing failed").
         if (mapped.size() > 1) {
             std::erase_if(mapped, [](const Diagnostic& d) { return d.message.find("HLSL parsing failed") != std::string::npos; });
@@ -195,14 +257,12 @@ Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const
         diagnostics.insert(diagnostics.end(), mapped.begin(), mapped.end());
         return Result<HlslTranslation>::failure(std::move(diagnostics));
     }
-    // glslang only warns when the entry point is missing, and compiles an empty shader.
-    if (std::string(program.getInfoLog()).find("Entry point not found") != std::string::npos) {
+    if (compiled.kind == GlslangHlslOutcome::NoEntryPoint) {
         diagnostics.push_back({Diagnostic::Severity::Error, where, element,
                                "HLSL entry point '" + entry + "' is not defined in the shader"});
         return Result<HlslTranslation>::failure(std::move(diagnostics));
     }
-    std::vector<unsigned> spirv;
-    glslang::GlslangToSpv(*program.getIntermediate(language), spirv);
+    const std::vector<unsigned>& spirv = compiled.spirv;
 
     Result<SpirvGlsl> translated = spirvToGlsl(spirv, stage.stage);
     if (!translated) {
