@@ -102,11 +102,11 @@ TEST_F(PassCullingGLTest, EffectsLeftOutNeverDrawAndHoldNoMemory) {
     }
     // By hand at 64x64: scene rgba16f with a 32-bit depth buffer 64·64·(8+4) = 49152 bytes; the six
     // 16x16 glare levels ping-pong between 3 textures of 16·16·8 = 2048 (glare_4, _5 and _6 live
-    // until the composite); the output 64·64·8 = 32768. Declared: scene, 16 quarter-size targets
+    // until the composite); the output, rgba32f, 64·64·16 = 65536. Declared: scene, 16 quarter-size targets
     // and the output.
     EXPECT_EQ(targetTextureCount(run.exec->targetPlan()), 5);
-    EXPECT_EQ(run.exec->targetPlan().allocatedBytes, 49152u + 3 * 2048 + 32768);
-    EXPECT_EQ(run.exec->targetPlan().declaredBytes, 49152u + 16 * 2048 + 32768);
+    EXPECT_EQ(run.exec->targetPlan().allocatedBytes, 49152u + 3 * 2048 + 65536);
+    EXPECT_EQ(run.exec->targetPlan().declaredBytes, 49152u + 16 * 2048 + 65536);
 }
 
 TEST_F(PassCullingGLTest, AskingForOneTargetRunsOnlyItsChain) {
@@ -300,8 +300,8 @@ TEST_F(PassCullingGLTest, ExplainPrintsTheScheduleTargetsAndPeakMemory) {
     EXPECT_NE(r.out.find("passes: 10 of 21 run"), std::string::npos) << r.out;  // scene_from_input: no --input
     EXPECT_NE(r.out.find("targets: 8 of 18 allocated, in 5 textures"), std::string::npos) << r.out;
     // The same byte counts as EffectsLeftOutNeverDrawAndHoldNoMemory, worked out by hand.
-    EXPECT_NE(r.out.find("peak GPU memory of the frame: 86.0 KiB (88064 bytes) of 112.0 KiB (114688 bytes) for all "
-                         "declared targets: 77%"),
+    EXPECT_NE(r.out.find("peak GPU memory of the frame: 118.0 KiB (120832 bytes) of 144.0 KiB (147456 bytes) for all "
+                         "declared targets: 82%"),
               std::string::npos)
         << r.out;
     bool streakLine = false, glareLine = false;
