@@ -115,8 +115,13 @@ Result<std::unique_ptr<GlContext>> GlContext::createHeadless(GlProfile profile) 
         gl->display_ = c.display;
         gl->context_ = context;
         gl->profile_ = profile;
-        gl->description_ = std::string(reinterpret_cast<const char*>(glGetString(GL_VERSION))) + ", " +
-                           reinterpret_cast<const char*>(glGetString(GL_RENDERER)) + " via " + c.name;
+        std::string version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+        // Mesa names the profile in its version string ("4.5 (Compatibility Profile) Mesa"); NVIDIA does not.
+        GLint mask = 0;
+        glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &mask);
+        if ((mask & GL_CONTEXT_COMPATIBILITY_PROFILE_BIT) && version.find("Compatibility") == std::string::npos)
+            version += " (Compatibility Profile)";
+        gl->description_ = version + ", " + reinterpret_cast<const char*>(glGetString(GL_RENDERER)) + " via " + c.name;
         return gl;
     }
     return Error{"cannot open an EGL display with an OpenGL 4.5 " + std::string(profileName) + " context:" + tried +

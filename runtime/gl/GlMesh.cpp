@@ -86,10 +86,9 @@ GlMesh::GlMesh(const Mesh& mesh) : indexCount_(mesh.indices.size()), compatibili
                          mesh.indices.data(), 0);
     const VertexUsage defaults[3] = {VertexUsage::Position, VertexUsage::Normal, VertexUsage::TexCoord};
     std::vector<StreamBinding> layout;
-    for (int a = 0; a < 3; ++a) {
-        layout.push_back({defaults[a], 0, a});
-        if (compatibility_) layout.push_back({defaults[a], 0, -1});
-    }
+    // Generic arrays only: a program that reads the compatibility built-ins draws with the arrays
+    // bindStreams lists for it (the two kinds alias on some drivers).
+    for (int a = 0; a < 3; ++a) layout.push_back({defaults[a], 0, a});
     streamVertexArray(layout);
     vertexArray_ = std::move(streamArrays_.at(layout));  // the default array is kept apart
     streamArrays_.clear();

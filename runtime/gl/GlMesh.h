@@ -1,9 +1,9 @@
 #pragma once
 // A Mesh on the GPU: one buffer with interleaved position, normal, texcoord, tangent, binormal and
 // colour (white), and 32-bit indices. Its default vertex array feeds rmfx's layout (attribute
-// locations 0 position, 1 normal, 2 texcoord) and, in a compatibility-profile context, also the
-// built-ins gl_Vertex, gl_Normal and gl_MultiTexCoord0. Vertex streams (Pass::streams) get a
-// vertex array of their own. Needs a current GL context.
+// locations 0 position, 1 normal, 2 texcoord). Vertex streams (Pass::streams, and the built-ins
+// gl_Vertex, gl_Normal and gl_MultiTexCoord0 that bindStreams lists for a program reading them)
+// get a vertex array of their own. Needs a current GL context.
 
 #include <map>
 #include <vector>

@@ -68,9 +68,24 @@ SamplerHandle samplerObject(const Sampler& spec) {
 Result<void> bindStreams(GpuPass& gp, bool compatibilityProfile) {
     gp.streams.clear();
     const Pass& pass = *gp.pass;
-    if (pass.streams.empty()) return {};
-    Diagnostics d;
+    if (pass.streams.empty() && !compatibilityProfile) return {};
     const std::set<std::string> inputs = activeInputs(gp.program.get());
+    if (pass.streams.empty()) {
+        // The mesh's default arrays are the generic attributes 0-2 (rm_Position, rm_NormalIn,
+        // rm_TexCoordIn). A program that reads the built-ins gets exactly what it reads instead:
+        // NVIDIA aliases generic attribute 2 with gl_Normal (and 3 with gl_Color, 8 with
+        // gl_MultiTexCoord0), so with both arrays enabled gl_Normal read the texture coordinates.
+        const VertexUsage defaults[3] = {VertexUsage::Position, VertexUsage::Normal, VertexUsage::TexCoord};
+        bool readsBuiltins = false;
+        for (VertexUsage usage : defaults) readsBuiltins |= inputs.count(builtinAttributeName({.usage = usage})) > 0;
+        if (!readsBuiltins) return {};
+        for (int a = 0; a < 3; ++a)
+            if (inputs.count(builtinAttributeLocations[a])) gp.streams.push_back({defaults[a], 0, a});
+        for (VertexUsage usage : defaults)
+            if (inputs.count(builtinAttributeName({.usage = usage}))) gp.streams.push_back({usage, 0, -1});
+        return {};
+    }
+    Diagnostics d;
     auto warn = [&](const VertexStream& stream, const std::string& why) {
         d.push_back({Diagnostic::Severity::Warning, stream.where, passLabel(pass), "stream " + streamLabel(stream) + " " + why});
     };
