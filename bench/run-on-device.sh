@@ -9,7 +9,8 @@
 #
 # Everything goes to $OUT (default /tmp/device-out): log.txt and results.tar.gz (the image, replay
 # JUnit report and failures, benchmark tables, GL test report). Each part has its own time limit,
-# so a failing one leaves time for the others. QUICK=1 runs a few seconds of each (a dry run).
+# so a failing one leaves time for the others. QUICK=1 runs a few seconds of each (a dry run);
+# PARTS picks some of render replay bench accuracy probe gltests.
 set -uo pipefail
 out=${OUT:-/tmp/device-out}
 quick=${QUICK:-0}
@@ -18,7 +19,7 @@ exec > >(tee "$out/log.txt") 2>&1
 root=$PWD
 part() { echo; echo "=== $1 ($(date +%T))"; }
 
-if [ -d .gl ] && [ "$(id -u)" = 0 ] && ! [ -e /etc/debian_version ]; then
+if [ -d .gl ] && [ "$(id -u)" = 0 ] && ! ldconfig -p | grep -q "libEGL.so.1 "; then
   for f in .gl/*.deb; do dpkg -x "$f" /; done
   ldconfig
 fi
@@ -39,34 +40,63 @@ part "machine"
 nvidia-smi -L 2>/dev/null || echo "no nvidia-smi"
 nproc
 
-part "render (README's first command)"
-timeout 60 build/rmfx render effects/hdr_lighting.xml --frames 30 --dt 0.5 -o "$out/results/hdr_lighting.png"
+parts=" ${PARTS:-render replay bench accuracy gltests} "
+has() { [[ "$parts" == *" $1 "* ]]; }
 
-part "replay tests/replay/effects.xml"
-timeout 120 build/rmfx replay tests/replay/effects.xml --out "$out/results/replay-out" --junit "$out/results/replay-junit.xml"
-echo "replay exit status: $?"
+if has render; then
+  part "render (README's first command)"
+  timeout 60 build/rmfx render effects/hdr_lighting.xml --frames 30 --dt 0.5 -o "$out/results/hdr_lighting.png"
+fi
 
-part "rmfx_bench_effects (interpreter against the hand-written loop)"
-if [ "$quick" = 1 ]; then reps=1 min=0.01; else reps=5 min=0.5; fi
-for size in 512x512 1920x1080; do
-  timeout 150 build/rmfx_bench_effects --size="$size" --benchmark_repetitions=$reps --benchmark_report_aggregates_only=true \
-    --benchmark_min_time=$min --markdown="$out/results/effects-$size.md" >"$out/results/effects-$size.txt" 2>&1
-  echo "size $size: exit status $?"; cat "$out/results/effects-$size.md"
-done
+if has replay; then
+  part "replay tests/replay/effects.xml"
+  timeout 120 build/rmfx replay tests/replay/effects.xml --out "$out/results/replay-out" --junit "$out/results/replay-junit.xml"
+  echo "replay exit status: $?"
+fi
 
-part "rmfx bench bench/variants.xml (accuracy against GPU time)"
-if [ "$quick" = 1 ]; then frames=2 warmup=1; else frames=20 warmup=5; fi
-timeout 150 build/rmfx bench bench/variants.xml --size 512x512 --frames $frames --warmup $warmup --time auto -q \
-  --out "$out/results/accuracy"
-echo "bench exit status: $?"
-cat "$out/results/accuracy/accuracy.md" 2>/dev/null
+if has accuracy; then
+  part "rmfx bench bench/variants.xml (accuracy against GPU time)"
+  if [ "$quick" = 1 ]; then frames=2 warmup=1; else frames=20 warmup=5; fi
+  timeout 150 build/rmfx bench bench/variants.xml --size 512x512 --frames $frames --warmup $warmup --time auto -q \
+    --out "$out/results/accuracy"
+  echo "bench exit status: $?"
+  cat "$out/results/accuracy/accuracy.md" 2>/dev/null
+fi
 
-part "GL test suite"
-if [ "$quick" = 1 ]; then filter=--gtest_filter='Glare*:CliInput*'; else filter=; fi
-timeout "${GL_TESTS_SECONDS:-200}" build/tests/rmfx_gl_tests $filter --gtest_output=json:"$out/results/gl-tests.json" \
-  >"$out/results/gl-tests.txt" 2>&1
-echo "GL tests exit status: $?"
-grep -E "^\[  FAILED|^\[  PASSED|^\[==========\]" "$out/results/gl-tests.txt" | tail -n 40
+if has probe; then  # workspaces under .devbundle/probe/: each target of each written as EXR
+  part "probes"
+  for w in .devbundle/probe/*.xml; do
+    for t in $(grep -o '<target name="[^"]*"' "$w" | cut -d'"' -f2); do
+      timeout 30 build/rmfx render "$w" --target "$t" -o "$out/results/$(basename "$w" .xml)-$t.exr"
+    done
+  done
+fi
+
+if has gltests; then
+  # One process per suite: a crash (or a stub library called: scripts/device-bundle.py) loses one suite only.
+  part "GL test suite"
+  if [ "$quick" = 1 ]; then filter='Glare*:CliInput*'; else filter=${GL_TESTS_FILTER:-*}; fi
+  deadline=$((SECONDS + ${GL_TESTS_SECONDS:-200}))
+  for suite in $(build/tests/rmfx_gl_tests --gtest_list_tests --gtest_filter="$filter" | grep -E '^[A-Za-z0-9_/]+\.$' | tr -d .); do
+    left=$((deadline - SECONDS)); [ $left -le 0 ] && { echo "out of time before $suite"; break; }
+    timeout $left build/tests/rmfx_gl_tests --gtest_filter="$suite.*" >"$out/results/gl-${suite//\//_}.txt" 2>&1
+    status=$?
+    echo "$suite: $(grep -c '^\[       OK' "$out/results/gl-${suite//\//_}.txt") passed, exit status $status"
+    grep -E "^\[  FAILED  \] [A-Za-z]" "$out/results/gl-${suite//\//_}.txt" | grep -v "tests, listed" | sort -u
+    [ $status -gt 1 ] && tail -n 5 "$out/results/gl-${suite//\//_}.txt"
+  done
+fi
+
+if has bench; then
+  part "rmfx_bench_effects (interpreter against the hand-written loop)"
+  if [ "$quick" = 1 ]; then reps=1 min=0.01; else reps=${REPETITIONS:-5} min=${MIN_TIME:-0.5}; fi
+  for size in ${BENCH_SIZES:-512x512 1920x1080}; do
+    timeout "${BENCH_SECONDS:-150}" build/rmfx_bench_effects --size="$size" --benchmark_repetitions=$reps \
+      --benchmark_report_aggregates_only=true --benchmark_min_time=$min --markdown="$out/results/effects-$size.md" \
+      >"$out/results/effects-$size.txt" 2>&1
+    echo "size $size: exit status $?"; cat "$out/results/effects-$size.md"
+  done
+fi
 
 tar czf "$out/results.tar.gz" -C "$out" results && rm -rf "$out/results"
 echo "=== done ($(date +%T))"
