@@ -63,9 +63,9 @@ if has accuracy; then
   cat "$out/results/accuracy/accuracy.md" 2>/dev/null
 fi
 
-if has probe; then  # workspaces under .devbundle/probe/: each target of each written as EXR
+if has probe; then  # bench/device-probes/*.xml: each target of each written as EXR
   part "probes"
-  for w in .devbundle/probe/*.xml; do
+  for w in bench/device-probes/*.xml; do
     for t in $(grep -o '<target name="[^"]*"' "$w" | cut -d'"' -f2); do
       timeout 30 build/rmfx render "$w" --target "$t" -o "$out/results/$(basename "$w" .xml)-$t.exr"
     done
