@@ -20,6 +20,7 @@
 #include "run/HeadlessRun.h"
 #include "run/SequenceRun.h"
 #include "validation/ImageInputs.h"
+#include "validation/TextureArguments.h"
 #include "validation/WorkspaceLoader.h"
 
 namespace rmfx::cli {
@@ -63,6 +64,12 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
         .option({"--input"}, [&](const std::string& value) -> std::string {
             if (value.empty()) return "--input: expected [NAME=]FILE";
             a.inputs.push_back(parseInputArgument(value));
+            return "";
+        })
+        .option({"--texture"}, [&](const std::string& value) -> std::string {
+            Result<TextureArgument> texture = parseTextureArgument(value);
+            if (!texture) return texture.error();
+            a.load.textures.push_back(std::move(*texture));
             return "";
         })
         .option({"--target"}, [&](const std::string& value) { a.target = value; return ""; }, Empty::Allowed)
@@ -188,6 +195,9 @@ int renderCommand(const std::vector<std::string>& args) {
         return 1;
     }
     Result<Workspace> loaded = a->workspace ? loadWorkspace(*a->workspace, {}, a->load) : loadDefaultWorkspace({}, a->load.media);
+    if (loaded && !a->workspace) {
+        if (Result<void> replaced = replaceTextures(*loaded, a->load.textures); !replaced) loaded = Result<Workspace>::failure(replaced.takeDiagnostics());
+    }
     if (!loaded) {
         std::cerr << formatAll(loaded.diagnostics());
         return 1;

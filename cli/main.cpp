@@ -42,6 +42,15 @@ render options:
   --dt SECONDS           fixed time step between frames (default 1/60)
   --set NAME=VALUE       override a variable (repeatable), e.g. --set Exposure_Level=2
                          or --set Sun_Direction="0 1 0"
+  --input [NAME=]FILE[:layer]
+                         your image for the workspace's <input> NAME (docs/inputs.md): it
+                         replaces the scene the workspace draws, at the image's size unless
+                         --size; an EXR part or layer after ':'. A frame pattern
+                         (shot/f.%04d.exr, f.####.exr) runs the sequence, one output per frame
+  --fps N                a sequence's frame rate: dt = 1/N (default 24)
+  --texture NAME=FILE    replace a texture's file for this run (repeatable), .rfx too; a cube
+                         map takes one image (2:1 longitude/latitude, 4:3 or 3:4 cross, DDS)
+                         or six faces: NAME=px,nx,py,ny,pz,nz
   --target NAME          write this render target instead of the output (written linear, no transform)
   --transform none|srgb  override the display transform for 8-bit images
   --effects A,B          compute only these effects (<effect> groups); the others' passes are

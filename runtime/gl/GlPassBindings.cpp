@@ -77,12 +77,13 @@ Result<void> bindStreams(GpuPass& gp, bool compatibilityProfile) {
         // gl_MultiTexCoord0), so with both arrays enabled gl_Normal read the texture coordinates.
         const VertexUsage defaults[3] = {VertexUsage::Position, VertexUsage::Normal, VertexUsage::TexCoord};
         bool readsBuiltins = false;
-        for (VertexUsage usage : defaults) readsBuiltins |= inputs.count(builtinAttributeName({.usage = usage})) > 0;
+        auto builtinOf = [](VertexUsage usage) { VertexStream s; s.usage = usage; return builtinAttributeName(s); };
+        for (VertexUsage usage : defaults) readsBuiltins |= inputs.count(builtinOf(usage)) > 0;
         if (!readsBuiltins) return {};
         for (int a = 0; a < 3; ++a)
             if (inputs.count(builtinAttributeLocations[a])) gp.streams.push_back({defaults[a], 0, a});
         for (VertexUsage usage : defaults)
-            if (inputs.count(builtinAttributeName({.usage = usage}))) gp.streams.push_back({usage, 0, -1});
+            if (inputs.count(builtinOf(usage))) gp.streams.push_back({usage, 0, -1});
         return {};
     }
     Diagnostics d;

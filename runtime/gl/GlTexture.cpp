@@ -126,8 +126,9 @@ Result<GlTextureInfo> loadGlTexture(const Workspace& ws, const Texture& texture)
     } else {
         auto image = readImage(ws.folder / texture.files[0]);
         if (!image) return Error{label(texture) + ": " + image.error()};
-        faces = texture.layout == CubeLayout::Cross ? cubeFromCross(*image)
-                                                    : cubeFromEquirect(*image, texture.faceSize);
+        faces = texture.layout == CubeLayout::Cross      ? cubeFromCross(*image)
+                : texture.layout == CubeLayout::FromImage ? cubeFromImage(*image)
+                                                          : cubeFromEquirect(*image, texture.faceSize);
     }
     if (!faces) return Error{label(texture) + ": " + faces.error()};
     CubeFaces& cube = *faces;

@@ -40,7 +40,8 @@ struct Variable {
 
 enum class ColorSpace { Linear, Srgb };
 enum class TextureKind { Texture2D, Cube };
-enum class CubeLayout { Faces, Cross, Equirect };
+// FromImage: one image whose shape says its layout, 2:1 equirect or a 4:3 / 3:4 cross (rmfx render --texture).
+enum class CubeLayout { Faces, Cross, Equirect, FromImage };
 
 struct Texture {
     std::string name;

@@ -8,12 +8,17 @@
 namespace rmfx {
 
 static Result<Workspace> validated(Result<Workspace> parsed, const ValidationOptions& options, const MediaOptions& media,
-                                   bool imported = false) {
+                                   const std::vector<TextureArgument>& textures = {}, bool imported = false) {
     Diagnostics diagnostics = parsed.takeDiagnostics();
     if (!parsed) return Result<Workspace>::failure(std::move(diagnostics));
+    Result<void> replaced = replaceTextures(*parsed, textures);
+    diagnostics.insert(diagnostics.end(), replaced.diagnostics().begin(), replaced.diagnostics().end());
+    if (!replaced) return Result<Workspace>::failure(std::move(diagnostics));
+    std::set<std::string> given;
+    for (const TextureArgument& t : textures) given.insert(t.name);
     // References are resolved once, here: what validation, the executor and hot reload open.
     // Until they all resolve nothing reads them (a shader outside the sandbox is not even compiled).
-    Result<void> resolved = resolveWorkspaceMedia(*parsed, media);
+    Result<void> resolved = resolveWorkspaceMedia(*parsed, media, given);
     diagnostics.insert(diagnostics.end(), resolved.diagnostics().begin(), resolved.diagnostics().end());
     if (!resolved) return Result<Workspace>::failure(std::move(diagnostics));
     if (imported) frameDrawnModels(*parsed);
@@ -25,14 +30,14 @@ static Result<Workspace> validated(Result<Workspace> parsed, const ValidationOpt
 
 Result<Workspace> loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options,
                                 const WorkspaceLoadOptions& load) {
-    if (isRfxPath(path)) return validated(importRfxFile(path, {load.effect}), options, load.media, true);
+    if (isRfxPath(path)) return validated(importRfxFile(path, {load.effect}), options, load.media, load.textures, true);
     if (!load.effect.empty()) {
         return Result<Workspace>::failure(
             {{Diagnostic::Severity::Error, {path.string(), 0}, "--effect " + load.effect,
               "--effect chooses an effect of a RenderMonkey .rfx file; this is an rmfx workspace "
               "(use --effects to choose its <effect> groups)"}});
     }
-    return validated(parseWorkspaceFile(path), options, load.media);
+    return validated(parseWorkspaceFile(path), options, load.media, load.textures);
 }
 
 Result<Workspace> loadDefaultWorkspace(const ValidationOptions& options, const MediaOptions& media) {

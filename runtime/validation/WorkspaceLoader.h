@@ -4,11 +4,13 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/Diagnostic.h"
 #include "core/Result.h"
 #include "io/media/MediaResolver.h"
 #include "model/Workspace.h"
+#include "validation/TextureArguments.h"
 #include "validation/Validation.h"
 
 namespace rmfx {
@@ -20,6 +22,9 @@ struct WorkspaceLoadOptions {
     std::string effect;
     // How the workspace's file references resolve (search path, sandbox), before validation.
     MediaOptions media{};
+    // rmfx render --texture NAME=FILE: files put in place of the textures' own before they are
+    // resolved, so that a texture whose file is missing (an old .rfx) can be given one.
+    std::vector<TextureArgument> textures;
 };
 
 // Dispatches on the extension: .rfx (any case) to the RenderMonkey importer, else the XML format.

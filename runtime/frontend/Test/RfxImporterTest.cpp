@@ -613,9 +613,9 @@ TEST(RfxImporter, LoaderDispatchesOnTheExtensionInAnyCase) {
     structureOnly.compileShaders = false;
     Result<Workspace> loaded = loadWorkspace(dir / "Upper.RFX", structureOnly);
     EXPECT_TRUE(loaded.ok()) << formatAll(loaded.diagnostics());
-    Result<Workspace> wrong = loadWorkspace(dir / "Upper.RFX", structureOnly, {"Nope"});
+    Result<Workspace> wrong = loadWorkspace(dir / "Upper.RFX", structureOnly, {"Nope", {}, {}});
     EXPECT_FALSE(wrong.ok());
-    Result<Workspace> xml = loadWorkspace(test::sourceDir() / "effects" / "shader_1.xml", structureOnly, {"Some.Effect"});
+    Result<Workspace> xml = loadWorkspace(test::sourceDir() / "effects" / "shader_1.xml", structureOnly, {"Some.Effect", {}, {}});
     EXPECT_FALSE(xml.ok());
     EXPECT_NE(formatAll(xml.diagnostics()).find("--effect chooses an effect of a RenderMonkey .rfx file"), std::string::npos);
 }

@@ -63,10 +63,10 @@ TEST(PassGraph, OnlyThePassesTheOutputNeedsRunInDocumentOrder) {
     EXPECT_EQ(node(g, "final").why, "writes 'output', which is asked for");
 
     // Asking for tc instead runs exactly its chain.
-    PassGraph onlyC = build(*ws, {{"tc"}, {}, {}});
+    PassGraph onlyC = build(*ws, {{"tc"}, {}, {}, {}});
     EXPECT_EQ(scheduled(onlyC), (Names{"unused", "c"}));
     // Two outputs: the union.
-    EXPECT_EQ(scheduled(build(*ws, {{"tc", "tb"}, {}, {}})), (Names{"a", "unused", "b", "c"}));
+    EXPECT_EQ(scheduled(build(*ws, {{"tc", "tb"}, {}, {}, {}})), (Names{"a", "unused", "b", "c"}));
 }
 
 TEST(PassGraph, AWriteReplacedBeforeAnyReadIsCulledAndABlendKeepsItsPredecessor) {
@@ -117,7 +117,7 @@ TEST(PassGraph, DisabledPassesAreCulledAndTheirReadersFail) {
     EXPECT_EQ(node(g, "off").fate, PassFate::Disabled);
     EXPECT_EQ(scheduled(g), (Names{"a", "final"}));
     // "other" reads what the disabled pass would have written: an error only when it is needed.
-    Result<PassGraph> built = buildPassGraph(*ws, {{"v"}, {}, {}});
+    Result<PassGraph> built = buildPassGraph(*ws, {{"v"}, {}, {}, {}});
     EXPECT_FALSE(built.ok());
     const Diagnostics& d = built.diagnostics();
     ASSERT_EQ(d.size(), 1u);
@@ -128,7 +128,7 @@ TEST(PassGraph, DisabledPassesAreCulledAndTheirReadersFail) {
 
 TEST(PassGraph, AnOutputNothingWritesIsAnError) {
     auto ws = parse(workspace(passXml("a", "t", {}) + passXml("final", "", {"t"}), {"t", "never"}));
-    Result<PassGraph> built = buildPassGraph(*ws, {{"never", "nope"}, {}, {}});
+    Result<PassGraph> built = buildPassGraph(*ws, {{"never", "nope"}, {}, {}, {}});
     EXPECT_FALSE(built.ok());
     const Diagnostics& d = built.diagnostics();
     ASSERT_EQ(d.size(), 2u);
@@ -155,7 +155,7 @@ Names passesOf(const Workspace& ws, const std::string& prefix) {
 TEST(PassGraph, EffectsLeftOutAreCulledAndTheCompositeSkipsTheirTargets) {
     auto ws = shader5();
     ASSERT_TRUE(ws);
-    PassGraph g = build(*ws, {{}, {"glare"}, {}});
+    PassGraph g = build(*ws, {{}, {"glare"}, {}, {}});
     Names expected{"environment", "teapot"};
     for (const std::string& p : passesOf(*ws, "glare_")) expected.push_back(p);
     expected.insert(expected.end(), {"screen", "combine"});
@@ -173,8 +173,8 @@ TEST(PassGraph, EffectsLeftOutAreCulledAndTheCompositeSkipsTheirTargets) {
 TEST(PassGraph, AnEffectSwitchedOffIsCulledLikeOneLeftOut) {
     auto ws = shader5();
     ASSERT_TRUE(ws);
-    PassGraph off = build(*ws, {{}, {"glare", "streak", "ghost"}, {"streak"}});
-    PassGraph left = build(*ws, {{}, {"glare", "ghost"}, {}});
+    PassGraph off = build(*ws, {{}, {"glare", "streak", "ghost"}, {"streak"}, {}});
+    PassGraph left = build(*ws, {{}, {"glare", "ghost"}, {}, {}});
     EXPECT_EQ(scheduled(off), scheduled(left));
     EXPECT_EQ(node(off, "streak_ur_16").fate, PassFate::EffectSwitchedOff);
     EXPECT_EQ(node(off, "streak_ur_16").why, "effect 'streak' switched off (Streak_Factor all off)");

@@ -130,8 +130,8 @@ TEST(TargetPlan, OnePlanForSeveralGraphsCoversEveryLifetime) {
     Result<Workspace> parsed = parseWorkspaceText(xml, "plan.xml", ".");
     ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
     Workspace& ws = *parsed;
-    Result<PassGraph> on = buildPassGraph(ws, {{}, {"fx"}, {}});
-    Result<PassGraph> off = buildPassGraph(ws, {{}, {"fx"}, {"fx"}});
+    Result<PassGraph> on = buildPassGraph(ws, {{}, {"fx"}, {}, {}});
+    Result<PassGraph> off = buildPassGraph(ws, {{}, {"fx"}, {"fx"}, {}});
     ASSERT_TRUE(on.ok()) << formatAll(on.diagnostics());
     ASSERT_TRUE(off.ok()) << formatAll(off.diagnostics());
     auto both = planTargets(ws, {&on.value(), &off.value()}, {8, 8}, {}, true);

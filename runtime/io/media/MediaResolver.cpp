@@ -252,7 +252,7 @@ std::optional<BuiltinMesh> stockModelStandIn(const std::string& reference) {
     return std::nullopt;
 }
 
-Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options) {
+Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options, const std::set<std::string>& givenTextures) {
     Diagnostics out;
     MediaResolver resolver(ws.folder, options);
     auto resolve = [&](std::string& reference, const SourceLocation& where, const std::string& element, const char* noun) {
@@ -263,6 +263,7 @@ Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options) {
             out.push_back({Diagnostic::Severity::Error, where, element, found.error});
     };
     for (Texture& t : ws.textures) {
+        if (givenTextures.count(t.name)) continue;
         std::string element = std::string(t.kind == TextureKind::Cube ? "<cubemap" : "<texture") + " name=\"" + t.name + "\">";
         for (size_t i = 0; i < t.files.size(); ++i)
             resolve(t.files[i], i < t.fileLocations.size() ? t.fileLocations[i] : t.where, element, "image file");

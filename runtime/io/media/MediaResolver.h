@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -94,6 +95,9 @@ private:
 // ShaderSource::file then name the file found (relative to ws.folder when it lies there, else
 // absolute), which is what the executor, hot reload and listings use. Each reference that finds
 // nothing, finds two files, or (sandbox) leads outside gives an error naming its element.
-Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options);
+// `givenTextures`: textures whose files the person running rmfx named (rmfx render --texture),
+// taken as they are: not searched for and not sandboxed.
+Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options,
+                                   const std::set<std::string>& givenTextures = {});
 
 }  // namespace rmfx
