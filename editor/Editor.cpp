@@ -199,7 +199,7 @@ private:
 int runEditor(const EditorOptions& options) {
     // Checked before any window opens: a broken workspace is reported like rmfx render reports it,
     // and its size sets the window's.
-    Result<Workspace> loaded = loadWorkspace(options.workspace, {}, {options.effect, options.media});
+    Result<Workspace> loaded = loadWorkspace(options.workspace, {}, {options.effect, options.media, {}});
     Diagnostics diagnostics = loaded.diagnostics();
     Workspace* checked = loaded ? &*loaded : nullptr;
     if (checked) {
@@ -223,7 +223,7 @@ int runEditor(const EditorOptions& options) {
         return 2;
     }
     // The size asked for, else 0: the workspace's, which a reload may change.
-    auto opened = LiveWorkspace::open(options.workspace, options.size, options.overrides, {options.effect, options.media});
+    auto opened = LiveWorkspace::open(options.workspace, options.size, options.overrides, {options.effect, options.media, {}});
     if (!opened) {
         std::cerr << formatAll(opened.diagnostics());
         return 2;
