@@ -342,5 +342,83 @@ TEST_F(CliReplayGLTest, NoGlContextExitsWith2) {
     EXPECT_EQ(r.out, "");
 }
 
+// <input>: a case runs the effect on the user's own image, at the image's size. The workspace
+// scales its scene by Gain = 2 in rgba32f with nearest sampling, so the reference --update writes
+// is the image times 2 exactly; a changed image then fails the replay, and a missing one is an
+// error at its <input> naming the file.
+TEST_F(CliReplayGLTest, ACaseRunsTheEffectOnItsOwnInputImage) {
+    ScratchDir dir;
+    dir.write("lift.xml", R"(<workspace version="1" name="lift" size="16x16">
+  <float name="Gain" value="2"/>
+  <target name="scene" format="rgba32f" scale="1"/>
+  <input name="scene" replaces="scene"/>
+  <pass name="draw" target="scene">
+    <shader stage="fragment">#version 450 core
+out vec4 fragColor;
+void main() { fragColor = vec4(1.0); }</shader>
+  </pass>
+  <pass name="from_input" target="scene">
+    <sampler name="Image" texture="scene" filter="nearest"/>
+    <shader stage="fragment">#version 450 core
+uniform sampler2D Image;
+in vec2 vTexCoord;
+out vec4 fragColor;
+void main() { fragColor = texture(Image, vTexCoord); }</shader>
+  </pass>
+  <pass name="final">
+    <sampler name="src" target="scene" filter="nearest"/>
+    <shader stage="fragment">#version 450 core
+uniform sampler2D src;
+uniform float Gain;
+in vec2 vTexCoord;
+out vec4 fragColor;
+void main() { fragColor = vec4(texture(src, vTexCoord).rgb * Gain, 1.0); }</shader>
+  </pass>
+  <output format="rgba32f" transform="none"/>
+</workspace>)");
+    auto shot = [&](float offset) {
+        Image image;
+        image.width = 8;
+        image.height = 4;
+        image.channels = 4;
+        image.highDynamicRange = true;
+        image.pixels.resize(8 * 4 * 4);
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 8; ++x) {
+                for (int c = 0; c < 3; ++c) image.at(x, y, c) = offset + 0.125f * x + 0.25f * y + 0.5f * c;
+                image.at(x, y, 3) = 1.0f;
+            }
+        return image;
+    };
+    ASSERT_TRUE(writeImage(dir / "shot.exr", shot(0.0f)).ok());
+    dir.write("m.xml", lines({"<replay version=\"1\">", "  <case name=\"mine\" workspace=\"lift.xml\">",
+                              "    <input file=\"shot.exr\"/>", "    <compare reference=\"refs/mine.exr\"/>", "  </case>",
+                              "  <case name=\"missing\" workspace=\"lift.xml\">", "    <input name=\"scene\" file=\"gone.exr\"/>",
+                              "    <compare reference=\"refs/missing.exr\"/>", "  </case>", "</replay>"}));
+    CommandResult update = runRmfx("replay m.xml --update --case mine", dir.path());
+    ASSERT_EQ(update.status, 0) << update.out << update.err;
+    Result<Image> reference = readImage(dir / "refs/mine.exr");
+    ASSERT_TRUE(reference.ok()) << reference.error();
+    ASSERT_EQ(reference->width, 8);
+    ASSERT_EQ(reference->height, 4);
+    Image original = shot(0.0f);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 8; ++x)
+            for (int c = 0; c < 3; ++c) EXPECT_EQ(reference->at(x, y, c), 2.0f * original.at(x, y, c)) << x << "," << y << "," << c;
+
+    EXPECT_EQ(runRmfx("replay m.xml --case mine", dir.path()).status, 0);
+    ASSERT_TRUE(writeImage(dir / "shot.exr", shot(0.5f)).ok());
+    CommandResult changed = runRmfx("replay m.xml --case mine", dir.path());
+    EXPECT_EQ(changed.status, 1);
+    EXPECT_NE(changed.out.find("[1/1] mine ... FAILED"), std::string::npos) << changed.out;
+
+    CommandResult missing = runRmfx("replay m.xml --case missing", dir.path());
+    EXPECT_EQ(missing.status, 1);
+    EXPECT_NE(missing.out.find("m.xml:7: error: <input name=\"scene\" file=\"gone.exr\">: case 'missing': "),
+              std::string::npos)
+        << missing.out << missing.err;
+    EXPECT_NE(missing.out.find("gone.exr"), std::string::npos) << missing.out;
+}
+
 }  // namespace
 }  // namespace rmfx::test

@@ -1,9 +1,12 @@
 #include "run/ReplayRun.h"
 
 #include <filesystem>
+#include <optional>
 
 #include "io/image/ImageIO.h"
+#include "io/image/InputImage.h"
 #include "run/HeadlessRun.h"
+#include "validation/ImageInputs.h"
 #include "validation/WorkspaceLoader.h"
 
 namespace rmfx {
@@ -18,6 +21,30 @@ void applySets(const ReplayCase& c, Workspace& ws, Diagnostics& diagnostics) {
         for (const Diagnostic& d : applyOverrides(ws, {{set.name, set.value}}).takeDiagnostics())
             diagnostics.push_back(
                 {d.severity, set.where, "<set name=\"" + set.name + "\">", "case '" + c.name + "': " + d.message});
+}
+
+// <input>s go through supplyInputs as rmfx render --input does; each problem points at its <input>.
+std::optional<SuppliedInputs> supplyCaseInputs(const ReplayCase& c, Workspace& ws, Diagnostics& diagnostics) {
+    std::vector<InputArgument> arguments;
+    for (const ReplayInput& input : c.inputs) {
+        InputArgument a;
+        a.name = input.name;
+        auto [file, layer] = splitLayerSuffix(input.file.string());
+        a.file = file;
+        a.layer = layer;
+        a.text = input.fileText;
+        arguments.push_back(std::move(a));
+    }
+    const bool sized = c.run.size != glm::ivec2(0);
+    Result<SuppliedInputs> supplied = supplyInputs(ws, arguments, sized ? std::optional(c.run.size) : std::nullopt);
+    for (const Diagnostic& d : supplied.diagnostics()) {
+        const ReplayInput* input = &c.inputs.front();
+        for (size_t i = 0; i < arguments.size(); ++i)
+            if (d.element == "--input " + arguments[i].text) input = &c.inputs[i];
+        diagnostics.push_back({d.severity, input->where, input->label(), "case '" + c.name + "': " + d.message});
+    }
+    if (!supplied) return std::nullopt;
+    return std::move(*supplied);
 }
 
 void checkTargets(const ReplayCase& c, const Workspace& ws, Diagnostics& diagnostics) {
@@ -42,6 +69,14 @@ Result<std::vector<Image>> renderReplayCase(const ReplayCase& c, const MediaOpti
     applySets(c, ws, diagnostics);
     checkTargets(c, ws, diagnostics);
     if (hasErrors(diagnostics)) return Rendered::failure(std::move(diagnostics));
+    RunSettings settings = c.run;
+    ExecutorOptions options;
+    if (!c.inputs.empty()) {
+        std::optional<SuppliedInputs> supplied = supplyCaseInputs(c, ws, diagnostics);
+        if (!supplied) return Rendered::failure(std::move(diagnostics));
+        settings.size = supplied->viewport;
+        options.givenInputs = supplied->given;
+    }
     if (contexts)
         if (auto context = contexts->use(ws.profile); !context) {
             diagnostics.push_back({Diagnostic::Severity::Error, c.where, "<case name=\"" + c.name + "\">", context.error()});
@@ -49,11 +84,10 @@ Result<std::vector<Image>> renderReplayCase(const ReplayCase& c, const MediaOpti
         }
 
     // Only what the compares read is computed, as rmfx render would for each target.
-    ExecutorOptions options;
     options.effects = c.effects;
     for (const ReplayCompare& compare : c.compares)
         options.outputs.push_back(compare.target.empty() ? ws.outputTargetName() : compare.target);
-    auto run = runHeadless(ws, c.run, options);
+    auto run = runHeadless(ws, settings, options);
     add(diagnostics, run.diagnostics());
     if (!run) return Rendered::failure(std::move(diagnostics));
     GlExecutor& executor = **run;

@@ -163,13 +163,36 @@ TEST(ReplayManifest, UnknownElements) {
               (Lines{at + "5: error: unknown element <cases> in <replay> (expected defaults, media, case)"}));
     EXPECT_EQ(errorsOf(manifest({"  <case name=\"a\" workspace=\"a.xml\">", "    <sett name=\"x\" value=\"1\"/>",
                                  kCompare, "  </case>"})),
-              (Lines{at + "3: error: unknown element <sett> in <case name=\"a\"> (expected set, compare)"}));
+              (Lines{at + "3: error: unknown element <sett> in <case name=\"a\"> (expected set, input, compare)"}));
     EXPECT_EQ(errorsOf(manifest({"  <defaults>", "    <case/>", "  </defaults>", "  <case name=\"a\" workspace=\"a.xml\">",
                                  "    <compare reference=\"a.exr\">", "      <limit/>", "    </compare>",
                                  "    <set name=\"x\" value=\"1\"><value/></set>", "  </case>"})),
               (Lines{at + "3: error: unknown element <case> in <defaults> (it takes no child elements)",
                      at + "7: error: unknown element <limit> in <compare> (it takes no child elements)",
                      at + "9: error: unknown element <value> in <set> (it takes no child elements)"}));
+}
+
+// <input>: the user's own image for a case, as rmfx render --input gives it.
+TEST(ReplayManifest, InputsNameAFileBesideTheManifest) {
+    ReplayManifest m = parsedOk(manifest({"  <case name=\"a\" workspace=\"a.xml\">",
+                                          "    <input file=\"shots/one.exr\"/>",
+                                          "    <input name=\"env\" file=\"../sky.exr:ViewLayer.Combined\"/>", kCompare,
+                                          "  </case>"}));
+    ASSERT_EQ(m.cases.size(), 1u);
+    const std::vector<ReplayInput>& inputs = m.cases[0].inputs;
+    ASSERT_EQ(inputs.size(), 2u);
+    EXPECT_EQ(inputs[0].name, "");
+    EXPECT_EQ(inputs[0].file, (m.folder / "shots/one.exr").lexically_normal());
+    EXPECT_EQ(inputs[0].where.line, 3);
+    EXPECT_EQ(inputs[0].label(), "<input file=\"shots/one.exr\">");
+    EXPECT_EQ(inputs[1].name, "env");
+    EXPECT_EQ(inputs[1].file, (m.folder / "../sky.exr:ViewLayer.Combined").lexically_normal());
+    EXPECT_EQ(inputs[1].label(), "<input name=\"env\" file=\"../sky.exr:ViewLayer.Combined\">");
+
+    EXPECT_EQ(errorsOf(manifest({"  <case name=\"a\" workspace=\"a.xml\">", "    <input name=\"scene\" file=\"a.exr\"/>",
+                                 "    <input name=\"scene\" file=\"b.exr\"/>", "    <input/>", kCompare, "  </case>"})),
+              (Lines{at + "4: error: <input name=\"scene\">: input 'scene' is already given at line 3",
+                     at + "5: error: <input>: missing attribute 'file'"}));
 }
 
 TEST(ReplayManifest, UnknownAttributesListTheKnownOnes) {

@@ -166,11 +166,13 @@ private:
             std::string_view tag = child->Name();
             if (tag == "set") {
                 parseSet(child, c);
+            } else if (tag == "input") {
+                parseInput(child, c);
             } else if (tag == "compare") {
                 parseCompare(child, c);
             } else {
                 xml::errorAt(child, file_, diagnostics_,
-                             "unknown element <" + std::string(tag) + "> in " + r.label() + " (expected set, compare)");
+                             "unknown element <" + std::string(tag) + "> in " + r.label() + " (expected set, input, compare)");
             }
         }
         if (c.compares.empty() && !e->FirstChildElement("compare")) r.error("no <compare>: the case checks nothing");
@@ -204,6 +206,21 @@ private:
                 return;
             }
         c.sets.push_back({r.where(), *name, *value});
+    }
+
+    void parseInput(const XMLElement* e, ReplayCase& c) {
+        ElementReader r(e, file_, diagnostics_, {"name", "file"});
+        auto name = r.identifier("name", false);
+        auto file = r.string("file", true);
+        xml::noChildren(e, file_, diagnostics_);
+        if (!file) return;
+        for (const ReplayInput& other : c.inputs)
+            if (other.name == name.value_or("")) {
+                r.error((other.name.empty() ? std::string("the input") : "input '" + other.name + "'") +
+                        " is already given at line " + std::to_string(other.where.line));
+                return;
+            }
+        c.inputs.push_back({r.where(), name.value_or(""), *file, (folder_ / *file).lexically_normal()});
     }
 
     void parseCompare(const XMLElement* e, ReplayCase& c) {
@@ -266,6 +283,10 @@ std::vector<std::pair<std::string, std::string>> ReplayCase::overrides() const {
     std::vector<std::pair<std::string, std::string>> out;
     for (const ReplaySet& s : sets) out.emplace_back(s.name, s.value);
     return out;
+}
+
+std::string ReplayInput::label() const {
+    return "<input " + (name.empty() ? std::string() : "name=\"" + name + "\" ") + "file=\"" + fileText + "\">";
 }
 
 const ReplayCase* ReplayManifest::findCase(std::string_view name) const {

@@ -24,6 +24,18 @@ struct ReplaySet {
     std::string value;
 };
 
+// <input name="scene" file="shots/a.exr"/>: what `rmfx render --input scene=shots/a.exr` does, so
+// that a case runs an effect on the user's own image. The name may be left out when the workspace
+// has one input; "FILE.exr:layer" picks an EXR part or layer.
+struct ReplayInput {
+    SourceLocation where;
+    std::string name;                // "" for the workspace's only input
+    std::string fileText;            // as written in the manifest
+    std::filesystem::path file;      // resolved against the manifest's folder, normalised (the layer kept)
+
+    std::string label() const;       // <input name="scene" file="shots/a.exr">
+};
+
 struct ReplayCompare {
     SourceLocation where;
     std::string target;                 // a render target; "" for the workspace's output
@@ -44,6 +56,7 @@ struct ReplayCase {
     RunSettings run;                    // size {0, 0}: the workspace's own size
     std::optional<std::vector<std::string>> effects;  // as --effects; nullopt: the workspace's choice
     std::vector<ReplaySet> sets;
+    std::vector<ReplayInput> inputs;
     std::vector<ReplayCompare> compares;  // at least one
 
     std::vector<std::pair<std::string, std::string>> overrides() const;
