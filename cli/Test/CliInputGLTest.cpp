@@ -21,12 +21,7 @@ class CliInputGLTest : public GlTest {};
 // 37x23 (odd, not the workspace's 512x512), every channel different, with the hard values in
 // the last row and column: NaN, ±Inf, negatives, above the largest half float, and tiny ones.
 Image hardImage() {
-    Image image;
-    image.width = 37;
-    image.height = 23;
-    image.channels = 4;
-    image.highDynamicRange = true;
-    image.pixels.resize(static_cast<size_t>(image.width) * image.height * 4);
+    Image image = blankHdrImage(37, 23);
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x)
             for (int c = 0; c < 3; ++c) image.at(x, y, c) = 0.01f * static_cast<float>((x * 7 + y * 13 + c * 5) % 97) + 0.003f * c;

@@ -377,12 +377,7 @@ void main() { fragColor = vec4(texture(src, vTexCoord).rgb * Gain, 1.0); }</shad
   <output format="rgba32f" transform="none"/>
 </workspace>)");
     auto shot = [&](float offset) {
-        Image image;
-        image.width = 8;
-        image.height = 4;
-        image.channels = 4;
-        image.highDynamicRange = true;
-        image.pixels.resize(8 * 4 * 4);
+        Image image = blankHdrImage(8, 4);
         for (int y = 0; y < 4; ++y)
             for (int x = 0; x < 8; ++x) {
                 for (int c = 0; c < 3; ++c) image.at(x, y, c) = offset + 0.125f * x + 0.25f * y + 0.5f * c;

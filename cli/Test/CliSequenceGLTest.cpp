@@ -37,12 +37,7 @@ void main() {
 
 // Frame k: every channel of pixel (x, y) is k + x / 10 + y / 100.
 Image frameImage(int k) {
-    Image image;
-    image.width = 5;
-    image.height = 3;
-    image.channels = 4;
-    image.highDynamicRange = true;
-    image.pixels.resize(5 * 3 * 4);
+    Image image = blankHdrImage(5, 3);
     for (int y = 0; y < 3; ++y)
         for (int x = 0; x < 5; ++x)
             for (int c = 0; c < 4; ++c) image.at(x, y, c) = static_cast<float>(k) + 0.1f * x + 0.01f * y;

@@ -31,12 +31,7 @@ glm::dvec3 equirectRay(double u, double v) {
 }
 
 Image equirectSky(int width) {
-    Image image;
-    image.width = width;
-    image.height = width / 2;
-    image.channels = 4;
-    image.highDynamicRange = true;
-    image.pixels.resize(static_cast<size_t>(image.width) * image.height * 4);
+    Image image = blankHdrImage(width, width / 2);
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) {
             glm::dvec3 c = skyOf(equirectRay((x + 0.5) / image.width, (y + 0.5) / image.height));
@@ -107,12 +102,7 @@ TEST_F(CliTextureGLTest, AnImageOfNoCubeShapeIsAnErrorNamingTheTexture) {
 TEST_F(CliTextureGLTest, AnRfxTextureWhoseFileIsMissingTakesYours) {
     ScratchDir dir;
     auto ramp = [&](const std::string& name, glm::vec3 c) {
-        Image image;
-        image.width = 8;
-        image.height = 2;
-        image.channels = 4;
-        image.highDynamicRange = true;
-        image.pixels.resize(8 * 2 * 4);
+        Image image = blankHdrImage(8, 2);
         for (int i = 0; i < 16; ++i) {
             for (int ch = 0; ch < 3; ++ch) image.pixels[i * 4 + ch] = c[ch];
             image.pixels[i * 4 + 3] = 1.0f;

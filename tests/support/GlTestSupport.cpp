@@ -210,4 +210,14 @@ std::string glslFloat(double value) {
     return s;
 }
 
+Image blankHdrImage(int width, int height) {
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.channels = 4;
+    image.highDynamicRange = true;
+    image.pixels.assign(static_cast<size_t>(width) * height * 4, 0.0f);
+    return image;
+}
+
 }  // namespace rmfx::test

@@ -89,6 +89,9 @@ GlRun runWorkspace(const std::string& xml, const RunSettings& settings);
 // readTarget, adding a test failure (and returning an empty image) on error.
 Image readBack(const GlExecutor& exec, const std::string& target);
 
+// A float RGBA image of width x height, every value 0, to fill and write as a test's input file.
+Image blankHdrImage(int width, int height);
+
 // readBack as a float64 reference image (row 0 at the bottom).
 RefImage readRef(const GlRun& run, const std::string& target);
 
