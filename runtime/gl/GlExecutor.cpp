@@ -193,10 +193,10 @@ Result<std::unique_ptr<GlExecutor>> GlExecutor::create(std::shared_ptr<const Wor
 }
 
 Result<std::unique_ptr<GlExecutor>> GlExecutor::createReusing(std::shared_ptr<const Workspace> ws, glm::ivec2 viewport,
-                                                              const GlExecutor& previous,
+                                                              const FramePlanOptions& options, const GlExecutor& previous,
                                                               const std::vector<std::string>& reusableTextures) {
     const Impl& old = *previous.impl_;
-    return Build::run(std::move(ws), viewport, old.plan.options, {&old.ws, &old.textures, reusableTextures});
+    return Build::run(std::move(ws), viewport, options, {&old.ws, &old.textures, reusableTextures});
 }
 
 Result<void> GlExecutor::renderFrame(const FrameClock& clock) {

@@ -33,12 +33,12 @@ public:
     // streams the shaders do not read, …) come with the executor.
     static Result<std::unique_ptr<GlExecutor>> create(std::shared_ptr<const Workspace> ws, glm::ivec2 viewport,
                                                       const FramePlanOptions& options = {});
-    // create() for a reload of the workspace file, with `previous`'s options: the textures named in
-    // `reusableTextures` that `previous` holds with the same declaration and files are copied from
-    // it on the GPU instead of being read and decoded again (the caller knows their files did not
+    // create() for a reload of the workspace file: the textures named in `reusableTextures` that
+    // `previous` holds with the same declaration and files (or supplied image) are copied from it
+    // on the GPU instead of being read and decoded again (the caller knows their files did not
     // change). `previous` is not modified.
     static Result<std::unique_ptr<GlExecutor>> createReusing(std::shared_ptr<const Workspace> ws, glm::ivec2 viewport,
-                                                             const GlExecutor& previous,
+                                                             const FramePlanOptions& options, const GlExecutor& previous,
                                                              const std::vector<std::string>& reusableTextures);
     ~GlExecutor();
     GlExecutor(const GlExecutor&) = delete;

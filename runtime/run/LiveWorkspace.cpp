@@ -32,9 +32,11 @@ LiveWorkspace::~LiveWorkspace() {
 
 Result<std::unique_ptr<LiveWorkspace>> LiveWorkspace::open(const std::filesystem::path& file, glm::ivec2 viewport,
                                                            const std::vector<std::pair<std::string, std::string>>& overrides,
-                                                           const WorkspaceLoadOptions& load) {
+                                                           const WorkspaceLoadOptions& load,
+                                                           std::vector<InputArgument> inputs) {
     std::unique_ptr<LiveWorkspace> live(new LiveWorkspace);
     live->loadOptions_ = load;
+    live->inputs_ = std::move(inputs);
     live->file_ = file;
     live->requestedViewport_ = viewport;
     live->overrides_ = overrides;
@@ -45,8 +47,15 @@ Result<std::unique_ptr<LiveWorkspace>> LiveWorkspace::open(const std::filesystem
     return {std::move(live), std::move(found)};
 }
 
-glm::ivec2 LiveWorkspace::viewportFor(const Workspace& ws) const {
-    return requestedViewport_ == glm::ivec2(0) ? glm::ivec2(ws.width, ws.height) : requestedViewport_;
+Result<SuppliedInputs> LiveWorkspace::supply(Workspace& ws) const {
+    std::optional<glm::ivec2> size;
+    if (requestedViewport_ != glm::ivec2(0)) size = requestedViewport_;
+    return supplyInputs(ws, inputs_, size);
+}
+
+std::string LiveWorkspace::inputName(const InputArgument& input) const {
+    if (!input.name.empty()) return input.name;
+    return workspace_ && workspace_->inputs.size() == 1 ? workspace_->inputs.front().name : "";
 }
 
 Result<LiveWorkspace::Build> LiveWorkspace::load(const std::set<std::string>& staleTextures) {
@@ -79,6 +88,11 @@ Result<LiveWorkspace::Build> LiveWorkspace::load(const std::set<std::string>& st
             }
     }
     build.dependencies = findWorkspaceDependencies(*build.workspace);
+    if (!hasErrors(diagnostics)) {
+        Result<SuppliedInputs> supplied = supply(*build.workspace);
+        append(diagnostics, supplied.diagnostics());
+        if (supplied) build.supplied = std::move(*supplied);
+    }
     if (hasErrors(diagnostics)) {
         failedDependencies_ = std::move(build.dependencies);
         return Result<Build>::failure(std::move(diagnostics));
@@ -86,18 +100,20 @@ Result<LiveWorkspace::Build> LiveWorkspace::load(const std::set<std::string>& st
     // Watched before the build reads them: a save during the build is then seen, not lost.
     failedDependencies_ = build.dependencies;
     updateWatches();
-    glm::ivec2 viewport = viewportFor(*build.workspace);
+    const glm::ivec2 viewport = build.supplied.viewport;
+    FramePlanOptions options;
+    options.givenInputs = build.supplied.given;
     if (executor_) {
         // Textures whose files did not change are copied from the running build, not decoded again.
         std::vector<std::string> reusable;
         for (const Texture& t : workspace_->textures)
             if (!pendingTextures_.count(t.name) && !staleTextures.count(t.name)) reusable.push_back(t.name);
-        auto created = GlExecutor::createReusing(build.workspace, viewport, *executor_, reusable);
+        auto created = GlExecutor::createReusing(build.workspace, viewport, options, *executor_, reusable);
         append(diagnostics, created.diagnostics());
         if (!created) return Result<Build>::failure(std::move(diagnostics));
         build.executor = std::move(*created);
     } else {
-        auto created = GlExecutor::create(build.workspace, viewport);
+        auto created = GlExecutor::create(build.workspace, viewport, options);
         append(diagnostics, created.diagnostics());
         if (!created) return Result<Build>::failure(std::move(diagnostics));
         build.executor = std::move(*created);
@@ -132,12 +148,14 @@ void LiveWorkspace::adopt(Build build, Diagnostics warnings) {
     workspace_ = std::move(build.workspace);
     executor_ = std::move(build.executor);
     dependencies_ = std::move(build.dependencies);
+    supplied_ = std::move(build.supplied);
     failedDependencies_ = {};
     // Everything was just read from the files as they are: nothing is left to retry.
     workspacePending_ = false;
     pendingPasses_.clear();
     pendingTextures_.clear();
     pendingModels_.clear();
+    pendingInputs_.clear();
     failures_.clear();
     append(warnings_, warnings);
     updateWatches();
@@ -204,9 +222,65 @@ void LiveWorkspace::reloadPendingModels() {
     }
 }
 
+void LiveWorkspace::reloadInputs(const std::set<std::string>& names) {
+    Workspace next = *workspace_;
+    Result<SuppliedInputs> supplied = supply(next);
+    const Diagnostics& found = supplied.diagnostics();
+    append(warnings_, withSeverity(found, Diagnostic::Severity::Warning));
+    if (!supplied) {
+        failures_["inputs"] = withSeverity(found, Diagnostic::Severity::Error);
+        lastReload_.failed = true;
+        return;
+    }
+    // An image that sets the viewport came at another size: every target is sized anew.
+    if (supplied->viewport != executor_->viewport()) {
+        if (rebuildWorkspace({})) lastReload_.reloadedInputs.assign(names.begin(), names.end());
+        return;
+    }
+    for (const std::string& name : names) {
+        std::shared_ptr<const Image> image = next.findTexture(name)->supplied;
+        Diagnostics replaced = executor_->replaceInputImage(name, image).takeDiagnostics();
+        if (hasErrors(replaced)) {
+            failures_["inputs"] = std::move(replaced);
+            lastReload_.failed = true;
+            return;
+        }
+        // Kept with the build, so that a later build at another size reads the same image.
+        workspace_->findTexture(name)->supplied = std::move(image);
+        lastReload_.reloadedInputs.push_back(name);
+    }
+    failures_.erase("inputs");
+    pendingInputs_.clear();
+}
+
+Result<void> LiveWorkspace::setInput(const InputArgument& input) {
+    const std::vector<InputArgument> previous = inputs_;
+    const std::string name = inputName(input);
+    auto same = std::find_if(inputs_.begin(), inputs_.end(),
+                             [&](const InputArgument& given) { return !name.empty() && inputName(given) == name; });
+    if (same != inputs_.end())
+        *same = input;
+    else
+        inputs_.push_back(input);
+    Result<Build> build = load();
+    Diagnostics found = build.diagnostics();
+    if (!build) {
+        inputs_ = previous;
+        updateWatches();
+        return Result<void>::failure(std::move(found));
+    }
+    warnings_.clear();
+    adopt(std::move(*build), withSeverity(found, Diagnostic::Severity::Warning));
+    lastReload_ = {};
+    lastReload_.workspaceRebuilt = true;
+    if (!name.empty()) lastReload_.reloadedInputs = {name};
+    return found;
+}
+
 void LiveWorkspace::updateWatches() {
     // The workspace file as named too: when it is a symbolic link, replacing the link is a change.
     std::vector<std::filesystem::path> files{dependencyPath(file_), std::filesystem::absolute(file_).lexically_normal()};
+    for (const InputArgument& input : inputs_) files.push_back(dependencyPath(input.file));
     for (const auto* deps : {&dependencies_, &failedDependencies_})
         for (const FileDependency& d : deps->files)
             if (std::find(files.begin(), files.end(), d.file) == files.end()) files.push_back(d.file);
@@ -229,7 +303,7 @@ bool LiveWorkspace::poll() {
     FileWatcher::Clock::time_point start = watcher_.lastChangeTime();
     if (start == FileWatcher::Clock::time_point{}) start = FileWatcher::Clock::now();
 
-    std::set<std::string> passes, textures, models;
+    std::set<std::string> passes, textures, models, inputs;
     bool workspaceChanged = false;
     std::filesystem::path self = dependencyPath(file_);
     for (const auto& file : changed) {
@@ -237,6 +311,8 @@ bool LiveWorkspace::poll() {
             workspaceChanged = true;
             continue;
         }
+        for (const InputArgument& input : inputs_)
+            if (dependencyPath(input.file) == dependencyPath(file)) inputs.insert(inputName(input));
         // Files only the broken workspace file names matter through its retry below.
         const FileDependency* dep = dependencies_.find(file);
         if (!dep) continue;
@@ -253,7 +329,9 @@ bool LiveWorkspace::poll() {
     }
     bool workspaceRetry = workspacePending_ && (!changed.empty() || retry);
     bool attempted = workspaceChanged || workspaceRetry || !passes.empty() || !textures.empty() || !models.empty() ||
-                     (retry && (!pendingPasses_.empty() || !pendingTextures_.empty() || !pendingModels_.empty()));
+                     !inputs.empty() ||
+                     (retry && (!pendingPasses_.empty() || !pendingTextures_.empty() || !pendingModels_.empty() ||
+                                !pendingInputs_.empty()));
     if (!attempted) return false;
 
     lastReload_ = {};
@@ -268,6 +346,9 @@ bool LiveWorkspace::poll() {
         if (!pendingPasses_.empty() && (!passes.empty() || retry)) recompilePendingPasses();
         if (!pendingTextures_.empty() && (!textures.empty() || retry)) reloadPendingTextures();
         if (!pendingModels_.empty() && (!models.empty() || retry)) reloadPendingModels();
+        pendingInputs_.insert(inputs.begin(), inputs.end());
+        // Last: an image of a new size builds the workspace anew, which reads everything else too.
+        if (!pendingInputs_.empty() && (!inputs.empty() || retry)) reloadInputs(pendingInputs_);
         // Shaders may include other files now.
         dependencies_ = findWorkspaceDependencies(*workspace_);
         updateWatches();
@@ -303,11 +384,21 @@ Result<void> LiveWorkspace::setViewport(glm::ivec2 viewport) {
     Build build;
     build.workspace = std::make_shared<Workspace>(*workspace_);
     build.dependencies = dependencies_;
-    auto created = GlExecutor::create(build.workspace, viewportFor(*build.workspace));
-    found = created.takeDiagnostics();
+    // The input images are read again: one that sets the viewport is resampled to the new size.
+    Result<SuppliedInputs> supplied = supply(*build.workspace);
+    found = supplied.takeDiagnostics();
+    if (!supplied) {
+        requestedViewport_ = previous;
+        return Result<void>::failure(std::move(found));
+    }
+    build.supplied = std::move(*supplied);
+    FramePlanOptions options;
+    options.givenInputs = build.supplied.given;
+    auto created = GlExecutor::create(build.workspace, build.supplied.viewport, options);
+    append(found, created.takeDiagnostics());
     if (!created) {
         requestedViewport_ = previous;
-        return found;
+        return Result<void>::failure(std::move(found));
     }
     build.executor = std::move(*created);
     // The new build read every shader, image and model as they are now, but not the workspace

@@ -29,6 +29,7 @@
 #include "io/file/FileWatcher.h"
 #include "io/media/MediaResolver.h"
 #include "model/Workspace.h"
+#include "validation/ImageInputs.h"
 #include "validation/WorkspaceLoader.h"
 
 namespace rmfx {
@@ -40,6 +41,7 @@ struct ReloadReport {
     std::vector<std::string> recompiledPasses;        // passes whose new programs were swapped in
     std::vector<std::string> reloadedTextures;
     std::vector<std::string> reloadedModels;          // model files, as the passes name them
+    std::vector<std::string> reloadedInputs;          // <input>s whose image was read anew
     bool failed = false;                              // something could not be rebuilt: see errors()
 };
 
@@ -48,10 +50,13 @@ public:
     // Loads (runtime/WorkspaceLoader: loadWorkspace + applyOverrides), validates and builds the
     // workspace for `viewport` (0,0 = the workspace's size), watching every file it depends on.
     // Fails with the diagnostics when the FIRST build fails (nothing good to keep yet); a success
-    // carries the first build's warnings.
+    // carries the first build's warnings. `inputs` are images for the workspace's <input>s (rmfx
+    // edit --input), supplied at every build as rmfx render supplies them: a viewport of 0,0 then
+    // takes the size of the image that sets it.
     static Result<std::unique_ptr<LiveWorkspace>> open(const std::filesystem::path& file, glm::ivec2 viewport,
                                                        const std::vector<std::pair<std::string, std::string>>& overrides,
-                                                       const WorkspaceLoadOptions& load = {});
+                                                       const WorkspaceLoadOptions& load = {},
+                                                       std::vector<InputArgument> inputs = {});
     ~LiveWorkspace();
     LiveWorkspace(const LiveWorkspace&) = delete;
     LiveWorkspace& operator=(const LiveWorkspace&) = delete;
@@ -77,6 +82,15 @@ public:
     // Builds the workspace anew for another viewport size (0,0 = the workspace's size), keeping
     // tweaks and camera; on failure the old build stays and the diagnostics say why.
     Result<void> setViewport(glm::ivec2 viewport);
+    // The input images. Their files are watched like textures: a changed file replaces its input's
+    // image without a rebuild, unless the image sets the viewport and its size changed (then the
+    // workspace is built anew at the new size); an unreadable one keeps the last image, with the
+    // error in errors() until a good save.
+    const std::vector<InputArgument>& inputs() const { return inputs_; }
+    // Gives an input an image (a file dropped on the editor): replaces the argument for the same
+    // input, or adds one, and builds the workspace anew. On failure nothing changes and the
+    // diagnostics say why; on success they carry the warnings (how the file was decoded).
+    Result<void> setInput(const InputArgument& input);
     // The watcher's own problems (inotify limits), one sentence each; watching goes on by time stamp.
     const std::vector<std::string>& watcherErrors() const { return watcher_.errors(); }
 
@@ -85,6 +99,7 @@ private:
         std::shared_ptr<Workspace> workspace;  // shared with the executor
         std::unique_ptr<GlExecutor> executor;
         WorkspaceDependencies dependencies;
+        SuppliedInputs supplied;  // what the input images gave: the viewport, the inputs given
     };
 
     LiveWorkspace() = default;
@@ -97,14 +112,20 @@ private:
     void recompilePendingPasses();
     void reloadPendingTextures();
     void reloadPendingModels();
+    void reloadInputs(const std::set<std::string>& names);
+    // Reads the input images into `ws`, as the run's viewport asks (supplyInputs).
+    Result<SuppliedInputs> supply(Workspace& ws) const;
+    // Which input an argument names (an empty name: the workspace's only input); "" for none.
+    std::string inputName(const InputArgument& input) const;
     void updateWatches();
     void collectErrors();
-    glm::ivec2 viewportFor(const Workspace& ws) const;
 
     std::filesystem::path file_;
     glm::ivec2 requestedViewport_{0};
     std::vector<std::pair<std::string, std::string>> overrides_;
     WorkspaceLoadOptions loadOptions_;  // the .rfx effect chosen with --effect; media as the first load
+    std::vector<InputArgument> inputs_;
+    SuppliedInputs supplied_;  // of the running build
 
     std::shared_ptr<Workspace> workspace_;  // shared with executor_
     std::unique_ptr<GlExecutor> executor_;
@@ -116,8 +137,8 @@ private:
     // What failed and is retried with the next change: the workspace file, passes (as one group,
     // all or nothing), textures, model files.
     bool workspacePending_ = false;
-    std::set<std::string> pendingPasses_, pendingTextures_, pendingModels_;
-    std::map<std::string, Diagnostics> failures_;  // "workspace", "passes", "texture NAME", "model FILE"
+    std::set<std::string> pendingPasses_, pendingTextures_, pendingModels_, pendingInputs_;
+    std::map<std::string, Diagnostics> failures_;  // "workspace", "passes", "texture NAME", "model FILE", "input NAME"
     Diagnostics errors_, warnings_;
     ReloadReport lastReload_;
     double lastReloadMilliseconds_ = 0.0;

@@ -422,11 +422,11 @@ TEST_F(TextureCopyGLTest, CopiedCubeMapMatchesTheLoadedOne) {
     auto loadedResult = GlExecutor::create(shared, {6, 3});
     ASSERT_TRUE(loadedResult) << formatAll(loadedResult.diagnostics());
     auto& loaded = *loadedResult;
-    auto copiedResult = GlExecutor::createReusing(shared, {6, 3}, *loaded, {"Sky"});
+    auto copiedResult = GlExecutor::createReusing(shared, {6, 3}, {}, *loaded, {"Sky"});
     ASSERT_TRUE(copiedResult) << formatAll(copiedResult.diagnostics());
     auto& copied = *copiedResult;
     EXPECT_NE(copied->textureObject("Sky"), loaded->textureObject("Sky"));
-    auto nothingReused = GlExecutor::createReusing(shared, {6, 3}, *loaded, {});
+    auto nothingReused = GlExecutor::createReusing(shared, {6, 3}, {}, *loaded, {});
     ASSERT_TRUE(nothingReused) << formatAll(nothingReused.diagnostics());
     ASSERT_FALSE(hasErrors(loaded->renderFrame({}).takeDiagnostics()));
     ASSERT_FALSE(hasErrors(copied->renderFrame({}).takeDiagnostics()));
