@@ -58,4 +58,21 @@ ArgumentParser::TakeValue overrideValue(std::vector<std::pair<std::string, std::
     };
 }
 
+ArgumentParser::TakeValue inputValue(std::vector<InputArgument>& inputs) {
+    return [&inputs](const std::string& value) -> std::string {
+        if (value.empty()) return "--input: expected [NAME=]FILE";
+        inputs.push_back(parseInputArgument(value));
+        return "";
+    };
+}
+
+ArgumentParser::TakeValue textureValue(std::vector<TextureArgument>& textures) {
+    return [&textures](const std::string& value) -> std::string {
+        Result<TextureArgument> texture = parseTextureArgument(value);
+        if (!texture) return texture.error();
+        textures.push_back(std::move(*texture));
+        return "";
+    };
+}
+
 }  // namespace rmfx::cli

@@ -10,6 +10,8 @@
 #include <glm/vec2.hpp>
 
 #include "cli/ArgumentParser.h"
+#include "validation/ImageInputs.h"
+#include "validation/TextureArguments.h"
 
 namespace rmfx::cli {
 
@@ -22,5 +24,9 @@ ArgumentParser::TakeValue frameCountValue(std::optional<int>& frames);
 ArgumentParser::TakeValue secondsValue(float& seconds, bool* given = nullptr);
 // --set NAME=VALUE, appended in order.
 ArgumentParser::TakeValue overrideValue(std::vector<std::pair<std::string, std::string>>& overrides);
+// --input [NAME=]FILE[:layer], appended in order (parseInputArgument).
+ArgumentParser::TakeValue inputValue(std::vector<InputArgument>& inputs);
+// --texture NAME=FILE[,FILE…] (parseTextureArgument), appended in order.
+ArgumentParser::TakeValue textureValue(std::vector<TextureArgument>& textures);
 
 }  // namespace rmfx::cli

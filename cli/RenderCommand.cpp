@@ -61,17 +61,8 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
             a.fps = fps;
             return "";
         })
-        .option({"--input"}, [&](const std::string& value) -> std::string {
-            if (value.empty()) return "--input: expected [NAME=]FILE";
-            a.inputs.push_back(parseInputArgument(value));
-            return "";
-        })
-        .option({"--texture"}, [&](const std::string& value) -> std::string {
-            Result<TextureArgument> texture = parseTextureArgument(value);
-            if (!texture) return texture.error();
-            a.load.textures.push_back(std::move(*texture));
-            return "";
-        })
+        .option({"--input"}, inputValue(a.inputs))
+        .option({"--texture"}, textureValue(a.load.textures))
         .option({"--target"}, [&](const std::string& value) { a.target = value; return ""; }, Empty::Allowed)
         .option({"--transform"}, [&](const std::string& value) -> std::string {
             if (value == "none") a.transform = DisplayTransform::None;

@@ -80,6 +80,11 @@ edit options:
                          at the window's top-left corner
   --set NAME=VALUE       override a variable's starting value (repeatable), as for render
   --view TARGET          open the viewer of a render target from the start (repeatable)
+  --input [NAME=]FILE    an image for the workspace's <input>, as for render; it hot-reloads, and an
+                         image dropped on the window replaces it
+  --texture NAME=FILE    a texture's or cube map's file for this run, as for render
+  --split F              start with the before/after view: the input left of F (0 to 1) of the
+                         width, the output right of it; needs --input
   --frames N             render N frames at a fixed step, write the screenshots, exit
                          (the mouse is ignored meanwhile)
   --dt SECONDS           the step of --frames runs (default 1/60)

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <iostream>
+#include <optional>
 
 #include <epoxy/gl.h>
 #include <imgui.h>
@@ -16,20 +18,39 @@
 #include "editor/VariablesPanel.h"
 #include "io/image/ImageIO.h"
 #include "run/LiveWorkspace.h"
+#include "validation/ImageInputs.h"
 #include "validation/WorkspaceLoader.h"
 
 namespace rmfx::editor {
 namespace {
 
+glm::ivec2 windowSizeFor(glm::ivec2 effect) { return {effect.x + panelWidth, std::max(effect.y, minimumWindowHeight)}; }
+
+// The input a dropped image fills: the only one, else the first that stands in for a target (the
+// scene), else the first.
+const ImageInput* inputForDroppedImage(const Workspace& ws) {
+    if (ws.inputs.empty()) return nullptr;
+    for (const ImageInput& input : ws.inputs)
+        if (!input.replaces.empty()) return &input;
+    return &ws.inputs.front();
+}
+
 class Editor {
 public:
-    Editor(EditorWindow& window, LiveWorkspace& session, TextureBlit& blit)
-        : window_(window), session_(session), blit_(blit) {}
+    Editor(EditorWindow& window, LiveWorkspace& session, TextureBlit& blit, std::optional<float> split)
+        : window_(window), session_(session), blit_(blit), splitOn_(split.has_value()), split_(split.value_or(0.5f)),
+          shownViewport_(session.executor().viewport()) {}
 
     // One frame: input, reload, the effect's frame, the panel, presentation (not the swap).
     void frame(const FrameClock& clock, bool userInput) {
         window_.beginFrame(userInput);
+        for (const std::string& file : window_.takeDroppedFiles()) useDroppedImage(file);
         if (session_.poll()) timing_.clear();
+        // An input image of another size (a new file, a save) sizes the effect anew.
+        if (session_.executor().viewport() != shownViewport_) {
+            shownViewport_ = session_.executor().viewport();
+            window_.resize(windowSizeFor(shownViewport_));
+        }
         handleMouse();
         GlExecutor& executor = session_.executor();
         executor.setTimingEnabled(true);
@@ -39,6 +60,7 @@ public:
         targets_.updateThumbnails(executor, session_.workspace(), blit_);
         drawPanel(clock);
         drawViewers();
+        drawSplitLine();
         ImGui::Render();
         present();
         window_.renderImGui();
@@ -66,6 +88,14 @@ private:
         for (int b = 0; b < 3; ++b) {
             if (ImGui::IsMouseClicked(b)) dragging_[b] = over;
             if (!ImGui::IsMouseDown(b)) dragging_[b] = false;
+        }
+        // A left drag that starts on the before/after line moves the line, not the camera.
+        if (ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+            draggingSplit_ = over && beforeTexture() && std::abs(io.MousePos.x - split_ * extent.x) <= 6.0f;
+        if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) draggingSplit_ = false;
+        if (draggingSplit_) {
+            split_ = std::clamp(io.MousePos.x / std::max(extent.x, 1.0f), 0.0f, 1.0f);
+            dragging_[ImGuiMouseButton_Left] = false;
         }
         const glm::vec2 delta(io.MouseDelta.x, io.MouseDelta.y);
         const glm::vec2 scale = window_.framebufferScale();
@@ -101,6 +131,7 @@ private:
         ImGui::TextDisabled("%s", window_.description().c_str());
         drawReloadStatus();
         drawErrorPanel(session_.errors(), frameErrors_, session_.warnings());
+        if (!ws.inputs.empty() && ImGui::CollapsingHeader("Input", ImGuiTreeNodeFlags_DefaultOpen)) drawInputs();
         if (ImGui::CollapsingHeader("Variables", ImGuiTreeNodeFlags_DefaultOpen)) variables_.draw(session_);
         if (ImGui::CollapsingHeader("Camera")) drawCamera();
         if (ImGui::CollapsingHeader("Render targets", ImGuiTreeNodeFlags_DefaultOpen)) targets_.draw(executor);
@@ -131,6 +162,77 @@ private:
         ImGui::TextWrapped("hot reload: watching %zu files; last reload %.0f ms after the write: %s", watched,
                            session_.lastReloadMilliseconds(), what.c_str());
         ImGui::PopStyleColor();
+    }
+
+    // Each <input>, the file it was given (or what stands in without one), the before/after view,
+    // and what the last dropped file did.
+    void drawInputs() {
+        const Workspace& ws = session_.workspace();
+        for (const ImageInput& input : ws.inputs) {
+            const InputArgument* given = nullptr;
+            for (const InputArgument& a : session_.inputs())
+                if (a.name == input.name || (a.name.empty() && ws.inputs.size() == 1)) given = &a;
+            const Texture* texture = ws.findTexture(input.name);
+            if (given && texture && texture->supplied)
+                ImGui::TextWrapped("%s: %s (%dx%d)", input.name.c_str(), given->file.string().c_str(),
+                                   texture->supplied->width, texture->supplied->height);
+            else if (!input.replaces.empty())
+                ImGui::TextWrapped("%s: no image; the workspace draws target '%s' itself", input.name.c_str(),
+                                   input.replaces.c_str());
+            else
+                ImGui::TextWrapped("%s: no image given; the workspace's own file", input.name.c_str());
+        }
+        if (beforeTexture()) {
+            ImGui::Checkbox("Before / after", &splitOn_);
+            if (splitOn_) {
+                ImGui::SameLine();
+                ImGui::SetNextItemWidth(-1.0f);
+                ImGui::SliderFloat("##split", &split_, 0.0f, 1.0f, "input left of %.2f");
+            }
+        }
+        if (const ImageInput* drop = inputForDroppedImage(ws)) {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+            ImGui::TextWrapped("drop an image on the window to make it input '%s'", drop->name.c_str());
+            ImGui::PopStyleColor();
+        }
+        if (!dropMessage_.empty()) {
+            if (dropFailed_) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+            ImGui::TextWrapped("%s", dropMessage_.c_str());
+            if (dropFailed_) ImGui::PopStyleColor();
+        }
+    }
+
+    void useDroppedImage(const std::string& file) {
+        const ImageInput* input = inputForDroppedImage(session_.workspace());
+        dropFailed_ = !input;
+        if (!input) {
+            dropMessage_ = file + ": this workspace declares no <input> for an image to fill";
+            return;
+        }
+        InputArgument argument;
+        argument.name = input->name;
+        argument.file = file;
+        argument.text = file;
+        Result<void> set = session_.setInput(argument);
+        dropFailed_ = !set;
+        dropMessage_ = set ? "input '" + argument.name + "' is now " + file : "the dropped file is not used: " + set.error();
+        if (set) {
+            timing_.clear();
+            for (const Diagnostic& d : set.diagnostics()) dropMessage_ += "\n" + d.message;
+        }
+    }
+
+    // The input image the before/after view shows: a given image that sets the viewport, so that
+    // it is the effect's size; 0 when there is none.
+    unsigned beforeTexture() const {
+        const Workspace& ws = session_.workspace();
+        for (const ImageInput& input : ws.inputs) {
+            const Texture* texture = ws.findTexture(input.name);
+            if (!input.sizesViewport || !texture || !texture->supplied) continue;
+            if (glm::ivec2(texture->supplied->width, texture->supplied->height) != session_.executor().viewport()) continue;
+            if (unsigned object = session_.executor().textureObject(input.name)) return object;
+        }
+        return 0;
     }
 
     // Viewers open below the effect when there is room, else over it; never over the panel.
@@ -176,18 +278,44 @@ private:
         glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
         const Workspace& ws = session_.workspace();
+        const glm::ivec2 origin(0, fb.y - size.y);
         if (unsigned texture = executor.targetTexture(ws.outputTargetName())) {
-            const glm::ivec2 origin(0, fb.y - size.y);
             glViewport(origin.x, origin.y, size.x, size.y);
             blit_.drawExact(texture, origin, ws.output.transform);
             glViewport(0, 0, fb.x, fb.y);
         }
+        const unsigned before = splitOn_ ? beforeTexture() : 0;
+        if (!before) return;
+        // The input left of the line, as an image viewer shows it (clamped, sRGB-encoded) whatever
+        // the output's transform: the output of a workspace that encodes itself is display-ready.
+        const int splitPixels = static_cast<int>(std::lround(split_ * static_cast<float>(size.x)));
+        if (splitPixels < 1) return;
+        // Texel for pixel from `origin`: a narrower viewport draws the image's left part.
+        glViewport(origin.x, origin.y, splitPixels, size.y);
+        blit_.drawExact(before, origin, DisplayTransform::Srgb);
+        glViewport(0, 0, fb.x, fb.y);
+    }
+
+    // The before/after line and its labels, over the effect (ImGui draws them after present()).
+    void drawSplitLine() {
+        if (!splitOn_ || !beforeTexture()) return;
+        const glm::vec2 extent = effectExtent();
+        const float x = std::round(split_ * extent.x);
+        ImDrawList* draw = ImGui::GetForegroundDrawList();
+        draw->AddLine(ImVec2(x, 0.0f), ImVec2(x, extent.y), IM_COL32(255, 255, 255, 200), 1.0f);
+        draw->AddText(ImVec2(std::max(x - 44.0f, 4.0f), 4.0f), IM_COL32(255, 255, 255, 220), "input");
+        draw->AddText(ImVec2(x + 6.0f, 4.0f), IM_COL32(255, 255, 255, 220), "output");
     }
 
     EditorWindow& window_;
     LiveWorkspace& session_;
     TextureBlit& blit_;
     bool dragging_[3] = {false, false, false};
+    bool splitOn_ = false, draggingSplit_ = false;
+    float split_ = 0.5f;  // the before/after line, a fraction of the effect's width
+    glm::ivec2 shownViewport_{0};
+    std::string dropMessage_;
+    bool dropFailed_ = false;
     Diagnostics frameErrors_;
     VariablesPanel variables_;
     TargetBrowser targets_;
@@ -197,15 +325,23 @@ private:
 }  // namespace
 
 int runEditor(const EditorOptions& options) {
-    // Checked before any window opens: a broken workspace is reported like rmfx render reports it,
-    // and its size sets the window's.
-    Result<Workspace> loaded = loadWorkspace(options.workspace, {}, {options.effect, options.media, {}});
+    // Checked before any window opens: a broken workspace or input image is reported like rmfx
+    // render reports it.
+    const WorkspaceLoadOptions load{options.effect, options.media, options.textures};
+    Result<Workspace> loaded = loadWorkspace(options.workspace, {}, load);
     Diagnostics diagnostics = loaded.diagnostics();
     Workspace* checked = loaded ? &*loaded : nullptr;
     if (checked) {
         Result<void> set = applyOverrides(*checked, options.overrides);
         diagnostics.insert(diagnostics.end(), set.diagnostics().begin(), set.diagnostics().end());
         if (!set) checked = nullptr;
+    }
+    if (checked && !options.inputs.empty()) {
+        Result<SuppliedInputs> supplied =
+            supplyInputs(*checked, options.inputs, options.size.x > 0 ? std::optional(options.size) : std::nullopt);
+        // With its warnings: how each file was decoded.
+        for (const Diagnostic& d : supplied.diagnostics()) diagnostics.push_back(d);
+        if (!supplied) checked = nullptr;
     }
     std::cerr << formatAll(diagnostics);
     if (!checked) return 1;
@@ -215,15 +351,13 @@ int runEditor(const EditorOptions& options) {
                       << ")\n";
             return 1;
         }
-    const glm::ivec2 effect = options.size.x > 0 ? options.size : glm::ivec2(checked->width, checked->height);
-
     auto window = EditorWindow::create("rmfx edit: " + options.workspace.filename().string(), checked->profile);
     if (!window) {
         std::cerr << "rmfx edit: " << window.error() << "\n";
         return 2;
     }
-    // The size asked for, else 0: the workspace's, which a reload may change.
-    auto opened = LiveWorkspace::open(options.workspace, options.size, options.overrides, {options.effect, options.media, {}});
+    // The size asked for, else 0: the input image's or the workspace's, which a reload may change.
+    auto opened = LiveWorkspace::open(options.workspace, options.size, options.overrides, load, options.inputs);
     if (!opened) {
         std::cerr << formatAll(opened.diagnostics());
         return 2;
@@ -234,10 +368,10 @@ int runEditor(const EditorOptions& options) {
         std::cerr << "rmfx edit: " << blit.error() << "\n";
         return 2;
     }
-    (*window)->show({effect.x + panelWidth, std::max(effect.y, minimumWindowHeight)});
+    (*window)->show(windowSizeFor(session->executor().viewport()));
     (*window)->setVsync(!options.frames);
 
-    Editor editor(**window, *session, **blit);
+    Editor editor(**window, *session, **blit, options.split);
     for (const std::string& target : options.viewTargets) editor.view(target);
     using Clock = std::chrono::steady_clock;
     const Clock::time_point start = Clock::now();

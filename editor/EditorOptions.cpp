@@ -1,5 +1,7 @@
 #include "editor/EditorOptions.h"
 
+#include <cstdlib>
+
 #include "cli/ArgumentParser.h"
 #include "cli/OptionValues.h"
 #include "io/media/MediaArguments.h"
@@ -21,6 +23,16 @@ std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& 
         .option({"--frames"}, cli::frameCountValue(o.frames), Empty::Allowed)
         .option({"--dt"}, cli::secondsValue(o.deltaTime, &dtGiven), Empty::Allowed)
         .option({"--effect"}, [&](const std::string& value) { o.effect = value; return ""; }, Empty::Allowed)
+        .option({"--input"}, cli::inputValue(o.inputs))
+        .option({"--texture"}, cli::textureValue(o.textures))
+        .option({"--split"}, [&](const std::string& value) -> std::string {
+            char* end = nullptr;
+            const double f = std::strtod(value.c_str(), &end);
+            if (value.empty() || *end || !(f >= 0.0 && f <= 1.0))
+                return "--split: expected the fraction of the width the input shows, 0 to 1, got '" + value + "'";
+            o.split = static_cast<float>(f);
+            return "";
+        })
         .option({"--view"}, [&](const std::string& value) { o.viewTargets.push_back(value); return ""; }, Empty::Allowed)
         .option({"--screenshot"}, [&](const std::string& value) { o.screenshot = value; return ""; }, Empty::Allowed)
         .option({"--output-screenshot"}, [&](const std::string& value) { o.outputScreenshot = value; return ""; },
@@ -35,6 +47,8 @@ std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& 
     if (!haveWorkspace) return fail("which workspace? usage: rmfx edit WORKSPACE [options]");
     if ((o.screenshot || o.outputScreenshot) && !o.frames)
         return fail("--screenshot and --output-screenshot need --frames N (the frames to render first)");
+    if (o.split && o.inputs.empty())
+        return fail("--split shows the input image beside the output: give the image with --input FILE");
     if (dtGiven && !o.frames) return fail("--dt sets the step of --frames runs; interactive runs follow the clock");
     return o;
 }

@@ -10,6 +10,8 @@
 #include <glm/vec2.hpp>
 
 #include "io/media/MediaResolver.h"
+#include "validation/ImageInputs.h"
+#include "validation/TextureArguments.h"
 
 namespace rmfx::editor {
 
@@ -25,6 +27,10 @@ struct EditorOptions {
     std::optional<std::filesystem::path> screenshot;        // the whole window, PNG
     std::optional<std::filesystem::path> outputScreenshot;  // the effect's output, as rmfx render writes it
     MediaOptions media{};  // --media DIR, --sandbox (runtime/MediaArguments.h)
+    std::vector<InputArgument> inputs;      // --input [NAME=]FILE, as rmfx render
+    std::vector<TextureArgument> textures;  // --texture NAME=FILE, as rmfx render
+    // --split F: open with the before/after view, the input left of F·width, the output right.
+    std::optional<float> split;
 };
 
 // On an error returns nullopt and sets *error to a sentence naming the option.

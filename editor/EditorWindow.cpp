@@ -1,6 +1,7 @@
 #include "editor/EditorWindow.h"
 
 #include <cfloat>
+#include <utility>
 
 #include <epoxy/gl.h>
 // After epoxy: GLFW must not include the system GL header.
@@ -41,6 +42,12 @@ Result<std::unique_ptr<EditorWindow>> EditorWindow::create(const std::string& ti
         return Error{error};
     }
     glfwMakeContextCurrent(w->window_);
+    // ImGui's GLFW backend keeps its state elsewhere and installs no drop callback: both are ours.
+    glfwSetWindowUserPointer(w->window_, w.get());
+    glfwSetDropCallback(w->window_, [](GLFWwindow* window, int count, const char** paths) {
+        auto* self = static_cast<EditorWindow*>(glfwGetWindowUserPointer(window));
+        for (int i = 0; i < count; ++i) self->dropped_.emplace_back(paths[i]);
+    });
     w->description_ = std::string(reinterpret_cast<const char*>(glGetString(GL_VERSION))) + ", " +
                       reinterpret_cast<const char*>(glGetString(GL_RENDERER));
 
@@ -69,6 +76,10 @@ void EditorWindow::show(glm::ivec2 size) {
     glfwShowWindow(window_);
     glfwPollEvents();
 }
+
+void EditorWindow::resize(glm::ivec2 size) { glfwSetWindowSize(window_, size.x, size.y); }
+
+std::vector<std::string> EditorWindow::takeDroppedFiles() { return std::exchange(dropped_, {}); }
 
 void EditorWindow::setVsync(bool on) { glfwSwapInterval(on ? 1 : 0); }
 

@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
@@ -25,6 +26,7 @@ public:
 
     // Sets the size in screen coordinates and maps the window.
     void show(glm::ivec2 size);
+    void resize(glm::ivec2 size);
     void setVsync(bool on);
     bool shouldClose() const;
 
@@ -41,12 +43,15 @@ public:
     // The back buffer as it stands (call before swapBuffers): RGB, row 0 at the top.
     Image readFramebuffer() const;
     const std::string& description() const { return description_; }  // GL version and renderer
+    // The files dropped on the window since the last call, in the order they came.
+    std::vector<std::string> takeDroppedFiles();
 
 private:
     EditorWindow() = default;
     GLFWwindow* window_ = nullptr;
     bool imguiContext_ = false, glfwBackend_ = false, openglBackend_ = false;
     std::string description_;
+    std::vector<std::string> dropped_;
 };
 
 }  // namespace rmfx::editor

@@ -23,7 +23,8 @@ public:
     TextureBlit& operator=(const TextureBlit&) = delete;
 
     // Texel (0, 0) of `texture` lands on framebuffer pixel `origin` (GL's bottom-left origin) and
-    // each texel on one pixel: the viewport must be the texture's size at `origin`.
+    // each texel on one pixel: the viewport, from `origin`, covers the texels to draw (the texture's
+    // size for all of it).
     void drawExact(unsigned texture, glm::ivec2 origin, DisplayTransform transform);
     // The whole texture stretched over the viewport (bilinear down, nearest up), × 2^exposureStops.
     void drawFiltered(unsigned texture, float exposureStops, DisplayTransform transform);

@@ -25,7 +25,8 @@ TEST(EditorOptions, EffectOfARenderMonkeyFile) {
 TEST(EditorOptions, ParsesEveryOption) {
     std::string error;
     auto o = parseEditorOptions({"fx.xml", "--size", "256x128", "--set", "Exposure_Level=2", "--set", "Tint=1 0 0",
-                                 "--frames", "5", "--screenshot", "w.png", "--output-screenshot", "o.png", "--view", "scene", "--dt", "0.5", "--media", ".", "--sandbox"},
+                                 "--frames", "5", "--screenshot", "w.png", "--output-screenshot", "o.png", "--view", "scene", "--dt", "0.5", "--media", ".", "--sandbox",
+                                 "--input", "scene=shot.exr", "--texture", "Sky=sky.hdr", "--split", "0.25"},
                                 &error);
     ASSERT_TRUE(o) << error;
     EXPECT_EQ(o->workspace, "fx.xml");
@@ -39,6 +40,12 @@ TEST(EditorOptions, ParsesEveryOption) {
     EXPECT_EQ(o->deltaTime, 0.5f);
     EXPECT_EQ(o->media.searchPath, std::vector<std::filesystem::path>{"."});
     EXPECT_TRUE(o->media.sandbox);
+    ASSERT_EQ(o->inputs.size(), 1u);
+    EXPECT_EQ(o->inputs[0].name, "scene");
+    EXPECT_EQ(o->inputs[0].file, std::filesystem::path("shot.exr"));
+    ASSERT_EQ(o->textures.size(), 1u);
+    EXPECT_EQ(o->textures[0].name, "Sky");
+    EXPECT_EQ(o->split, 0.25f);
 }
 
 TEST(EditorOptions, RejectsWhatItCannotUse) {
@@ -53,6 +60,10 @@ TEST(EditorOptions, RejectsWhatItCannotUse) {
     EXPECT_NE(rejection({"a.xml", "--bogus"}).find("'--bogus'"), std::string::npos);
     EXPECT_NE(rejection({"a.xml", "--size"}).find("needs a value"), std::string::npos);
     EXPECT_NE(rejection({"a.xml", "--media", "no/such/folder"}).find("--media"), std::string::npos);
+    EXPECT_NE(rejection({"a.xml", "--input", "x.exr", "--split", "1.5"}).find("--split"), std::string::npos);
+    EXPECT_NE(rejection({"a.xml", "--split", "0.5"}).find("--input"), std::string::npos);
+    EXPECT_NE(rejection({"a.xml", "--texture", "Sky"}).find("--texture"), std::string::npos);
+    EXPECT_NE(rejection({"a.xml", "--input", ""}).find("--input"), std::string::npos);
 }
 
 }  // namespace rmfx::editor

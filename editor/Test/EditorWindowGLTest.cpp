@@ -1,6 +1,7 @@
 // `rmfx edit` in a real window under Xvfb (Mesa llvmpipe through GLX): the effect must appear 1:1
 // at the window's top-left corner exactly as `rmfx render` writes it, with the panel beside it.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "io/image/ImageIO.h"
+#include "tests/support/GlTestSupport.h"
 #include "tests/support/TestSupport.h"
 
 namespace rmfx::test {
@@ -82,12 +84,71 @@ TEST(EditorWindowGLTest, SetOverridesAsRenderDoes) {
     EXPECT_EQ(a->pixels, b->pixels);
 }
 
+// rmfx edit --input: the effect takes the image's size; with --split the input shows left of the
+// line (clamped and sRGB-encoded, computed here in double) and the output right of it, as
+// rmfx render --input writes it.
+TEST(EditorWindowGLTest, BeforeAndAfterShowTheInputBesideTheOutput) {
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is not installed (Debian packages xvfb and xauth; bash scripts/setup.sh)";
+    ScratchDir dir;
+    const int w = 80, h = 60;
+    Image shot = blankHdrImage(w, h);
+    auto input = [&](int x, int y, int c) { return c == 0 ? 3.0 * x / w : c == 1 ? static_cast<double>(y) / h : 0.25; };
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 4; ++c)
+                shot.pixels[(static_cast<size_t>(y) * w + x) * 4 + c] = c == 3 ? 1.0f : static_cast<float>(input(x, y, c));
+    ASSERT_TRUE(writeImage(dir / "shot.exr", shot));
+    const std::string workspace = shellQuoted(sourceDir() / "effects/shader_1.xml");
+    CommandResult edit = runUnderXvfb("edit " + workspace + " --input shot.exr --split 0.5 --frames 2 --screenshot window.png",
+                                      dir.path());
+    ASSERT_EQ(edit.status, 0) << edit.err;
+    CommandResult render = runRmfx("render " + workspace + " --input shot.exr --frames 2 -o render.png -q", dir.path());
+    ASSERT_EQ(render.status, 0) << render.err;
+    Result<Image> window = readImage(dir / "window.png"), output = readImage(dir / "render.png");
+    ASSERT_TRUE(window && output);
+    ASSERT_EQ(window->width, w + 460) << "the effect is the image's width";
+
+    auto srgbByte = [](double v) {
+        v = std::clamp(v, 0.0, 1.0);
+        v = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+        return static_cast<int>(std::lround(v * 255.0));
+    };
+    // Clear of the line (x = 40) and of its labels (the top 20 rows).
+    int worstBefore = 0, worstAfter = 0, differing = 0, compared = 0;
+    for (int y = 20; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            if (std::abs(x - w / 2) <= 2) continue;
+            for (int c = 0; c < 3; ++c) {
+                const int before = srgbByte(input(x, y, c)), after = byteAt(*output, x, y, c);
+                const int shown = byteAt(*window, x, y, c);
+                if (x < w / 2) {
+                    worstBefore = std::max(worstBefore, std::abs(shown - before));
+                    differing += std::abs(after - before) > 8;
+                    ++compared;
+                } else {
+                    worstAfter = std::max(worstAfter, std::abs(shown - after));
+                }
+            }
+        }
+    EXPECT_LE(worstBefore, 1) << "left of the line: the input image";
+    EXPECT_LE(worstAfter, 2) << "right of the line: the output";
+    EXPECT_GT(differing, compared / 2) << "the input and the output must differ for this test to tell them apart";
+}
+
 TEST(EditorWindowGLTest, AnInvalidWorkspaceIsAnErrorNamingIt) {
     ScratchDir dir;
     dir.write("broken.xml", "<workspace version=\"1\">\n  <float name=\"x\"/>\n</workspace>\n");
     CommandResult edit = runRmfx("edit broken.xml --frames 1", dir.path());
     EXPECT_EQ(edit.status, 1);
     EXPECT_NE(edit.err.find("broken.xml:2"), std::string::npos) << edit.err;
+}
+
+TEST(EditorWindowGLTest, AnInputThatCannotBeReadIsAnErrorNamingItBeforeAnyWindow) {
+    ScratchDir dir;
+    const std::string workspace = shellQuoted(sourceDir() / "effects/shader_1.xml");
+    CommandResult edit = runRmfx("edit " + workspace + " --input missing.exr --frames 1", dir.path());
+    EXPECT_EQ(edit.status, 1);
+    EXPECT_NE(edit.err.find("missing.exr"), std::string::npos) << edit.err;
 }
 
 }  // namespace rmfx::test
