@@ -236,7 +236,11 @@ int renderCommand(const std::vector<std::string>& args) {
     std::unique_ptr<GlExecutor>& executor = *run;
     if (a->explain) {
         FrameExplanationInput explained{&ws, &executor->graph(), &executor->targetPlan(), executor->askedEffects(),
-                                        executor->switchedOffEffects(), a->executor.poolTargets};
+                                        executor->switchedOffEffects(), a->executor.poolTargets, {}};
+        for (const InputArgument& given : a->inputs) {
+            const std::string name = !given.name.empty() ? given.name : ws.inputs.size() == 1 ? ws.inputs.front().name : "";
+            explained.inputFiles[name] = given.file.string() + (given.layer.empty() ? "" : ":" + given.layer);
+        }
         std::cout << explainFrame(explained);
         if (!a->output) return 0;  // --explain alone writes no image
     }

@@ -80,9 +80,13 @@ TEST_F(CliInputGLTest, ExplainSaysWhichPassesTheImageReplaced) {
     ASSERT_EQ(with.status, 0) << with.err;
     EXPECT_NE(with.out.find("'scene' comes from the image given for input 'scene'"), std::string::npos) << with.out;
     EXPECT_NE(with.out.find("37x23"), std::string::npos) << with.out;
+    EXPECT_NE(with.out.find("inputs:\n  scene shot.exr (37x23) in place of target 'scene'\n"), std::string::npos) << with.out;
     CommandResult without = runRmfx("render " + workspace + " --size 16x16 --explain", dir.path());
     ASSERT_EQ(without.status, 0) << without.err;
     EXPECT_NE(without.out.find("no image given for input 'scene'"), std::string::npos) << without.out;
+    EXPECT_NE(without.out.find("inputs:\n  scene no image given: the workspace draws target 'scene' itself\n"),
+              std::string::npos)
+        << without.out;
 }
 
 TEST_F(CliInputGLTest, BadInputsFailNamingTheFileAndWriteNothing) {

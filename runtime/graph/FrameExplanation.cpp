@@ -54,6 +54,31 @@ std::string explainFrame(const FrameExplanationInput& in) {
             << "); switched off: " << joinNames(in.switchedOffEffects);
     out << "\n\n";
 
+    if (!ws.inputs.empty()) {
+        out << "inputs:\n";
+        std::vector<std::vector<std::string>> rows;
+        for (const ImageInput& input : ws.inputs) {
+            const Texture* texture = ws.findTexture(input.name);
+            std::string what;
+            const auto given = in.inputFiles.find(input.name);
+            if (given != in.inputFiles.end()) {
+                what = given->second;
+                if (texture && texture->supplied)
+                    what += " (" + std::to_string(texture->supplied->width) + "x" + std::to_string(texture->supplied->height) + ")";
+            } else if (!input.replaces.empty()) {
+                what = "no image given: the workspace draws target '" + input.replaces + "' itself";
+            } else if (texture && !texture->files.empty()) {
+                what = "no image given: its file " + texture->files.front();
+            } else {
+                what = "no image given";
+            }
+            rows.push_back({input.name, what});
+            if (given != in.inputFiles.end() && !input.replaces.empty())
+                rows.back().push_back("in place of target '" + input.replaces + "'");
+        }
+        out << table(rows) << "\n";
+    }
+
     out << "passes: " << graph.schedule.size() << " of " << graph.nodes.size() << " run\n";
     std::vector<std::vector<std::string>> rows{{"#", "pass", "writes", "effect", "status", "why"}};
     for (size_t i = 0; i < graph.nodes.size(); ++i) {

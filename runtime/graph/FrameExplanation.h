@@ -1,8 +1,10 @@
 #pragma once
-// `rmfx render --explain`: the schedule of a frame as a table (each pass run or culled and why),
+// `rmfx render --explain`: the workspace's inputs and the files given for them, the schedule of a
+// frame as a table (each pass run or culled and why),
 // the targets with size, format, bytes, lifetime and the memory they share, and the frame's peak
 // GPU memory against the total of all declared targets.
 
+#include <map>
 #include <set>
 #include <string>
 
@@ -19,6 +21,8 @@ struct FrameExplanationInput {
     std::set<std::string> askedEffects;
     std::set<std::string> switchedOffEffects;
     bool pooled = true;
+    // The file each given <input> was given (rmfx render --input), as the user wrote it.
+    std::map<std::string, std::string> inputFiles;
 };
 
 std::string explainFrame(const FrameExplanationInput& input);
