@@ -130,12 +130,16 @@ void showProgress(const SequenceProgress& p, bool terminal) {
 
 // rmfx render W --input scene=shot/frame.%04d.exr -o out/frame.%04d.png
 int renderSequenceCommand(const RenderArguments& a, const Workspace& ws) {
-    if (a.inputs.size() != 1) {
-        std::cerr << "rmfx render: a sequence run takes one --input, the sequence\n";
+    std::vector<InputArgument> sequences, statics;
+    for (const InputArgument& input : a.inputs) (isSequencePattern(input.file.string()) ? sequences : statics).push_back(input);
+    if (sequences.size() != 1) {
+        std::cerr << "rmfx render: one --input may be a sequence; got " << sequences[0].text << " and " << sequences[1].text
+                  << "\n";
         return 1;
     }
+    const InputArgument& sequence = sequences.front();
     if (!a.output || !isSequencePattern(*a.output)) {
-        std::cerr << "rmfx render: --input " << a.inputs[0].text
+        std::cerr << "rmfx render: --input " << sequence.text
                   << " is a sequence: name the output frames with a pattern too (-o out/frame.%04d.png)\n";
         return 1;
     }
@@ -144,9 +148,10 @@ int renderSequenceCommand(const RenderArguments& a, const Workspace& ws) {
         return 1;
     }
     SequenceSettings settings;
-    settings.input = a.inputs[0].name;
-    settings.inputPattern = a.inputs[0].file.string();
-    settings.layer = a.inputs[0].layer;
+    settings.input = sequence.name;
+    settings.inputPattern = sequence.file.string();
+    settings.layer = sequence.layer;
+    settings.staticInputs = statics;
     settings.outputPattern = *a.output;
     settings.target = a.target.value_or("");
     settings.write.transform = a.transform.value_or(a.target ? DisplayTransform::None : ws.output.transform);

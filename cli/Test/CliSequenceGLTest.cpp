@@ -111,5 +111,51 @@ TEST_F(CliSequenceGLTest, ASequenceNeedsAnOutputPattern) {
     EXPECT_NE(cli.err.find("name the output frames with a pattern too"), std::string::npos) << cli.err;
 }
 
+// An <input> given one image stays the same for every frame of a sequence given for another.
+TEST_F(CliSequenceGLTest, AStillImageForAnotherInputServesEveryFrame) {
+    ScratchDir dir;
+    dir.write("gain.xml", R"(<workspace version="1" name="gain" size="5x3">
+  <input name="frame"/>
+  <input name="gain"/>
+  <pass name="multiply">
+    <sampler name="Frame" texture="frame" filter="nearest"/>
+    <sampler name="Gain" texture="gain" filter="nearest"/>
+    <shader stage="fragment"><![CDATA[
+uniform sampler2D Frame;
+uniform sampler2D Gain;
+out vec4 c;
+void main() { c = texelFetch(Frame, ivec2(gl_FragCoord.xy), 0) * texelFetch(Gain, ivec2(gl_FragCoord.xy), 0); }
+]]></shader>
+  </pass>
+  <output format="rgba32f" transform="none"/>
+</workspace>
+)");
+    writeFrames(dir, {1, 2, 3});
+    Image gain = blankHdrImage(5, 3);
+    auto gainAt = [](int x, int y) { return 0.5 + 0.25 * x - 0.125 * y; };
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 5; ++x)
+            for (int c = 0; c < 4; ++c) gain.at(x, y, c) = static_cast<float>(gainAt(x, y));
+    ASSERT_TRUE(writeImage(dir / "gain.exr", gain).ok());
+    CommandResult cli = runRmfx("render gain.xml --input frame=shot/f.%04d.exr --input gain=gain.exr -o out.%04d.exr -q",
+                                dir.path());
+    ASSERT_EQ(cli.status, 0) << cli.err;
+    for (int k = 1; k <= 3; ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "out.%04d.exr", k);
+        Result<Image> out = readImage(dir / name);
+        ASSERT_TRUE(out.ok()) << out.error();
+        for (int y = 0; y < 3; ++y)
+            for (int x = 0; x < 5; ++x) {
+                const double expected = (k + 0.1 * x + 0.01 * y) * gainAt(x, y);
+                EXPECT_NEAR(out->at(x, y, 0), expected, 1e-6 * expected) << name << " pixel " << x << "," << y;
+            }
+    }
+    CommandResult two = runRmfx("render gain.xml --input frame=shot/f.%04d.exr --input gain=shot/f.%04d.exr -o o.%04d.exr",
+                                dir.path());
+    EXPECT_EQ(two.status, 1);
+    EXPECT_NE(two.err.find("one --input may be a sequence"), std::string::npos) << two.err;
+}
+
 }  // namespace
 }  // namespace rmfx::test

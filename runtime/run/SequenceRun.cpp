@@ -20,15 +20,15 @@ struct ReadFrame {
     double seconds = 0.0;
 };
 
-// One image of the sequence at the viewport's size.
-ReadFrame readFrame(const std::filesystem::path& file, const std::string& layer, glm::ivec2 viewport) {
+// One image of the sequence at the size the first one was given at.
+ReadFrame readFrame(const std::filesystem::path& file, const std::string& layer, glm::ivec2 size) {
     Clock::time_point start = Clock::now();
     ReadFrame out;
     Result<InputImage> read = readInputImage(file, layer);
     if (!read) {
         out.image = Error{read.error()};
-    } else if (read->image.width != viewport.x || read->image.height != viewport.y) {
-        Result<Image> resampled = resampleImage(read->image, viewport.x, viewport.y);
+    } else if (read->image.width != size.x || read->image.height != size.y) {
+        Result<Image> resampled = resampleImage(read->image, size.x, size.y);
         out.image = resampled ? Result<Image>(std::move(*resampled)) : Result<Image>(Error{file.string() + ": " + resampled.error()});
     } else {
         out.image = std::move(read->image);
@@ -63,16 +63,21 @@ Result<SequenceTimes> renderSequence(const Workspace& source, const SequenceSett
                      output.error() + ")"};
     if (!(settings.fps > 0.0)) return Error{"--fps must be above 0"};
 
-    // The first frame goes through supplyInputs: it picks the input, sets the viewport and says
-    // how the file was decoded.
+    // The first frame goes through supplyInputs with the static images: it picks the input, sets
+    // the viewport and says how each file was decoded.
     Workspace ws = source;
-    InputArgument first{settings.input, frames->front().path, settings.layer,
-                        (settings.input.empty() ? "" : settings.input + "=") + settings.inputPattern};
-    Result<SuppliedInputs> supplied = supplyInputs(ws, {first}, settings.size);
+    std::vector<InputArgument> given{{settings.input, frames->front().path, settings.layer,
+                                      (settings.input.empty() ? "" : settings.input + "=") + settings.inputPattern}};
+    given.insert(given.end(), settings.staticInputs.begin(), settings.staticInputs.end());
+    Result<SuppliedInputs> supplied = supplyInputs(ws, given, settings.size);
     if (!supplied) return Run::failure(std::move(supplied).diagnostics());
     Diagnostics warnings = supplied.takeDiagnostics();
-    const std::string input = *supplied->given.begin();
+    const std::string input = settings.input.empty() ? ws.inputs.front().name : settings.input;
     const glm::ivec2 viewport = supplied->viewport;
+    // Later frames come at the first one's size as supplied: the viewport's when the input sets
+    // it, else its own.
+    const Image& firstImage = *ws.findTexture(input)->supplied;
+    const glm::ivec2 frameSize(firstImage.width, firstImage.height);
     options.givenInputs = supplied->given;
     const std::string target = settings.target.empty() ? ws.outputTargetName() : settings.target;
     if (!ws.canReadTarget(target)) return Error{"the workspace has no target '" + target + "' (" + ws.describeTargets() + ")"};
@@ -108,7 +113,7 @@ Result<SequenceTimes> renderSequence(const Workspace& source, const SequenceSett
     for (size_t k = 0; k < frames->size(); ++k) {
         const SequenceFrame& frame = (*frames)[k];
         if (k + 1 < frames->size())
-            next = std::async(policy, readFrame, (*frames)[k + 1].path, settings.layer, viewport);
+            next = std::async(policy, readFrame, (*frames)[k + 1].path, settings.layer, frameSize);
         Clock::time_point renderStart = Clock::now();
         Result<void> rendered = executor->renderFrame({static_cast<float>(k) * dt, dt});
         if (!rendered) return fail("frame " + std::to_string(frame.frame) + " (" + frame.path.string() + "): " + rendered.error());

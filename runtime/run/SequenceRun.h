@@ -13,6 +13,7 @@
 #include "gl/GlExecutor.h"
 #include "io/image/ImageIO.h"
 #include "model/Workspace.h"
+#include "validation/ImageInputs.h"
 
 namespace rmfx {
 
@@ -20,6 +21,7 @@ struct SequenceSettings {
     std::string input;          // the <input> the frames fill; empty: the workspace's only input
     std::string inputPattern;   // shot/frame.%04d.exr (io/media/ImageSequence.h)
     std::string layer;          // an EXR part or layer of every frame; empty: the default
+    std::vector<InputArgument> staticInputs;  // images for other <input>s, the same for every frame
     std::string outputPattern;  // out/frame.%04d.png: each frame keeps its input's number
     std::string target;         // what is written; empty: the workspace's output
     WriteOptions write;
