@@ -190,10 +190,8 @@ int renderCommand(const std::vector<std::string>& args) {
         std::cerr << "rmfx render: --effect chooses an effect of a RenderMonkey .rfx file; name the file\n";
         return 1;
     }
-    Result<Workspace> loaded = a->workspace ? loadWorkspace(*a->workspace, {}, a->load) : loadDefaultWorkspace({}, a->load.media);
-    if (loaded && !a->workspace) {
-        if (Result<void> replaced = replaceTextures(*loaded, a->load.textures); !replaced) loaded = Result<Workspace>::failure(replaced.takeDiagnostics());
-    }
+    Result<Workspace> loaded = a->workspace ? loadWorkspace(*a->workspace, {}, a->load)
+                                            : loadDefaultWorkspace({}, a->load.media, a->load.textures);
     if (!loaded) {
         std::cerr << formatAll(loaded.diagnostics());
         return 1;

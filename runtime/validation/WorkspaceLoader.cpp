@@ -40,8 +40,9 @@ Result<Workspace> loadWorkspace(const std::filesystem::path& path, const Validat
     return validated(parseWorkspaceFile(path), options, load.media, load.textures);
 }
 
-Result<Workspace> loadDefaultWorkspace(const ValidationOptions& options, const MediaOptions& media) {
-    return validated(parseWorkspaceText(defaultWorkspaceText(), defaultWorkspaceName, "."), options, media);
+Result<Workspace> loadDefaultWorkspace(const ValidationOptions& options, const MediaOptions& media,
+                                       const std::vector<TextureArgument>& textures) {
+    return validated(parseWorkspaceText(defaultWorkspaceText(), defaultWorkspaceName, "."), options, media, textures);
 }
 
 Result<void> applyOverrides(Workspace& ws, const std::vector<std::pair<std::string, std::string>>& overrides) {

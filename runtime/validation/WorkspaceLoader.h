@@ -32,8 +32,10 @@ struct WorkspaceLoadOptions {
 // warnings) are in file order per stage.
 Result<Workspace> loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options = {},
                                 const WorkspaceLoadOptions& load = {});
-// The built-in default workspace; its relative paths resolve in the current folder.
-Result<Workspace> loadDefaultWorkspace(const ValidationOptions& options = {}, const MediaOptions& media = {});
+// The built-in default workspace; its relative paths resolve in the current folder. `textures`
+// as WorkspaceLoadOptions::textures.
+Result<Workspace> loadDefaultWorkspace(const ValidationOptions& options = {}, const MediaOptions& media = {},
+                                       const std::vector<TextureArgument>& textures = {});
 
 // Applies NAME=VALUE overrides to the workspace's variable defaults, checking names and types.
 // Each problem is an error naming the variable.
