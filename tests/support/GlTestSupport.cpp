@@ -1,7 +1,9 @@
 #include "tests/support/GlTestSupport.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <thread>
 
 #include "frontend/workspace/WorkspaceParser.h"
 #include "gl/GlContext.h"
@@ -208,6 +210,16 @@ std::string glslFloat(double value) {
     std::string s = buffer;
     if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
     return s;
+}
+
+bool waitForReload(LiveWorkspace& live) {
+    auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    while (std::chrono::steady_clock::now() < deadline) {
+        if (live.poll()) return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    ADD_FAILURE() << "no reload within 5 s";
+    return false;
 }
 
 Image blankHdrImage(int width, int height) {

@@ -15,6 +15,7 @@
 #include "model/Workspace.h"
 #include "reference/CpuImage.h"
 #include "run/HeadlessRun.h"
+#include "run/LiveWorkspace.h"
 
 namespace rmfx::test {
 
@@ -88,6 +89,10 @@ GlRun runWorkspace(const std::string& xml, const RunSettings& settings);
 
 // readTarget, adding a test failure (and returning an empty image) on error.
 Image readBack(const GlExecutor& exec, const std::string& target);
+
+// Polls `live` every 5 ms until a change is handled: true then; false, with a test failure, when
+// none comes within 5 s (hot-reload tests wait for the file system, they time nothing).
+bool waitForReload(LiveWorkspace& live);
 
 // A float RGBA image of width x height, every value 0, to fill and write as a test's input file.
 Image blankHdrImage(int width, int height);

@@ -7,9 +7,7 @@
 // "out" writes scene × Gain. Every image holds values a half float stores exactly, so every
 // expected value is exact.
 
-#include <chrono>
 #include <fstream>
-#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -73,15 +71,7 @@ protected:
         live_ = std::move(*opened);
     }
 
-    bool waitForReload() {
-        auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
-        while (std::chrono::steady_clock::now() < deadline) {
-            if (live_->poll()) return true;
-            std::this_thread::sleep_for(std::chrono::milliseconds(5));
-        }
-        ADD_FAILURE() << "no reload within 5 s";
-        return false;
-    }
+    bool waitForReload() { return test::waitForReload(*live_); }
 
     // Renders a frame and checks that the output is `image` × the gain, pixel for pixel.
     void expectOutputIs(const Image& image, float gain) {

@@ -107,16 +107,7 @@ protected:
         ASSERT_EQ(pixel("ta"), glm::vec4(0.25f, 0.5f, 0.0f, 1.0f));
     }
 
-    // Polls until a change is handled; false (and a failure) when none comes within 5 s.
-    bool waitForReload() {
-        auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
-        while (std::chrono::steady_clock::now() < deadline) {
-            if (live_->poll()) return true;
-            std::this_thread::sleep_for(std::chrono::milliseconds(5));
-        }
-        ADD_FAILURE() << "no reload within 5 s";
-        return false;
-    }
+    bool waitForReload() { return test::waitForReload(*live_); }
 
     // Renders a frame and reads pixel (0, 0) of a target.
     glm::vec4 pixel(const std::string& target) {
@@ -352,12 +343,7 @@ TEST_F(LiveModelGLTest, ReplacedModelReloadsItsMesh) {
     unsigned program = live->executor().passProgram("p");
 
     saveAtomically(dir / "tri.obj", lowerLeft);
-    bool reloaded = false;
-    for (int i = 0; i < 1000 && !reloaded; ++i) {
-        reloaded = live->poll();
-        if (!reloaded) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    ASSERT_TRUE(reloaded);
+    ASSERT_TRUE(waitForReload(*live));
     EXPECT_TRUE(live->errors().empty()) << formatAll(live->errors());
     EXPECT_EQ(live->lastReload().reloadedModels, Names{"tri.obj"});
     EXPECT_TRUE(live->lastReload().recompiledPasses.empty());
@@ -370,12 +356,7 @@ TEST_F(LiveModelGLTest, ReplacedModelReloadsItsMesh) {
 
     // A model file that cannot be read keeps the mesh drawn so far.
     saveInPlace(dir / "tri.obj", "this is no model\n");
-    reloaded = false;
-    for (int i = 0; i < 1000 && !reloaded; ++i) {
-        reloaded = live->poll();
-        if (!reloaded) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    ASSERT_TRUE(reloaded);
+    ASSERT_TRUE(waitForReload(*live));
     EXPECT_FALSE(live->errors().empty());
     EXPECT_EQ(atGl(render(), 0, 0, 0), 1.0f);
 }
