@@ -96,6 +96,11 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
         .flag({"-q", "--quiet"}, [&] { a.quiet = true; })
         .flag({"--explain"}, [&] { a.explain = true; })
         .flag({"--no-pool"}, [&] { a.executor.poolTargets = false; })
+        .option({"--content-skip"}, [&](const std::string& value) -> std::string {
+            if (value != "on" && value != "off") return "--content-skip: expected on or off, got '" + value + "'";
+            a.executor.contentSkip = value == "on";
+            return "";
+        })
         .positional([&](const std::string& arg) -> std::string {
             if (a.workspace) return "one workspace at a time; got '" + *a.workspace + "' and '" + arg + "'";
             a.workspace = arg;
@@ -239,7 +244,8 @@ int renderCommand(const std::vector<std::string>& args) {
     std::unique_ptr<GlExecutor>& executor = *run;
     if (a->explain) {
         FrameExplanationInput explained{&ws, &executor->graph(), &executor->targetPlan(), executor->askedEffects(),
-                                        executor->switchedOffEffects(), a->executor.poolTargets, {}};
+                                        executor->switchedOffEffects(), a->executor.poolTargets, {},
+                                        a->executor.contentSkip, executor->contentSkippedEffects(true)};
         for (const InputArgument& given : a->inputs) {
             const std::string name = !given.name.empty() ? given.name : ws.inputs.size() == 1 ? ws.inputs.front().name : "";
             explained.inputFiles[name] = given.file.string() + (given.layer.empty() ? "" : ":" + given.layer);

@@ -59,6 +59,8 @@ render options:
                          with size, format, bytes and shared memory, and the peak GPU memory;
                          writes an image only when -o is given
   --no-pool              give every target memory of its own (no sharing between lifetimes)
+  --content-skip on|off  skip on the GPU the effects whose source holds nothing this frame
+                         (<effect source>; default on; the image is the same either way)
   --memory-budget MiB    the most render-target memory a frame may hold (default 4096); a
                          workspace that needs more fails before anything is allocated
   --frame-budget SECONDS stop with exit status 3 when a frame (GPU work included) takes longer

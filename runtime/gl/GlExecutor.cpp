@@ -8,6 +8,7 @@
 
 #include "frontend/shader/PassProgram.h"
 #include "gl/FixedFunctionState.h"
+#include "gl/GlContentSkip.h"
 #include "gl/GlErrors.h"
 #include "gl/GlFormats.h"
 #include "gl/GlLimits.h"
@@ -62,6 +63,7 @@ struct GlExecutor::Impl {
     std::vector<GpuPass*> schedule; // the passes the current graph runs
     std::vector<std::string> lastFramePasses;
     GlPassTimers timers;
+    std::unique_ptr<GlContentSkip> contentSkip;  // null without an effect with a source, or when off
     glm::dvec2 mouse{0.0};
     glm::ivec3 mouseButtons{0};
 
@@ -97,6 +99,7 @@ struct GlExecutor::Impl {
         schedule.clear();
         for (int index : current.graph->schedule)
             if (GpuPass* p = compiledPass(index)) schedule.push_back(p);
+        if (contentSkip) contentSkip->plan(ws, schedule, targets, plan.options.outputs);
     }
 
     // Plans the targets for the current values and allocates them; errors leave the old ones.
@@ -175,6 +178,12 @@ struct GlExecutor::Build {
         for (int index : impl->plan.runnablePasses())
             if (auto gp = impl->buildPass(index, allocated.ok(), d)) impl->passes.push_back(std::move(gp));
         if (hasErrors(d)) return Failure::failure(std::move(d));
+        const bool sourced = std::any_of(ws.effects.begin(), ws.effects.end(), [](const Effect& e) { return !e.source.empty(); });
+        if (options.contentSkip && sourced) {
+            auto skip = GlContentSkip::create();
+            if (!skip) return Failure::failure({workspaceError(ws, "", skip.error())});
+            impl->contentSkip = std::move(*skip);
+        }
         impl->selectVariant();
         glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
         std::unique_ptr<GlExecutor> executor(new GlExecutor(std::move(impl)));
@@ -207,10 +216,12 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
     s.targets.startFrame();
     s.timers.beginFrame(s.schedule.size());
     s.lastFramePasses.clear();
+    if (s.contentSkip) s.contentSkip->beginFrame();
     const FrameCamera camera(camera_, viewport_);
     const FrameInputs inputs{clock, frame_, &camera, viewport_, s.mouse, s.mouseButtons, &s.current.switchedOff};
-    for (const GpuPass* scheduled : s.schedule) {
-        const GpuPass& gp = *scheduled;
+    for (size_t position = 0; position < s.schedule.size(); ++position) {
+        if (s.contentSkip) s.contentSkip->beforePass(position);
+        const GpuPass& gp = *s.schedule[position];
         const Pass& pass = *gp.pass;
         GpuTarget& target = *gp.target;
         GpuResource& memory = *target.resource;
@@ -244,11 +255,13 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
         gp.mesh->draw(gp.streams);
         target.writtenThisFrame = true;
         s.lastFramePasses.push_back(pass.name);
+        if (s.contentSkip) s.contentSkip->afterPass(position);
         if (memory.spec.mipmaps) glGenerateTextureMipmap(memory.textures[memory.writeBuffer()].get());
         s.timers.passDone(pass.name);
         for (const std::string& e : drainGlErrors())
             d.push_back({Diagnostic::Severity::Error, pass.where, passLabel(pass), e + " while drawing into '" + target.name + "'"});
     }
+    if (s.contentSkip) s.contentSkip->endFrame();
     s.targets.finishFrame();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     ++frame_;
@@ -372,6 +385,11 @@ const std::set<std::string>& GlExecutor::switchedOffEffects() const {
     return impl_->current.switchedOff;
 }
 const std::vector<std::string>& GlExecutor::passesRun() const { return impl_->lastFramePasses; }
+
+const std::map<std::string, std::string>& GlExecutor::contentSkippedEffects(bool wait) {
+    static const std::map<std::string, std::string> none;
+    return impl_->contentSkip ? impl_->contentSkip->skipped(wait) : none;
+}
 
 // Hot reload: each change is built completely before anything of the running build is touched.
 

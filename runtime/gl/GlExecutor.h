@@ -5,6 +5,7 @@
 // the caller may let its own copy go. Needs a current GL 4.5 context (GlContext), current also
 // when it is destroyed.
 
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -92,6 +93,10 @@ public:
     const std::set<std::string>& switchedOffEffects() const;
     // The passes the last frame ran, in order.
     const std::vector<std::string>& passesRun() const;
+    // The effects whose passes the last frame skipped on the GPU because their source held
+    // nothing (<effect source>, docs/workspace-format.md), each with why. `wait`: for the GPU's
+    // answer (after a headless frame); else what has arrived, as the editor asks each frame.
+    const std::map<std::string, std::string>& contentSkippedEffects(bool wait = true);
 
     // Hot reload (LiveWorkspace). Each is all or nothing: on any error the executor is left
     // exactly as it was, and the diagnostics say why.

@@ -129,6 +129,25 @@ std::string explainFrame(const FrameExplanationInput& in) {
     out << "peak GPU memory of the frame: " << formatBytes(plan.allocatedBytes) << " (" << plan.allocatedBytes
         << " bytes) of " << formatBytes(plan.declaredBytes) << " (" << plan.declaredBytes
         << " bytes) for all declared targets: " << percent << "\n";
+
+    // Effects with a source that ran this frame: skipped by content, or run because it held something.
+    std::vector<std::string> sourced;
+    for (const Effect& e : ws.effects)
+        if (!e.source.empty() && in.askedEffects.count(e.name) && !in.switchedOffEffects.count(e.name)) sourced.push_back(e.name);
+    if (!sourced.empty()) {
+        out << "\nskipped by content (the last frame):";
+        if (!in.contentSkip) out << " nothing: --content-skip off";
+        out << "\n";
+        for (const std::string& name : sourced) {
+            if (!in.contentSkip) break;
+            const Effect& e = *ws.findEffect(name);
+            auto skipped = in.contentSkipped.find(name);
+            if (skipped != in.contentSkipped.end())
+                out << "  " << name << ": skipped by content: " << skipped->second << "\n";
+            else
+                out << "  " << name << ": run: '" << e.source << "' holds a pixel it works on\n";
+        }
+    }
     return out.str();
 }
 

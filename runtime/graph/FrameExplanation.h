@@ -1,6 +1,6 @@
 #pragma once
 // `rmfx render --explain`: the workspace's inputs and the files given for them, the schedule of a
-// frame as a table (each pass run or culled and why),
+// frame as a table, the effects the frame's content skipped (each pass run or culled and why),
 // the targets with size, format, bytes, lifetime and the memory they share, and the frame's peak
 // GPU memory against the total of all declared targets.
 
@@ -23,6 +23,9 @@ struct FrameExplanationInput {
     bool pooled = true;
     // The file each given <input> was given (rmfx render --input), as the user wrote it.
     std::map<std::string, std::string> inputFiles;
+    // Whether effects with a source may be skipped by content, and those the frame skipped, with why.
+    bool contentSkip = true;
+    std::map<std::string, std::string> contentSkipped;
 };
 
 std::string explainFrame(const FrameExplanationInput& input);

@@ -33,6 +33,9 @@ struct FramePlanOptions {
     // The <input>s an image is given for (rmfx render --input): the passes they replace are culled.
     std::set<std::string> givenInputs;
     bool poolTargets = true;
+    // <effect source>: skip on the GPU the effects whose source holds nothing (rmfx render
+    // --content-skip off runs them all the same).
+    bool contentSkip = true;
     // The most render-target memory a frame may hold (--memory-budget); a workspace that needs
     // more fails before anything is allocated.
     std::size_t memoryBudget = kDefaultMemoryBudget;

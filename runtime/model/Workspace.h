@@ -228,6 +228,12 @@ struct Effect {
     std::vector<std::string> passes;
     // Variables that switch it off at run time: it runs while any of them is true or non-zero.
     std::vector<std::string> switches;
+    // What makes it contribute (<effect source="bright" source-channels="rgb">): when no pixel of
+    // this target, written before the effect by passes outside it, holds a non-zero value in
+    // these channels, the effect's passes give zero everywhere, so they are skipped on the GPU and
+    // the targets they hand to later passes are cleared to zero. Empty: always run.
+    std::string source;
+    glm::bvec4 sourceChannels{true, true, true, false};
     std::string description;
     SourceLocation where;
 };

@@ -165,11 +165,68 @@ private:
                     error(e.where, element, "switch '" + name + "' (" + at(v->where) + ") is a " +
                                                 valueTypeName(v->value.type) + "; a switch is a bool, int or float");
             }
+            if (!e.source.empty()) checkEffectSource(e, element);
         }
         if (ws_.output.effects)
             for (const std::string& name : *ws_.output.effects)
                 if (!ws_.findEffect(name))
                     error(ws_.output.where, "<output>", "effects: no effect named '" + name + "' is declared");
+    }
+
+    // <effect source>: skipping the effect when its source is zero must give what running it gives.
+    void checkEffectSource(const Effect& e, const std::string& element) {
+        if (!ws_.findTarget(e.source)) {
+            error(e.where, element, "source: no render target '" + e.source + "' (" + ws_.describeTargets() + ")");
+            return;
+        }
+        auto inEffect = [&](const Pass& p) { return std::find(e.passes.begin(), e.passes.end(), p.name) != e.passes.end(); };
+        std::set<std::string> previousFrame;  // targets some pass reads as the last frame left them
+        for (const Pass& p : ws_.passes)
+            for (const Sampler& s : p.samplers)
+                if (s.previousFrame) previousFrame.insert(s.target);
+        bool samplesSource = false;
+        for (const Pass& p : ws_.passes) {
+            if (!p.enabled || !inEffect(p)) continue;
+            const std::string written = ws_.passTargetName(p);
+            if (written == e.source) {
+                error(e.where, element, "source '" + e.source + "' is written by pass '" + p.name +
+                                            "' of the effect itself; the source is what the effect starts from, "
+                                            "written before it by passes outside it");
+                return;
+            }
+            for (const Sampler& s : p.samplers) samplesSource = samplesSource || s.target == e.source;
+            if (previousFrame.count(written))
+                error(e.where, element, "pass '" + p.name + "' writes '" + written +
+                                            "', which is read with frame=\"previous\": a skipped frame could not "
+                                            "leave what running it leaves there, so the effect cannot have a source");
+            for (const Sampler& s : p.samplers)
+                if (s.previousFrame)
+                    error(e.where, element, "pass '" + p.name + "' reads '" + s.target +
+                                                "' with frame=\"previous\": the effect cannot have a source");
+            // What it hands to later passes is cleared to zero when it is skipped: that is only
+            // what running it gives when the effect alone writes the target.
+            for (const Pass& other : ws_.passes)
+                if (other.enabled && !inEffect(other) && ws_.passTargetName(other) == written) {
+                    error(e.where, element, "pass '" + p.name + "' writes '" + written + "', which pass '" + other.name +
+                                                "' outside the effect writes too: a skipped effect's targets are cleared "
+                                                "to zero, which would lose what '" + other.name + "' wrote");
+                    break;
+                }
+        }
+        if (!samplesSource)
+            error(e.where, element, "no pass of the effect samples its source '" + e.source + "'");
+        // The probe reads the source before the effect's first pass: every write must come before.
+        const Pass* first = nullptr;
+        for (const Pass& p : ws_.passes) {
+            if (!p.enabled) continue;
+            if (!first && inEffect(p)) first = &p;
+            if (first && !inEffect(p) && ws_.passTargetName(p) == e.source) {
+                error(e.where, element, "pass '" + p.name + "' writes the source '" + e.source + "' after pass '" +
+                                            first->name + "' of the effect: whether the effect contributes is decided "
+                                            "before its first pass, so the source must be complete by then");
+                break;
+            }
+        }
     }
 
     // An unknown semantic is no error: RenderMonkey knew a few rmfx does not fill.

@@ -102,6 +102,22 @@ TEST(WorkspaceParser, UnknownElementInWorkspace) {
                              "float, int, bool, vec2, vec3, vec4, color, mat4, texture, cubemap, input, target, pass, effect, output)"}));
 }
 
+TEST(WorkspaceParser, AnEffectsSourceAndItsChannels) {
+    Workspace ws = parsedOk(workspace({
+        "  <effect name=\"glow\" passes=\"last\" source=\"bright\" source-channels=\"rg\"/>",
+    }));
+    ASSERT_EQ(ws.effects.size(), 1u);
+    EXPECT_EQ(ws.effects[0].source, "bright");
+    EXPECT_EQ(ws.effects[0].sourceChannels, glm::bvec4(true, true, false, false));
+    Workspace plain = parsedOk(workspace({"  <effect name=\"glow\" passes=\"last\" source=\"bright\"/>"}));
+    EXPECT_EQ(plain.effects[0].sourceChannels, glm::bvec4(true, true, true, false)) << "red, green and blue by default";
+    EXPECT_EQ(errorsOf(workspace({"  <effect name=\"glow\" passes=\"last\" source-channels=\"rgb\"/>"})),
+              (Lines{at + "2: error: <effect name=\"glow\">: attribute 'source-channels' applies with 'source'"}));
+    EXPECT_EQ(errorsOf(workspace({"  <effect name=\"glow\" passes=\"last\" source=\"b\" source-channels=\"bgr\"/>"})),
+              (Lines{at + "2: error: <effect name=\"glow\">: attribute 'source-channels': 'bgr' is not one of: r, rg, rgb, "
+                          "rgba, a"}));
+}
+
 TEST(WorkspaceParser, UnknownElementInPass) {
     auto d = errorsOf(workspace({
         "  <pass name=\"blur\">",

@@ -474,7 +474,7 @@ private:
     }
 
     std::optional<Effect> parseEffect(const XMLElement* e) {
-        ElementReader r(e, file_, diagnostics_, {"name", "passes", "switch", "description"});
+        ElementReader r(e, file_, diagnostics_, {"name", "passes", "switch", "source", "source-channels", "description"});
         auto name = r.identifier("name");
         if (!name) return std::nullopt;
         Effect effect;
@@ -489,6 +489,16 @@ private:
         }
         effect.passes = std::move(*passes);
         effect.switches = nameList(r, "switch").value_or(std::vector<std::string>{});
+        effect.source = r.string("source").value_or("");
+        if (r.has("source") && effect.source.empty()) r.error("attribute 'source' names no target");
+        if (auto channels = r.choice<glm::bvec4>("source-channels", {{"r", {true, false, false, false}},
+                                                                     {"rg", {true, true, false, false}},
+                                                                     {"rgb", {true, true, true, false}},
+                                                                     {"rgba", {true, true, true, true}},
+                                                                     {"a", {false, false, false, true}}})) {
+            if (effect.source.empty()) r.error("attribute 'source-channels' applies with 'source'");
+            effect.sourceChannels = *channels;
+        }
         noChildren(e);
         return effect;
     }

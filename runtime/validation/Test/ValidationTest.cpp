@@ -837,6 +837,78 @@ TEST(Validation, EffectsNameDeclaredPassesAndScalarSwitches) {
                         }));
 }
 
+// Skipping an effect whose source holds nothing must leave what running it leaves: the checks.
+TEST(Validation, AnEffectsSourceIsATargetItStartsFromAndOnlyItWritesWhatItHandsOn) {
+    test::ScratchDir dir;
+    const std::string reads = "    <sampler name=\"S\" target=\"src\"/>";
+    const std::string sampling = "    <shader stage=\"fragment\">uniform sampler2D S; out vec4 c; void main() { c = texture(S, vec2(0.5)); }</shader>";
+    auto l = load(dir, lines({
+                           "<workspace version=\"1\">",
+                           "  <target name=\"src\" format=\"rgba8\"/>",
+                           "  <target name=\"a\" format=\"rgba8\"/>",
+                           "  <target name=\"b\" format=\"rgba8\"/>",
+                           "  <target name=\"d\" format=\"rgba8\"/>",
+                           "  <effect name=\"unknown\" passes=\"p1\" source=\"nope\"/>",
+                           "  <effect name=\"self\" passes=\"p2\" source=\"a\"/>",
+                           "  <effect name=\"over\" passes=\"p3\" source=\"src\"/>",
+                           "  <effect name=\"unread\" passes=\"p5\" source=\"src\"/>",
+                           "  <effect name=\"history\" passes=\"p6\" source=\"src\"/>",
+                           "  <pass name=\"make\" target=\"src\">", kPlainShader, "  </pass>",
+                           "  <pass name=\"p1\" target=\"a\">", reads, sampling, "  </pass>",
+                           "  <pass name=\"p2\" target=\"a\">", reads, sampling, "  </pass>",
+                           "  <pass name=\"p3\" target=\"b\">", reads, sampling, "  </pass>",
+                           "  <pass name=\"p4\" target=\"b\">", kPlainShader, "  </pass>",
+                           "  <pass name=\"p5\" target=\"d\">", kPlainShader, "  </pass>",
+                           "  <pass name=\"p6\" target=\"d\">",
+                           reads,
+                           "    <sampler name=\"H\" target=\"d\" frame=\"previous\"/>",
+                           "    <shader stage=\"fragment\">uniform sampler2D S; uniform sampler2D H; out vec4 c;",
+                           "      void main() { c = texture(S, vec2(0.5)) + texture(H, vec2(0.5)); }</shader>",
+                           "  </pass>",
+                           "</workspace>",
+                       }));
+    EXPECT_EQ(l.errors,
+              (Lines{
+                  l.path + ":6: error: <effect name=\"unknown\">: source: no render target 'nope' (it has: src, a, b, d; the output is 'output')",
+                  l.path + ":7: error: <effect name=\"self\">: source 'a' is written by pass 'p2' of the effect itself; the "
+                           "source is what the effect starts from, written before it by passes outside it",
+                  l.path + ":8: error: <effect name=\"over\">: pass 'p3' writes 'b', which pass 'p4' outside the effect writes "
+                           "too: a skipped effect's targets are cleared to zero, which would lose what 'p4' wrote",
+                  l.path + ":9: error: <effect name=\"unread\">: pass 'p5' writes 'd', which is read with frame=\"previous\": "
+                           "a skipped frame could not leave what running it leaves there, so the effect cannot have a source",
+                  l.path + ":9: error: <effect name=\"unread\">: pass 'p5' writes 'd', which pass 'p6' outside the effect writes "
+                           "too: a skipped effect's targets are cleared to zero, which would lose what 'p6' wrote",
+                  l.path + ":9: error: <effect name=\"unread\">: no pass of the effect samples its source 'src'",
+                  l.path + ":10: error: <effect name=\"history\">: pass 'p6' writes 'd', which is read with "
+                           "frame=\"previous\": a skipped frame could not leave what running it leaves there, so the effect "
+                           "cannot have a source",
+                  l.path + ":10: error: <effect name=\"history\">: pass 'p6' reads 'd' with frame=\"previous\": the effect "
+                           "cannot have a source",
+                  l.path + ":10: error: <effect name=\"history\">: pass 'p6' writes 'd', which pass 'p5' outside the effect "
+                           "writes too: a skipped effect's targets are cleared to zero, which would lose what 'p5' wrote",
+              }));
+}
+
+TEST(Validation, AnEffectsSourceIsCompleteBeforeItsFirstPass) {
+    test::ScratchDir dir;
+    auto l = load(dir, lines({
+                           "<workspace version=\"1\">",
+                           "  <target name=\"src\" format=\"rgba8\"/>",
+                           "  <target name=\"a\" format=\"rgba8\"/>",
+                           "  <effect name=\"e\" passes=\"p\" source=\"src\"/>",
+                           "  <pass name=\"make\" target=\"src\">", kPlainShader, "  </pass>",
+                           "  <pass name=\"p\" target=\"a\">",
+                           "    <sampler name=\"S\" target=\"src\"/>",
+                           "    <shader stage=\"fragment\">uniform sampler2D S; out vec4 c; void main() { c = texture(S, vec2(0.5)); }</shader>",
+                           "  </pass>",
+                           "  <pass name=\"more\" target=\"src\">", kPlainShader, "  </pass>",
+                           "</workspace>",
+                       }));
+    EXPECT_EQ(l.errors, (Lines{l.path + ":4: error: <effect name=\"e\">: pass 'more' writes the source 'src' after pass 'p' "
+                                        "of the effect: whether the effect contributes is decided before its first pass, so "
+                                        "the source must be complete by then"}));
+}
+
 TEST(Validation, ACycleOfPassesIsAnErrorNamingThem) {
     test::ScratchDir dir;
     auto l = load(dir, lines({

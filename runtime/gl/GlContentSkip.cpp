@@ -1,0 +1,211 @@
+#include "gl/GlContentSkip.h"
+
+#include <algorithm>
+
+#include <epoxy/gl.h>
+
+#include "gl/GpuPass.h"
+
+namespace rmfx {
+namespace {
+
+const char* const probeVertex = R"(#version 450 core
+void main() {
+    vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+    gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
+}
+)";
+
+// A pixel passes (and counts) when one of the chosen channels is not exactly zero; NaN is not.
+const char* const probeFragment = R"(#version 450 core
+uniform sampler2D Source;
+uniform bvec4 Channels;
+void main() {
+    vec4 v = texelFetch(Source, ivec2(gl_FragCoord.xy), 0);
+    bvec4 nonZero = not(equal(v, vec4(0.0)));
+    if (!any(bvec4(nonZero.x && Channels.x, nonZero.y && Channels.y, nonZero.z && Channels.z, nonZero.w && Channels.w)))
+        discard;
+}
+)";
+
+std::string compileStage(GLuint shader, const char* source) {
+    glShaderSource(shader, 1, &source, nullptr);
+    glCompileShader(shader);
+    GLint ok = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (ok) return "";
+    char log[1024] = {};
+    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    return log;
+}
+
+std::string channelNames(glm::bvec4 channels) {
+    static const char* const names[4] = {"red", "green", "blue", "alpha"};
+    std::vector<std::string> chosen;
+    for (int c = 0; c < 4; ++c)
+        if (channels[c]) chosen.push_back(names[c]);
+    std::string out;
+    for (size_t i = 0; i < chosen.size(); ++i)
+        out += (i == 0 ? "" : i + 1 == chosen.size() ? " or " : ", ") + chosen[i];
+    return out;
+}
+
+}  // namespace
+
+Result<std::unique_ptr<GlContentSkip>> GlContentSkip::create() {
+    std::unique_ptr<GlContentSkip> skip(new GlContentSkip);
+    ShaderHandle vs = createShader(GL_VERTEX_SHADER), fs = createShader(GL_FRAGMENT_SHADER);
+    if (std::string e = compileStage(vs.get(), probeVertex); !e.empty()) return Error{"content-skip probe: " + e};
+    if (std::string e = compileStage(fs.get(), probeFragment); !e.empty()) return Error{"content-skip probe: " + e};
+    skip->program_ = createProgram();
+    glAttachShader(skip->program_.get(), vs.get());
+    glAttachShader(skip->program_.get(), fs.get());
+    glLinkProgram(skip->program_.get());
+    GLint linked = 0;
+    glGetProgramiv(skip->program_.get(), GL_LINK_STATUS, &linked);
+    if (!linked) return Error{"content-skip probe: the program does not link"};
+    skip->channelsLocation_ = glGetUniformLocation(skip->program_.get(), "Channels");
+    glProgramUniform1i(skip->program_.get(), glGetUniformLocation(skip->program_.get(), "Source"), 0);
+    skip->empty_ = createFramebuffer();
+    skip->nearest_ = createSampler();
+    glSamplerParameteri(skip->nearest_.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(skip->nearest_.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    skip->vertexArray_ = createVertexArray();
+    return skip;
+}
+
+void GlContentSkip::plan(const Workspace& ws, const std::vector<GpuPass*>& schedule, const GlRenderTargets& targets,
+                         const std::vector<std::string>& outputs) {
+    effects_.clear();
+    skipped_.clear();
+    lastFrameSlot_ = -1;
+    effectOfPass_.assign(schedule.size(), -1);
+    for (const Effect& e : ws.effects) {
+        GpuTarget* source = e.source.empty() ? nullptr : targets.find(e.source);
+        if (!source) continue;
+        ActiveEffect active;
+        active.effect = &e;
+        bool any = false;
+        std::set<std::string> written;
+        for (size_t i = 0; i < schedule.size(); ++i) {
+            const std::string& pass = schedule[i]->pass->name;
+            if (std::find(e.passes.begin(), e.passes.end(), pass) == e.passes.end()) continue;
+            if (!any) active.first = i;
+            any = true;
+            active.last = i;
+            effectOfPass_[i] = static_cast<int>(effects_.size());
+            written.insert(schedule[i]->target->name);
+        }
+        if (!any) continue;
+        // Handed on: read by a scheduled pass outside the effect, or read back after the frame.
+        for (const std::string& t : written) {
+            bool handed = outputs.empty() || std::find(outputs.begin(), outputs.end(), t) != outputs.end();
+            for (size_t i = 0; i < schedule.size() && !handed; ++i)
+                if (effectOfPass_[i] != static_cast<int>(effects_.size()))
+                    for (const Sampler& s : schedule[i]->pass->samplers) handed = handed || (s.target == t && !s.previousFrame);
+            if (handed)
+                if (GpuTarget* target = targets.find(t)) active.handedOn.push_back(target);
+        }
+        auto probe = std::find_if(probes_.begin(), probes_.end(), [&](const Probe& p) {
+            return p.source == source && p.channels == e.sourceChannels;
+        });
+        if (probe == probes_.end()) {
+            Probe fresh;
+            fresh.source = source;
+            fresh.channels = e.sourceChannels;
+            for (QueryHandle& q : fresh.queries) q = createQuery(GL_ANY_SAMPLES_PASSED);
+            probes_.push_back(std::move(fresh));
+            probe = probes_.end() - 1;
+        }
+        active.probe = static_cast<size_t>(probe - probes_.begin());
+        effects_.push_back(std::move(active));
+    }
+}
+
+void GlContentSkip::beginFrame() {
+    for (Probe& p : probes_) p.issued = false;
+}
+
+void GlContentSkip::issueProbe(Probe& probe) {
+    const GpuTarget& t = *probe.source;
+    if (!t.resource) return;
+    const GpuResource& r = *t.resource;
+    const GLuint texture = r.textures[t.writtenThisFrame ? r.writeBuffer() : r.front].get();
+    glNamedFramebufferParameteri(empty_.get(), GL_FRAMEBUFFER_DEFAULT_WIDTH, r.spec.size.x);
+    glNamedFramebufferParameteri(empty_.get(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, r.spec.size.y);
+    glBindFramebuffer(GL_FRAMEBUFFER, empty_.get());
+    glViewport(0, 0, r.spec.size.x, r.spec.size.y);
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
+    glUseProgram(program_.get());
+    glProgramUniform4i(program_.get(), channelsLocation_, probe.channels.x, probe.channels.y, probe.channels.z,
+                       probe.channels.w);
+    glBindTextureUnit(0, texture);
+    glBindSampler(0, nearest_.get());
+    glBindVertexArray(vertexArray_.get());
+    glBeginQuery(GL_ANY_SAMPLES_PASSED, probe.queries[slot_].get());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glEndQuery(GL_ANY_SAMPLES_PASSED);
+    glBindVertexArray(0);
+    glBindSampler(0, 0);
+    probe.issued = true;
+}
+
+void GlContentSkip::beforePass(size_t index) {
+    if (index >= effectOfPass_.size() || effectOfPass_[index] < 0) return;
+    const ActiveEffect& e = effects_[static_cast<size_t>(effectOfPass_[index])];
+    Probe& probe = probes_[e.probe];
+    if (!probe.issued) issueProbe(probe);
+    if (probe.issued) glBeginConditionalRender(probe.queries[slot_].get(), GL_QUERY_WAIT);
+}
+
+void GlContentSkip::afterPass(size_t index) {
+    if (index >= effectOfPass_.size() || effectOfPass_[index] < 0) return;
+    const ActiveEffect& e = effects_[static_cast<size_t>(effectOfPass_[index])];
+    const Probe& probe = probes_[e.probe];
+    if (!probe.issued) return;
+    glEndConditionalRender();
+    if (index != e.last) return;
+    const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glBeginConditionalRender(probe.queries[slot_].get(), GL_QUERY_WAIT_INVERTED);
+    for (const GpuTarget* t : e.handedOn)
+        if (t->resource) {
+            glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            glDisable(GL_SCISSOR_TEST);
+            glClearNamedFramebufferfv(t->resource->framebuffers[t->resource->writeBuffer()].get(), GL_COLOR, 0, zero);
+        }
+    glEndConditionalRender();
+    for (const GpuTarget* t : e.handedOn)
+        if (t->resource && t->resource->spec.mipmaps)
+            glGenerateTextureMipmap(t->resource->textures[t->resource->writeBuffer()].get());
+}
+
+void GlContentSkip::endFrame() {
+    if (effects_.empty()) return;
+    lastFrameSlot_ = slot_;
+    slot_ = (slot_ + 1) % 3;
+}
+
+const std::map<std::string, std::string>& GlContentSkip::skipped(bool wait) {
+    if (lastFrameSlot_ < 0) return skipped_;
+    for (const ActiveEffect& e : effects_) {
+        const Probe& probe = probes_[e.probe];
+        const GLuint query = probe.queries[lastFrameSlot_].get();
+        GLuint available = 0;
+        if (!wait) glGetQueryObjectuiv(query, GL_QUERY_RESULT_AVAILABLE, &available);
+        if (!wait && !available) continue;
+        GLuint passed = 1;
+        glGetQueryObjectuiv(query, GL_QUERY_RESULT, &passed);
+        if (passed)
+            skipped_.erase(e.effect->name);
+        else
+            skipped_[e.effect->name] = "'" + e.effect->source + "' holds no pixel with a non-zero " +
+                                       channelNames(e.effect->sourceChannels) + " value";
+    }
+    return skipped_;
+}
+
+}  // namespace rmfx

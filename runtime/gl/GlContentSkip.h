@@ -1,0 +1,79 @@
+#pragma once
+// Skipping on the GPU what an effect computes from a source that holds nothing (<effect source>):
+// when no pixel of the source has a non-zero value in the chosen channels, every pass of the
+// effect gives zero everywhere. Before the effect's first pass of a frame a probe draws over the
+// source's size into a framebuffer with no attachment, discarding the pixels whose channels are
+// all zero, inside an occlusion query. The effect's passes then run under conditional rendering on
+// that query (GL_QUERY_WAIT: the GPU waits for it, the CPU never does, and the frame uses its own
+// source, with no frame of lag); after its last pass, under the inverted condition, the targets it
+// hands to later passes (and those read back after the frame) are cleared to zero, which is what
+// running it would have left there. A NaN or an infinity is not zero: the effect runs on it.
+// Needs a current GL 4.5 context.
+
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/Result.h"
+#include "gl/GlHandles.h"
+#include "gl/GlRenderTargets.h"
+#include "model/Workspace.h"
+
+namespace rmfx {
+
+struct GpuPass;
+
+class GlContentSkip {
+public:
+    static Result<std::unique_ptr<GlContentSkip>> create();
+
+    // For a new schedule (the effect switches changed): which of its passes belong to an effect
+    // with a source, where each such effect starts and ends, and what it hands on. `outputs`: the
+    // targets read after the frame (empty: every target).
+    void plan(const Workspace& ws, const std::vector<GpuPass*>& schedule, const GlRenderTargets& targets,
+              const std::vector<std::string>& outputs);
+
+    void beginFrame();
+    // Around scheduled pass `index` (its position in the schedule given to plan()).
+    void beforePass(size_t index);
+    void afterPass(size_t index);
+    void endFrame();
+
+    // The effects the last frame skipped, each with why; waits for the GPU's answer when `wait`,
+    // else reports only what has arrived (and what arrived for an earlier frame is kept).
+    const std::map<std::string, std::string>& skipped(bool wait);
+
+private:
+    struct Probe {
+        GpuTarget* source = nullptr;
+        glm::bvec4 channels{false};
+        QueryHandle queries[3];
+        bool issued = false;  // this frame
+    };
+    struct ActiveEffect {
+        const Effect* effect = nullptr;
+        size_t probe = 0;
+        size_t first = 0, last = 0;           // schedule positions of its first and last pass
+        std::vector<GpuTarget*> handedOn;     // cleared to zero when it is skipped
+    };
+
+    GlContentSkip() = default;
+    void issueProbe(Probe& probe);
+
+    ProgramHandle program_;
+    FramebufferHandle empty_;
+    SamplerHandle nearest_;
+    VertexArrayHandle vertexArray_;
+    int channelsLocation_ = -1;
+
+    std::vector<Probe> probes_;
+    std::vector<ActiveEffect> effects_;
+    std::vector<int> effectOfPass_;  // schedule position → index into effects_, or -1
+    int slot_ = 0;                   // the query of this frame in each probe's ring
+    int lastFrameSlot_ = -1;         // the last finished frame's, -1 before the first
+    std::map<std::string, std::string> skipped_;
+};
+
+}  // namespace rmfx

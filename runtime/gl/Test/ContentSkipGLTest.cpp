@@ -1,0 +1,188 @@
+// <effect source>: an effect whose source holds nothing is skipped on the GPU, and the image is
+// bit for bit what running it gives. Each test runs the same workspace twice, content skip on and
+// off, frame by frame, and compares every byte of the output; it also checks which effects the
+// frame skipped, so that a skip that never happens (or always happens) cannot pass.
+
+#include <cmath>
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "gl/GlExecutor.h"
+#include "io/image/ImageIO.h"
+#include "model/HdrEncoding.h"
+#include "tests/support/GlTestSupport.h"
+#include "tests/support/TestSupport.h"
+#include "validation/ImageInputs.h"
+
+namespace rmfx::test {
+namespace {
+
+using Skipped = std::map<std::string, std::string>;
+
+std::unique_ptr<GlExecutor> executorFor(const Workspace& ws, glm::ivec2 size, const std::set<std::string>& given, bool skip) {
+    ExecutorOptions options;
+    options.outputs = {"output"};
+    options.givenInputs = given;
+    options.contentSkip = skip;
+    auto created = GlExecutor::create(std::make_shared<const Workspace>(ws), size, options);
+    EXPECT_TRUE(created) << formatAll(created.diagnostics());
+    return created ? std::move(*created) : nullptr;
+}
+
+// Renders one frame with each executor and checks that the outputs hold the same bytes.
+void expectSameFrame(GlExecutor& on, GlExecutor& off, float time, const std::string& what) {
+    for (GlExecutor* e : {&on, &off}) {
+        Diagnostics frame = e->renderFrame({time, 1.0f / 24.0f}).takeDiagnostics();
+        ASSERT_FALSE(hasErrors(frame)) << formatAll(frame);
+    }
+    Image a = readBack(on, "output"), b = readBack(off, "output");
+    ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    ASSERT_FALSE(a.pixels.empty());
+    EXPECT_EQ(std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)), 0)
+        << what << ": the output with content skip differs from the output without it";
+    EXPECT_TRUE(off.contentSkippedEffects().empty()) << what << ": --content-skip off skips nothing";
+}
+
+// hdr_lighting on a dim image (nothing passes the bright pass) and on one with a light far above
+// 1, alternating, so that adaptation carries between frames of both kinds.
+class HdrLightingContentSkipGLTest : public GlTest, public ::testing::WithParamInterface<HdrEncoding> {};
+
+TEST_P(HdrLightingContentSkipGLTest, DimBrightAndAlternatingFramesAreBitIdenticalToRunningEverything) {
+    const int encoding = static_cast<int>(GetParam());
+    std::unique_ptr<Workspace> ws = effectWorkspace("hdr_lighting.xml", {{"HDR_Encoding", std::to_string(encoding)}});
+    ASSERT_TRUE(ws);
+    const int w = 64, h = 48;
+    Image dim = blankHdrImage(w, h), bright = blankHdrImage(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 4; ++c) {
+                const float base = c == 3 ? 1.0f : 0.02f + 0.01f * c;
+                dim.at(x, y, c) = base;
+                bright.at(x, y, c) = (c < 3 && x >= 40 && x < 48 && y >= 10 && y < 18) ? 200.0f : base;
+            }
+    ScratchDir dir;
+    ASSERT_TRUE(writeImage(dir / "dim.exr", dim));
+    Result<SuppliedInputs> supplied = supplyInputs(*ws, {parseInputArgument((dir / "dim.exr").string())}, std::nullopt);
+    ASSERT_TRUE(supplied) << formatAll(supplied.diagnostics());
+    auto on = executorFor(*ws, {w, h}, supplied->given, true);
+    auto off = executorFor(*ws, {w, h}, supplied->given, false);
+    ASSERT_TRUE(on && off);
+
+    const bool frames[] = {false, true, false, false, true, true, false};  // bright?
+    for (size_t k = 0; k < std::size(frames); ++k) {
+        auto image = std::make_shared<const Image>(frames[k] ? bright : dim);
+        ASSERT_TRUE(on->replaceInputImage("scene", image));
+        ASSERT_TRUE(off->replaceInputImage("scene", image));
+        const std::string what = std::string(hdrEncodingName(GetParam())) + " frame " + std::to_string(k) +
+                                 (frames[k] ? " (bright)" : " (dim)");
+        ASSERT_NO_FATAL_FAILURE(expectSameFrame(*on, *off, static_cast<float>(k) / 24.0f, what));
+        const Skipped& skipped = on->contentSkippedEffects();
+        if (k == 0) {
+            // The first frame is decided by its own source: no frame of lag.
+            EXPECT_EQ(skipped.size(), 2u) << what << ": bloom and star skipped";
+            EXPECT_NE(skipped.count("bloom"), 0u);
+        }
+        if (frames[k]) {
+            EXPECT_TRUE(skipped.empty()) << what << ": a light far above 1 runs bloom and star";
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Encodings, HdrLightingContentSkipGLTest,
+                         ::testing::Values(HdrEncoding::Float, HdrEncoding::Rgb16, HdrEncoding::Rgb32, HdrEncoding::Rgb9e5,
+                                           HdrEncoding::Rgbe8, HdrEncoding::Rgba8x64),
+                         [](const auto& info) { return std::string(hdrEncodingName(info.param)); });
+
+// A bright pass keeps what exceeds 1; the glow effect spreads it over 3x3 pixels and the final
+// pass adds it to the scene. The scene is black but for one pixel.
+const char* const kGlow = R"(<workspace version="1" name="glow" size="37x23">
+  <int name="Pixel_X" value="0"/>
+  <int name="Pixel_Y" value="0"/>
+  <float name="Value" value="0"/>
+  <int name="Kind" value="0"/>
+  <target name="scene" format="rgba32f"/>
+  <target name="bright" format="rgba32f"/>
+  <target name="glow" format="rgba32f"/>
+  <pass name="draw" target="scene"><shader stage="fragment"><![CDATA[
+uniform int Pixel_X;
+uniform int Pixel_Y;
+uniform float Value;
+uniform int Kind;
+out vec4 c;
+void main() {
+    float v = Kind == 1 ? uintBitsToFloat(0x7fc00000u) : Kind == 2 ? uintBitsToFloat(0x7f800000u) : Value;
+    c = ivec2(gl_FragCoord.xy) == ivec2(Pixel_X, Pixel_Y) ? vec4(vec3(v), 1.0) : vec4(0.0, 0.0, 0.0, 1.0);
+}
+]]></shader></pass>
+  <pass name="bright_pass" target="bright"><sampler name="Scene" target="scene" filter="nearest"/><shader stage="fragment"><![CDATA[
+uniform sampler2D Scene;
+out vec4 c;
+void main() { c = vec4(max(texelFetch(Scene, ivec2(gl_FragCoord.xy), 0).rgb - 1.0, 0.0), 1.0); }
+]]></shader></pass>
+  <pass name="glow_pass" target="glow"><sampler name="Bright" target="bright" filter="nearest"/><shader stage="fragment"><![CDATA[
+uniform sampler2D Bright;
+out vec4 c;
+void main() {
+    ivec2 size = textureSize(Bright, 0);
+    vec3 sum = vec3(0.0);
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+            sum += texelFetch(Bright, clamp(ivec2(gl_FragCoord.xy) + ivec2(dx, dy), ivec2(0), size - 1), 0).rgb;
+    c = vec4(sum * 0.5, 0.0);
+}
+]]></shader></pass>
+  <effect name="glow" passes="glow_pass" source="bright"/>
+  <pass name="final"><sampler name="Scene" target="scene" filter="nearest"/><sampler name="Glow" target="glow" filter="nearest"/>
+    <shader stage="fragment"><![CDATA[
+uniform sampler2D Scene;
+uniform sampler2D Glow;
+out vec4 c;
+void main() { ivec2 p = ivec2(gl_FragCoord.xy); c = texelFetch(Scene, p, 0) + texelFetch(Glow, p, 0); }
+]]></shader></pass>
+  <output format="rgba32f" transform="none"/>
+</workspace>
+)";
+
+class GlowContentSkipGLTest : public GlTest {
+protected:
+    // One frame with the pixel at (x, y) holding `value` (kind 0), NaN (1) or +Inf (2); returns
+    // what the frame skipped, after checking the outputs are the same.
+    Skipped frameWith(glm::ivec2 pixel, float value, int kind = 0) {
+        std::unique_ptr<Workspace> ws = workspaceFromText(kGlow);
+        if (!ws) return {{"-", "no workspace"}};
+        auto on = executorFor(*ws, {37, 23}, {}, true);
+        auto off = executorFor(*ws, {37, 23}, {}, false);
+        if (!on || !off) return {{"-", "no executor"}};
+        for (GlExecutor* e : {on.get(), off.get()}) {
+            EXPECT_TRUE(e->setVariable("Pixel_X", Value::ofInt(pixel.x)));
+            EXPECT_TRUE(e->setVariable("Pixel_Y", Value::ofInt(pixel.y)));
+            EXPECT_TRUE(e->setVariable("Value", Value::ofFloat(value)));
+            EXPECT_TRUE(e->setVariable("Kind", Value::ofInt(kind)));
+        }
+        const std::string what = "pixel " + std::to_string(pixel.x) + "," + std::to_string(pixel.y) + " kind " +
+                                 std::to_string(kind) + " value " + std::to_string(value);
+        expectSameFrame(*on, *off, 0.0f, what);
+        return on->contentSkippedEffects();
+    }
+};
+
+TEST_F(GlowContentSkipGLTest, OnePixelJustAboveTheThresholdInAnyCornerKeepsTheEffect) {
+    const float justAbove = std::nextafter(1.0f, 2.0f);
+    for (glm::ivec2 corner : {glm::ivec2(0, 0), glm::ivec2(36, 0), glm::ivec2(0, 22), glm::ivec2(36, 22)}) {
+        EXPECT_TRUE(frameWith(corner, justAbove).empty()) << "corner " << corner.x << "," << corner.y;
+        Skipped at = frameWith(corner, 1.0f);
+        ASSERT_EQ(at.count("glow"), 1u) << "exactly at the threshold nothing passes: corner " << corner.x << "," << corner.y;
+        EXPECT_EQ(at.at("glow"), "'bright' holds no pixel with a non-zero red, green or blue value");
+    }
+}
+
+TEST_F(GlowContentSkipGLTest, NanAndInfinityCountAsTheShadersTreatThem) {
+    // +Inf - 1 is +Inf: the effect runs. NaN goes through max() as the GL implementation makes
+    // it; whatever the bright pass writes, the output is what running everything gives.
+    EXPECT_TRUE(frameWith({18, 11}, 0.0f, 2).empty());
+    frameWith({18, 11}, 0.0f, 1);
+}
+
+}  // namespace
+}  // namespace rmfx::test
