@@ -8,6 +8,8 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
+#include "core/Percentile.h"
+
 namespace rmfx {
 
 namespace {
@@ -57,6 +59,58 @@ std::string nonFiniteMismatch(const Image& actual, const Image& reference) {
            number(reference.pixels[first]);
 }
 
+// "99th", "99.9th", "1st", "2nd", "3rd", "11th": the percentile in words.
+std::string ordinal(double n) {
+    std::string text = number(n);
+    if (n != std::floor(n)) return text + "th";
+    long long whole = static_cast<long long>(n);
+    if (whole % 100 >= 11 && whole % 100 <= 13) return text + "th";
+    switch (whole % 10) {
+        case 1: return text + "st";
+        case 2: return text + "nd";
+        case 3: return text + "rd";
+        default: return text + "th";
+    }
+}
+
+// |a − b| per channel, or relative to the reference.
+OIIO::ImageBuf channelDifference(const Image& actual, const Image& reference, const CompareLimits& limits) {
+    OIIO::ImageBuf a = toBuffer(actual), b = toBuffer(reference);
+    OIIO::ImageBuf difference = algo::absdiff(a, b);
+    if (limits.metric == ErrorMetric::Relative)
+        difference = algo::div(difference, algo::max(algo::abs(b), static_cast<float>(limits.floor)));
+    // Matching NaNs and infinities leave NaN here (inf − inf, NaN − NaN): no error. A mismatch is
+    // ImageComparison::problem already.
+    return algo::fixNonFinite(difference, algo::NONFINITE_BLACK);
+}
+
+// ΔE_ITP per pixel, one channel. One or two channels are grey (and alpha), three or four RGB
+// (and alpha), as image files hold them.
+Image itpDifference(const Image& actual, const Image& reference, double luminance) {
+    Image out;
+    out.width = actual.width;
+    out.height = actual.height;
+    out.channels = 1;
+    out.highDynamicRange = true;
+    out.pixels.resize(static_cast<size_t>(actual.width) * actual.height);
+    const size_t channels = static_cast<size_t>(actual.channels);
+    const size_t colourChannels = channels <= 2 ? 1 : 3;
+    auto itp = [&](const float* v) {
+        return colourChannels == 1 ? itpFromBt709(v[0], v[0], v[0], luminance)
+                                   : itpFromBt709(v[0], v[1], v[2], luminance);
+    };
+    for (size_t p = 0; p < out.pixels.size(); ++p) {
+        const float* a = &actual.pixels[p * channels];
+        const float* b = &reference.pixels[p * channels];
+        // A NaN or infinity, matched in the other image or not, leaves the pixel's error 0: a
+        // mismatch is ImageComparison::problem already.
+        bool finite = true;
+        for (size_t c = 0; c < colourChannels; ++c) finite = finite && std::isfinite(a[c]) && std::isfinite(b[c]);
+        if (finite) out.pixels[p] = static_cast<float>(deltaEItp(itp(a), itp(b)));
+    }
+    return out;
+}
+
 }  // namespace
 
 bool ImageComparison::passed() const {
@@ -64,16 +118,19 @@ bool ImageComparison::passed() const {
 }
 
 std::string ImageComparison::describe() const {
-    std::string error = metric == ErrorMetric::Relative ? "relative error " : "error ";
+    std::string error = metric == ErrorMetric::Relative ? "relative error "
+                        : metric == ErrorMetric::Itp    ? "ΔE_ITP "
+                                                        : "error ";
     std::string out = problem;
     auto clause = [&](const std::string& text) { out += (out.empty() ? "" : "; ") + text; };
     auto compared = [](const LimitCheck& c) {
         return number(c.value) + (c.passed() ? " ≤ " : " > ") + number(c.limit);
     };
-    std::string where = metrics.maxError > 0 ? " at x=" + std::to_string(metrics.maxX) + " y=" +
-                                                   std::to_string(metrics.maxY) + " channel " +
-                                                   std::to_string(metrics.maxChannel)
-                                             : "";
+    std::string where;
+    if (metrics.maxError > 0) {
+        where = " at x=" + std::to_string(metrics.maxX) + " y=" + std::to_string(metrics.maxY);
+        if (metric != ErrorMetric::Itp) where += " channel " + std::to_string(metrics.maxChannel);
+    }
     if (checks.empty() && difference.empty()) return out;
     if (checks.empty()) {
         clause("max " + error + number(metrics.maxError) + where + ", mean " + error + number(metrics.meanError));
@@ -83,6 +140,9 @@ std::string ImageComparison::describe() const {
         switch (c.kind) {
             case LimitCheck::Kind::Max: clause("max " + error + compared(c) + where); break;
             case LimitCheck::Kind::Mean: clause("mean " + error + compared(c)); break;
+            case LimitCheck::Kind::Percentile:
+                clause(ordinal(percentile.value_or(100.0)) + " percentile " + error + compared(c));
+                break;
             case LimitCheck::Kind::FailFraction:
                 clause("fail fraction " + compared(c) + " (" + std::to_string(metrics.failingPixels) + " of " +
                        std::to_string(metrics.pixelCount) + " pixels with " + error + "> " +
@@ -96,6 +156,7 @@ std::string ImageComparison::describe() const {
 ImageComparison compareImages(const Image& actual, const Image& reference, const CompareLimits& limits) {
     ImageComparison result;
     result.metric = limits.metric;
+    if (limits.percentile) result.percentile = limits.percentile->percentile;
     result.pixelThreshold = limits.pixel;
     if (actual.width != reference.width || actual.height != reference.height) {
         result.problem = "size: the render is " + std::to_string(actual.width) + "x" + std::to_string(actual.height) +
@@ -108,14 +169,9 @@ ImageComparison compareImages(const Image& actual, const Image& reference, const
         return result;
     }
     result.problem = nonFiniteMismatch(actual, reference);
-    OIIO::ImageBuf a = toBuffer(actual), b = toBuffer(reference);
-
-    OIIO::ImageBuf difference = algo::absdiff(a, b);
-    if (limits.metric == ErrorMetric::Relative)
-        difference = algo::div(difference, algo::max(algo::abs(b), static_cast<float>(limits.floor)));
-    // Matching NaNs and infinities leave NaN here (inf − inf, NaN − NaN): no error. A mismatch is
-    // result.problem already.
-    difference = algo::fixNonFinite(difference, algo::NONFINITE_BLACK);
+    OIIO::ImageBuf difference = limits.metric == ErrorMetric::Itp
+                                    ? toBuffer(itpDifference(actual, reference, limits.luminance))
+                                    : channelDifference(actual, reference, limits);
 
     // Against black, compare gives the largest error and where it is, the mean over every value,
     // and the pixels with a channel above the threshold.
@@ -131,11 +187,17 @@ ImageComparison compareImages(const Image& actual, const Image& reference, const
     m.meanError = measured.meanerror;
     m.pixelCount = static_cast<long long>(actual.width) * actual.height;
     m.failingPixels = limits.pixel ? static_cast<long long>(measured.nfail) : 0;
+    result.difference = toImage(difference);
+    if (limits.percentile && !result.difference.empty()) {
+        std::vector<double> errors(result.difference.pixels.begin(), result.difference.pixels.end());
+        m.percentileError = percentile(std::move(errors), limits.percentile->percentile / 100.0);
+    }
 
     if (limits.max) result.checks.push_back({LimitCheck::Kind::Max, m.maxError, *limits.max});
     if (limits.mean) result.checks.push_back({LimitCheck::Kind::Mean, m.meanError, *limits.mean});
+    if (limits.percentile)
+        result.checks.push_back({LimitCheck::Kind::Percentile, m.percentileError, limits.percentile->max});
     if (limits.pixel) result.checks.push_back({LimitCheck::Kind::FailFraction, m.failFraction(), limits.failFraction});
-    result.difference = toImage(difference);
     return result;
 }
 

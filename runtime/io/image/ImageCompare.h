@@ -1,12 +1,14 @@
 #pragma once
 // Compares a rendered image with a reference image through OpenImageIO and checks the error
-// against limits: the per-channel error (absolute, or relative to the reference), its maximum
-// and mean, and the fraction of pixels whose error exceeds a threshold (docs/replay.md).
+// against limits: the per-channel error (absolute, or relative to the reference) or the
+// per-pixel colour difference ΔE_ITP, its maximum, mean and a percentile, and the fraction of
+// pixels whose error exceeds a threshold (docs/replay.md).
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "io/image/ColorDifferenceItp.h"
 #include "model/Image.h"
 
 namespace rmfx {
@@ -14,14 +16,24 @@ namespace rmfx {
 enum class ErrorMetric {
     Absolute,  // |a − b|
     Relative,  // |a − b| / max(|b|, floor), b the reference
+    Itp,       // ΔE_ITP of each pixel's colour (ColorDifferenceItp.h); alpha is not compared
+};
+
+// The p-th percentile of the errors (core/Percentile.h) may be at most `max`.
+struct PercentileLimit {
+    double percentile = 100;  // in (0, 100]
+    double max = 0;
 };
 
 struct CompareLimits {
     ErrorMetric metric = ErrorMetric::Absolute;
     double floor = 1e-3;          // relative: the smallest denominator
-    std::optional<double> max;    // largest allowed error of any channel of any pixel
-    std::optional<double> mean;   // largest allowed mean error over every channel of every pixel
-    std::optional<double> pixel;  // a pixel fails when one of its channels' error exceeds this
+    double luminance = kItpDefaultLuminance;  // itp: cd/m² of a value of 1.0
+    // Errors: one for each channel of each pixel; with Itp, one for each pixel.
+    std::optional<double> max;    // largest allowed error
+    std::optional<double> mean;   // largest allowed mean error
+    std::optional<PercentileLimit> percentile;
+    std::optional<double> pixel;  // a pixel fails when one of its errors exceeds this
     double failFraction = 0;      // with `pixel`: the largest allowed fraction of failing pixels
 };
 
@@ -29,6 +41,7 @@ struct CompareMetrics {
     double maxError = 0;
     int maxX = 0, maxY = 0, maxChannel = 0;  // where the largest error is (row 0 at the top)
     double meanError = 0;
+    double percentileError = 0;   // at CompareLimits::percentile (0 without one)
     long long failingPixels = 0;  // pixels with an error above CompareLimits::pixel (0 without one)
     long long pixelCount = 0;
     double failFraction() const {
@@ -38,7 +51,7 @@ struct CompareMetrics {
 
 // One limit of CompareLimits against the value measured.
 struct LimitCheck {
-    enum class Kind { Max, Mean, FailFraction };
+    enum class Kind { Max, Mean, Percentile, FailFraction };
     Kind kind;
     double value = 0;
     double limit = 0;
@@ -50,11 +63,14 @@ struct ImageComparison {
     // infinity in one image where the other has a different value. Empty otherwise.
     std::string problem;
     CompareMetrics metrics;        // over the finite values; zero when the sizes or channels differ
-    std::vector<LimitCheck> checks;  // one for each limit given, in the order max, mean, fail fraction
-    // The per-channel error image, the images' size; empty when the sizes or channels differ.
-    // Values where both images hold the same NaN or infinity are 0.
+    // One for each limit given, in the order max, mean, percentile, fail fraction.
+    std::vector<LimitCheck> checks;
+    // The error image, the images' size, one channel a channel of the images (ΔE_ITP: one
+    // channel); empty when the sizes or channels differ. Errors where both images hold the same
+    // NaN or infinity are 0 (with Itp: a pixel with a NaN or infinity in its colour).
     Image difference;
     ErrorMetric metric = ErrorMetric::Absolute;
+    std::optional<double> percentile;  // of CompareLimits::percentile
     std::optional<double> pixelThreshold;
 
     bool passed() const;
