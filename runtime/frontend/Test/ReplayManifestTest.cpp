@@ -202,13 +202,13 @@ TEST(ReplayManifest, UnknownAttributesListTheKnownOnes) {
                            "    <set name=\"x\" val=\"1\"/>", "    <compare reference=\"a.exr\" output=\"output\"/>",
                            "  </case>"})),
         (Lines{at + "2: error: <defaults>: unknown attribute 'tolerance' (expected one of: size, frames, dt, error, "
-                    "floor, max, mean, pixel, fail-fraction, store)",
+                    "floor, luminance, max, mean, percentile, percentile-max, pixel, fail-fraction, store)",
                at + "3: error: <case name=\"a\">: unknown attribute 'frame' (expected one of: name, workspace, size, "
                     "frames, dt, effects)",
                at + "4: error: <set name=\"x\">: unknown attribute 'val' (expected one of: name, value)",
                at + "4: error: <set name=\"x\">: missing attribute 'value'",
                at + "5: error: <compare>: unknown attribute 'output' (expected one of: target, reference, error, "
-                    "floor, max, mean, pixel, fail-fraction, store)"}));
+                    "floor, luminance, max, mean, percentile, percentile-max, pixel, fail-fraction, store)"}));
 }
 
 TEST(ReplayManifest, MissingRequiredAttributes) {
@@ -257,7 +257,7 @@ TEST(ReplayManifest, Limits) {
                            "    <compare target=\"t4\" reference=\"4.exr\" pixel=\"0.1\" fail-fraction=\"1.5\"/>",
                            "    <compare target=\"t5\" reference=\"5.exr\" fail-fraction=\"0.5\"/>",
                            "    <compare target=\"t6\" reference=\"6.exr\" store=\"double\"/>", "  </case>"})),
-        (Lines{at + "3: error: <compare>: attribute 'error': 'squared' is not one of: absolute, relative",
+        (Lines{at + "3: error: <compare>: attribute 'error': 'squared' is not one of: absolute, relative, itp",
                at + "3: error: <compare>: attribute 'max' must be ≥ 0, got '-0.5'",
                at + "3: error: <compare>: attribute 'mean': expected a number, got 'x'",
                at + "4: error: <compare>: attribute 'floor' applies to error=\"relative\"",
@@ -269,6 +269,77 @@ TEST(ReplayManifest, Limits) {
     // to relative compares.
     parsedOk(manifest({"  <defaults fail-fraction=\"0.5\" floor=\"0.5\"/>", "  <case name=\"a\" workspace=\"a.xml\">",
                        "    <compare reference=\"a.exr\" pixel=\"0.1\"/>", "  </case>"}));
+}
+
+TEST(ReplayManifest, ItpComparesWithLuminanceAndPercentile) {
+    ReplayManifest m = parsedOk(manifest({
+        "  <defaults error=\"itp\" luminance=\"203\" percentile=\"99\"/>",
+        "  <case name=\"a\" workspace=\"a.xml\">",
+        "    <compare reference=\"a.exr\" percentile-max=\"1.5\" mean=\"0.5\"/>",
+        "    <compare target=\"t\" reference=\"t.exr\" luminance=\"1000\" percentile=\"99.9\" percentile-max=\"2\"/>",
+        "    <compare target=\"u\" reference=\"u.exr\" error=\"absolute\" max=\"0.1\"/>",
+        "    <compare target=\"v\" reference=\"v.exr\" error=\"relative\" percentile-max=\"0.25\"/>",
+        "  </case>",
+    }));
+    const ReplayCase& c = m.cases.at(0);
+    const CompareLimits& a = c.compares.at(0).limits;
+    EXPECT_EQ(a.metric, ErrorMetric::Itp);
+    EXPECT_EQ(a.luminance, 203.0);
+    ASSERT_TRUE(a.percentile);
+    EXPECT_EQ(a.percentile->percentile, 99.0);
+    EXPECT_EQ(a.percentile->max, 1.5);
+    EXPECT_EQ(a.mean, 0.5);
+    EXPECT_EQ(a.max, std::nullopt);  // a percentile is a limit: not "equal images"
+    const CompareLimits& t = c.compares.at(1).limits;
+    EXPECT_EQ(t.luminance, 1000.0);
+    ASSERT_TRUE(t.percentile);
+    EXPECT_EQ(t.percentile->percentile, 99.9f);
+    EXPECT_EQ(t.percentile->max, 2.0);
+    // The defaults' luminance is for itp compares; their percentile alone limits nothing, and
+    // with a percentile-max it limits any metric.
+    const CompareLimits& u = c.compares.at(2).limits;
+    EXPECT_EQ(u.metric, ErrorMetric::Absolute);
+    EXPECT_EQ(u.max, 0.1f);
+    EXPECT_EQ(u.percentile, std::nullopt);
+    const CompareLimits& v = c.compares.at(3).limits;
+    EXPECT_EQ(v.metric, ErrorMetric::Relative);
+    ASSERT_TRUE(v.percentile);
+    EXPECT_EQ(v.percentile->percentile, 99.0);
+    EXPECT_EQ(v.percentile->max, 0.25);
+    EXPECT_EQ(v.max, std::nullopt);
+
+    // Without a luminance, 1.0 is 100 cd/m².
+    ReplayManifest plain = parsedOk(manifest(
+        {"  <case name=\"a\" workspace=\"a.xml\">", "    <compare reference=\"a.exr\" error=\"itp\"/>", "  </case>"}));
+    const CompareLimits& p = plain.cases.at(0).compares.at(0).limits;
+    EXPECT_EQ(p.luminance, 100.0);
+    EXPECT_EQ(p.max, 0.0);
+    EXPECT_EQ(p.percentile, std::nullopt);
+}
+
+TEST(ReplayManifest, ItpErrors) {
+    EXPECT_EQ(
+        errorsOf(manifest({"  <defaults luminance=\"-1\"/>",
+                           "  <case name=\"a\" workspace=\"a.xml\">",
+                           "    <compare reference=\"1.exr\" error=\"ITP\"/>",
+                           "    <compare target=\"t2\" reference=\"2.exr\" error=\"itp\" floor=\"0.1\"/>",
+                           "    <compare target=\"t3\" reference=\"3.exr\" luminance=\"100\"/>",
+                           "    <compare target=\"t4\" reference=\"4.exr\" error=\"itp\" luminance=\"0\"/>",
+                           "    <compare target=\"t5\" reference=\"5.exr\" percentile=\"0\" percentile-max=\"1\"/>",
+                           "    <compare target=\"t6\" reference=\"6.exr\" percentile=\"100.5\" percentile-max=\"-1\"/>",
+                           "    <compare target=\"t7\" reference=\"7.exr\" error=\"itp\" percentile=\"99\"/>",
+                           "    <compare target=\"t8\" reference=\"8.exr\" error=\"itp\" percentile-max=\"1\"/>",
+                           "  </case>"})),
+        (Lines{at + "2: error: <defaults>: attribute 'luminance' must be greater than 0, got '-1'",
+               at + "4: error: <compare>: attribute 'error': 'ITP' is not one of: absolute, relative, itp",
+               at + "5: error: <compare>: attribute 'floor' applies to error=\"relative\"",
+               at + "6: error: <compare>: attribute 'luminance' applies to error=\"itp\"",
+               at + "7: error: <compare>: attribute 'luminance' must be greater than 0, got '0'",
+               at + "8: error: <compare>: attribute 'percentile' must lie in (0, 100], got '0'",
+               at + "9: error: <compare>: attribute 'percentile' must lie in (0, 100], got '100.5'",
+               at + "9: error: <compare>: attribute 'percentile-max' must be ≥ 0, got '-1'",
+               at + "10: error: <compare>: 'percentile' needs a 'percentile-max' limit (on the <compare> or in <defaults>)",
+               at + "11: error: <compare>: 'percentile-max' needs a 'percentile' (on the <compare> or in <defaults>)"}));
 }
 
 TEST(ReplayManifest, CompareTargetsAndReferences) {

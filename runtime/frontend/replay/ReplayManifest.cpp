@@ -31,15 +31,18 @@ struct RunAttributes {
 
 struct LimitAttributes {
     std::optional<ErrorMetric> metric;
-    std::optional<double> floor, max, mean, pixel, failFraction;
+    std::optional<double> floor, luminance, max, mean, percentile, percentileMax, pixel, failFraction;
+    bool percentileWritten = false, percentileMaxWritten = false;  // valid or not
     std::optional<bool> half;
 };
 
 constexpr std::initializer_list<const char*> kCaseAttributes = {"name", "workspace", "size", "frames", "dt", "effects"};
 constexpr std::initializer_list<const char*> kCompareAttributes = {
-    "target", "reference", "error", "floor", "max", "mean", "pixel", "fail-fraction", "store"};
+    "target", "reference", "error", "floor", "luminance", "max", "mean", "percentile", "percentile-max", "pixel",
+    "fail-fraction", "store"};
 constexpr std::initializer_list<const char*> kDefaultsAttributes = {
-    "size", "frames", "dt", "error", "floor", "max", "mean", "pixel", "fail-fraction", "store"};
+    "size", "frames", "dt", "error", "floor", "luminance", "max", "mean", "percentile", "percentile-max", "pixel",
+    "fail-fraction", "store"};
 
 // Case names become folder names in the output: no separators, no leading dot.
 bool validCaseName(const std::string& name) {
@@ -55,7 +58,7 @@ bool isExr(const fs::path& file) {
     return ext == ".exr";
 }
 
-// A number attribute within [low, high] (high: none when infinite).
+// A number attribute within [low, high], or (low, high] (high: none when infinite).
 std::optional<double> bounded(const ElementReader& r, const char* name, double low, std::optional<double> high,
                               bool lowIncluded = true) {
     auto v = r.number(name);
@@ -64,7 +67,7 @@ std::optional<double> bounded(const ElementReader& r, const char* name, double l
     if (!ok) {
         char text[96];
         if (high)
-            std::snprintf(text, sizeof text, "must lie in [%g, %g]", low, *high);
+            std::snprintf(text, sizeof text, lowIncluded ? "must lie in [%g, %g]" : "must lie in (%g, %g]", low, *high);
         else
             std::snprintf(text, sizeof text, lowIncluded ? "must be ≥ %g" : "must be greater than %g", low);
         r.error("attribute '" + std::string(name) + "' " + text + ", got '" + r.raw(name) + "'");
@@ -131,10 +134,16 @@ private:
 
     LimitAttributes readLimits(const ElementReader& r) {
         LimitAttributes l;
-        l.metric = r.choice<ErrorMetric>("error", {{"absolute", ErrorMetric::Absolute}, {"relative", ErrorMetric::Relative}});
+        l.metric = r.choice<ErrorMetric>(
+            "error", {{"absolute", ErrorMetric::Absolute}, {"relative", ErrorMetric::Relative}, {"itp", ErrorMetric::Itp}});
         l.floor = bounded(r, "floor", 0.0, std::nullopt, false);
+        l.luminance = bounded(r, "luminance", 0.0, std::nullopt, false);
         l.max = bounded(r, "max", 0.0, std::nullopt);
         l.mean = bounded(r, "mean", 0.0, std::nullopt);
+        l.percentile = bounded(r, "percentile", 0.0, 100.0, false);
+        l.percentileMax = bounded(r, "percentile-max", 0.0, std::nullopt);
+        l.percentileWritten = r.has("percentile");
+        l.percentileMaxWritten = r.has("percentile-max");
         l.pixel = bounded(r, "pixel", 0.0, std::nullopt);
         l.failFraction = bounded(r, "fail-fraction", 0.0, 1.0);
         l.half = r.choice<bool>("store", {{"float", false}, {"half", true}});
@@ -241,14 +250,17 @@ private:
         l.metric = own.metric.value_or(defaultLimits_.metric.value_or(ErrorMetric::Absolute));
         if (own.floor && l.metric != ErrorMetric::Relative) r.error("attribute 'floor' applies to error=\"relative\"");
         l.floor = own.floor.value_or(defaultLimits_.floor.value_or(kDefaultFloor));
+        if (own.luminance && l.metric != ErrorMetric::Itp) r.error("attribute 'luminance' applies to error=\"itp\"");
+        l.luminance = own.luminance.value_or(defaultLimits_.luminance.value_or(kItpDefaultLuminance));
         l.max = own.max ? own.max : defaultLimits_.max;
         l.mean = own.mean ? own.mean : defaultLimits_.mean;
+        readPercentile(r, own, l);
         l.pixel = own.pixel ? own.pixel : defaultLimits_.pixel;
         auto failFraction = own.failFraction ? own.failFraction : defaultLimits_.failFraction;
         if (failFraction && !l.pixel)
             r.error("'fail-fraction' needs a 'pixel' threshold (on the <compare> or in <defaults>)");
         l.failFraction = failFraction.value_or(0.0);
-        if (!l.max && !l.mean && !l.pixel) l.max = 0.0;  // no limit at all: the images must be equal
+        if (!l.max && !l.mean && !l.percentile && !l.pixel) l.max = 0.0;  // no limit at all: the images must be equal
         m.storeHalf = own.half.value_or(defaultLimits_.half.value_or(false));
 
         if (!reference || (r.has("target") && !target)) return;
@@ -267,6 +279,21 @@ private:
             return;
         }
         c.compares.push_back(std::move(m));
+    }
+
+    // percentile="99" percentile-max="1": one limit from two attributes, each of which may come
+    // from <defaults>. A percentile in <defaults> alone limits nothing: it says which percentile
+    // the compares that give a percentile-max mean.
+    void readPercentile(const ElementReader& r, const LimitAttributes& own, CompareLimits& l) {
+        auto percentile = own.percentile ? own.percentile : defaultLimits_.percentile;
+        auto max = own.percentileMax ? own.percentileMax : defaultLimits_.percentileMax;
+        bool percentileWritten = own.percentileWritten || defaultLimits_.percentileWritten;
+        bool maxWritten = own.percentileMaxWritten || defaultLimits_.percentileMaxWritten;
+        if (own.percentileWritten && !maxWritten)
+            r.error("'percentile' needs a 'percentile-max' limit (on the <compare> or in <defaults>)");
+        if (maxWritten && !percentileWritten)
+            r.error("'percentile-max' needs a 'percentile' (on the <compare> or in <defaults>)");
+        if (percentile && max) l.percentile = PercentileLimit{*percentile, *max};
     }
 
     std::string file_;
