@@ -1,10 +1,12 @@
 // `rmfx replay`: a tiny workspace and manifest in a scratch folder, references written with
 // --update, replays that pass, then a changed variable or shader that fails with the metrics,
-// the diff and actual images and a JUnit report; --case, broken cases, exit statuses.
+// the diff and actual images and a JUnit report; an itp compare whose diff holds ΔE_ITP; --case,
+// broken cases, exit statuses.
 
 #include <gtest/gtest.h>
 #include <tinyxml2.h>
 
+#include "io/image/ColorDifferenceItp.h"
 #include "io/image/ImageIO.h"
 #include "tests/support/GlTestSupport.h"
 #include "tests/support/TestSupport.h"
@@ -216,6 +218,38 @@ TEST_F(CliReplayGLTest, AChangedShaderFailsTheTargetsRelativeLimit) {
     EXPECT_EQ(relative.at(9, 9, 2), 0.25f);
     EXPECT_EQ(relative.at(9, 9, 0), 0.0f);
     EXPECT_FALSE(fs::exists(p / "replay-out"));
+}
+
+TEST_F(CliReplayGLTest, AnItpCompareFailsWithDeltaEPerPixelInItsDiff) {
+    auto manifest = [](const std::string& gain) {
+        return lines({"<replay version=\"1\">", "  <case name=\"hdr\" workspace=\"fx/tiny.xml\">",
+                      "    <set name=\"Gain\" value=\"" + gain + "\"/>",
+                      "    <compare reference=\"refs/hdr.exr\" error=\"itp\" luminance=\"1000\" mean=\"0.5\" "
+                      "percentile=\"99\" percentile-max=\"1\"/>",
+                      "  </case>", "</replay>"});
+    };
+    Project p;
+    p.dir().write("manifest.xml", manifest("10"));
+    p.update();
+    // Gain 10 → 11: HDR values up to 10.7 (10 700 cd/m²) grow by 10 %, several ΔE_ITP.
+    p.dir().write("manifest.xml", manifest("11"));
+    CommandResult r = p.replay();
+    EXPECT_EQ(r.status, 1) << r.out << r.err;
+    EXPECT_TRUE(has(r.out, "    output: FAILED: mean ΔE_ITP ")) << r.out;
+    EXPECT_TRUE(has(r.out, "; 99th percentile ΔE_ITP ")) << r.out;
+    Image diff = readOk(p / "replay-out/hdr/output.diff.exr");
+    Image actual = readOk(p / "replay-out/hdr/output.actual.exr");
+    Image reference = readOk(p / "refs/hdr.exr");
+    ASSERT_EQ(diff.width, 16);
+    ASSERT_EQ(diff.channels, 1);
+    for (auto [x, y] : {std::pair{0, 0}, std::pair{15, 0}, std::pair{7, 9}}) {
+        auto itp = [&](const Image& image) {
+            return itpFromBt709(image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2), 1000);
+        };
+        double expected = deltaEItp(itp(actual), itp(reference));
+        EXPECT_GT(expected, 1.0);
+        EXPECT_NEAR(diff.at(x, y, 0), expected, 1e-6 * expected) << x << " " << y;
+    }
 }
 
 TEST_F(CliReplayGLTest, CaseSelectsWhatRunsAndWhatUpdates) {
