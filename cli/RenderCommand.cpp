@@ -157,6 +157,8 @@ int renderSequenceCommand(const RenderArguments& a, const Workspace& ws) {
     settings.inputPattern = sequence.file.string();
     settings.layer = sequence.layer;
     settings.staticInputs = statics;
+    settings.frameBudgetSeconds = a.run.frameBudgetSeconds;
+    settings.onFrameBudget = a.run.onFrameBudget;
     settings.outputPattern = *a.output;
     settings.target = a.target.value_or("");
     settings.write.transform = a.transform.value_or(a.target ? DisplayTransform::None : ws.output.transform);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "core/FrameWatchdog.h"
+#include "io/image/ImageIO.h"
 #include "tests/support/TestSupport.h"
 
 namespace rmfx::test {
@@ -33,6 +34,16 @@ void main() {
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
+Image blankImage(int w, int h) {
+    Image image;
+    image.width = w;
+    image.height = h;
+    image.channels = 4;
+    image.highDynamicRange = true;
+    image.pixels.assign(static_cast<size_t>(w) * h * 4, 0.5f);
+    return image;
+}
+
 TEST(FrameBudgetCliGLTest, RenderStopsASpinningShaderWithStatusThree) {
     ScratchDir dir;
     dir.write("spin.xml", kSpinningWorkspace);
@@ -43,6 +54,24 @@ TEST(FrameBudgetCliGLTest, RenderStopsASpinningShaderWithStatusThree) {
     EXPECT_TRUE(has(r.err, "rmfx: error: frame 1 of spin.xml did not finish within the frame budget of 1 s")) << r.err;
     EXPECT_FALSE(fs::exists(dir / "spin.png"));
     EXPECT_LT(seconds, 60.0);  // not a timing assertion: the shader alone runs for hours
+}
+
+TEST(FrameBudgetCliGLTest, ASequenceStopsAtTheFrameThatSpins) {
+    ScratchDir dir;
+    std::string spinning = kSpinningWorkspace;
+    spinning.replace(spinning.find("  <pass"), 0, "  <input name=\"frame\"/>\n");
+    spinning.replace(spinning.find("    <shader"), 0, "    <sampler name=\"Frame\" texture=\"frame\"/>\n");
+    spinning.replace(spinning.find("uniform float Seed;"), 0, "uniform sampler2D Frame;\n");
+    spinning.replace(spinning.find("float x = Seed"), 0, "float x0 = texture(Frame, vec2(0.5)).r;\n    ");
+    spinning.replace(spinning.find("color = vec4(x);"), 16, "color = vec4(x + x0);");
+    dir.write("spin.xml", spinning);
+    std::filesystem::create_directories(dir / "shot");
+    ASSERT_TRUE(writeImage(dir / "shot/f.0001.exr", blankImage(4, 4)));
+    ASSERT_TRUE(writeImage(dir / "shot/f.0002.exr", blankImage(4, 4)));
+    CommandResult r = runRmfx("render spin.xml --input shot/f.%04d.exr --frame-budget 1 -o out.%04d.png", dir.path());
+    EXPECT_EQ(r.status, kExitFrameBudget) << r.err;
+    EXPECT_TRUE(has(r.err, "frame 1 (shot/f.0001.exr) of spin.xml did not finish within the frame budget of 1 s")) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out.0001.png"));
 }
 
 TEST(FrameBudgetCliGLTest, ReplayReportsTheCaseAsAnErrorAndStops) {

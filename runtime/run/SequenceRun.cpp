@@ -3,7 +3,10 @@
 #include <chrono>
 #include <future>
 #include <memory>
+#include <optional>
+#include <system_error>
 
+#include "core/FrameWatchdog.h"
 #include "io/image/InputImage.h"
 #include "io/media/ImageSequence.h"
 #include "validation/ImageInputs.h"
@@ -69,7 +72,9 @@ Result<SequenceTimes> renderSequence(const Workspace& source, const SequenceSett
     std::vector<InputArgument> given{{settings.input, frames->front().path, settings.layer,
                                       (settings.input.empty() ? "" : settings.input + "=") + settings.inputPattern}};
     given.insert(given.end(), settings.staticInputs.begin(), settings.staticInputs.end());
+    const Clock::time_point firstRead = Clock::now();
     Result<SuppliedInputs> supplied = supplyInputs(ws, given, settings.size);
+    const double firstReadSeconds = secondsSince(firstRead);
     if (!supplied) return Run::failure(std::move(supplied).diagnostics());
     Diagnostics warnings = supplied.takeDiagnostics();
     const std::string input = settings.input.empty() ? ws.inputs.front().name : settings.input;
@@ -88,7 +93,7 @@ Result<SequenceTimes> renderSequence(const Workspace& source, const SequenceSett
 
     SequenceTimes times;
     times.frames = static_cast<int>(frames->size());
-    times.read = secondsSince(started);  // the first image, read by supplyInputs
+    times.read = firstReadSeconds;
     const float dt = static_cast<float>(1.0 / settings.fps);
     const std::launch policy = settings.overlap ? std::launch::async : std::launch::deferred;
     std::future<ReadFrame> next;
@@ -110,23 +115,37 @@ Result<SequenceTimes> renderSequence(const Workspace& source, const SequenceSett
         d.push_back({Diagnostic::Severity::Error, {}, "", all});
         return Run::failure(std::move(d));
     };
+    std::optional<FrameWatchdog> watchdog;
+    if (settings.frameBudgetSeconds > 0) watchdog.emplace(settings.frameBudgetSeconds, settings.onFrameBudget);
     for (size_t k = 0; k < frames->size(); ++k) {
         const SequenceFrame& frame = (*frames)[k];
-        if (k + 1 < frames->size())
-            next = std::async(policy, readFrame, (*frames)[k + 1].path, settings.layer, frameSize);
+        const std::string frameLabel = "frame " + std::to_string(frame.frame) + " (" + frame.path.string() + ")";
+        try {
+            if (k + 1 < frames->size())
+                next = std::async(policy, readFrame, (*frames)[k + 1].path, settings.layer, frameSize);
+        } catch (const std::system_error& e) {
+            return fail(frameLabel + ": cannot start reading the next image: " + e.what());
+        }
         Clock::time_point renderStart = Clock::now();
+        if (watchdog) watchdog->arm(frameLabel + " of " + ws.path.string());
         Result<void> rendered = executor->renderFrame({static_cast<float>(k) * dt, dt});
-        if (!rendered) return fail("frame " + std::to_string(frame.frame) + " (" + frame.path.string() + "): " + rendered.error());
-        Result<Image> image = executor->readTarget(target);
+        if (!rendered) return fail(frameLabel + ": " + rendered.error());
+        Result<Image> image = executor->readTarget(target);  // waits for the frame's GPU work
+        if (watchdog) watchdog->disarm();
         if (!image) return fail(image.error());
         times.render += secondsSince(renderStart);
         if (Result<void> previous = finishWrite(); !previous) return fail(previous.error());
         writingFile = output->fileName(frame.frame);
-        writing = std::async(policy, writeFrame, writingFile, std::move(*image), settings.write);
+        try {
+            writing = std::async(policy, writeFrame, writingFile, std::move(*image), settings.write);
+        } catch (const std::system_error& e) {
+            return fail(writingFile.string() + ": cannot start writing: " + e.what());
+        }
         if (!settings.overlap) {
             if (Result<void> done = finishWrite(); !done) return fail(done.error());
         }
-        if (progress) progress({static_cast<int>(k), times.frames, secondsSince(started)});
+        // Overlapped, this frame's write is still under way.
+        if (progress) progress({static_cast<int>(settings.overlap ? k : k + 1), times.frames, secondsSince(started)});
         if (k + 1 < frames->size()) {
             ReadFrame read = next.get();
             times.read += read.seconds;

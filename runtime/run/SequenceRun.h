@@ -30,6 +30,9 @@ struct SequenceSettings {
     // Read the next image and write the last while the GPU renders (off: one after the other,
     // for the benchmark's comparison).
     bool overlap = true;
+    // Seconds a frame may take, GPU work included (FrameWatchdog, as RunSettings); 0: no limit.
+    double frameBudgetSeconds = 0.0;
+    std::function<void(const std::string&)> onFrameBudget;
 };
 
 struct SequenceProgress {
@@ -41,10 +44,10 @@ struct SequenceProgress {
 // Wall-clock seconds summed over the frames, per stage, and the whole run's.
 struct SequenceTimes {
     int frames = 0;
-    double read = 0.0;    // decoding (and resampling) each image
+    double read = 0.0;    // decoding (and resampling) each image, the first included
     double render = 0.0;  // uploading the image, the frame's passes, reading the target back
     double write = 0.0;   // encoding and writing each output file
-    double total = 0.0;   // first read to last write
+    double total = 0.0;   // from the start (finding the files, building the workspace) to the last write
 };
 
 // Fails naming the file of the first frame that cannot be read or written, after every earlier
