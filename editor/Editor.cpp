@@ -247,13 +247,23 @@ private:
             targets_.drawViewers(session_.executor(), {8.0f, 8.0f}, {width, std::min(480.0f, window.y - 16.0f)});
     }
 
-    // Which passes ran: effects switched off by their switch variables run none of theirs.
+    // Which passes ran: effects switched off by their switch variables run none of theirs, and
+    // those whose source held nothing were skipped on the GPU (hover for why).
     void drawEffectSwitches() {
-        const GlExecutor& executor = session_.executor();
+        GlExecutor& executor = session_.executor();
         std::string off;
         for (const std::string& e : executor.switchedOffEffects()) off += (off.empty() ? "" : ", ") + e;
         ImGui::TextDisabled("%zu passes ran%s%s", executor.passesRun().size(), off.empty() ? "" : "; effects switched off: ",
                             off.c_str());
+        const std::map<std::string, std::string>& skipped = executor.contentSkippedEffects(false);
+        if (skipped.empty()) return;
+        std::string names, why;
+        for (const auto& [effect, reason] : skipped) {
+            names += (names.empty() ? "" : ", ") + effect;
+            why += (why.empty() ? "" : "\n") + effect + ": " + reason;
+        }
+        ImGui::TextDisabled("skipped by content: %s", names.c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", why.c_str());
     }
 
     void drawCamera() {

@@ -7,9 +7,14 @@
 
 namespace rmfx::editor {
 
-void TimingPanel::record(const GlExecutor& executor) {
+void TimingPanel::record(GlExecutor& executor) {
     const std::vector<PassTiming>& passes = executor.passTimings();
     history_.add(passes, executor.frameGpuMilliseconds());
+    skippedPasses_.clear();
+    for (const auto& [name, why] : executor.contentSkippedEffects(false))
+        if (const Effect* e = executor.workspace().findEffect(name)) skippedPasses_.insert(e->passes.begin(), e->passes.end());
+    for (const PassTiming& p : passes)
+        if (!skippedPasses_.count(p.pass)) ranMilliseconds_[p.pass] = p.milliseconds;
 }
 
 void TimingPanel::draw() {
@@ -24,13 +29,16 @@ void TimingPanel::draw() {
         ImGui::TableSetupColumn("average", ImGuiTableColumnFlags_WidthStretch, 1.0f);
         ImGui::TableHeadersRow();
         for (const TimingHistory::Row& r : history_.rows()) {
+            const bool skipped = skippedPasses_.count(r.pass) > 0;
+            if (skipped) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(r.pass.c_str());
+            ImGui::TextUnformatted(skipped ? (r.pass + " (skipped)").c_str() : r.pass.c_str());
             ImGui::TableNextColumn();
             ImGui::Text("%.3f", r.lastMilliseconds);
             ImGui::TableNextColumn();
             ImGui::Text("%.3f", r.averageMilliseconds);
+            if (skipped) ImGui::PopStyleColor();
         }
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
@@ -40,6 +48,13 @@ void TimingPanel::draw() {
         ImGui::TableNextColumn();
         ImGui::Text("%.3f", history_.averageFrameMilliseconds());
         ImGui::EndTable();
+    }
+    if (!skippedPasses_.empty()) {
+        double saved = 0.0;
+        for (const std::string& pass : skippedPasses_)
+            if (auto it = ranMilliseconds_.find(pass); it != ranMilliseconds_.end()) saved += it->second;
+        ImGui::TextDisabled("skipped by content: about %.3f GPU ms a frame saved (what those passes took when they last ran)",
+                            saved);
     }
     std::vector<float> totals = history_.frameTotals();
     float top = *std::max_element(totals.begin(), totals.end());

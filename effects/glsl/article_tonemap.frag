@@ -10,7 +10,9 @@ out vec4 fragColor;
 
 void main() {
     vec4 original = texture(FullSampler, vTexCoord);
-    vec4 blur = texture(BlurSampler, vTexCoord);
+    // Without the bloom effect (rmfx render --effects "") nothing is blurred: 0, as the blur of a
+    // downsample with nothing above 1 gives.
+    vec4 blur = RMFX_EFFECT_bloom ? texture(BlurSampler, vTexCoord) : vec4(0.0);
     vec4 color = mix(original, blur, 0.4);
     vec2 fromCentre = vTexCoord - 0.5;
     float vignette = 1.0 - dot(fromCentre, fromCentre);
