@@ -242,7 +242,8 @@ TEST_F(CliReplayGLTest, AnItpCompareFailsWithDeltaEPerPixelInItsDiff) {
     Image reference = readOk(p / "refs/hdr.exr");
     ASSERT_EQ(diff.width, 16);
     ASSERT_EQ(diff.channels, 1);
-    for (auto [x, y] : {std::pair{0, 0}, std::pair{15, 0}, std::pair{7, 9}}) {
+    for (const auto& pixel : {std::pair{0, 0}, std::pair{15, 0}, std::pair{7, 9}}) {
+        const int x = pixel.first, y = pixel.second;  // clang 14 cannot capture structured bindings
         auto itp = [&](const Image& image) {
             return itpFromBt709(image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2), 1000);
         };
