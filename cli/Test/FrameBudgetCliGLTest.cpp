@@ -5,6 +5,7 @@
 
 #include "core/FrameWatchdog.h"
 #include "io/image/ImageIO.h"
+#include "tests/support/GlTestSupport.h"
 #include "tests/support/TestSupport.h"
 
 namespace rmfx::test {
@@ -34,16 +35,6 @@ void main() {
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-Image blankImage(int w, int h) {
-    Image image;
-    image.width = w;
-    image.height = h;
-    image.channels = 4;
-    image.highDynamicRange = true;
-    image.pixels.assign(static_cast<size_t>(w) * h * 4, 0.5f);
-    return image;
-}
-
 TEST(FrameBudgetCliGLTest, RenderStopsASpinningShaderWithStatusThree) {
     ScratchDir dir;
     dir.write("spin.xml", kSpinningWorkspace);
@@ -66,8 +57,8 @@ TEST(FrameBudgetCliGLTest, ASequenceStopsAtTheFrameThatSpins) {
     spinning.replace(spinning.find("color = vec4(x);"), 16, "color = vec4(x + x0);");
     dir.write("spin.xml", spinning);
     std::filesystem::create_directories(dir / "shot");
-    ASSERT_TRUE(writeImage(dir / "shot/f.0001.exr", blankImage(4, 4)));
-    ASSERT_TRUE(writeImage(dir / "shot/f.0002.exr", blankImage(4, 4)));
+    ASSERT_TRUE(writeImage(dir / "shot/f.0001.exr", blankHdrImage(4, 4)));
+    ASSERT_TRUE(writeImage(dir / "shot/f.0002.exr", blankHdrImage(4, 4)));
     CommandResult r = runRmfx("render spin.xml --input shot/f.%04d.exr --frame-budget 1 -o out.%04d.png", dir.path());
     EXPECT_EQ(r.status, kExitFrameBudget) << r.err;
     EXPECT_TRUE(has(r.err, "frame 1 (shot/f.0001.exr) of spin.xml did not finish within the frame budget of 1 s")) << r.err;

@@ -1,0 +1,42 @@
+// rmfx render --content-skip and --explain on a dim image: hdr_lighting's bloom and star are
+// skipped by content, the explanation says why, and the image equals --content-skip off bit for
+// bit (the acceptance, run as a user would).
+
+#include <gtest/gtest.h>
+
+#include "io/image/ImageIO.h"
+#include "tests/support/GlTestSupport.h"
+#include "tests/support/TestSupport.h"
+
+namespace rmfx::test {
+namespace {
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(CliContentSkipGLTest, ADimImageSkipsBloomAndStarAndTheImageIsTheSameBitForBit) {
+    ScratchDir dir;
+    Image dim = blankHdrImage(48, 32);
+    for (size_t i = 0; i < dim.pixels.size(); ++i) dim.pixels[i] = i % 4 == 3 ? 1.0f : 0.03f;
+    ASSERT_TRUE(writeImage(dir / "dim.exr", dim));
+    const std::string workspace = shellQuoted(sourceDir() / "effects/hdr_lighting.xml");
+    CommandResult on = runRmfx("render " + workspace + " --input dim.exr --frames 3 --explain -o on.exr", dir.path());
+    ASSERT_EQ(on.status, 0) << on.err;
+    EXPECT_TRUE(has(on.out, "  bloom: skipped by content: 'star_source' holds no pixel with a non-zero red, green or blue value"))
+        << on.out;
+    EXPECT_TRUE(has(on.out, "  star: skipped by content:")) << on.out;
+    CommandResult off = runRmfx("render " + workspace + " --input dim.exr --frames 3 --content-skip off --explain -o off.exr",
+                                dir.path());
+    ASSERT_EQ(off.status, 0) << off.err;
+    EXPECT_TRUE(has(off.out, "skipped by content (the last frame): nothing: --content-skip off")) << off.out;
+    Result<Image> a = readImage(dir / "on.exr"), b = readImage(dir / "off.exr");
+    ASSERT_TRUE(a && b);
+    ASSERT_EQ(a->pixels.size(), b->pixels.size());
+    EXPECT_TRUE(a->pixels == b->pixels) << "the image with content skip differs from the image without it";
+
+    CommandResult bad = runRmfx("render " + workspace + " --content-skip maybe", dir.path());
+    EXPECT_EQ(bad.status, 1);
+    EXPECT_TRUE(has(bad.err, "--content-skip: expected on or off, got 'maybe'")) << bad.err;
+}
+
+}  // namespace
+}  // namespace rmfx::test
