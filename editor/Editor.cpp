@@ -171,7 +171,7 @@ private:
         for (const ImageInput& input : ws.inputs) {
             const InputArgument* given = nullptr;
             for (const InputArgument& a : session_.inputs())
-                if (a.name == input.name || (a.name.empty() && ws.inputs.size() == 1)) given = &a;
+                if (session_.inputName(a) == input.name) given = &a;
             const Texture* texture = ws.findTexture(input.name);
             if (given && texture && texture->supplied)
                 ImGui::TextWrapped("%s: %s (%dx%d)", input.name.c_str(), given->file.string().c_str(),

@@ -148,7 +148,6 @@ void LiveWorkspace::adopt(Build build, Diagnostics warnings) {
     workspace_ = std::move(build.workspace);
     executor_ = std::move(build.executor);
     dependencies_ = std::move(build.dependencies);
-    supplied_ = std::move(build.supplied);
     failedDependencies_ = {};
     // Everything was just read from the files as they are: nothing is left to retry.
     workspacePending_ = false;

@@ -91,6 +91,8 @@ public:
     // input, or adds one, and builds the workspace anew. On failure nothing changes and the
     // diagnostics say why; on success they carry the warnings (how the file was decoded).
     Result<void> setInput(const InputArgument& input);
+    // Which input an argument names (an empty name: the workspace's only input); "" for none.
+    std::string inputName(const InputArgument& input) const;
     // The watcher's own problems (inotify limits), one sentence each; watching goes on by time stamp.
     const std::vector<std::string>& watcherErrors() const { return watcher_.errors(); }
 
@@ -115,8 +117,7 @@ private:
     void reloadInputs(const std::set<std::string>& names);
     // Reads the input images into `ws`, as the run's viewport asks (supplyInputs).
     Result<SuppliedInputs> supply(Workspace& ws) const;
-    // Which input an argument names (an empty name: the workspace's only input); "" for none.
-    std::string inputName(const InputArgument& input) const;
+
     void updateWatches();
     void collectErrors();
 
@@ -125,7 +126,6 @@ private:
     std::vector<std::pair<std::string, std::string>> overrides_;
     WorkspaceLoadOptions loadOptions_;  // the .rfx effect chosen with --effect; media as the first load
     std::vector<InputArgument> inputs_;
-    SuppliedInputs supplied_;  // of the running build
 
     std::shared_ptr<Workspace> workspace_;  // shared with executor_
     std::unique_ptr<GlExecutor> executor_;
