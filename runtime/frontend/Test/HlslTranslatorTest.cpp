@@ -6,6 +6,7 @@
 #include "frontend/shader/HlslTranslator.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 #include <gtest/gtest.h>
 
@@ -112,6 +113,36 @@ TEST(HlslTranslator, ShadersThatCrashGlslangAreErrorsOnTheirElement) {
                            "main", "ps_2_0"));
     ASSERT_EQ(unclosed.size(), 1u) << formatAll(unclosed);
     EXPECT_EQ(unclosed[0].message, "'[' is never closed");
+}
+
+// glslang runs in rmfx-hlsl-worker: a worker that cannot be found or run is an error on the
+// shader's element that says which program and how to point rmfx at it.
+TEST(HlslTranslator, AWorkerThatCannotRunIsAnErrorSayingWhichProgram) {
+    const char* code = "float4 main() : COLOR0 { return 1; }";
+    struct WorkerChoice {
+        explicit WorkerChoice(const char* path) { ::setenv("RMFX_HLSL_WORKER", path, 1); }
+        ~WorkerChoice() { ::unsetenv("RMFX_HLSL_WORKER"); }
+    };
+    {
+        WorkerChoice missing("/nonexistent/rmfx-hlsl-worker");
+        Diagnostics d;
+        EXPECT_FALSE(translate(code, ShaderStage::Fragment, d, "main", "ps_2_0"));
+        ASSERT_EQ(d.size(), 1u) << formatAll(d);
+        EXPECT_EQ(d[0].where.line, 7);
+        EXPECT_EQ(d[0].element, "<RmHLSLShader>");
+        EXPECT_EQ(d[0].message, "cannot compile this HLSL shader: RMFX_HLSL_WORKER names '/nonexistent/rmfx-hlsl-worker', "
+                                "which is not a program that can be run");
+    }
+    {
+        WorkerChoice failing("/bin/false");
+        Diagnostics d;
+        EXPECT_FALSE(translate(code, ShaderStage::Fragment, d, "main", "ps_2_0"));
+        ASSERT_EQ(d.size(), 1u) << formatAll(d);
+        EXPECT_EQ(d[0].message.rfind("glslang ended with exit status 1 before handing back its result", 0), 0u)
+            << d[0].message;
+    }
+    Diagnostics d;
+    EXPECT_TRUE(translate(code, ShaderStage::Fragment, d, "main", "ps_2_0")) << formatAll(d);
 }
 
 }  // namespace

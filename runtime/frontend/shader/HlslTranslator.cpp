@@ -2,95 +2,18 @@
 
 #include <algorithm>
 #include <cctype>
-#include <chrono>
-#include <cstring>
 #include <cstdio>
 #include <functional>
 #include <map>
-#include <mutex>
 #include <optional>
 #include <vector>
 
-#include <glslang/Public/ResourceLimits.h>
-#include <glslang/Public/ShaderLang.h>
-#include <glslang/SPIRV/GlslangToSpv.h>
-
-#include "core/IsolatedCall.h"
 #include "frontend/shader/BracketNesting.h"
 #include "frontend/shader/HlslGlobalInitializers.h"
+#include "frontend/shader/HlslWorker.h"
 
 namespace rmfx {
 namespace {
-
-void initializeGlslangOnce() {
-    static std::once_flag flag;
-    std::call_once(flag, [] { glslang::InitializeProcess(); });
-}
-
-// What glslang made of one HLSL stage, as it crosses from the child process (callIsolated).
-struct GlslangHlslOutcome {
-    enum Kind : char { Failed = 'F', NoEntryPoint = 'E', Compiled = 'S' };
-    Kind kind = Failed;
-    std::string log;              // Failed: glslang's info log
-    std::vector<unsigned> spirv;  // Compiled
-
-    std::string serialize() const {
-        std::string bytes(1, kind);
-        if (kind == Compiled) {
-            bytes.append(reinterpret_cast<const char*>(spirv.data()), spirv.size() * sizeof(unsigned));
-        } else {
-            bytes += log;
-        }
-        return bytes;
-    }
-    static GlslangHlslOutcome deserialize(const std::string& bytes) {
-        GlslangHlslOutcome out;
-        if (bytes.empty()) return out;
-        out.kind = static_cast<Kind>(bytes[0]);
-        if (out.kind == Compiled) {
-            out.spirv.resize((bytes.size() - 1) / sizeof(unsigned));
-            std::memcpy(out.spirv.data(), bytes.data() + 1, out.spirv.size() * sizeof(unsigned));
-        } else {
-            out.log = bytes.substr(1);
-        }
-        return out;
-    }
-};
-
-// Long enough for any real shader on a loaded machine; a glslang stalled on a lock another
-// thread held at the fork ends here.
-constexpr std::chrono::milliseconds kGlslangTimeout{30000};
-
-GlslangHlslOutcome compileHlslToSpirv(const std::string& code, ShaderStage stage, const std::string& entry) {
-    EShLanguage language = stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
-    glslang::TShader shader(language);
-    const char* text = code.c_str();
-    shader.setStrings(&text, 1);
-    shader.setEntryPoint(entry.c_str());
-    shader.setEnvInput(glslang::EShSourceHlsl, language, glslang::EShClientOpenGL, 100);
-    shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
-    shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
-    shader.setEnvTargetHlslFunctionality1();  // keeps the semantics in the SPIR-V
-    shader.setAutoMapLocations(true);
-    shader.setAutoMapBindings(true);
-    auto messages = static_cast<EShMessages>(EShMsgReadHlsl | EShMsgHlslDX9Compatible | EShMsgSpvRules);
-    glslang::TProgram program;
-    GlslangHlslOutcome out;
-    bool parsed = shader.parse(GetDefaultResources(), 100, false, messages);
-    if (parsed) program.addShader(&shader);
-    if (!parsed || !program.link(messages)) {
-        out.log = parsed ? program.getInfoLog() : shader.getInfoLog();
-        return out;
-    }
-    // glslang only warns when the entry point is missing, and compiles an empty shader.
-    if (std::string(program.getInfoLog()).find("Entry point not found") != std::string::npos) {
-        out.kind = GlslangHlslOutcome::NoEntryPoint;
-        return out;
-    }
-    out.kind = GlslangHlslOutcome::Compiled;
-    glslang::GlslangToSpv(*program.getIntermediate(language), out.spirv);
-    return out;
-}
 
 std::string upper(std::string s) {
     for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -225,7 +148,6 @@ Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const
                                            const SourceLocation& where, const std::string& element) {
     Diagnostics diagnostics;
     if (!checkProfile(stage, where, element, diagnostics)) return Result<HlslTranslation>::failure(std::move(diagnostics));
-    initializeGlslangOnce();
     // The preprocessor puts a GLSL #version first; HLSL has none. Blank it, keeping the line count.
     std::string code = hlsl.code;
     if (code.rfind("#version", 0) == 0) code.erase(0, code.find('\n'));
@@ -237,16 +159,17 @@ Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const
         return Result<HlslTranslation>::failure(std::move(diagnostics));
     }
     std::string entry = stage.entryPoint.empty() ? "main" : stage.entryPoint;
-    // In a child process: Debian's glslang crashes on some malformed HLSL (IsolatedCall.h).
-    Result<std::string> isolated = callIsolated([&] { return compileHlslToSpirv(code, stage.stage, entry).serialize(); },
-                                                kGlslangTimeout);
+    // In a process of its own: Debian's glslang crashes on some malformed HLSL (core/IsolatedProgram.h).
+    Result<GlslangHlslOutcome> isolated = compileHlslInWorker({stage.stage == ShaderStage::Vertex, entry, code});
     if (!isolated) {
         diagnostics.push_back({Diagnostic::Severity::Error, where, element,
-                               "glslang " + isolated.error() + " reading this HLSL shader: most likely a syntax "
-                               "error that Debian's glslang cannot report"});
+                               isolated.error().rfind("glslang ", 0) == 0
+                                   ? isolated.error() + " reading this HLSL shader: most likely a syntax error "
+                                                        "that Debian's glslang cannot report"
+                                   : "cannot compile this HLSL shader: " + isolated.error()});
         return Result<HlslTranslation>::failure(std::move(diagnostics));
     }
-    GlslangHlslOutcome compiled = GlslangHlslOutcome::deserialize(*isolated);
+    const GlslangHlslOutcome& compiled = *isolated;
     if (compiled.kind == GlslangHlslOutcome::Failed) {
         Diagnostics mapped = mapCompilerLog(compiled.log, hlsl, where, element);
         // glslang closes its located errors with an unlocated summary ("HLSL parsing failed").

@@ -1,0 +1,26 @@
+#pragma once
+// rmfx-hlsl-worker, the program that runs glslang's HLSL front end in a process of its own
+// (core/IsolatedProgram.h says why): where it is, and one stage compiled by it.
+
+#include <chrono>
+#include <string>
+
+#include "core/Result.h"
+#include "frontend/shader/GlslangHlslCompile.h"
+
+namespace rmfx {
+
+// The first that exists of: $RMFX_HLSL_WORKER (which, once set, must name the program), the
+// program beside this process's executable (an installed rmfx), the one this build wrote.
+// Otherwise an error saying where it looked.
+Result<std::string> hlslWorkerProgram();
+
+// Long enough for any real shader on a loaded machine, a sanitizer build's included.
+constexpr std::chrono::milliseconds kHlslWorkerTimeout{30000};
+
+// The stage compiled by the worker; an error says what went wrong with the worker ("glslang
+// crashed (signal 11, …)", "… did not finish within 30000 ms …"), not with the shader.
+Result<GlslangHlslOutcome> compileHlslInWorker(const GlslangHlslRequest& request,
+                                               std::chrono::milliseconds timeout = kHlslWorkerTimeout);
+
+}  // namespace rmfx
