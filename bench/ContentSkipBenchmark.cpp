@@ -20,7 +20,6 @@
 //   rmfx_bench_content_skip [--size WxH] [--rounds N] [--frames N] [--workspace FILE]
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -34,6 +33,7 @@
 
 #include <epoxy/gl.h>
 
+#include "bench/WholeNumberArgument.h"
 #include "core/Percentile.h"
 #include "gl/GlContext.h"
 #include "gl/GlExecutor.h"
@@ -53,14 +53,6 @@ struct Arguments {
     std::filesystem::path workspace = std::filesystem::path(RMFX_SOURCE_DIR) / "effects" / "hdr_lighting.xml";
 };
 
-std::optional<int> parseInt(const std::string& text, int min, int max) {
-    int value = 0;
-    const char* end = text.data() + text.size();
-    auto [stop, error] = std::from_chars(text.data(), end, value);
-    if (error != std::errc{} || stop != end || value < min || value > max) return std::nullopt;
-    return value;
-}
-
 std::optional<Arguments> parseArguments(int argc, char** argv) {
     Arguments a;
     auto fail = [](const std::string& message) -> std::optional<Arguments> {
@@ -78,12 +70,12 @@ std::optional<Arguments> parseArguments(int argc, char** argv) {
         const std::string value = argv[++i];
         if (option == "--size") {
             const size_t x = value.find('x');
-            std::optional<int> w = x == std::string::npos ? std::nullopt : parseInt(value.substr(0, x), 16, 8192);
-            std::optional<int> h = x == std::string::npos ? std::nullopt : parseInt(value.substr(x + 1), 16, 8192);
+            std::optional<int> w = x == std::string::npos ? std::nullopt : rmfx::bench::wholeNumberArgument(value.substr(0, x), 16, 8192);
+            std::optional<int> h = x == std::string::npos ? std::nullopt : rmfx::bench::wholeNumberArgument(value.substr(x + 1), 16, 8192);
             if (!w || !h) return fail("--size: expected WxH, each from 16 to 8192, got '" + value + "'");
             a.size = {*w, *h};
         } else if (option == "--rounds" || option == "--frames") {
-            std::optional<int> n = parseInt(value, 1, 1000);
+            std::optional<int> n = rmfx::bench::wholeNumberArgument(value, 1, 1000);
             if (!n) return fail(option + ": expected a whole number from 1 to 1000, got '" + value + "'");
             (option == "--rounds" ? a.rounds : a.frames) = *n;
         } else {

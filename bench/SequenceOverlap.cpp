@@ -18,7 +18,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -30,6 +29,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench/WholeNumberArgument.h"
 #include "bench/SyntheticHdrSequence.h"
 #include "core/Percentile.h"
 #include "gl/GlContext.h"
@@ -67,14 +67,6 @@ struct Arguments {
     bool keep = false;
 };
 
-std::optional<int> parseInt(const std::string& text, int min, int max) {
-    int value = 0;
-    const char* end = text.data() + text.size();
-    auto [stop, error] = std::from_chars(text.data(), end, value);
-    if (error != std::errc{} || stop != end || value < min || value > max) return std::nullopt;
-    return value;
-}
-
 // Prints what is wrong and returns nothing for a bad command line.
 std::optional<Arguments> parseArguments(int argc, char** argv) {
     Arguments a;
@@ -98,20 +90,20 @@ std::optional<Arguments> parseArguments(int argc, char** argv) {
         if (i + 1 >= argc) return fail(option + ": expected a value");
         const std::string value = argv[++i];
         if (option == "--frames") {
-            std::optional<int> frames = parseInt(value, 2, 1000);
+            std::optional<int> frames = rmfx::bench::wholeNumberArgument(value, 2, 1000);
             if (!frames) return fail("--frames: expected a whole number from 2 to 1000, got '" + value + "'");
             a.frames = *frames;
             a.framesGiven = true;
         } else if (option == "--size") {
             const size_t x = value.find('x');
-            std::optional<int> w = x == std::string::npos ? std::nullopt : parseInt(value.substr(0, x), 16, rmfx::kMaxInputSide);
-            std::optional<int> h = x == std::string::npos ? std::nullopt : parseInt(value.substr(x + 1), 16, rmfx::kMaxInputSide);
+            std::optional<int> w = x == std::string::npos ? std::nullopt : rmfx::bench::wholeNumberArgument(value.substr(0, x), 16, rmfx::kMaxInputSide);
+            std::optional<int> h = x == std::string::npos ? std::nullopt : rmfx::bench::wholeNumberArgument(value.substr(x + 1), 16, rmfx::kMaxInputSide);
             if (!w || !h)
                 return fail("--size: expected WxH, each from 16 to " + std::to_string(rmfx::kMaxInputSide) + ", got '" + value + "'");
             a.size = {*w, *h};
             a.sizeGiven = true;
         } else if (option == "--repetitions") {
-            std::optional<int> repetitions = parseInt(value, 1, 100);
+            std::optional<int> repetitions = rmfx::bench::wholeNumberArgument(value, 1, 100);
             if (!repetitions) return fail("--repetitions: expected a whole number from 1 to 100, got '" + value + "'");
             a.repetitions = *repetitions;
         } else if (option == "--output") {
