@@ -544,6 +544,24 @@ TEST(RfxImporter, BadInputsAreErrorsWithFileAndLine) {
     EXPECT_NE(errorsOf(pass("<RmSampler NAME=\"s\"/>\n"))
                   .find("t.rfx:6: error: <RmSampler NAME=\"s\">: sampler 's' has no <RmTextureObject NAME=\"s\">"),
               std::string::npos);
+    // The texture object is there; only its texture is missing: one error, on the reference,
+    // whichever comes first.
+    for (const char* order : {"<RmSampler NAME=\"s\"/>\n<RmTextureObject NAME=\"s\"><RmTextureReference NAME=\"Noise\"/></RmTextureObject>\n",
+                              "<RmTextureObject NAME=\"s\"><RmTextureReference NAME=\"Noise\"/></RmTextureObject>\n<RmSampler NAME=\"s\"/>\n"}) {
+        std::string errors = errorsOf(pass(order));
+        EXPECT_NE(errors.find("<RmTextureReference NAME=\"Noise\">: no texture variable or renderable texture 'Noise'"),
+                  std::string::npos) << errors;
+        EXPECT_EQ(errors.find("has no <RmTextureObject"), std::string::npos) << errors;
+    }
+    // A 3D texture (RenderMonkey's NoiseVolume.dds, in many real files) is named as what it is.
+    std::string volume = errorsOf(glEffect(
+        "<Rm3DTextureVariable NAME=\"Noise\" FILE_NAME=\"NoiseVolume.dds\"/>\n"
+        "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n"
+        "<RmTextureObject NAME=\"s\"><RmTextureReference NAME=\"Noise\"/></RmTextureObject>\n<RmSampler NAME=\"s\"/>\n" +
+        std::string(kFragment) + "\n</RmGLPass>\n"));
+    EXPECT_NE(volume.find("t.rfx:6: error: <RmTextureReference NAME=\"Noise\">: 'Noise' is a 3D texture (line 4), which "
+                          "rmfx does not have: this pass cannot be imported"),
+              std::string::npos) << volume;
     EXPECT_NE(errorsOf(pass("<RmRenderStateBlock>\n<RmState NAME=\"GL_DepthFunction\" STATE=\"45\" VALUE=\"9\"/>\n</RmRenderStateBlock>\n"))
                   .find("t.rfx:7: error: <RmState NAME=\"GL_DepthFunction\">: VALUE 9 is not a compare function (it takes 1, 2, 3, 4, 5, 6, 7, 8)"),
               std::string::npos);

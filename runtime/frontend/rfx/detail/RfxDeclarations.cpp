@@ -223,6 +223,9 @@ bool readDeclaration(const RfxElement& e, Declarations& into) {
     if (tag == "Rm3DTextureVariable" || tag == "RmLightVariable" || tag == "RmMaterialVariable") {
         e.warning("rmfx has no " + std::string(tag == "Rm3DTextureVariable" ? "3D textures" : tag == "RmLightVariable" ? "light variables" : "material variables") +
                   "; a pass that uses it cannot be imported");
+        into.unsupported.push_back({e.name(),
+                                    tag == "Rm3DTextureVariable" ? "a 3D texture" : tag == "RmLightVariable" ? "a light variable" : "a material variable",
+                                    e.where()});
         return true;
     }
     return tag == "RmStringVariable";  // notes and metadata: nothing to run

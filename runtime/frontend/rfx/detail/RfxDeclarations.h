@@ -23,12 +23,21 @@ struct ModelDeclaration {
     SourceLocation where;
 };
 
+// A declaration rmfx reads past (a 3D texture, a light, a material): named, so that what refers
+// to it can say so.
+struct UnsupportedDeclaration {
+    std::string name;
+    std::string what;  // "a 3D texture"
+    SourceLocation where;
+};
+
 struct Declarations {
     std::vector<Variable> variables;
     std::vector<Texture> textures;
     std::vector<RenderTarget> targets;
     std::vector<StreamMapDeclaration> streamMaps;
     std::vector<ModelDeclaration> models;
+    std::vector<UnsupportedDeclaration> unsupported;
 };
 
 // Reads `e` into `into` when it is a declaration element (RmFloatVariable, Rm2DTextureVariable,

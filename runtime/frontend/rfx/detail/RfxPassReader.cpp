@@ -1,6 +1,7 @@
 #include "frontend/rfx/detail/RfxPassReader.h"
 
 #include <algorithm>
+#include <set>
 #include <string_view>
 
 #include "core/IdentifierSearch.h"
@@ -166,8 +167,7 @@ private:
 
     void sampler(const RfxElement& c) {
         std::string name = c.name();
-        for (const Sampler& s : out_.pass.samplers)
-            if (s.uniform == name) return;
+        if (textureObjects_.count(name)) return;
         samplersWithoutObject_.emplace_back(name, c);
     }
 
@@ -175,6 +175,9 @@ private:
         Sampler s;
         s.uniform = c.name();
         s.where = c.where();
+        // The sampler has its object, even one whose texture is reported missing below.
+        textureObjects_.insert(s.uniform);
+        std::erase_if(samplersWithoutObject_, [&](const auto& p) { return p.first == s.uniform; });
         const XMLElement* ref = c.xml()->FirstChildElement("RmTextureReference");
         if (!ref) {
             c.error("it has no <RmTextureReference> naming the texture it binds");
@@ -187,6 +190,10 @@ private:
         } else if (const RenderTarget* t = scopes_.target(texture)) {
             s.target = texture;
             mipmaps = t->mipmaps;
+        } else if (const UnsupportedDeclaration* u = scopes_.unsupported(texture)) {
+            at(ref).error("'" + texture + "' is " + u->what + " (line " + std::to_string(u->where.line) +
+                          "), which rmfx does not have: this pass cannot be imported");
+            return;
         } else {
             at(ref).error("no texture variable or renderable texture '" + texture + "' is visible from the pass");
             return;
@@ -197,7 +204,6 @@ private:
             else states.applyGl(at(x));
         }
         states.finish(c, s);
-        std::erase_if(samplersWithoutObject_, [&](const auto& p) { return p.first == s.uniform; });
         out_.pass.samplers.push_back(std::move(s));
     }
 
@@ -254,6 +260,7 @@ private:
     const StreamMapDeclaration* streamMap_ = nullptr;
     bool targetSeen_ = false;
     std::vector<std::pair<std::string, RfxElement>> samplersWithoutObject_;
+    std::set<std::string> textureObjects_;
     std::vector<RfxElement> constants_;
 };
 
@@ -267,6 +274,9 @@ const Texture* VisibleScopes::texture(const std::string& name) const {
 }
 const RenderTarget* VisibleScopes::target(const std::string& name) const {
     return findIn<RenderTarget>(levels, &Declarations::targets, name);
+}
+const UnsupportedDeclaration* VisibleScopes::unsupported(const std::string& name) const {
+    return findIn<UnsupportedDeclaration>(levels, &Declarations::unsupported, name);
 }
 const StreamMapDeclaration* VisibleScopes::streamMap(const std::string& name) const {
     return findIn<StreamMapDeclaration>(levels, &Declarations::streamMaps, name);

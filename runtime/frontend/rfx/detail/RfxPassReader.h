@@ -21,6 +21,7 @@ struct VisibleScopes {
     const RenderTarget* target(const std::string& name) const;
     const StreamMapDeclaration* streamMap(const std::string& name) const;
     const ModelDeclaration* model(const std::string& name) const;
+    const UnsupportedDeclaration* unsupported(const std::string& name) const;
 };
 
 struct ReadPass {
