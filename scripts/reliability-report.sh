@@ -15,13 +15,10 @@ normal=${RELIABILITY_NORMAL:-build/ctest-junit.xml}
 asan=${RELIABILITY_ASAN:-build-asan/sanitizer-junit.xml}
 fuzz=${RELIABILITY_FUZZ:-build-asan/fuzz-summary.tsv}
 
-# One line per test case: "STATUS NAME" (STATUS: run = passed, fail, notrun/disabled = skipped;
-# names of parameterised tests may hold spaces, so the status comes first).
+# One line per test case: "STATUS NAME" (run = passed, fail, skipped), the tests inside each
+# GoogleTest suite included (scripts/test-cases.py).
 cases() {
-  awk '/<testcase /{
-         name = $0; sub(/.*<testcase name="/, "", name); sub(/".*/, "", name)
-         status = $0; sub(/.*status="/, "", status); sub(/".*/, "", status)
-         print status, name }' "$1"
+  python3 scripts/test-cases.py "$1"
 }
 
 # "passed/failed/skipped" counts of the cases whose names match REGEX in FILE.
