@@ -31,6 +31,7 @@ struct ReplayArguments {
     std::optional<fs::path> junit;
     std::vector<std::string> cases;
     bool update = false;
+    bool allTargets = false;  // with --update: store every target too, to name the pass that broke
     bool quiet = false;
     double frameBudget = kDefaultFrameBudgetSeconds;
     std::vector<fs::path> media;   // --media, after the manifest's <media> folders
@@ -65,6 +66,7 @@ std::optional<ReplayArguments> parseArguments(const std::vector<std::string>& ar
             return "";
         })
         .flag({"--update"}, [&] { a.update = true; })
+        .flag({"--all-targets"}, [&] { a.allTargets = true; })
         .flag({"-q", "--quiet"}, [&] { a.quiet = true; })
         .positional([&](const std::string& arg) -> std::string {
             if (a.manifest) return "one manifest at a time; got '" + *a.manifest + "' and '" + arg + "'";
@@ -73,6 +75,9 @@ std::optional<ReplayArguments> parseArguments(const std::vector<std::string>& ar
         });
     if (std::string message = parser.parse(args); !message.empty()) return fail(message);
     if (!a.manifest) return fail("name a manifest file (see rmfx --help and docs/replay.md)");
+    if (a.allTargets && !a.update)
+        return fail("--all-targets goes with --update: it stores every target of each case, and a replay without "
+                    "it uses what was stored");
     return a;
 }
 
@@ -128,8 +133,8 @@ private:
 
 class ReplayRunner {
 public:
-    ReplayRunner(const ReplayArguments& a, HeadlessContexts& contexts, MediaOptions media)
-        : a_(a), contexts_(contexts), media_(std::move(media)) {}
+    ReplayRunner(const ReplayArguments& a, HeadlessContexts& contexts, MediaOptions media, fs::path manifestFolder)
+        : a_(a), contexts_(contexts), media_(std::move(media)), manifestFolder_(std::move(manifestFolder)) {}
 
     CaseOutcome run(const ReplayCase& c) {
         CaseOutcome o;
@@ -145,10 +150,14 @@ public:
             o.comparesNotRun = static_cast<int>(c.compares.size());
             return o;
         }
+        const CompareLimits* failedLimits = nullptr;
         for (size_t i = 0; i < c.compares.size(); ++i) {
             if (a_.update) update(c.compares[i], (*render)[i], o);
-            else compare(c, c.compares[i], (*render)[i], o);
+            else if (!compare(c, c.compares[i], (*render)[i], o) && !failedLimits) failedLimits = &c.compares[i].limits;
         }
+        // Stored targets are kept current by every --update once a case has them.
+        if (a_.update && o.passed() && (a_.allTargets || fs::is_directory(caseTargetsFolder(c)))) updateTargets(c, o);
+        if (failedLimits) findBrokenPass(c, *failedLimits, o);
         return o;
     }
 
@@ -165,7 +174,84 @@ private:
         ++o.referencesWritten;
     }
 
-    void compare(const ReplayCase& c, const ReplayCompare& compare, const Image& image, CaseOutcome& o) {
+    // --all-targets: every target of the case, in a folder of their own that holds nothing else.
+    void updateTargets(const ReplayCase& c, CaseOutcome& o) {
+        Result<std::vector<CaseTarget>> targets = renderReplayTargets(c, media_, &contexts_);
+        fs::path folder = caseTargetsFolder(c);
+        auto failed = [&](const std::string& message) {
+            o.line(message);
+            o.fail(JUnitTestCase::Outcome::Error, message);
+        };
+        if (!targets) {
+            for (const Diagnostic& d : targets.diagnostics())
+                if (d.severity == Diagnostic::Severity::Error) return failed("all targets: " + d.format());
+            return failed("all targets: the case did not render");
+        }
+        std::error_code ec;
+        fs::remove_all(folder, ec);
+        fs::create_directories(folder, ec);
+        if (ec) return failed(folder.string() + ": cannot create the folder: " + ec.message());
+        std::string names;
+        for (const CaseTarget& t : *targets) {
+            if (auto written = writeImage(caseTargetFile(c, t.target), t.image); !written) return failed(written.error());
+            names += (names.empty() ? "" : ", ") + t.target;
+        }
+        o.line("wrote " + relativeToManifest(folder) + " (" + std::to_string(targets->size()) +
+               (targets->size() == 1 ? " target: " : " targets, in pass order: ") + names + ")");
+    }
+
+    // After a failed compare: with stored targets, the first one that differs names the pass that broke.
+    void findBrokenPass(const ReplayCase& c, const CompareLimits& limits, CaseOutcome& o) {
+        fs::path folder = caseTargetsFolder(c);
+        if (!fs::is_directory(folder)) {
+            o.line("which pass broke: no targets stored in " + relativeToManifest(folder) +
+                   " (rmfx replay --update --all-targets stores them)");
+            return;
+        }
+        Result<std::vector<CaseTarget>> targets = renderReplayTargets(c, media_, &contexts_);
+        if (!targets) {
+            o.line("which pass broke: the case did not render with every target kept");
+            for (const Diagnostic& d : targets.diagnostics())
+                if (d.severity == Diagnostic::Severity::Error) o.line("  " + d.format());
+            return;
+        }
+        FirstDifference first = findFirstDifference(c, *targets, limits);
+        if (!first.unstored.empty()) {
+            std::string names;
+            for (const std::string& t : first.unstored) names += (names.empty() ? "" : ", ") + t;
+            o.line("which pass broke: no stored reference for " + names + " (stored before the workspace changed?)");
+        }
+        if (!first.target) {
+            o.line("which pass broke: every stored target matches (" + std::to_string(first.matched.size()) +
+                   " compared): only what the compares read differs");
+            return;
+        }
+        const CaseTarget& t = *first.target;
+        std::string before = first.matched.empty() ? "none" : "";
+        for (const std::string& m : first.matched) before += (before.empty() ? "" : ", ") + m;
+        o.line("first difference: pass '" + t.pass + "' writing target '" + t.target + "' (" +
+               std::to_string(first.position) + " of " + std::to_string(targets->size()) + " targets in pass order): " +
+               first.comparison.describe());
+        o.line("  targets before it that match: " + before);
+        o.fail(JUnitTestCase::Outcome::Failed, "first difference at pass '" + t.pass + "' (target '" + t.target + "')");
+        fs::path out = a_.out / c.name / "targets";
+        std::error_code ignored;
+        fs::create_directories(out, ignored);
+        if (!first.comparison.difference.empty())
+            writeFailureImage("diff:  ", out / (t.target + ".diff.exr"), first.comparison.difference, o);
+        writeFailureImage("actual:", out / (t.target + ".actual.exr"), t.image, o);
+    }
+
+    // A path under the manifest's folder as the manifest would write it; others whole.
+    std::string relativeToManifest(const fs::path& path) const {
+        std::error_code ec;
+        fs::path relative = fs::relative(path, manifestFolder_, ec);
+        if (ec || relative.empty() || *relative.begin() == "..") return path.string();
+        return relative.generic_string() + "/";
+    }
+
+    // Whether the compare passed.
+    bool compare(const ReplayCase& c, const ReplayCompare& compare, const Image& image, CaseOutcome& o) {
         ImageComparison result = compareWithReference(image, compare);
         fs::path folder = a_.out / c.name;
         fs::path diffFile = folder / (compare.label() + ".diff.exr");
@@ -174,11 +260,12 @@ private:
         std::error_code ignored;
         fs::remove(diffFile, ignored);
         fs::remove(actualFile, ignored);
+        fs::remove_all(folder / "targets", ignored);
         if (result.passed()) {
             ++o.comparesPassed;
             o.line(compare.label() + ": ok (" + result.describe() + ")", true);
             fs::remove(folder, ignored);  // only when empty
-            return;
+            return true;
         }
         ++o.comparesFailed;
         o.line(compare.label() + ": FAILED: " + result.describe());
@@ -186,6 +273,7 @@ private:
         fs::create_directories(folder, ignored);
         if (!result.difference.empty()) writeFailureImage("diff:  ", diffFile, result.difference, o);
         writeFailureImage("actual:", actualFile, image, o);
+        return false;
     }
 
     void writeFailureImage(const std::string& what, const fs::path& file, const Image& image, CaseOutcome& o) {
@@ -196,6 +284,7 @@ private:
     const ReplayArguments& a_;
     HeadlessContexts& contexts_;
     MediaOptions media_;
+    fs::path manifestFolder_;
 };
 
 }  // namespace
@@ -226,7 +315,7 @@ int replayCommand(const std::vector<std::string>& args) {
     MediaOptions media = manifest.media;
     media.searchPath.insert(media.searchPath.end(), a->media.begin(), a->media.end());
     media.sandbox = a->sandbox.value_or(media.sandbox);
-    ReplayRunner runner(*a, contexts, std::move(media));
+    ReplayRunner runner(*a, contexts, std::move(media), manifest.folder);
     for (size_t i = 0; i < cases->size(); ++i) {
         const ReplayCase& c = *(*cases)[i];
         std::string progress = "[" + std::to_string(i + 1) + "/" + std::to_string(cases->size()) + "] " + c.name + " ... ";

@@ -73,6 +73,9 @@ replay options:
   --junit FILE           also write a JUnit XML report, one testcase per case
   --case NAME            replay only this case (repeatable)
   --update               store the renders as the references instead of comparing
+  --all-targets          with --update: also store every target of each case (CASE.targets/ beside
+                         its first reference); a failing case then names the first pass whose
+                         target differs (later --updates keep them current)
   --frame-budget SECONDS as for render: the case past its budget is reported (and written to the
                          JUnit report) as an error, and replay stops with exit status 3
   -q, --quiet            print only failing cases and errors

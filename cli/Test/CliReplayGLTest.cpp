@@ -160,6 +160,9 @@ TEST_F(CliReplayGLTest, AChangedVariableFailsWithMetricsImagesAndJUnit) {
     EXPECT_TRUE(has(r.out, "      diff:   replay-out/tiny/output.diff.exr\n")) << r.out;
     EXPECT_TRUE(has(r.out, "      actual: replay-out/tiny/output.actual.exr\n")) << r.out;
     EXPECT_TRUE(has(r.out, "    base: ok (max relative error 0 ≤ 0.2)\n")) << r.out;
+    EXPECT_TRUE(has(r.out, "    which pass broke: no targets stored in refs/tiny.targets/ (rmfx replay --update "
+                           "--all-targets stores them)\n"))
+        << r.out;
     EXPECT_TRUE(has(r.out, "[2/2] second ... ok (")) << r.out;
     EXPECT_TRUE(has(r.out, "replay: 1 of 2 cases passed, 1 failed; 2 of 3 compares passed, 1 failed\n")) << r.out;
     EXPECT_TRUE(has(r.out, "replay: wrote reports/junit.xml\n")) << r.out;
@@ -251,6 +254,64 @@ TEST_F(CliReplayGLTest, AnItpCompareFailsWithDeltaEPerPixelInItsDiff) {
         EXPECT_GT(expected, 1.0);
         EXPECT_NEAR(diff.at(x, y, 0), expected, 1e-6 * expected) << x << " " << y;
     }
+}
+
+// --update --all-targets stores base and output in pass order; a changed Gain then breaks the
+// second pass (base still matches), a changed gradient the first, each named in the log and JUnit.
+TEST_F(CliReplayGLTest, StoredTargetsNameThePassThatBroke) {
+    Project p;
+    CommandResult notAlone = p.replay("--all-targets");
+    EXPECT_EQ(notAlone.status, 1);
+    EXPECT_TRUE(has(notAlone.err, "rmfx replay: --all-targets goes with --update")) << notAlone.err;
+
+    CommandResult update = p.replay("--update --all-targets");
+    ASSERT_EQ(update.status, 0) << update.out << update.err;
+    EXPECT_TRUE(has(update.out, "    wrote refs/tiny.targets/ (2 targets, in pass order: base, output)\n")) << update.out;
+    EXPECT_TRUE(has(update.out, "    wrote refs/second.targets/ (2 targets, in pass order: base, output)\n"))
+        << update.out;
+    Image storedBase = readOk(p / "refs/tiny.targets/base.exr");
+    ASSERT_EQ(storedBase.width, 16);
+    EXPECT_EQ(storedBase.at(5, 0, 0), 11.0f / 32);
+    EXPECT_EQ(readOk(p / "refs/second.targets/output.exr").width, 8);
+
+    p.dir().write("manifest.xml", tinyManifest("1.5"));
+    CommandResult gain = p.replay("--case tiny --junit junit.xml");
+    EXPECT_EQ(gain.status, 1) << gain.out << gain.err;
+    EXPECT_TRUE(has(gain.out, "    first difference: pass 'final' writing target 'output' (2 of 2 targets in pass "
+                              "order): max error 0.484375 > 0.01 at x="))
+        << gain.out;
+    EXPECT_TRUE(has(gain.out, "      targets before it that match: base\n")) << gain.out;
+    EXPECT_TRUE(has(gain.out, "      actual: replay-out/tiny/targets/output.actual.exr\n")) << gain.out;
+    EXPECT_EQ(readOk(p / "replay-out/tiny/targets/output.diff.exr").at(15, 0, 0), 31.0f / 64);
+    tinyxml2::XMLDocument doc;
+    const tinyxml2::XMLElement* suite = junitSuite(doc, p / "junit.xml", "1", "1", "0");
+    ASSERT_TRUE(suite);
+    const tinyxml2::XMLElement* failure = suite->FirstChildElement("testcase")->FirstChildElement("failure");
+    ASSERT_TRUE(failure);
+    EXPECT_TRUE(has(failure->Attribute("message"), " | first difference at pass 'final' (target 'output')"))
+        << failure->Attribute("message");
+
+    // The gradient's blue 0.25 → 0.3125 breaks the first pass: base is compared with its own
+    // compare's relative limit 0.2 (error 0.25), and the output after it is not looked at.
+    p.dir().write("manifest.xml", tinyManifest("1"));
+    p.dir().write("fx/tiny.xml", tinyWorkspace("0.3125"));
+    CommandResult shader = p.replay("--case tiny");
+    EXPECT_EQ(shader.status, 1) << shader.out << shader.err;
+    EXPECT_TRUE(has(shader.out, "    first difference: pass 'gradient' writing target 'base' (1 of 2 targets in pass "
+                                "order): max relative error 0.25 > 0.2 at x="))
+        << shader.out;
+    EXPECT_TRUE(has(shader.out, "      targets before it that match: none\n")) << shader.out;
+    EXPECT_FALSE(fs::exists(p / "replay-out/tiny/targets/output.diff.exr"));
+    EXPECT_TRUE(fs::exists(p / "replay-out/tiny/targets/base.diff.exr"));
+
+    // An intended change: --update alone keeps the stored targets current, and the case passes.
+    CommandResult again = p.replay("--update --case tiny");
+    ASSERT_EQ(again.status, 0) << again.out << again.err;
+    EXPECT_TRUE(has(again.out, "    wrote refs/tiny.targets/ (2 targets")) << again.out;
+    EXPECT_EQ(readOk(p / "refs/tiny.targets/base.exr").at(3, 3, 2), 0.3125f);
+    CommandResult passes = p.replay("--case tiny");
+    EXPECT_EQ(passes.status, 0) << passes.out;
+    EXPECT_FALSE(fs::exists(p / "replay-out/tiny"));
 }
 
 TEST_F(CliReplayGLTest, CaseSelectsWhatRunsAndWhatUpdates) {

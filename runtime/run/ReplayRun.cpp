@@ -1,6 +1,9 @@
 #include "run/ReplayRun.h"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
+#include <map>
 #include <optional>
 
 #include "io/image/ImageIO.h"
@@ -58,36 +61,64 @@ void checkTargets(const ReplayCase& c, const Workspace& ws, Diagnostics& diagnos
 
 }  // namespace
 
-Result<std::vector<Image>> renderReplayCase(const ReplayCase& c, const MediaOptions& media, HeadlessContexts* contexts) {
-    using Rendered = Result<std::vector<Image>>;
+namespace {
+
+// The case's workspace loaded, its <set>s and <input>s applied, and the context of its profile
+// current: what renderReplayCase and renderReplayTargets share. nullopt when errors stop it.
+struct PreparedCase {
+    Workspace ws;
+    RunSettings settings;
+    ExecutorOptions options;
+};
+
+std::optional<PreparedCase> prepareCase(const ReplayCase& c, const MediaOptions& media, HeadlessContexts* contexts,
+                                        Diagnostics& diagnostics) {
     WorkspaceLoadOptions load;
     load.media = media;
     Result<Workspace> loaded = loadWorkspace(c.workspace, {}, load);
-    Diagnostics diagnostics = loaded.takeDiagnostics();
-    if (!loaded) return Rendered::failure(std::move(diagnostics));
-    Workspace& ws = *loaded;
+    add(diagnostics, loaded.takeDiagnostics());
+    if (!loaded) return std::nullopt;
+    PreparedCase prepared{std::move(*loaded), c.run, {}};
+    Workspace& ws = prepared.ws;
     applySets(c, ws, diagnostics);
     checkTargets(c, ws, diagnostics);
-    if (hasErrors(diagnostics)) return Rendered::failure(std::move(diagnostics));
-    RunSettings settings = c.run;
-    ExecutorOptions options;
+    if (hasErrors(diagnostics)) return std::nullopt;
     if (!c.inputs.empty()) {
         std::optional<SuppliedInputs> supplied = supplyCaseInputs(c, ws, diagnostics);
-        if (!supplied) return Rendered::failure(std::move(diagnostics));
-        settings.size = supplied->viewport;
-        options.givenInputs = supplied->given;
+        if (!supplied) return std::nullopt;
+        prepared.settings.size = supplied->viewport;
+        prepared.options.givenInputs = supplied->given;
     }
     if (contexts)
         if (auto context = contexts->use(ws.profile); !context) {
             diagnostics.push_back({Diagnostic::Severity::Error, c.where, "<case name=\"" + c.name + "\">", context.error()});
-            return Rendered::failure(std::move(diagnostics));
+            return std::nullopt;
         }
+    prepared.options.effects = c.effects;
+    return prepared;
+}
 
+// A target name as a file name: characters other than letters, digits, '_', '-' and '.' become '_'.
+std::string targetFileName(const std::string& target) {
+    std::string name = target;
+    for (char& ch : name)
+        if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '-' && ch != '.') ch = '_';
+    if (name.empty() || name[0] == '.') name.insert(0, "_");
+    return name + ".exr";
+}
+
+}  // namespace
+
+Result<std::vector<Image>> renderReplayCase(const ReplayCase& c, const MediaOptions& media, HeadlessContexts* contexts) {
+    using Rendered = Result<std::vector<Image>>;
+    Diagnostics diagnostics;
+    std::optional<PreparedCase> prepared = prepareCase(c, media, contexts, diagnostics);
+    if (!prepared) return Rendered::failure(std::move(diagnostics));
+    Workspace& ws = prepared->ws;
     // Only what the compares read is computed, as rmfx render would for each target.
-    options.effects = c.effects;
     for (const ReplayCompare& compare : c.compares)
-        options.outputs.push_back(compare.target.empty() ? ws.outputTargetName() : compare.target);
-    auto run = runHeadless(ws, settings, options);
+        prepared->options.outputs.push_back(compare.target.empty() ? ws.outputTargetName() : compare.target);
+    auto run = runHeadless(ws, prepared->settings, prepared->options);
     add(diagnostics, run.diagnostics());
     if (!run) return Rendered::failure(std::move(diagnostics));
     GlExecutor& executor = **run;
@@ -103,6 +134,79 @@ Result<std::vector<Image>> renderReplayCase(const ReplayCase& c, const MediaOpti
         images.push_back(std::move(*image));
     }
     return Rendered(std::move(images), std::move(diagnostics));
+}
+
+Result<std::vector<CaseTarget>> renderReplayTargets(const ReplayCase& c, const MediaOptions& media,
+                                                    HeadlessContexts* contexts) {
+    using Rendered = Result<std::vector<CaseTarget>>;
+    Diagnostics diagnostics;
+    std::optional<PreparedCase> prepared = prepareCase(c, media, contexts, diagnostics);
+    if (!prepared) return Rendered::failure(std::move(diagnostics));
+    // No outputs named: every target a running pass writes can be read, and none shares memory.
+    auto run = runHeadless(prepared->ws, prepared->settings, prepared->options);
+    add(diagnostics, run.diagnostics());
+    if (!run) return Rendered::failure(std::move(diagnostics));
+    GlExecutor& executor = **run;
+    const Workspace& ws = executor.workspace();
+    std::map<std::string, std::pair<size_t, std::string>> lastWriter;  // target → (position, pass)
+    const std::vector<std::string>& passes = executor.passesRun();
+    for (size_t i = 0; i < passes.size(); ++i)
+        if (const Pass* pass = ws.findPass(passes[i])) lastWriter[ws.passTargetName(*pass)] = {i, passes[i]};
+    std::vector<std::pair<size_t, CaseTarget>> ordered;
+    for (const auto& [target, writer] : lastWriter) {
+        auto image = executor.readTarget(target);
+        if (!image) {
+            diagnostics.push_back({Diagnostic::Severity::Error, c.where, "<case name=\"" + c.name + "\">",
+                                   "target '" + target + "': " + image.error()});
+            return Rendered::failure(std::move(diagnostics));
+        }
+        ordered.push_back({writer.first, {target, writer.second, std::move(*image), target == ws.outputTargetName()}});
+    }
+    std::sort(ordered.begin(), ordered.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<CaseTarget> targets;
+    for (auto& [position, target] : ordered) targets.push_back(std::move(target));
+    return Rendered(std::move(targets), std::move(diagnostics));
+}
+
+std::filesystem::path caseTargetsFolder(const ReplayCase& c) {
+    std::filesystem::path first = c.compares.empty() ? c.workspace : c.compares.front().reference;
+    return first.parent_path() / (c.name + ".targets");
+}
+
+std::filesystem::path caseTargetFile(const ReplayCase& c, const std::string& target) {
+    return caseTargetsFolder(c) / targetFileName(target);
+}
+
+FirstDifference findFirstDifference(const ReplayCase& c, const std::vector<CaseTarget>& targets,
+                                    const CompareLimits& limits) {
+    FirstDifference found;
+    for (size_t i = 0; i < targets.size(); ++i) {
+        const CaseTarget& t = targets[i];
+        std::filesystem::path file = caseTargetFile(c, t.target);
+        if (!std::filesystem::exists(file)) {
+            found.unstored.push_back(t.target);
+            continue;
+        }
+        const CompareLimits* own = &limits;
+        for (const ReplayCompare& compare : c.compares)
+            if (compare.target.empty() ? t.isOutput : compare.target == t.target) own = &compare.limits;
+        ImageComparison comparison;
+        if (auto reference = readImage(file); !reference) {
+            comparison.metric = own->metric;
+            comparison.problem = "cannot read the stored target: " + reference.error();
+        } else {
+            comparison = compareImages(t.image, *reference, *own);
+        }
+        if (comparison.passed()) {
+            found.matched.push_back(t.target);
+            continue;
+        }
+        found.target = &t;
+        found.comparison = std::move(comparison);
+        found.position = static_cast<int>(i) + 1;
+        return found;
+    }
+    return found;
 }
 
 ImageComparison compareWithReference(const Image& actual, const ReplayCompare& compare) {
