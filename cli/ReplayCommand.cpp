@@ -18,6 +18,7 @@
 #include "io/image/ImageIO.h"
 #include "io/media/MediaArguments.h"
 #include "io/xml/JUnitReport.h"
+#include "run/ReplayReport.h"
 #include "run/ReplayRun.h"
 
 namespace rmfx::cli {
@@ -29,6 +30,7 @@ struct ReplayArguments {
     std::optional<std::string> manifest;
     fs::path out = "replay-out";
     std::optional<fs::path> junit;
+    std::optional<fs::path> report;  // --report DIR: DIR/index.html
     std::vector<std::string> cases;
     bool update = false;
     bool allTargets = false;  // with --update: store every target too, to name the pass that broke
@@ -57,6 +59,7 @@ std::optional<ReplayArguments> parseArguments(const std::vector<std::string>& ar
           })
         .option({"--out"}, [&](const std::string& value) { a.out = value; return ""; })
         .option({"--junit"}, [&](const std::string& value) { a.junit = value; return ""; })
+        .option({"--report"}, [&](const std::string& value) { a.report = value; return ""; })
         .option({"--case"}, [&](const std::string& value) { a.cases.push_back(value); return ""; })
         .option({"--frame-budget"}, [&](const std::string& value) -> std::string {
             char* end = nullptr;
@@ -75,6 +78,8 @@ std::optional<ReplayArguments> parseArguments(const std::vector<std::string>& ar
         });
     if (std::string message = parser.parse(args); !message.empty()) return fail(message);
     if (!a.manifest) return fail("name a manifest file (see rmfx --help and docs/replay.md)");
+    if (a.report && a.update)
+        return fail("--report shows what a replay compared; --update compares nothing (run the replay after it)");
     if (a.allTargets && !a.update)
         return fail("--all-targets goes with --update: it stores every target of each case, and a replay without "
                     "it uses what was stored");
@@ -110,6 +115,7 @@ struct CaseOutcome {
     std::string message;  // one line: why it failed
     int comparesPassed = 0, comparesFailed = 0, comparesNotRun = 0;
     int referencesWritten = 0;
+    ReportCase page;  // with --report: the compares' images and metrics
 
     bool passed() const { return outcome == JUnitTestCase::Outcome::Passed; }
     // A line under the case's progress line; `onFailure`: shown only when the case fails (the
@@ -237,9 +243,16 @@ private:
         fs::path out = a_.out / c.name / "targets";
         std::error_code ignored;
         fs::create_directories(out, ignored);
-        if (!first.comparison.difference.empty())
-            writeFailureImage("diff:  ", out / (t.target + ".diff.exr"), first.comparison.difference, o);
-        writeFailureImage("actual:", out / (t.target + ".actual.exr"), t.image, o);
+        ReportCompare shown{t.target, first.comparison, t.image, caseTargetFile(c, t.target), std::nullopt, std::nullopt};
+        if (!first.comparison.difference.empty() &&
+            writeFailureImage("diff:  ", out / (t.target + ".diff.exr"), first.comparison.difference, o))
+            shown.diffFile = out / (t.target + ".diff.exr");
+        if (writeFailureImage("actual:", out / (t.target + ".actual.exr"), t.image, o))
+            shown.actualFile = out / (t.target + ".actual.exr");
+        if (a_.report) {
+            o.page.firstDifference = std::move(shown);
+            o.page.firstDifferencePass = t.pass;
+        }
     }
 
     // A path under the manifest's folder as the manifest would write it; others whole.
@@ -261,6 +274,11 @@ private:
         fs::remove(diffFile, ignored);
         fs::remove(actualFile, ignored);
         fs::remove_all(folder / "targets", ignored);
+        ReportCompare* shown = nullptr;
+        if (a_.report) {
+            o.page.compares.push_back({compare.label(), result, image, compare.reference, std::nullopt, std::nullopt});
+            shown = &o.page.compares.back();
+        }
         if (result.passed()) {
             ++o.comparesPassed;
             o.line(compare.label() + ": ok (" + result.describe() + ")", true);
@@ -271,14 +289,20 @@ private:
         o.line(compare.label() + ": FAILED: " + result.describe());
         o.fail(JUnitTestCase::Outcome::Failed, compare.label() + ": " + result.describe());
         fs::create_directories(folder, ignored);
-        if (!result.difference.empty()) writeFailureImage("diff:  ", diffFile, result.difference, o);
-        writeFailureImage("actual:", actualFile, image, o);
+        if (!result.difference.empty() && writeFailureImage("diff:  ", diffFile, result.difference, o) && shown)
+            shown->diffFile = diffFile;
+        if (writeFailureImage("actual:", actualFile, image, o) && shown) shown->actualFile = actualFile;
         return false;
     }
 
-    void writeFailureImage(const std::string& what, const fs::path& file, const Image& image, CaseOutcome& o) {
-        if (auto written = writeImage(file, image); !written) o.line("  " + what + " " + written.error());
-        else o.line("  " + what + " " + file.string());
+    // Whether it was written.
+    bool writeFailureImage(const std::string& what, const fs::path& file, const Image& image, CaseOutcome& o) {
+        if (auto written = writeImage(file, image); !written) {
+            o.line("  " + what + " " + written.error());
+            return false;
+        }
+        o.line("  " + what + " " + file.string());
+        return true;
     }
 
     const ReplayArguments& a_;
@@ -316,6 +340,16 @@ int replayCommand(const std::vector<std::string>& args) {
     media.searchPath.insert(media.searchPath.end(), a->media.begin(), a->media.end());
     media.sandbox = a->sandbox.value_or(media.sandbox);
     ReplayRunner runner(*a, contexts, std::move(media), manifest.folder);
+    std::optional<ReplayReportWriter> report;
+    int status = 0;
+    if (a->report) {
+        auto opened = ReplayReportWriter::open(*a->report, manifest.path.string());
+        if (!opened) {
+            std::cerr << "rmfx replay: --report: " << opened.error() << "\n";
+            return 1;
+        }
+        report = std::move(*opened);
+    }
     for (size_t i = 0; i < cases->size(); ++i) {
         const ReplayCase& c = *(*cases)[i];
         std::string progress = "[" + std::to_string(i + 1) + "/" + std::to_string(cases->size()) + "] " + c.name + " ... ";
@@ -351,6 +385,18 @@ int replayCommand(const std::vector<std::string>& args) {
         comparesNotRun += o.comparesNotRun;
         referencesWritten += o.referencesWritten;
         suite.cases.push_back({c.name, "replay." + manifest.path.stem().string(), seconds, o.outcome, o.message, o.report()});
+        if (report) {
+            o.page.name = c.name;
+            o.page.seconds = seconds;
+            o.page.log = o.report();
+            o.page.status = passed ? ReportCase::Status::Passed
+                              : o.outcome == JUnitTestCase::Outcome::Error ? ReportCase::Status::Error
+                                                                            : ReportCase::Status::Failed;
+            if (auto added = report->addCase(o.page); !added) {
+                std::cerr << "rmfx replay: --report: " << added.error() << "\n";
+                status = 1;
+            }
+        }
     }
     suite.seconds = std::chrono::duration<double>(Clock::now() - started).count();
 
@@ -366,7 +412,15 @@ int replayCommand(const std::vector<std::string>& args) {
         if (comparesNotRun > 0) std::cout << ", " << comparesNotRun << " not run";
         std::cout << "\n";
     }
-    int status = casesFailed > 0 ? 1 : 0;
+    if (casesFailed > 0) status = 1;
+    if (report) {
+        if (auto written = report->finish(suite.seconds); !written) {
+            std::cerr << "rmfx replay: --report: " << written.error() << "\n";
+            status = 1;
+        } else if (!a->quiet) {
+            std::cout << "replay: wrote " << written->string() << "\n";
+        }
+    }
     if (a->junit) {
         if (auto written = writeJUnit(*a->junit, suite); !written) {
             std::cerr << "rmfx replay: " << written.error() << "\n";

@@ -71,6 +71,9 @@ replay options:
   --out DIR              where failing compares leave their diff and actual images, as
                          DIR/CASE/NAME.diff.exr and DIR/CASE/NAME.actual.exr (default: replay-out)
   --junit FILE           also write a JUnit XML report, one testcase per case
+  --report DIR           also write DIR/index.html: every case, failures first, with reference,
+                         actual and difference side by side, a slider and flicker, an exposure
+                         control for HDR images, the metrics against their limits (docs/replay.md)
   --case NAME            replay only this case (repeatable)
   --update               store the renders as the references instead of comparing
   --all-targets          with --update: also store every target of each case (CASE.targets/ beside
