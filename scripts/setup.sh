@@ -12,6 +12,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev
   xvfb xauth
+  # For the tests only: the replay report is loaded in a real, headless browser (rmfx does not need it)
+  chromium
 )
 
 missing=()
