@@ -69,11 +69,9 @@ std::optional<Arguments> parseArguments(int argc, char** argv) {
         if (i + 1 >= argc) return fail(option + ": expected a value");
         const std::string value = argv[++i];
         if (option == "--size") {
-            const size_t x = value.find('x');
-            std::optional<int> w = x == std::string::npos ? std::nullopt : rmfx::bench::wholeNumberArgument(value.substr(0, x), 16, 8192);
-            std::optional<int> h = x == std::string::npos ? std::nullopt : rmfx::bench::wholeNumberArgument(value.substr(x + 1), 16, 8192);
-            if (!w || !h) return fail("--size: expected WxH, each from 16 to 8192, got '" + value + "'");
-            a.size = {*w, *h};
+            std::optional<glm::ivec2> size = rmfx::bench::sizeArgument(value, 16, 8192);
+            if (!size) return fail("--size: expected WxH, each from 16 to 8192, got '" + value + "'");
+            a.size = *size;
         } else if (option == "--rounds" || option == "--frames") {
             std::optional<int> n = rmfx::bench::wholeNumberArgument(value, 1, 1000);
             if (!n) return fail(option + ": expected a whole number from 1 to 1000, got '" + value + "'");
