@@ -27,6 +27,9 @@ namespace rmfx::cli {
 
 namespace {
 
+// --check found NaN or an infinity in a target (the image is written all the same).
+constexpr int kExitUnhealthy = 4;
+
 struct RenderArguments {
     std::optional<std::string> workspace;
     std::optional<std::string> output;
@@ -95,6 +98,7 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
         .option({"--effect"}, [&](const std::string& value) { a.load.effect = value; return ""; }, Empty::Allowed)
         .flag({"-q", "--quiet"}, [&] { a.quiet = true; })
         .flag({"--explain"}, [&] { a.explain = true; })
+        .flag({"--check"}, [&] { a.executor.checkHealth = true; })
         .flag({"--no-pool"}, [&] { a.executor.poolTargets = false; })
         .option({"--content-skip"}, [&](const std::string& value) -> std::string {
             if (value != "on" && value != "off") return "--content-skip: expected on or off, got '" + value + "'";
@@ -134,6 +138,33 @@ void showProgress(const SequenceProgress& p, bool terminal) {
 }
 
 // rmfx render W --input scene=shot/frame.%04d.exr -o out/frame.%04d.png
+// --check: what the passes left in their targets, on stderr; whether NaN or an infinity was found.
+bool reportHealth(const GlExecutor& executor, int frames) {
+    const std::vector<HealthFinding>& findings = executor.firstHealthFindings();
+    bool errors = false;
+    for (const HealthFinding& f : findings) {
+        errors = errors || healthKindIsError(f.kind);
+        std::cerr << "rmfx: check: " << (healthKindIsError(f.kind) ? "error" : "warning") << ": frame " << f.frame
+                  << ": " << describeFinding(f) << "\n";
+    }
+    const FrameHealth* last = executor.frameHealth();
+    std::string uninspected;
+    if (last)
+        for (const PassHealth& p : last->passes)
+            if (!p.inspected && uninspected.find("'" + p.target + "'") == std::string::npos)
+                uninspected += (uninspected.empty() ? "'" : ", '") + p.target + "'";
+    std::string found;
+    for (HealthKind kind : allHealthKinds)
+        if (std::none_of(findings.begin(), findings.end(), [&](const HealthFinding& f) { return f.kind == kind; }))
+            found += (found.empty() ? "" : ", ") + std::string(healthKindName(kind));
+    std::cerr << "rmfx: check: " << (last ? last->passes.size() : 0) << " passes a frame, " << frames
+              << (frames == 1 ? " frame" : " frames") << (found.empty() ? "" : ": no " + found);
+    if (!uninspected.empty())
+        std::cerr << "; not inspected, their formats clamp what is written: " << uninspected;
+    std::cerr << "\n";
+    return errors;
+}
+
 int renderSequenceCommand(const RenderArguments& a, const Workspace& ws) {
     std::vector<InputArgument> sequences, statics;
     for (const InputArgument& input : a.inputs) (isSequencePattern(input.file.string()) ? sequences : statics).push_back(input);
@@ -211,6 +242,10 @@ int renderCommand(const std::vector<std::string>& args) {
     }
     const bool sequence = std::any_of(a->inputs.begin(), a->inputs.end(),
                                       [](const InputArgument& i) { return isSequencePattern(i.file.string()); });
+    if (sequence && a->executor.checkHealth) {
+        std::cerr << "rmfx render: --check inspects a single run; for a sequence, check a frame of it on its own\n";
+        return 1;
+    }
     if (sequence) return renderSequenceCommand(*a, ws);
     if (!a->inputs.empty()) {
         const bool sized = a->run.size != glm::ivec2(0);
@@ -244,6 +279,7 @@ int renderCommand(const std::vector<std::string>& args) {
     }
     if (!a->quiet) std::cerr << formatAll(run.diagnostics());  // warnings (streams no shader reads…)
     std::unique_ptr<GlExecutor>& executor = *run;
+    const bool unhealthy = a->executor.checkHealth && reportHealth(*executor, a->run.frames);
     if (a->explain) {
         FrameExplanationInput explained{&ws, &executor->graph(), &executor->targetPlan(), executor->askedEffects(),
                                         executor->switchedOffEffects(), a->executor.poolTargets, {},
@@ -253,7 +289,7 @@ int renderCommand(const std::vector<std::string>& args) {
             explained.inputFiles[name] = given.file.string() + (given.layer.empty() ? "" : ":" + given.layer);
         }
         std::cout << explainFrame(explained);
-        if (!a->output) return 0;  // --explain alone writes no image
+        if (!a->output) return unhealthy ? kExitUnhealthy : 0;  // --explain alone writes no image
     }
     auto image = executor->readTarget(targetName);
     if (!image) {
@@ -274,7 +310,7 @@ int renderCommand(const std::vector<std::string>& args) {
         std::cerr << "rmfx: wrote " << output << " (" << image->width << "x" << image->height << ", target '"
                   << targetName << "', " << a->run.frames << (a->run.frames == 1 ? " frame" : " frames") << ", "
                   << (*context)->description() << ")\n";
-    return 0;
+    return unhealthy ? kExitUnhealthy : 0;
 }
 
 }  // namespace rmfx::cli

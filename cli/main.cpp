@@ -59,6 +59,10 @@ render options:
                          with size, format, bytes and shared memory, and the peak GPU memory;
                          writes an image only when -o is given
   --no-pool              give every target memory of its own (no sharing between lifetimes)
+  --check                after each pass, inspect on the GPU the target it wrote for NaN, ±Inf,
+                         negative values and values at its format's largest; report the first
+                         pass that wrote each, with a pixel, its value and the pass's inputs there
+                         (exit status 4 when NaN or an infinity was found; the image is written)
   --content-skip on|off  skip on the GPU the effects whose source holds nothing this frame
                          (<effect source>; default on; the image is the same either way)
   --memory-budget MiB    the most render-target memory a frame may hold (default 4096); a
@@ -126,7 +130,8 @@ file options (render, validate, edit, bench, replay; docs/media.md):
                          so here or by its manifest (<replay sandbox="false">)
 
 exit status: render, validate, edit: 0 success, 1 invalid workspace or arguments, 2 rendering or
-GL failure (edit: also no window, or an rmfx built without the editor). replay: 0 every case
+GL failure (edit: also no window, or an rmfx built without the editor), 3 a frame past its
+budget, 4 (render --check) NaN or an infinity in a target. replay: 0 every case
 passed, 1 a case failed (comparison, workspace or rendering error) or the manifest or arguments
 are invalid, 2 no GL context. bench: 0 success, 1 invalid manifest, arguments, input or workspace,
 2 no GL context or a variant failed to render.

@@ -13,6 +13,8 @@ namespace {
 
 class CliRenderGLTest : public GlTest {};
 
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
 TEST_F(CliRenderGLTest, RenderWritesTheOutputTargetAsExr) {
     ScratchDir dir;
     std::filesystem::path exr = dir / "default.exr";
@@ -52,6 +54,68 @@ TEST_F(CliRenderGLTest, BadWorkspaceExitsNonZeroWithFileAndLine) {
     EXPECT_NE(err.find(bad.string() + ":3:"), std::string::npos) << err;
     EXPECT_NE(err.find("rgba99"), std::string::npos) << err;
     EXPECT_FALSE(std::filesystem::exists(png));
+}
+
+// --check: a pass that divides by zero in the middle of a chain is named with the pixel and its
+// input there, the image is still written, and the exit status is 4; the same chain without the
+// division passes with 0 and says what it found none of.
+TEST_F(CliRenderGLTest, CheckNamesThePassThatWroteAnInfinityAndExitsWith4) {
+    auto workspace = [](const std::string& expression) {
+        return R"(<workspace version="1" name="chain" size="8x4">
+  <target name="ramp" format="rgba16f" scale="1"/>
+  <target name="ratio" format="rgba32f" scale="1"/>
+  <pass name="ramp" target="ramp">
+    <shader stage="fragment"><![CDATA[
+#version 450 core
+out vec4 fragColor;
+void main() { fragColor = vec4(gl_FragCoord.x - 2.5, 1.0, 0.0, 1.0); }
+]]></shader>
+  </pass>
+  <pass name="ratio" target="ratio">
+    <sampler name="ramp" target="ramp" filter="nearest"/>
+    <shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D ramp;
+out vec4 fragColor;
+void main() { vec4 r = texelFetch(ramp, ivec2(gl_FragCoord.xy), 0); fragColor = vec4()" + expression + R"(, 0.5, 0.5, 1.0); }
+]]></shader>
+  </pass>
+  <pass name="final">
+    <sampler name="ratio" target="ratio" filter="nearest"/>
+    <shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D ratio;
+out vec4 fragColor;
+void main() { fragColor = texelFetch(ratio, ivec2(gl_FragCoord.xy), 0); }
+]]></shader>
+  </pass>
+</workspace>
+)";
+    };
+    ScratchDir dir;
+    dir.write("bad.xml", workspace("1.0 / r.x"));
+    CommandResult bad = runRmfx("render bad.xml --check -o bad.exr", dir.path());
+    EXPECT_EQ(bad.status, 4) << bad.err;
+    // The ramp is x - 2.5 at pixel centres x + 0.5: 0 in column 2, negative left of it.
+    EXPECT_TRUE(has(bad.err, "rmfx: check: error: frame 0: pass 'ratio' wrote +Inf into target 'ratio' (4 pixels; first at "
+                             "x=2 y=0: (inf, 0.5, 0.5, 1); there the inputs held: ramp → target 'ramp' (0, 1, 0, 1))\n"))
+        << bad.err;
+    EXPECT_TRUE(has(bad.err, "rmfx: check: warning: frame 0: pass 'ramp' wrote negative values into target 'ramp' (8 pixels; "
+                             "first at x=0 y=0: (-2, 1, 0, 1); the pass reads no 2D input)\n"))
+        << bad.err;
+    EXPECT_TRUE(has(bad.err, "rmfx: check: 3 passes a frame, 1 frame: no NaN, -Inf, values at the format's largest\n"))
+        << bad.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "bad.exr"));
+
+    dir.write("good.xml", workspace("abs(r.x) + 1.0"));
+    CommandResult good = runRmfx("render good.xml --check --frames 2 -o good.exr", dir.path());
+    EXPECT_EQ(good.status, 0) << good.err;
+    EXPECT_TRUE(has(good.err, "rmfx: check: 3 passes a frame, 2 frames: no NaN, +Inf, -Inf, values at the format's largest\n"))
+        << good.err;
+
+    CommandResult sequence = runRmfx("render good.xml --check --input shot.%04d.exr -o out.%04d.png", dir.path());
+    EXPECT_EQ(sequence.status, 1);
+    EXPECT_TRUE(has(sequence.err, "--check inspects a single run")) << sequence.err;
 }
 
 }  // namespace

@@ -432,6 +432,30 @@ TEST_F(CliReplayGLTest, TheHtmlReportShowsTheFailingCaseFirstWithItsImagesAndAnE
     EXPECT_GE(allMatches(bright, "<a href=").size(), 6u);
 }
 
+// check="true": an infinity the compare cannot see (the reference holds the same one) fails the
+// case, naming the pass and pixel; without check the case passes.
+TEST_F(CliReplayGLTest, ACheckedCaseFailsOnAnInfinityItsCompareAccepts) {
+    auto manifest = [](const std::string& check) {
+        return lines({"<replay version=\"1\">", "  <case name=\"inf\" workspace=\"fx/inf.xml\" size=\"8x2\"" + check + ">",
+                      "    <compare reference=\"refs/inf.exr\"/>", "  </case>", "</replay>"});
+    };
+    Project p;
+    p.dir().write("fx/inf.xml", tinyWorkspace("1.0 / (gl_FragCoord.x - 3.5)"));
+    p.dir().write("manifest.xml", manifest(""));
+    p.update();
+    CommandResult unchecked = p.replay();
+    EXPECT_EQ(unchecked.status, 0) << unchecked.out;
+    p.dir().write("manifest.xml", manifest(" check=\"true\""));
+    CommandResult checked = p.replay("--junit junit.xml");
+    EXPECT_EQ(checked.status, 1) << checked.out;
+    EXPECT_TRUE(has(checked.out, "[1/1] inf ... FAILED")) << checked.out;
+    EXPECT_TRUE(has(checked.out, "manifest.xml:2: error: <case name=\"inf\" check=\"true\">: frame 0: pass 'gradient' wrote "
+                                 "+Inf into target 'base' (2 pixels; first at x=3 y=0: (0.4375, 0.75, inf, 1)"))
+        << checked.out;
+    tinyxml2::XMLDocument doc;
+    ASSERT_TRUE(junitSuite(doc, p / "junit.xml", "1", "0", "1"));
+}
+
 TEST_F(CliReplayGLTest, CaseSelectsWhatRunsAndWhatUpdates) {
     Project p;
     CommandResult update = p.replay("--update --case second");

@@ -4,17 +4,11 @@
 
 #include <epoxy/gl.h>
 
+#include "gl/GlFullScreenTriangle.h"
 #include "gl/GpuPass.h"
 
 namespace rmfx {
 namespace {
-
-const char* const probeVertex = R"(#version 450 core
-void main() {
-    vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-    gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
-}
-)";
 
 // A pixel passes (and counts) when one of the chosen channels is not exactly zero; NaN is not.
 const char* const probeFragment = R"(#version 450 core
@@ -55,7 +49,7 @@ std::string channelNames(glm::bvec4 channels) {
 Result<std::unique_ptr<GlContentSkip>> GlContentSkip::create() {
     std::unique_ptr<GlContentSkip> skip(new GlContentSkip);
     ShaderHandle vs = createShader(GL_VERTEX_SHADER), fs = createShader(GL_FRAGMENT_SHADER);
-    if (std::string e = compileStage(vs.get(), probeVertex); !e.empty()) return Error{"content-skip probe: " + e};
+    if (std::string e = compileStage(vs.get(), fullScreenTriangleVertexSource()); !e.empty()) return Error{"content-skip probe: " + e};
     if (std::string e = compileStage(fs.get(), probeFragment); !e.empty()) return Error{"content-skip probe: " + e};
     skip->program_ = createProgram();
     glAttachShader(skip->program_.get(), vs.get());

@@ -1,6 +1,7 @@
 #include "gl/GlExecutor.h"
 
 #include <algorithm>
+#include <optional>
 
 #include <epoxy/gl.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -11,6 +12,7 @@
 #include "gl/GlContentSkip.h"
 #include "gl/GlErrors.h"
 #include "gl/GlFormats.h"
+#include "gl/GlHealthCheck.h"
 #include "gl/GlLimits.h"
 #include "gl/GlMeshCache.h"
 #include "gl/GlPassBindings.h"
@@ -64,6 +66,9 @@ struct GlExecutor::Impl {
     std::vector<std::string> lastFramePasses;
     GlPassTimers timers;
     std::unique_ptr<GlContentSkip> contentSkip;  // null without an effect with a source, or when off
+    std::unique_ptr<GlHealthCheck> healthCheck;  // with FramePlanOptions::checkHealth
+    std::optional<FrameHealth> lastHealth;
+    std::vector<HealthFinding> firstFindings;  // of each kind, since the first frame
     glm::dvec2 mouse{0.0};
     glm::ivec3 mouseButtons{0};
 
@@ -184,6 +189,11 @@ struct GlExecutor::Build {
             if (!skip) return Failure::failure({workspaceError(ws, "", skip.error())});
             impl->contentSkip = std::move(*skip);
         }
+        if (options.checkHealth) {
+            auto check = GlHealthCheck::create();
+            if (!check) return Failure::failure({workspaceError(ws, "", check.error())});
+            impl->healthCheck = std::move(*check);
+        }
         impl->selectVariant();
         glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
         std::unique_ptr<GlExecutor> executor(new GlExecutor(std::move(impl)));
@@ -217,6 +227,8 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
     s.timers.beginFrame(s.schedule.size());
     s.lastFramePasses.clear();
     if (s.contentSkip) s.contentSkip->beginFrame();
+    if (s.healthCheck) s.healthCheck->beginFrame(frame_, s.schedule.size());
+    std::vector<GlHealthCheck::Input> healthInputs;
     const FrameCamera camera(camera_, viewport_);
     const FrameInputs inputs{clock, frame_, &camera, viewport_, s.mouse, s.mouseButtons, &s.current.switchedOff};
     for (size_t position = 0; position < s.schedule.size(); ++position) {
@@ -238,6 +250,7 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
         glUseProgram(gp.program.get());
         uploadUniforms(gp, inputs);
         if (s.compatibility) loadFixedFunctionState(camera.projection, camera.view * gp.model);
+        healthInputs.clear();
         for (const SamplerSlot& slot : gp.samplers) {
             GLuint texture = slot.texture;
             if (slot.target) {
@@ -251,17 +264,35 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
             }
             glBindTextureUnit(static_cast<GLuint>(slot.unit), texture);
             glBindSampler(static_cast<GLuint>(slot.unit), slot.samplerObject.get());
+            if (s.healthCheck) {
+                const Texture* file = slot.target ? nullptr : s.ws.findTexture(slot.sampler->texture);
+                if (slot.target)
+                    healthInputs.push_back({slot.sampler->uniform + " → target '" + slot.target->name + "'", texture, slot.unit});
+                else if (file && file->kind == TextureKind::Texture2D)
+                    healthInputs.push_back({slot.sampler->uniform + " → texture '" + file->name + "'", texture, slot.unit});
+            }
         }
         gp.mesh->draw(gp.streams);
         target.writtenThisFrame = true;
         s.lastFramePasses.push_back(pass.name);
         if (s.contentSkip) s.contentSkip->afterPass(position);
         if (memory.spec.mipmaps) glGenerateTextureMipmap(memory.textures[memory.writeBuffer()].get());
+        if (s.healthCheck)
+            s.healthCheck->afterPass(position, pass.name, target.name, memory.textures[memory.writeBuffer()].get(),
+                                     memory.spec.format, healthInputs);
         s.timers.passDone(pass.name);
         for (const std::string& e : drainGlErrors())
             d.push_back({Diagnostic::Severity::Error, pass.where, passLabel(pass), e + " while drawing into '" + target.name + "'"});
     }
     if (s.contentSkip) s.contentSkip->endFrame();
+    if (s.healthCheck) {
+        s.lastHealth = s.healthCheck->endFrame();
+        for (const HealthFinding& f : s.lastHealth->findings)
+            if (std::none_of(s.firstFindings.begin(), s.firstFindings.end(), [&](const HealthFinding& k) { return k.kind == f.kind; }))
+                s.firstFindings.push_back(f);
+        std::sort(s.firstFindings.begin(), s.firstFindings.end(),
+                  [](const HealthFinding& a, const HealthFinding& b) { return a.kind < b.kind; });
+    }
     s.targets.finishFrame();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     ++frame_;
@@ -385,6 +416,9 @@ const std::set<std::string>& GlExecutor::switchedOffEffects() const {
     return impl_->current.switchedOff;
 }
 const std::vector<std::string>& GlExecutor::passesRun() const { return impl_->lastFramePasses; }
+
+const FrameHealth* GlExecutor::frameHealth() const { return impl_->lastHealth ? &*impl_->lastHealth : nullptr; }
+const std::vector<HealthFinding>& GlExecutor::firstHealthFindings() const { return impl_->firstFindings; }
 
 const std::map<std::string, std::string>& GlExecutor::contentSkippedEffects(bool wait) {
     static const std::map<std::string, std::string> none;

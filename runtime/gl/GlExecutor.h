@@ -20,6 +20,7 @@
 #include "model/Image.h"
 #include "model/OrbitCamera.h"
 #include "model/PassTiming.h"
+#include "model/TargetHealth.h"
 #include "model/Workspace.h"
 
 namespace rmfx {
@@ -97,6 +98,11 @@ public:
     // nothing (<effect source>, docs/workspace-format.md), each with why. `wait`: for the GPU's
     // answer (after a headless frame); else what has arrived, as the editor asks each frame.
     const std::map<std::string, std::string>& contentSkippedEffects(bool wait = true);
+    // With FramePlanOptions::checkHealth, what the last frame's passes left in their targets
+    // (model/TargetHealth.h); null otherwise or before the first frame.
+    const FrameHealth* frameHealth() const;
+    // The first finding of each kind over every frame so far, in HealthKind order.
+    const std::vector<HealthFinding>& firstHealthFindings() const;
 
     // Hot reload (LiveWorkspace). Each is all or nothing: on any error the executor is left
     // exactly as it was, and the diagnostics say why.

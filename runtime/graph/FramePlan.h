@@ -36,6 +36,9 @@ struct FramePlanOptions {
     // <effect source>: skip on the GPU the effects whose source holds nothing (rmfx render
     // --content-skip off runs them all the same).
     bool contentSkip = true;
+    // rmfx render --check: after each pass, inspect on the GPU the target it wrote for NaN, ±Inf,
+    // negatives and values at its format's largest (gl/GlHealthCheck.h, model/TargetHealth.h).
+    bool checkHealth = false;
     // The most render-target memory a frame may hold (--memory-budget); a workspace that needs
     // more fails before anything is allocated.
     std::size_t memoryBudget = kDefaultMemoryBudget;

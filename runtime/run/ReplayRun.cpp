@@ -118,10 +118,16 @@ Result<std::vector<Image>> renderReplayCase(const ReplayCase& c, const MediaOpti
     // Only what the compares read is computed, as rmfx render would for each target.
     for (const ReplayCompare& compare : c.compares)
         prepared->options.outputs.push_back(compare.target.empty() ? ws.outputTargetName() : compare.target);
+    prepared->options.checkHealth = c.check;
     auto run = runHeadless(ws, prepared->settings, prepared->options);
     add(diagnostics, run.diagnostics());
     if (!run) return Rendered::failure(std::move(diagnostics));
     GlExecutor& executor = **run;
+    for (const HealthFinding& f : executor.firstHealthFindings())
+        diagnostics.push_back({healthKindIsError(f.kind) ? Diagnostic::Severity::Error : Diagnostic::Severity::Warning,
+                               c.where, "<case name=\"" + c.name + "\" check=\"true\">",
+                               "frame " + std::to_string(f.frame) + ": " + describeFinding(f)});
+    if (hasErrors(diagnostics)) return Rendered::failure(std::move(diagnostics));
     std::vector<Image> images;
     for (const ReplayCompare& compare : c.compares) {
         std::string target = compare.target.empty() ? ws.outputTargetName() : compare.target;

@@ -195,6 +195,17 @@ TEST(ReplayManifest, InputsNameAFileBesideTheManifest) {
                      at + "5: error: <input>: missing attribute 'file'"}));
 }
 
+TEST(ReplayManifest, CheckIsAYesOrNoOfTheCase) {
+    ReplayManifest m = parsedOk(manifest({"  <case name=\"a\" workspace=\"a.xml\" check=\"true\">", kCompare, "  </case>",
+                                          "  <case name=\"b\" workspace=\"a.xml\">", "    <compare reference=\"refs/b.exr\"/>", "  </case>"}));
+    ASSERT_EQ(m.cases.size(), 2u);
+    EXPECT_TRUE(m.cases[0].check);
+    EXPECT_FALSE(m.cases[1].check);
+    std::vector<std::string> errors = errorsOf(manifest({"  <case name=\"a\" workspace=\"a.xml\" check=\"maybe\">", kCompare, "  </case>"}));
+    ASSERT_EQ(errors.size(), 1u);
+    EXPECT_EQ(errors[0].rfind(at + "2: error: <case name=\"a\">: attribute 'check'", 0), 0u) << errors[0];
+}
+
 TEST(ReplayManifest, UnknownAttributesListTheKnownOnes) {
     EXPECT_EQ(
         errorsOf(manifest({"  <defaults size=\"8x8\" tolerance=\"1\"/>",
@@ -204,7 +215,7 @@ TEST(ReplayManifest, UnknownAttributesListTheKnownOnes) {
         (Lines{at + "2: error: <defaults>: unknown attribute 'tolerance' (expected one of: size, frames, dt, error, "
                     "floor, luminance, max, mean, percentile, percentile-max, pixel, fail-fraction, store)",
                at + "3: error: <case name=\"a\">: unknown attribute 'frame' (expected one of: name, workspace, size, "
-                    "frames, dt, effects)",
+                    "frames, dt, effects, check)",
                at + "4: error: <set name=\"x\">: unknown attribute 'val' (expected one of: name, value)",
                at + "4: error: <set name=\"x\">: missing attribute 'value'",
                at + "5: error: <compare>: unknown attribute 'output' (expected one of: target, reference, error, "

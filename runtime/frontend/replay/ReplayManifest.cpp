@@ -36,7 +36,7 @@ struct LimitAttributes {
     std::optional<bool> half;
 };
 
-constexpr std::initializer_list<const char*> kCaseAttributes = {"name", "workspace", "size", "frames", "dt", "effects"};
+constexpr std::initializer_list<const char*> kCaseAttributes = {"name", "workspace", "size", "frames", "dt", "effects", "check"};
 constexpr std::initializer_list<const char*> kCompareAttributes = {
     "target", "reference", "error", "floor", "luminance", "max", "mean", "percentile", "percentile-max", "pixel",
     "fail-fraction", "store"};
@@ -167,6 +167,7 @@ private:
         }
         auto workspace = r.string("workspace", true);
         if (auto effects = r.string("effects")) c.effects = splitNameList(*effects);
+        c.check = r.boolean("check").value_or(false);
         RunAttributes run = readRun(r);
         if (auto size = run.size ? run.size : defaultRun_.size) c.run.size = {size->first, size->second};
         c.run.frames = run.frames.value_or(defaultRun_.frames.value_or(1));

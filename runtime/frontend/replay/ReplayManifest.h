@@ -55,6 +55,7 @@ struct ReplayCase {
     std::filesystem::path workspace;    // resolved against the manifest's folder, normalised
     RunSettings run;                    // size {0, 0}: the workspace's own size
     std::optional<std::vector<std::string>> effects;  // as --effects; nullopt: the workspace's choice
+    bool check = false;  // check="true": as rmfx render --check; NaN or an infinity in a target fails the case
     std::vector<ReplaySet> sets;
     std::vector<ReplayInput> inputs;
     std::vector<ReplayCompare> compares;  // at least one

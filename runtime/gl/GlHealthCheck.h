@@ -1,0 +1,58 @@
+#pragma once
+// The numeric health check of rmfx render --check (model/TargetHealth.h), done on the GPU: after
+// each pass a full-screen draw over the target's size (into a framebuffer without attachments)
+// reads the target it wrote, counts the pixels holding each kind (NaN, ±Inf, negative, at the
+// format's largest) with atomics in a storage buffer and keeps the first such pixel in reading
+// order; a second draw of five fragments lets the first pass of the frame that holds a kind
+// record that pixel's value and its inputs' texels there. Nothing is read back until
+// the frame ends, and then only the buffer (a few hundred bytes per pass): no stall between passes.
+// Needs a current GL 4.5 context.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/Result.h"
+#include "gl/GlHandles.h"
+#include "model/TargetHealth.h"
+
+namespace rmfx {
+
+class GlHealthCheck {
+public:
+    static Result<std::unique_ptr<GlHealthCheck>> create();
+
+    // A 2D texture a pass sampled: what the report calls it, its GL object and the texture unit the
+    // pass bound it to.
+    struct Input {
+        std::string label;
+        unsigned texture = 0;
+        int unit = 0;
+    };
+
+    void beginFrame(int frame, size_t passes);
+    // After scheduled pass `position` drew into `texture` (of `format`, `target`'s memory), with
+    // its 2D inputs still bound to their units.
+    void afterPass(size_t position, const std::string& pass, const std::string& target, unsigned texture,
+                   TargetFormat format, const std::vector<Input>& inputs);
+    // Reads the buffer (waits for the frame's GPU work).
+    FrameHealth endFrame();
+
+private:
+    GlHealthCheck() = default;
+    void growBuffer(size_t passes);
+
+    ProgramHandle reduce_, fetch_;
+    int reducePosition_ = -1, reduceChannels_ = -1, reduceNegatives_ = -1, reduceLargest_ = -1;
+    int fetchPosition_ = -1, fetchInputCount_ = -1, fetchInputs_ = -1;
+    BufferHandle buffer_;
+    FramebufferHandle empty_;  // no attachment: the shaders only write the buffer
+    VertexArrayHandle vertexArray_;
+    size_t capacity_ = 0;  // passes the buffer holds
+    int frame_ = 0;
+    std::vector<PassHealth> passes_;
+    std::vector<std::vector<std::string>> inputLabels_;
+    std::vector<int> widths_;  // of each pass's target
+};
+
+}  // namespace rmfx
