@@ -95,6 +95,8 @@ edit options:
   --input [NAME=]FILE    an image for the workspace's <input>, as for render; it hot-reloads, and an
                          image dropped on the window replaces it
   --texture NAME=FILE    a texture's or cube map's file for this run, as for render
+  --check                start with the numeric health check on (as render --check): a badge
+                         under each target's thumbnail, the first bad pixel on hover
   --split F              start with the before/after view: the input left of F (0 to 1) of the
                          width, the output right of it; needs --input
   --frames N             render N frames at a fixed step, write the screenshots, exit

@@ -134,12 +134,29 @@ private:
         if (!ws.inputs.empty() && ImGui::CollapsingHeader("Input", ImGuiTreeNodeFlags_DefaultOpen)) drawInputs();
         if (ImGui::CollapsingHeader("Variables", ImGuiTreeNodeFlags_DefaultOpen)) variables_.draw(session_);
         if (ImGui::CollapsingHeader("Camera")) drawCamera();
-        if (ImGui::CollapsingHeader("Render targets", ImGuiTreeNodeFlags_DefaultOpen)) targets_.draw(executor);
+        if (ImGui::CollapsingHeader("Render targets", ImGuiTreeNodeFlags_DefaultOpen)) {
+            drawHealthCheck();
+            targets_.draw(executor);
+        }
         if (ImGui::CollapsingHeader("Timing", ImGuiTreeNodeFlags_DefaultOpen)) {
             drawEffectSwitches();
             timing_.draw();
         }
         ImGui::End();
+    }
+
+    // The numeric health check (rmfx render --check): on, each thumbnail gets a badge of what its
+    // target holds. Switching it builds the workspace anew (the check is part of the executor).
+    void drawHealthCheck() {
+        bool on = session_.healthCheck();
+        if (ImGui::Checkbox("Check targets for NaN, Inf, negatives", &on)) {
+            Result<void> switched = session_.setHealthCheck(on);
+            healthError_ = switched ? "" : formatAll(switched.diagnostics());
+        }
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("after each pass, inspect on the GPU the target it wrote (as rmfx render --check);\n"
+                              "a badge under each thumbnail, the first bad pixel on hover");
+        if (!healthError_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", healthError_.c_str());
     }
 
     void drawReloadStatus() {
@@ -329,6 +346,7 @@ private:
     Diagnostics frameErrors_;
     VariablesPanel variables_;
     TargetBrowser targets_;
+    std::string healthError_;  // why the health check could not be switched
     TimingPanel timing_;
 };
 
@@ -373,6 +391,11 @@ int runEditor(const EditorOptions& options) {
         return 2;
     }
     std::unique_ptr<LiveWorkspace> session = std::move(*opened);
+    if (options.checkHealth)
+        if (Result<void> checked = session->setHealthCheck(true); !checked) {
+            std::cerr << formatAll(checked.diagnostics());
+            return 2;
+        }
     auto blit = TextureBlit::create();
     if (!blit) {
         std::cerr << "rmfx edit: " << blit.error() << "\n";

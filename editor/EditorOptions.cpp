@@ -33,6 +33,7 @@ std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& 
             o.split = static_cast<float>(f);
             return "";
         })
+        .flag({"--check"}, [&] { o.checkHealth = true; })
         .option({"--view"}, [&](const std::string& value) { o.viewTargets.push_back(value); return ""; }, Empty::Allowed)
         .option({"--screenshot"}, [&](const std::string& value) { o.screenshot = value; return ""; }, Empty::Allowed)
         .option({"--output-screenshot"}, [&](const std::string& value) { o.outputScreenshot = value; return ""; },

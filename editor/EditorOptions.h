@@ -31,6 +31,7 @@ struct EditorOptions {
     std::vector<TextureArgument> textures;  // --texture NAME=FILE, as rmfx render
     // --split F: open with the before/after view, the input left of F·width, the output right.
     std::optional<float> split;
+    bool checkHealth = false;  // --check: the numeric health check from the start (rmfx render --check)
 };
 
 // On an error returns nullopt and sets *error to a sentence naming the option.

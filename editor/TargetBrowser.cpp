@@ -31,6 +31,8 @@ void TargetBrowser::updateThumbnails(const GlExecutor& executor, const Workspace
     written_.clear();
     for (const std::string& pass : executor.passesRun())
         if (const Pass* p = ws.findPass(pass)) written_.insert(ws.passTargetName(*p));
+    const FrameHealth* health = executor.frameHealth();
+    health_ = health ? targetHealthBadges(*health) : std::map<std::string, TargetHealthBadge>{};
     std::vector<std::string> names = executor.targetNames();
     std::vector<Thumbnail> updated;
     for (const std::string& name : names) {
@@ -66,15 +68,25 @@ void TargetBrowser::draw(const GlExecutor& executor) {
         if (ImGui::ImageButton(t.texture->imguiTexture(), shown, ImVec2(0, 1), ImVec2(1, 0), -1, ImVec4(0, 0, 0, 0), tint))
             open(t.target);
         ImGui::SetCursorPosX(ImGui::GetCursorPosX() - padX);
+        const auto badge = health_.find(t.target);
+        const TargetHealthBadge* healthOf = badge == health_.end() ? nullptr : &badge->second;
         if (ImGui::IsItemHovered()) {
             glm::ivec2 full = executor.targetSize(t.target);
-            ImGui::SetTooltip("%s: %dx%d %s%s; click to view", t.target.c_str(), full.x, full.y,
+            ImGui::SetTooltip("%s: %dx%d %s%s; click to view%s%s", t.target.c_str(), full.x, full.y,
                               targetFormatName(executor.targetFormat(t.target)),
-                              written ? "" : "; not written by the last frame (its passes are switched off)");
+                              written ? "" : "; not written by the last frame (its passes are switched off)",
+                              healthOf ? "\n" : "", healthOf ? healthOf->details.c_str() : "");
         }
         ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + cell);
         if (written) ImGui::TextUnformatted(t.target.c_str());
         else ImGui::TextDisabled("%s (off)", t.target.c_str());
+        if (healthOf && !healthOf->text.empty()) {
+            const ImVec4 colour = healthOf->error ? ImVec4(1.0f, 0.3f, 0.3f, 1.0f) : ImVec4(1.0f, 0.75f, 0.2f, 1.0f);
+            ImGui::TextColored(colour, "%s", healthOf->text.c_str());
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", healthOf->details.c_str());
+        } else if (healthOf) {
+            ImGui::TextDisabled("%s", healthOf->inspected ? "ok" : "not inspected");
+        }
         ImGui::PopTextWrapPos();
         ImGui::EndGroup();
         ImGui::PopID();

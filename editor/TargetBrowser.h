@@ -2,6 +2,7 @@
 // The Render targets section: a thumbnail of every target of the current frame (the target's
 // texture drawn down into a small texture, sRGB), and a large viewer window for each one clicked.
 
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -10,6 +11,7 @@
 #include <glm/vec2.hpp>
 
 #include "editor/DisplayTexture.h"
+#include "editor/TargetHealthBadge.h"
 #include "editor/TargetViewer.h"
 #include "editor/TextureBlit.h"
 #include "gl/GlExecutor.h"
@@ -22,8 +24,9 @@ class TargetBrowser {
 public:
     // The output target is shown with the workspace's output transform, the others with sRGB.
     void setOutput(const std::string& target, DisplayTransform transform);
-    // After a frame: draws every target's thumbnail (GL; leaves framebuffer 0 bound) and notes
-    // the targets no pass of that frame wrote (their effect switched off, say).
+    // After a frame: draws every target's thumbnail (GL; leaves framebuffer 0 bound), notes the
+    // targets no pass of that frame wrote (their effect switched off, say) and, with the health
+    // check on, what each target holds (a badge under its thumbnail).
     void updateThumbnails(const GlExecutor& executor, const Workspace& ws, TextureBlit& blit);
     // The section's contents: the thumbnails; a click opens (or focuses) the target's viewer.
     void draw(const GlExecutor& executor);
@@ -41,6 +44,7 @@ private:
     std::vector<std::unique_ptr<TargetViewer>> viewers_;
     std::string focus_;
     std::set<std::string> written_;  // by the last frame
+    std::map<std::string, TargetHealthBadge> health_;  // of the last frame; empty with the check off
     std::string output_;
     DisplayTransform outputTransform_ = DisplayTransform::Srgb;
     DisplayTransform transformOf(const std::string& target) const;

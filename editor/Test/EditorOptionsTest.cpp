@@ -26,7 +26,7 @@ TEST(EditorOptions, ParsesEveryOption) {
     std::string error;
     auto o = parseEditorOptions({"fx.xml", "--size", "256x128", "--set", "Exposure_Level=2", "--set", "Tint=1 0 0",
                                  "--frames", "5", "--screenshot", "w.png", "--output-screenshot", "o.png", "--view", "scene", "--dt", "0.5", "--media", ".", "--sandbox",
-                                 "--input", "scene=shot.exr", "--texture", "Sky=sky.hdr", "--split", "0.25"},
+                                 "--input", "scene=shot.exr", "--texture", "Sky=sky.hdr", "--split", "0.25", "--check"},
                                 &error);
     ASSERT_TRUE(o) << error;
     EXPECT_EQ(o->workspace, "fx.xml");
@@ -46,6 +46,8 @@ TEST(EditorOptions, ParsesEveryOption) {
     ASSERT_EQ(o->textures.size(), 1u);
     EXPECT_EQ(o->textures[0].name, "Sky");
     EXPECT_EQ(o->split, 0.25f);
+    EXPECT_TRUE(o->checkHealth);
+    EXPECT_FALSE(parseEditorOptions({"fx.xml"}, &error)->checkHealth);
 }
 
 TEST(EditorOptions, RejectsWhatItCannotUse) {

@@ -151,4 +151,45 @@ TEST(EditorWindowGLTest, AnInputThatCannotBeReadIsAnErrorNamingItBeforeAnyWindow
     EXPECT_NE(edit.err.find("missing.exr"), std::string::npos) << edit.err;
 }
 
+// rmfx edit --check: a target holding NaN gets a red badge under its thumbnail; without --check
+// the same window has no such red.
+TEST(EditorWindowGLTest, TheHealthCheckPutsARedBadgeUnderATargetHoldingNan) {
+    ASSERT_TRUE(haveXvfbRun()) << "xvfb-run is not installed (Debian packages xvfb and xauth; bash scripts/setup.sh)";
+    ScratchDir dir;
+    dir.write("nan.xml", R"(<workspace version="1" name="nan" size="64x64">
+  <target name="broken" format="rgba16f" scale="1"/>
+  <pass name="divide" target="broken">
+    <shader stage="fragment"><![CDATA[
+#version 450 core
+out vec4 fragColor;
+void main() { float zero = gl_FragCoord.x * 0.0; fragColor = vec4(zero / zero, 0.2, 0.2, 1.0); }
+]]></shader>
+  </pass>
+  <pass name="final">
+    <sampler name="b" target="broken" filter="nearest"/>
+    <shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D b;
+out vec4 fragColor;
+void main() { fragColor = vec4(vec3(0.2) + 0.0 * texelFetch(b, ivec2(gl_FragCoord.xy), 0).g, 1.0); }
+]]></shader>
+  </pass>
+</workspace>
+)");
+    auto redPixels = [&](const std::string& options) {
+        CommandResult edit = runUnderXvfb("edit nan.xml --frames 2 --screenshot window.png " + options, dir.path());
+        EXPECT_EQ(edit.status, 0) << edit.err;
+        Result<Image> window = readImage(dir / "window.png");
+        EXPECT_TRUE(window) << window.error();
+        int red = 0;
+        if (window)
+            for (int y = 0; y < window->height; ++y)
+                for (int x = 64; x < window->width; ++x)
+                    if (byteAt(*window, x, y, 0) > 220 && byteAt(*window, x, y, 1) < 110 && byteAt(*window, x, y, 2) < 110) ++red;
+        return red;
+    };
+    EXPECT_GT(redPixels("--check"), 20) << "no red badge text in the panel";
+    EXPECT_EQ(redPixels(""), 0);
+}
+
 }  // namespace rmfx::test

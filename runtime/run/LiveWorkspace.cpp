@@ -103,6 +103,7 @@ Result<LiveWorkspace::Build> LiveWorkspace::load(const std::set<std::string>& st
     const glm::ivec2 viewport = build.supplied.viewport;
     FramePlanOptions options;
     options.givenInputs = build.supplied.given;
+    options.checkHealth = checkHealth_;
     if (executor_) {
         // Textures whose files did not change are copied from the running build, not decoded again.
         std::vector<std::string> reusable;
@@ -376,6 +377,14 @@ void LiveWorkspace::resetVariable(const std::string& name) {
     if (const Variable* v = workspace_->findVariable(name)) (void)executor_->setVariable(name, v->value);
 }
 
+Result<void> LiveWorkspace::setHealthCheck(bool on) {
+    if (on == checkHealth_) return {};
+    checkHealth_ = on;
+    Result<void> rebuilt = setViewport(requestedViewport_);
+    if (!rebuilt) checkHealth_ = !on;
+    return rebuilt;
+}
+
 Result<void> LiveWorkspace::setViewport(glm::ivec2 viewport) {
     Diagnostics found;
     glm::ivec2 previous = requestedViewport_;
@@ -393,6 +402,7 @@ Result<void> LiveWorkspace::setViewport(glm::ivec2 viewport) {
     build.supplied = std::move(*supplied);
     FramePlanOptions options;
     options.givenInputs = build.supplied.given;
+    options.checkHealth = checkHealth_;
     auto created = GlExecutor::create(build.workspace, build.supplied.viewport, options);
     append(found, created.takeDiagnostics());
     if (!created) {

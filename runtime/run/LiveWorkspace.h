@@ -82,6 +82,10 @@ public:
     // Builds the workspace anew for another viewport size (0,0 = the workspace's size), keeping
     // tweaks and camera; on failure the old build stays and the diagnostics say why.
     Result<void> setViewport(glm::ivec2 viewport);
+    // The numeric health check (rmfx render --check) in this build and the next ones: builds the
+    // workspace anew as setViewport does; on failure the check stays as it was.
+    Result<void> setHealthCheck(bool on);
+    bool healthCheck() const { return checkHealth_; }
     // The input images. Their files are watched like textures: a changed file replaces its input's
     // image without a rebuild, unless the image sets the viewport and its size changed (then the
     // workspace is built anew at the new size); an unreadable one keeps the last image, with the
@@ -97,6 +101,7 @@ public:
     const std::vector<std::string>& watcherErrors() const { return watcher_.errors(); }
 
 private:
+    bool checkHealth_ = false;
     struct Build {
         std::shared_ptr<Workspace> workspace;  // shared with the executor
         std::unique_ptr<GlExecutor> executor;
