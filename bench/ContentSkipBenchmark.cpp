@@ -33,7 +33,7 @@
 
 #include <epoxy/gl.h>
 
-#include "bench/WholeNumberArgument.h"
+#include "bench/RoundsArguments.h"
 #include "core/Percentile.h"
 #include "gl/GlContext.h"
 #include "gl/GlExecutor.h"
@@ -46,42 +46,6 @@ namespace {
 using namespace rmfx;
 using Clock = std::chrono::steady_clock;
 
-struct Arguments {
-    glm::ivec2 size{512, 512};
-    int rounds = 12;
-    int frames = 8;
-    std::filesystem::path workspace = std::filesystem::path(RMFX_SOURCE_DIR) / "effects" / "hdr_lighting.xml";
-};
-
-std::optional<Arguments> parseArguments(int argc, char** argv) {
-    Arguments a;
-    auto fail = [](const std::string& message) -> std::optional<Arguments> {
-        std::fprintf(stderr,
-                     "rmfx_bench_content_skip: %s\nusage: rmfx_bench_content_skip [--size WxH] [--rounds N] "
-                     "[--frames N] [--workspace FILE]\n",
-                     message.c_str());
-        return std::nullopt;
-    };
-    for (int i = 1; i < argc; ++i) {
-        const std::string option = argv[i];
-        if (option != "--size" && option != "--rounds" && option != "--frames" && option != "--workspace")
-            return fail("unknown argument '" + option + "'");
-        if (i + 1 >= argc) return fail(option + ": expected a value");
-        const std::string value = argv[++i];
-        if (option == "--size") {
-            std::optional<glm::ivec2> size = rmfx::bench::sizeArgument(value, 16, 8192);
-            if (!size) return fail("--size: expected WxH, each from 16 to 8192, got '" + value + "'");
-            a.size = *size;
-        } else if (option == "--rounds" || option == "--frames") {
-            std::optional<int> n = rmfx::bench::wholeNumberArgument(value, 1, 1000);
-            if (!n) return fail(option + ": expected a whole number from 1 to 1000, got '" + value + "'");
-            (option == "--rounds" ? a.rounds : a.frames) = *n;
-        } else {
-            a.workspace = value;
-        }
-    }
-    return a;
-}
 
 // A dim interior: smooth, low contrast, far below any bright-pass threshold even once automatic
 // exposure has adapted to it. The bright image is the same with eight small lights of 200.
@@ -123,9 +87,11 @@ double median(std::vector<double> v) { return v.empty() ? 0.0 : percentile(std::
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::optional<Arguments> arguments = parseArguments(argc, argv);
+    bench::RoundsArguments defaults;
+    defaults.rounds = 12;
+    std::optional<bench::RoundsArguments> arguments = bench::parseRoundsArguments(argc, argv, "rmfx_bench_content_skip", defaults);
     if (!arguments) return 2;
-    const Arguments& a = *arguments;
+    const bench::RoundsArguments& a = *arguments;
 
     auto context = GlContext::createHeadless();
     if (!context) {
