@@ -54,6 +54,7 @@ unsigned blendFactor(BlendFactor factor) {
         case BlendFactor::OneMinusDstAlpha: return GL_ONE_MINUS_DST_ALPHA;
         case BlendFactor::ConstantColor: return GL_CONSTANT_COLOR;
         case BlendFactor::OneMinusConstantColor: return GL_ONE_MINUS_CONSTANT_COLOR;
+        case BlendFactor::SrcAlphaSaturate: return GL_SRC_ALPHA_SATURATE;
     }
     return GL_ONE;
 }

@@ -147,7 +147,7 @@ struct ShaderSource {
 
 enum class BlendFactor {
     Zero, One, SrcColor, OneMinusSrcColor, DstColor, OneMinusDstColor,
-    SrcAlpha, OneMinusSrcAlpha, DstAlpha, OneMinusDstAlpha, ConstantColor, OneMinusConstantColor
+    SrcAlpha, OneMinusSrcAlpha, DstAlpha, OneMinusDstAlpha, ConstantColor, OneMinusConstantColor, SrcAlphaSaturate
 };
 enum class BlendOp { Add, Subtract, ReverseSubtract, Min, Max };
 

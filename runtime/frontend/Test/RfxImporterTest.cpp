@@ -154,26 +154,34 @@ TEST(RfxImporter, RenderStatesCarryOverInRunOrderFromThePassesThatRun) {
     EXPECT_EQ(ws.passes[2].raster.cull, CullFace::Back);
 }
 
+// A Direct3D pass with a render-state block holding `states`; the first pass has a pixel shader.
+std::string d3dStatePass(int index, const std::string& states) {
+    return "<RmPass NAME=\"P" + std::to_string(index) + "\" PASS_INDEX=\"" + std::to_string(index) +
+           "\"><RmRenderStateBlock NAME=\"S\">" + states + "</RmRenderStateBlock>" +
+           (index == 0 ? "<RmHLSLShader NAME=\"PS\" PIXEL_SHADER=\"TRUE\" TARGET=\"ps_2_0\" ENTRY_POINT=\"main\">"
+                         "<RmShaderCode><![CDATA[float4 main() : COLOR { return 1; }]]></RmShaderCode></RmHLSLShader>"
+                       : "") +
+           "</RmPass>\n";
+}
+
+std::string d3dState(int number, const std::string& value) {
+    return "<RmState NAME=\"D3DRS_" + std::to_string(number) + "\" STATE=\"" + std::to_string(number) + "\" VALUE=\"" +
+           value + "\"/>";
+}
+
+std::string d3dEffect(const std::string& passes) {
+    return "<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\" ACTIVE_EFFECT=\"W.E\">\n<RmDirectXEffect NAME=\"E\" API=\"D3D\">\n" +
+           passes + "</RmDirectXEffect>\n</RmEffectWorkspace>\n</RENDER_MONKEY>\n";
+}
+
 TEST(RfxImporter, Direct3dSeparateAlphaBlendingCarriesOverWithTheOtherStates) {
-    auto pass = [](int index, const std::string& states) {
-        return "<RmPass NAME=\"P" + std::to_string(index) + "\" PASS_INDEX=\"" + std::to_string(index) +
-               "\"><RmRenderStateBlock NAME=\"S\">" + states + "</RmRenderStateBlock>" +
-               (index == 0 ? "<RmHLSLShader NAME=\"PS\" PIXEL_SHADER=\"TRUE\" TARGET=\"ps_2_0\" ENTRY_POINT=\"main\">"
-                             "<RmShaderCode><![CDATA[float4 main() : COLOR { return 1; }]]></RmShaderCode></RmHLSLShader>"
-                           : "") +
-               "</RmPass>\n";
-    };
-    auto state = [](int number, int value) {
-        return "<RmState NAME=\"D3DRS_" + std::to_string(number) + "\" STATE=\"" + std::to_string(number) + "\" VALUE=\"" +
-               std::to_string(value) + "\"/>";
-    };
+    auto pass = d3dStatePass;
+    auto state = [](int number, int value) { return d3dState(number, std::to_string(value)); };
     // P0: separate alpha on, alpha ONE, ONE. P1: colour SRCALPHA only; alpha keeps ONE, ONE.
     // P2: separate alpha off: alpha blends like colour again. P3: separate alpha on again: the
     // alpha states P0 set are still there (Direct3D kept them while they were not used).
-    std::string text = "<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\" ACTIVE_EFFECT=\"W.E\">\n"
-                       "<RmDirectXEffect NAME=\"E\" API=\"D3D\">\n" +
-                       pass(0, state(27, 1) + state(206, 1) + state(207, 2) + state(208, 2)) + pass(1, state(19, 5)) +
-                       pass(2, state(206, 0)) + pass(3, state(206, 1)) + "</RmDirectXEffect>\n</RmEffectWorkspace>\n</RENDER_MONKEY>\n";
+    std::string text = d3dEffect(pass(0, state(27, 1) + state(206, 1) + state(207, 2) + state(208, 2)) + pass(1, state(19, 5)) +
+                                 pass(2, state(206, 0)) + pass(3, state(206, 1)));
     Result<Workspace> p = importRfxText(text, "t.rfx", ".", {""});
     ASSERT_TRUE(p.ok()) << formatAll(p.diagnostics());
     const std::vector<Pass>& passes = p->passes;
@@ -189,6 +197,56 @@ TEST(RfxImporter, Direct3dSeparateAlphaBlendingCarriesOverWithTheOtherStates) {
     EXPECT_EQ(passes[3].blend.srcAlpha, BlendFactor::One);
     EXPECT_EQ(passes[3].blend.dstAlpha, BlendFactor::One);
     EXPECT_EQ(passes[3].blend.srcColor, BlendFactor::SrcAlpha);
+}
+
+// Every D3D9 value RenderMonkey accepted maps or warns: SRCALPHASAT, the BOTH* factors (source
+// and destination at once), floats written as decimal text, an anisotropic mip filter.
+TEST(RfxImporter, Direct3dBlendFactorsAndDecimalStateValuesRenderMonkeyAccepted) {
+    std::string text = d3dEffect(d3dStatePass(0, d3dState(27, "1") + d3dState(19, "11") + d3dState(20, "2") +
+                                                     d3dState(195, "0.250000") + d3dState(7, "1.000000")) +
+                                 d3dStatePass(1, d3dState(19, "12")) + d3dStatePass(2, d3dState(19, "13")) +
+                                 d3dStatePass(3, d3dState(20, "12")));
+    Result<Workspace> p = importRfxText(text, "t.rfx", ".", {""});
+    ASSERT_TRUE(p.ok()) << formatAll(p.diagnostics());
+    const std::vector<Pass>& passes = p->passes;
+    ASSERT_EQ(passes.size(), 4u);
+    EXPECT_EQ(passes[0].blend.srcColor, BlendFactor::SrcAlphaSaturate);
+    EXPECT_EQ(passes[0].blend.dstColor, BlendFactor::One);
+    EXPECT_EQ(passes[0].blend.srcAlpha, BlendFactor::SrcAlphaSaturate);  // no separate alpha: like colour
+    EXPECT_TRUE(passes[0].depth.test);
+    EXPECT_EQ(passes[1].blend.srcColor, BlendFactor::SrcAlpha);
+    EXPECT_EQ(passes[1].blend.dstColor, BlendFactor::OneMinusSrcAlpha);
+    EXPECT_EQ(passes[2].blend.srcColor, BlendFactor::OneMinusSrcAlpha);
+    EXPECT_EQ(passes[2].blend.dstColor, BlendFactor::SrcAlpha);
+    EXPECT_EQ(passes[3].blend.srcColor, BlendFactor::SrcAlpha);
+    EXPECT_EQ(passes[3].blend.dstColor, BlendFactor::OneMinusSrcAlpha);
+    const std::string warnings = formatAll(p.diagnostics());
+    EXPECT_NE(warnings.find("render state D3DRS_195 = 0.25 has no equivalent"), std::string::npos) << warnings;
+    EXPECT_NE(warnings.find("D3DBLEND_BOTHSRCALPHA is a source factor that sets the destination too"), std::string::npos)
+        << warnings;
+
+    // A whole-number state given a fraction, and text that is no number, are errors on the element.
+    for (const char* bad : {"0.5", "1.0.0"}) {
+        Result<Workspace> wrong = importRfxText(d3dEffect(d3dStatePass(0, d3dState(7, bad))), "t.rfx", ".", {""});
+        EXPECT_FALSE(wrong.ok()) << bad;
+        EXPECT_NE(formatAll(wrong.diagnostics()).find(std::string("attribute VALUE: '") + bad + "' is not a"),
+                  std::string::npos)
+            << formatAll(wrong.diagnostics());
+    }
+
+    // The sampler of d3d_hlsl.rfx with an anisotropic mip filter and a LOD bias written as text.
+    std::string file = test::readText(rfxDir() / "d3d_hlsl.rfx");
+    const std::string mip = "D3DSAMP_MIPFILTER\" API=\"D3D\" STATE=\"7\" VALUE=\"0\" USAGE=\"0\"/>";
+    ASSERT_NE(file.find(mip), std::string::npos);
+    file.replace(file.find(mip), mip.size(),
+                 "D3DSAMP_MIPFILTER\" API=\"D3D\" STATE=\"7\" VALUE=\"3\" USAGE=\"0\"/><RmState NAME=\"D3DSAMP_MIPMAPLODBIAS\" API=\"D3D\" STATE=\"8\" "
+                 "VALUE=\"-0.500000\" USAGE=\"0\"/>");
+    Result<Workspace> sampled = importRfxText(file, "d3d_hlsl.rfx", rfxDir(), {""});
+    ASSERT_TRUE(sampled.ok()) << formatAll(sampled.diagnostics());
+    const std::string samplerWarnings = formatAll(sampled.diagnostics());
+    EXPECT_NE(samplerWarnings.find("D3DTEXF_ANISOTROPIC as the mip filter is sampled as linear"), std::string::npos)
+        << samplerWarnings;
+    EXPECT_NE(samplerWarnings.find("D3DSAMP_MIPMAPLODBIAS = -0.5 has no equivalent"), std::string::npos) << samplerWarnings;
 }
 
 TEST(RfxImporter, ShadersKeepTheirRfxLinesAndDialect) {

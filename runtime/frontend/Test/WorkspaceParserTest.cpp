@@ -405,6 +405,11 @@ TEST(WorkspaceParser, DrawNeedsAKnownMeshOrAFile) {
 TEST(WorkspaceParser, CustomBlendFactorsNeedCustomMode) {
     EXPECT_EQ(errorsOf(workspace({"  <pass name=\"p\">", "    <blend mode=\"alpha\" src=\"one\"/>", "  </pass>"})),
               (Lines{at + "3: error: <blend>: 'src', 'dst' and 'op' need mode=\"custom\" (or no mode)"}));
+    Workspace saturate = parsedOk(workspace({"  <pass name=\"p\">", "    <blend mode=\"custom\" src=\"src-alpha-saturate\" dst=\"one\"/>",
+                                             "  </pass>"}));
+    const Pass* p = saturate.findPass("p");
+    ASSERT_TRUE(p);
+    EXPECT_EQ(p->blend.srcColor, BlendFactor::SrcAlphaSaturate);
 }
 
 TEST(WorkspaceParser, CameraRanges) {

@@ -1,6 +1,8 @@
 #include "frontend/rfx/detail/RfxRenderStates.h"
 
 #include <bit>
+#include <cmath>
+#include <cstdlib>
 #include <cstdint>
 #include <string_view>
 
@@ -53,7 +55,11 @@ constexpr Choice<BlendFactor> d3dBlend[] = {
     {5, BlendFactor::SrcAlpha},   {6, BlendFactor::OneMinusSrcAlpha},
     {7, BlendFactor::DstAlpha},   {8, BlendFactor::OneMinusDstAlpha},
     {9, BlendFactor::DstColor},   {10, BlendFactor::OneMinusDstColor},
+    {11, BlendFactor::SrcAlphaSaturate},
     {14, BlendFactor::ConstantColor}, {15, BlendFactor::OneMinusConstantColor}};
+// D3DBLEND_BOTHSRCALPHA (12) and D3DBLEND_BOTHINVSRCALPHA (13) set the source and the destination
+// factor at once: (SRCALPHA, INVSRCALPHA) and (INVSRCALPHA, SRCALPHA).
+constexpr long long kD3dBothSrcAlpha = 12, kD3dBothInvSrcAlpha = 13;
 
 // GL states rmfx knows but cannot express; those marked float hold IEEE-754 bits.
 struct Unmodelled {
@@ -82,11 +88,41 @@ void warnUnmodelled(const RfxElement& state, const std::string& name, long long 
     state.warning("render state " + name + " = " + shown + " has no equivalent in rmfx's pass model; ignored");
 }
 
-std::optional<long long> stateValue(const RfxElement& state) {
-    return state.integer("VALUE", kInt32Min, kUInt32Max);
+// D3DRS_ALPHAREF, FOGSTART, FOGEND, FOGDENSITY, POINTSIZE, POINTSIZE_MIN, POINTSCALE_A,
+// POINTSIZE_MAX, DEPTHBIAS, SLOPESCALEDEPTHBIAS.
+bool isFloatD3dRenderState(long long number) {
+    for (long long f : {24, 36, 37, 38, 154, 155, 156, 159, 195, 196})
+        if (number == f) return true;
+    return false;
+}
+
+bool isFloatGlRenderState(std::string_view name) {
+    for (const Unmodelled& u : glUnmodelled)
+        if (u.name == name) return u.isFloat;
+    return false;
 }
 
 }  // namespace
+
+std::optional<long long> stateValue(const RfxElement& state, bool isFloat) {
+    std::optional<std::string> text = state.text("VALUE");
+    if (!text) return std::nullopt;
+    const bool decimal = text->find_first_of(".eE") != std::string::npos && text->find_first_of("xX") == std::string::npos;
+    if (!decimal) return state.integer("VALUE", kInt32Min, kUInt32Max);
+    char* end = nullptr;
+    const double v = std::strtod(text->c_str(), &end);
+    while (end && *end == ' ') ++end;
+    if (!end || *end != '\0' || !std::isfinite(v)) {
+        state.error("attribute VALUE: '" + *text + "' is not a number");
+        return std::nullopt;
+    }
+    if (isFloat) return static_cast<long long>(std::bit_cast<uint32_t>(static_cast<float>(v)));
+    if (v != std::floor(v) || v < static_cast<double>(kInt32Min) || v > static_cast<double>(kUInt32Max)) {
+        state.error("attribute VALUE: '" + *text + "' is not a whole number, and this state takes one");
+        return std::nullopt;
+    }
+    return static_cast<long long>(v);
+}
 
 float floatFromBits(long long bits) {
     return std::bit_cast<float>(static_cast<uint32_t>(static_cast<uint64_t>(bits)));
@@ -100,7 +136,7 @@ void setRenderMonkeyDefaults(Pass& pass) {
 
 void applyGlRenderState(const RfxElement& state, Pass& pass) {
     std::string name = state.name();
-    auto value = stateValue(state);
+    auto value = stateValue(state, isFloatGlRenderState(name));
     if (!value) return;
     long long v = *value;
     auto set = [&](auto& field, const auto& choices, const char* what) {
@@ -143,8 +179,9 @@ void applyGlRenderState(const RfxElement& state, Pass& pass) {
 
 void applyD3dRenderState(const RfxElement& state, Pass& pass, bool& separateAlpha) {
     auto number = state.integer("STATE", 0, kUInt32Max);
-    auto value = stateValue(state);
-    if (!number || !value) return;
+    if (!number) return;
+    auto value = stateValue(state, isFloatD3dRenderState(*number));
+    if (!value) return;
     long long v = *value;
     auto set = [&](auto& field, const auto& choices, const char* what) {
         if (auto m = pick(state, what, v, choices)) field = *m;
@@ -158,12 +195,22 @@ void applyD3dRenderState(const RfxElement& state, Pass& pass, bool& separateAlph
         case 14: set(pass.depth.write, boolean, "boolean"); break;        // D3DRS_ZWRITEENABLE
         case 23: set(pass.depth.func, compareFuncs, "D3DCMPFUNC"); break;   // D3DRS_ZFUNC
         case 27: set(pass.blend.enabled, boolean, "boolean"); break;      // D3DRS_ALPHABLENDENABLE
-        case 19:                                                          // D3DRS_SRCBLEND
-            set(pass.blend.srcColor, d3dBlend, "D3DBLEND rmfx supports");
+        case 19: case 20: case 207: case 208: {  // D3DRS_SRCBLEND, DESTBLEND, SRCBLENDALPHA, DESTBLENDALPHA
+            const bool alpha = *number > 200, source = *number == 19 || *number == 207;
+            BlendFactor& src = alpha ? pass.blend.srcAlpha : pass.blend.srcColor;
+            BlendFactor& dst = alpha ? pass.blend.dstAlpha : pass.blend.dstColor;
+            if (v == kD3dBothSrcAlpha || v == kD3dBothInvSrcAlpha) {
+                const bool inverse = v == kD3dBothInvSrcAlpha;
+                src = inverse ? BlendFactor::OneMinusSrcAlpha : BlendFactor::SrcAlpha;
+                dst = inverse ? BlendFactor::SrcAlpha : BlendFactor::OneMinusSrcAlpha;
+                if (!source)
+                    state.warning(std::string(inverse ? "D3DBLEND_BOTHINVSRCALPHA" : "D3DBLEND_BOTHSRCALPHA") +
+                                  " is a source factor that sets the destination too; read as such here");
+            } else {
+                set(source ? src : dst, d3dBlend, "D3DBLEND rmfx supports");
+            }
             break;
-        case 20: set(pass.blend.dstColor, d3dBlend, "D3DBLEND rmfx supports"); break;  // D3DRS_DESTBLEND
-        case 207: set(pass.blend.srcAlpha, d3dBlend, "D3DBLEND rmfx supports"); break; // D3DRS_SRCBLENDALPHA
-        case 208: set(pass.blend.dstAlpha, d3dBlend, "D3DBLEND rmfx supports"); break; // D3DRS_DESTBLENDALPHA
+        }
         case 171: set(pass.blend.colorOp, blendOps, "D3DBLENDOP"); break;  // D3DRS_BLENDOP
         case 209: set(pass.blend.alphaOp, blendOps, "D3DBLENDOP"); break;  // D3DRS_BLENDOPALPHA
         case 193: pass.blend.constant = unpackArgb(v); break;              // D3DRS_BLENDFACTOR

@@ -36,4 +36,11 @@ void finishD3dRenderStates(Pass& pass, bool separateAlpha);
 // The float whose IEEE-754 bits are the 32-bit integer `bits` (read modulo 2^32).
 float floatFromBits(long long bits);
 
+// A state's VALUE. RenderMonkey wrote states as 32-bit integers, floats as their IEEE-754 bits;
+// files edited by hand or by other tools also write floats as decimal text ("0.250000"). For a
+// state that holds a float (`isFloat`) such text is read as the float and returned as its bits;
+// for the others decimal text of a whole number ("1.000000") is that number, and anything else is
+// an error on the element.
+std::optional<long long> stateValue(const RfxElement& state, bool isFloat);
+
 }  // namespace rmfx::rfx

@@ -7,7 +7,7 @@
 namespace rmfx::rfx {
 namespace {
 
-constexpr long long kInt32Min = -2147483648LL, kUInt32Max = 4294967295LL;
+constexpr long long kUInt32Max = 4294967295LL;
 
 void badValue(const RfxElement& state, long long value, const char* what) {
     state.error("VALUE " + std::to_string(value) + " is not " + what);
@@ -49,10 +49,10 @@ void SamplerStates::wrap(const RfxElement& state, int axis, long long value, boo
 }
 
 void SamplerStates::applyGl(const RfxElement& state) {
-    auto value = state.integer("VALUE", kInt32Min, kUInt32Max);
+    std::string name = state.name();
+    auto value = stateValue(state, name == "GL_TextureMaxAnisotropyEXT" || name == "GL_TextureLODBias");
     if (!value) return;
     long long v = *value;
-    std::string name = state.name();
     if (name == "GL_TextureWrapS") return wrap(state, 0, v, false);
     if (name == "GL_TextureWrapT") return wrap(state, 1, v, false);
     if (name == "GL_TextureWrapR") return wrap(state, 2, v, false);
@@ -87,8 +87,9 @@ void SamplerStates::applyGl(const RfxElement& state) {
 
 void SamplerStates::applyD3d(const RfxElement& state) {
     auto number = state.integer("STATE", 0, kUInt32Max);
-    auto value = state.integer("VALUE", kInt32Min, kUInt32Max);
-    if (!number || !value) return;
+    if (!number) return;
+    auto value = stateValue(state, *number == 8);  // D3DSAMP_MIPMAPLODBIAS holds a float
+    if (!value) return;
     long long v = *value;
     auto filter = [&](std::optional<Filter>& into) {
         switch (v) {
@@ -112,7 +113,10 @@ void SamplerStates::applyD3d(const RfxElement& state) {
             if (v == 0) mip_ = MipmapMode::None;
             else if (v == 1) mip_ = MipmapMode::Nearest, mipExplicit_ = true;
             else if (v == 2) mip_ = MipmapMode::Linear, mipExplicit_ = true;
-            else badValue(state, v, "a mip filter (0 none, 1 point, 2 linear)");
+            else if (v == 3) {
+                state.warning("D3DTEXF_ANISOTROPIC as the mip filter is sampled as linear (rmfx samplers have no anisotropy)");
+                mip_ = MipmapMode::Linear, mipExplicit_ = true;
+            } else badValue(state, v, "a mip filter (0 none, 1 point, 2 linear, 3 anisotropic)");
             return;
         case 8:  // D3DSAMP_MIPMAPLODBIAS, a float
             state.warning("sampler state D3DSAMP_MIPMAPLODBIAS = " + formatValue(Value::ofFloat(floatFromBits(v))) +

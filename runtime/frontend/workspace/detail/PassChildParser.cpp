@@ -28,7 +28,7 @@ std::initializer_list<std::pair<const char*, BlendFactor>> blendFactors() {
         {"one-minus-dst-color", BlendFactor::OneMinusDstColor}, {"src-alpha", BlendFactor::SrcAlpha},
         {"one-minus-src-alpha", BlendFactor::OneMinusSrcAlpha}, {"dst-alpha", BlendFactor::DstAlpha},
         {"one-minus-dst-alpha", BlendFactor::OneMinusDstAlpha}, {"constant", BlendFactor::ConstantColor},
-        {"one-minus-constant", BlendFactor::OneMinusConstantColor}};
+        {"one-minus-constant", BlendFactor::OneMinusConstantColor}, {"src-alpha-saturate", BlendFactor::SrcAlphaSaturate}};
     return list;
 }
 
