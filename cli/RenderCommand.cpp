@@ -138,15 +138,18 @@ void showProgress(const SequenceProgress& p, bool terminal) {
 }
 
 // rmfx render W --input scene=shot/frame.%04d.exr -o out/frame.%04d.png
-// --check: what the passes left in their targets, on stderr; whether NaN or an infinity was found.
-bool reportHealth(const GlExecutor& executor, int frames) {
+// --check: what the passes left in their targets, on stderr (with -q only the errors); whether
+// NaN or an infinity was found.
+bool reportHealth(const GlExecutor& executor, int frames, bool quiet) {
     const std::vector<HealthFinding>& findings = executor.firstHealthFindings();
     bool errors = false;
     for (const HealthFinding& f : findings) {
         errors = errors || healthKindIsError(f.kind);
+        if (quiet && !healthKindIsError(f.kind)) continue;
         std::cerr << "rmfx: check: " << (healthKindIsError(f.kind) ? "error" : "warning") << ": frame " << f.frame
                   << ": " << describeFinding(f) << "\n";
     }
+    if (quiet) return errors;
     const FrameHealth* last = executor.frameHealth();
     std::string uninspected;
     if (last)
@@ -279,7 +282,7 @@ int renderCommand(const std::vector<std::string>& args) {
     }
     if (!a->quiet) std::cerr << formatAll(run.diagnostics());  // warnings (streams no shader reads…)
     std::unique_ptr<GlExecutor>& executor = *run;
-    const bool unhealthy = a->executor.checkHealth && reportHealth(*executor, a->run.frames);
+    const bool unhealthy = a->executor.checkHealth && reportHealth(*executor, a->run.frames, a->quiet);
     if (a->explain) {
         FrameExplanationInput explained{&ws, &executor->graph(), &executor->targetPlan(), executor->askedEffects(),
                                         executor->switchedOffEffects(), a->executor.poolTargets, {},

@@ -106,6 +106,10 @@ void main() { fragColor = texelFetch(ratio, ivec2(gl_FragCoord.xy), 0); }
     EXPECT_TRUE(has(bad.err, "rmfx: check: 3 passes a frame, 1 frame: no NaN, -Inf, values at the format's largest\n"))
         << bad.err;
     EXPECT_TRUE(std::filesystem::exists(dir / "bad.exr"));
+    CommandResult quiet = runRmfx("render bad.xml --check -q -o bad.exr", dir.path());
+    EXPECT_EQ(quiet.status, 4);
+    EXPECT_TRUE(has(quiet.err, "rmfx: check: error: frame 0: pass 'ratio' wrote +Inf")) << quiet.err;
+    EXPECT_FALSE(has(quiet.err, "warning")) << quiet.err;
 
     dir.write("good.xml", workspace("abs(r.x) + 1.0"));
     CommandResult good = runRmfx("render good.xml --check --frames 2 -o good.exr", dir.path());
