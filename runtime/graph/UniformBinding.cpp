@@ -1,5 +1,7 @@
 #include "graph/UniformBinding.h"
 
+#include <algorithm>
+
 namespace rmfx {
 
 UniformSource resolveUniform(const Workspace& ws, const Pass& pass, const std::string& name) {
@@ -56,6 +58,12 @@ std::string bindingMismatch(const Workspace& ws, const UniformSource& source, co
     if (isSampler(type))
         return declared + ", but the pass has no <sampler name=\"" + uniform + "\">";
     return declared + ", but no variable, pass constant or predefined value has that name";
+}
+
+bool unboundUniformIsZero(const Pass& pass, const UniformSource& source, UniformType type) {
+    return std::holds_alternative<Unbound>(source) && !isSampler(type) &&
+           std::any_of(pass.shaders.begin(), pass.shaders.end(),
+                       [](const ShaderSource& s) { return s.dialect == ShaderDialect::Hlsl; });
 }
 
 }  // namespace rmfx

@@ -23,6 +23,11 @@ using UniformSource = std::variant<Unbound, BoundSampler, BoundConstant, BoundVa
 
 UniformSource resolveUniform(const Workspace& ws, const Pass& pass, const std::string& name);
 
+// Whether a uniform nothing feeds is left at zero rather than an error: in passes of HLSL shaders
+// (RenderMonkey's Direct3D effects), as Direct3D ran a shader whatever its constant table held
+// and a register nothing set was zero. Samplers are never left so.
+bool unboundUniformIsZero(const Pass& pass, const UniformSource& source, UniformType type);
+
 // Empty when the source can feed a uniform of that type; else why not, as a sentence naming both.
 std::string bindingMismatch(const Workspace& ws, const UniformSource& source, const std::string& uniform,
                             UniformType type, int arraySize);

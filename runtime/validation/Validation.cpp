@@ -314,7 +314,10 @@ private:
             std::string why = bindingMismatch(ws_, source, u.name, u.type, u.arraySize);
             if (why.empty()) continue;
             SourceLocation where = findUniformDeclaration(*program, u.name).value_or(pass.where);
-            error(where, label, why);
+            if (unboundUniformIsZero(pass, source, u.type))
+                warning(where, label, why + "; Direct3D ran with its constant register unset, so it is fed zero");
+            else
+                error(where, label, why);
         }
         for (const Sampler& s : pass.samplers)
             if (!active.count(s.uniform))

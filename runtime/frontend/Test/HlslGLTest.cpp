@@ -169,6 +169,31 @@ float4 main(float2 uv : TEXCOORD0, float4 far : TEXCOORD3, float3 colour : COLOR
         }
 }
 
+// A constant nothing in the effect sets ran as zero in Direct3D: a warning, and zero here; one set
+// by a variable beside it still gets its value. (In a GLSL pass the same is an error.)
+TEST_F(HlslGLTest, AConstantNoVariableFeedsIsZeroWithAWarning) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x4">
+  <vec4 name="Tint" value="0.25 0.5 0.75 1"/>
+  <target name="out" format="rgba32f" size="4x4"/>
+  <pass name="hlsl" target="out">
+    <shader stage="fragment"><![CDATA[
+float4 Tint;
+float4 Forgotten;
+float4 main(float2 uv : TEXCOORD0) : COLOR { return Tint + Forgotten * uv.x; }
+]]></shader>
+  </pass>
+</workspace>)";
+    std::unique_ptr<Workspace> ws = hlslWorkspace(xml);
+    ASSERT_TRUE(ws);
+    const std::string warnings = formatAll(validateWorkspace(*ws).diagnostics());
+    EXPECT_NE(warnings.find("warning: <pass name=\"hlsl\">: uniform 'Forgotten' is declared vec4"), std::string::npos) << warnings;
+    EXPECT_NE(warnings.find("Direct3D ran with its constant register unset, so it is fed zero"), std::string::npos)
+        << warnings;
+    RefImage out = renderOut(xml);
+    ASSERT_EQ(out.width, 4);
+    for (int x = 0; x < 4; ++x) expectNear(pixel(out, x, 1), {0.25, 0.5, 0.75, 1.0}, 1e-6, "pixel " + std::to_string(x));
+}
+
 // An input fixed-function processing does not give is an error naming the semantic.
 TEST_F(HlslGLTest, PixelShaderWithoutAVertexShaderReadingANormalIsAnError) {
     Result<Workspace> parsed = parseWorkspaceText(R"(<workspace version="1" name="hlsl" size="4x4">

@@ -591,6 +591,25 @@ TEST(RfxImporter, BadInputsAreErrorsWithFileAndLine) {
                                 usedFragment + "</RmGLPass>\n"))
                   .find("t.rfx:5: error: <RmShaderConstant NAME=\"Nope\">: no variable 'Nope' is visible from the pass"),
               std::string::npos);
+    // In a Direct3D pass the same is a warning: Direct3D ran with the register unset (zero), and a
+    // shader const keeps the value its declaration gives.
+    const std::string d3dShader = "<RmHLSLShader NAME=\"PS\" PIXEL_SHADER=\"TRUE\" TARGET=\"ps_2_0\" ENTRY_POINT=\"main\">"
+                                  "<RmShaderConstant NAME=\"Nope\"/><RmShaderConstant NAME=\"offsets\"/><RmShaderCode><![CDATA["
+                                  "static const float2 offsets[2] = { float2(1, 0), float2(0, 1) };\nfloat4 Nope;\n"
+                                  "float4 main() : COLOR { return Nope + offsets[1].y; }]]></RmShaderCode></RmHLSLShader>";
+    Result<Workspace> lenient = importRfxText(d3dEffect(d3dStatePass(1, "") + "<RmPass NAME=\"Q\" PASS_INDEX=\"0\">" +
+                                                        d3dShader + "</RmPass>\n"),
+                                              "t.rfx", ".", {""});
+    EXPECT_TRUE(lenient.ok()) << formatAll(lenient.diagnostics());
+    EXPECT_NE(formatAll(lenient.diagnostics()).find("<RmShaderConstant NAME=\"Nope\">: no variable 'Nope' is visible from the "
+                                                    "pass (pass, effect, group or workspace); Direct3D ran with its constant "
+                                                    "register unset, so it is fed zero"),
+              std::string::npos)
+        << formatAll(lenient.diagnostics());
+    EXPECT_NE(formatAll(lenient.diagnostics()).find("<RmShaderConstant NAME=\"offsets\">: no variable 'offsets' is visible from "
+                                                    "the pass (pass, effect, group or workspace); the shader declares it const"),
+              std::string::npos)
+        << formatAll(lenient.diagnostics());
     Result<Workspace> unused = importRfxText(pass("<RmShaderConstant NAME=\"light0\"/>\n"), "t.rfx", ".");
     EXPECT_TRUE(unused.ok());
     EXPECT_NE(formatAll(unused.diagnostics()).find("t.rfx:6: warning: <RmShaderConstant NAME=\"light0\">: no variable 'light0' "

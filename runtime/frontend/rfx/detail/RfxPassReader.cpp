@@ -160,9 +160,29 @@ private:
             bool used = std::any_of(out_.pass.shaders.begin(), out_.pass.shaders.end(),
                                     [&](const ShaderSource& s) { return mentionsIdentifier(s.code, name); });
             std::string message = "no variable '" + name + "' is visible from the pass (pass, effect, group or workspace)";
-            if (used) c.error(message);
-            else c.warning(message + "; its shaders do not use it, so it is ignored");
+            if (!used) c.warning(message + "; its shaders do not use it, so it is ignored");
+            else if (api_ != RfxApi::Direct3D) c.error(message);
+            // Direct3D ran a shader whatever its constant table held: a shader constant keeps the
+            // value its declaration gives, a constant register nothing set held zero.
+            else if (declaresConstant(name))
+                c.warning(message + "; the shader declares it const, with its own value, which it keeps");
+            else
+                c.warning(message + "; Direct3D ran with its constant register unset, so it is fed zero");
         }
+    }
+
+    // Whether a shader of the pass declares `name` const (`static const float2 o[12] = …`).
+    bool declaresConstant(const std::string& name) const {
+        for (const ShaderSource& s : out_.pass.shaders) {
+            for (size_t at = s.code.find(name); at != std::string::npos; at = s.code.find(name, at + 1)) {
+                const size_t statement = s.code.find_last_of(";{}", at);
+                const std::string before = s.code.substr(statement == std::string::npos ? 0 : statement + 1,
+                                                         at - (statement == std::string::npos ? 0 : statement + 1));
+                if (mentionsIdentifier(before, "const") && mentionsIdentifier(s.code.substr(at, name.size() + 1), name))
+                    return true;
+            }
+        }
+        return false;
     }
 
     void sampler(const RfxElement& c) {
