@@ -384,7 +384,11 @@ TEST_F(CliReplayGLTest, TheHtmlReportShowsTheFailingCaseFirstWithItsImagesAndAnE
     EXPECT_TRUE(has(withUpdate.err, "--report shows what a replay compared")) << withUpdate.err;
 
     p.dir().write("manifest.xml", manifest("4"));
+    p.dir().write("report/img/notes.txt", "mine");  // not the report's: it stays
+    p.dir().write("report/img/c7-gone.js", "stale");  // an earlier report's: it goes
     CommandResult r = p.replay("--report report");
+    EXPECT_TRUE(fs::exists(p / "report/img/notes.txt"));
+    EXPECT_FALSE(fs::exists(p / "report/img/c7-gone.js"));
     EXPECT_EQ(r.status, 1) << r.out << r.err;
     EXPECT_TRUE(has(r.out, "replay: wrote report/index.html\n")) << r.out;
     const std::string html = readText(p / "report/index.html");

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <regex>
 
 #include "io/file/AtomicFile.h"
 #include "io/image/ErrorHeatMap.h"
@@ -127,7 +128,13 @@ std::string displayStyle(int width, int height) {
 
 Result<ReplayReportWriter> ReplayReportWriter::open(const fs::path& dir, std::string title) {
     std::error_code ec;
-    fs::remove_all(dir / "img", ec);
+    // The images of an earlier report go; anything else a person put in img/ stays.
+    static const std::regex ours(R"(c[0-9]+-.*\.(js|png))");
+    if (fs::is_directory(dir / "img", ec))
+        for (const fs::directory_entry& entry : fs::directory_iterator(dir / "img", ec))
+            if (entry.is_regular_file(ec) && std::regex_match(entry.path().filename().string(), ours))
+                fs::remove(entry.path(), ec);
+    ec.clear();
     fs::create_directories(dir / "img", ec);
     if (ec) return Error{dir.string() + ": cannot create the report's folder: " + ec.message()};
     ReplayReportWriter writer;

@@ -43,7 +43,8 @@ struct ReportCase {
 
 class ReplayReportWriter {
 public:
-    // Creates DIR and DIR/img, removing the images of an earlier report there.
+    // Creates DIR and DIR/img, removing the images of an earlier report there (cN-….js and .png;
+    // other files in img/ are left alone).
     static Result<ReplayReportWriter> open(const std::filesystem::path& dir, std::string title);
 
     // Writes the case's images now and keeps what the page says about it.
