@@ -136,7 +136,7 @@ private:
         if (ImGui::CollapsingHeader("Camera")) drawCamera();
         if (ImGui::CollapsingHeader("Render targets", ImGuiTreeNodeFlags_DefaultOpen)) {
             drawHealthCheck();
-            targets_.draw(executor);
+            targets_.draw(session_.executor());  // the box may have just built a new executor
         }
         if (ImGui::CollapsingHeader("Timing", ImGuiTreeNodeFlags_DefaultOpen)) {
             drawEffectSwitches();
