@@ -1,7 +1,8 @@
 #include "model/TargetHealth.h"
 
 #include <cmath>
-#include <cstdio>
+
+#include "core/ShortNumber.h"
 
 namespace rmfx {
 
@@ -42,13 +43,7 @@ FormatHealthLimits formatHealthLimits(TargetFormat format) {
 
 namespace {
 
-std::string number(float v) {
-    if (std::isnan(v)) return "nan";
-    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", static_cast<double>(v));
-    return text;
-}
+std::string number(float v) { return std::isnan(v) ? "nan" : shortNumber(v); }  // never "-nan"
 
 std::string vector(glm::vec4 v) {
     return "(" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ", " + number(v.w) + ")";

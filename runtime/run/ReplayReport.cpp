@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <ctime>
 #include <regex>
 
+#include "core/ShortNumber.h"
 #include "io/file/AtomicFile.h"
+#include "io/file/FileNamePart.h"
 #include "io/image/ErrorHeatMap.h"
 #include "io/image/ImageIO.h"
 #include "io/image/RgbePacking.h"
@@ -55,49 +56,13 @@ std::string base64(const std::string& bytes) {
     return out;
 }
 
-std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", value);
-    return text;
-}
-
-// A file name part from a case or compare name.
-std::string safeName(const std::string& name) {
-    std::string out = name;
-    for (char& ch : out)
-        if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '-') ch = '_';
-    return out;
-}
-
-const char* metricWord(ErrorMetric metric) {
-    switch (metric) {
-        case ErrorMetric::Absolute: return "error";
-        case ErrorMetric::Relative: return "relative error";
-        case ErrorMetric::Itp: return "ΔE_ITP";
-    }
-    return "error";
-}
-
-std::string checkName(const LimitCheck& check, const ImageComparison& c) {
-    switch (check.kind) {
-        case LimitCheck::Kind::Max: return std::string("max ") + metricWord(c.metric);
-        case LimitCheck::Kind::Mean: return std::string("mean ") + metricWord(c.metric);
-        case LimitCheck::Kind::Percentile:
-            return number(c.percentile.value_or(100)) + "th percentile " + metricWord(c.metric);
-        case LimitCheck::Kind::FailFraction:
-            return "fraction of pixels with " + std::string(metricWord(c.metric)) + " > " +
-                   number(c.pixelThreshold.value_or(0));
-    }
-    return "";
-}
-
 // The heat map's full scale at the limits: the per-pixel limit, else the largest allowed error,
 // else the percentile's or the mean's limit; nullopt without limits.
 std::optional<std::pair<double, std::string>> limitScale(const ImageComparison& c) {
     if (c.pixelThreshold && *c.pixelThreshold > 0) return std::pair{*c.pixelThreshold, std::string("the per-pixel limit")};
     for (LimitCheck::Kind kind : {LimitCheck::Kind::Max, LimitCheck::Kind::Percentile, LimitCheck::Kind::Mean})
         for (const LimitCheck& check : c.checks)
-            if (check.kind == kind && check.limit > 0) return std::pair{check.limit, "the " + checkName(check, c) + " limit"};
+            if (check.kind == kind && check.limit > 0) return std::pair{check.limit, "the " + c.checkName(check) + " limit"};
     return std::nullopt;
 }
 
@@ -121,7 +86,7 @@ const char* statusWord(ReportCase::Status status) {
 std::string displayStyle(int width, int height) {
     if (width <= 0 || height <= 0) return "";
     double scale = width < 256 ? std::floor(256.0 / width) : std::min(1.0, 512.0 / width);
-    return "width:" + number(std::round(width * scale)) + "px;height:" + number(std::round(height * scale)) + "px";
+    return "width:" + shortNumber(std::round(width * scale)) + "px;height:" + shortNumber(std::round(height * scale)) + "px";
 }
 
 }  // namespace
@@ -206,15 +171,15 @@ Result<void> ReplayReportWriter::addCase(const ReportCase& c) {
     entry.log = c.log;
     entry.seconds = c.seconds;
     entry.firstDifferencePass = c.firstDifferencePass;
-    const std::string caseId = "c" + std::to_string(cases_.size()) + "-" + safeName(c.name);
+    const std::string caseId = "c" + std::to_string(cases_.size()) + "-" + fileNamePart(c.name);
     std::string script = "window.rmfxImages = window.rmfxImages || {};\n";
     for (size_t i = 0; i < c.compares.size(); ++i) {
-        auto compare = writeCompare(c.compares[i], caseId + "-" + std::to_string(i) + "-" + safeName(c.compares[i].label), script);
+        auto compare = writeCompare(c.compares[i], caseId + "-" + std::to_string(i) + "-" + fileNamePart(c.compares[i].label), script);
         if (!compare) return Error{compare.error()};
         entry.compares.push_back(std::move(*compare));
     }
     if (c.firstDifference) {
-        auto compare = writeCompare(*c.firstDifference, caseId + "-first-" + safeName(c.firstDifference->label), script);
+        auto compare = writeCompare(*c.firstDifference, caseId + "-first-" + fileNamePart(c.firstDifference->label), script);
         if (!compare) return Error{compare.error()};
         entry.firstDifference = std::move(*compare);
     }
@@ -253,7 +218,7 @@ Result<fs::path> ReplayReportWriter::finish(double seconds) {
     page += "<header>\n<h1>rmfx replay: " + escapeHtml(title_) + "</h1>\n<p class=\"summary\">" +
             std::to_string(cases_.size()) + (cases_.size() == 1 ? " case: " : " cases: ") + std::to_string(passed) +
             " passed, " + std::to_string(failed) + " failed, " + std::to_string(errors) + " could not run; " +
-            number(std::round(seconds * 100) / 100) + " s; " + date + "</p>\n";
+            shortNumber(std::round(seconds * 100) / 100) + " s; " + date + "</p>\n";
     page += "<div class=\"controls\"><label>Exposure <input type=\"range\" id=\"ev\" min=\"-12\" max=\"12\" step=\"0.25\" "
             "value=\"0\"> <output id=\"ev-value\">0 EV</output></label><label>Tone mapping <select id=\"op\">"
             "<option value=\"clip\">clip</option><option value=\"reinhard\">Reinhard</option></select></label>"
@@ -269,8 +234,8 @@ Result<fs::path> ReplayReportWriter::finish(double seconds) {
             out += "<table class=\"metrics\"><tr><th>check</th><th>measured</th><th>limit</th><th></th></tr>\n";
             for (const LimitCheck& check : c.checks)
                 out += std::string("<tr") + (check.passed() ? "" : " class=\"over\"") + "><td>" +
-                       escapeHtml(checkName(check, c)) + "</td><td>" + number(check.value) + "</td><td>" +
-                       number(check.limit) + "</td><td>" + (check.passed() ? "ok" : "over") + "</td></tr>\n";
+                       escapeHtml(c.checkName(check)) + "</td><td>" + shortNumber(check.value) + "</td><td>" +
+                       shortNumber(check.limit) + "</td><td>" + (check.passed() ? "ok" : "over") + "</td></tr>\n";
             out += "</table>\n";
         }
         if (c.problem.empty())
@@ -289,14 +254,14 @@ Result<fs::path> ReplayReportWriter::finish(double seconds) {
             const auto& first = e.heatMaps.front();
             out += "<figure class=\"heat-figure\"><img class=\"heat\" src=\"" + escapeHtml(first.file) + "\" style=\"" + style +
                    "\" alt=\"difference heat map\"><figcaption class=\"legend\">difference: 0 <span class=\"bar\"></span> "
-                   "<span class=\"scale\">" + number(first.scale) + " (" + escapeHtml(first.meaning) +
+                   "<span class=\"scale\">" + shortNumber(first.scale) + " (" + escapeHtml(first.meaning) +
                    ")</span> <span class=\"over\"></span> above</figcaption>";
             if (e.heatMaps.size() > 1) {
                 out += "<figcaption>full scale: ";
                 for (size_t i = 0; i < e.heatMaps.size(); ++i)
                     out += "<label><input type=\"radio\" class=\"heat-choice\" name=\"heat-" + e.id + "\" data-file=\"" +
                            escapeHtml(e.heatMaps[i].file) + "\" data-scale=\"" +
-                           escapeHtml(number(e.heatMaps[i].scale) + " (" + e.heatMaps[i].meaning + ")") + "\"" +
+                           escapeHtml(shortNumber(e.heatMaps[i].scale) + " (" + e.heatMaps[i].meaning + ")") + "\"" +
                            (i == 0 ? " checked" : "") + "> " + escapeHtml(e.heatMaps[i].meaning) + "</label> ";
                 out += "</figcaption>";
             }
@@ -325,7 +290,7 @@ Result<fs::path> ReplayReportWriter::finish(double seconds) {
         page += "<section class=\"case " + std::string(status) + "\" data-status=\"" + status + "\" id=\"case-" +
                 escapeHtml(c.name) + "\">\n<h2><span class=\"badge\">" +
                 (c.status == ReportCase::Status::Passed ? "ok" : c.status == ReportCase::Status::Failed ? "FAILED" : "ERROR") +
-                "</span> " + escapeHtml(c.name) + " <span class=\"time\">" + number(std::round(c.seconds * 100) / 100) +
+                "</span> " + escapeHtml(c.name) + " <span class=\"time\">" + shortNumber(std::round(c.seconds * 100) / 100) +
                 " s</span></h2>\n";
         if (!c.log.empty()) page += "<pre class=\"log\">" + escapeHtml(c.log) + "</pre>\n";
         if (c.firstDifference)
@@ -335,7 +300,7 @@ Result<fs::path> ReplayReportWriter::finish(double seconds) {
                     "</div>\n";
         for (const CompareEntry& e : c.compares) page += compareBlock(e, escapeHtml(e.label));
         page += "</section>\n";
-        scripts += "<script src=\"img/c" + std::to_string(index) + "-" + safeName(c.name) + ".js\"></script>\n";
+        scripts += "<script src=\"img/c" + std::to_string(index) + "-" + fileNamePart(c.name) + ".js\"></script>\n";
     }
     page += "</main>\n" + scripts + "<script>" + replayReportScript() + "</script>\n</body>\n</html>\n";
     fs::path index = dir_ / "index.html";

@@ -1,11 +1,11 @@
 #include "run/ReplayRun.h"
 
 #include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <map>
 #include <optional>
 
+#include "io/file/FileNamePart.h"
 #include "io/image/ImageIO.h"
 #include "io/image/InputImage.h"
 #include "run/HeadlessRun.h"
@@ -59,10 +59,6 @@ void checkTargets(const ReplayCase& c, const Workspace& ws, Diagnostics& diagnos
                                        "' (" + ws.describeTargets() + ")"});
 }
 
-}  // namespace
-
-namespace {
-
 // The case's workspace loaded, its <set>s and <input>s applied, and the context of its profile
 // current: what renderReplayCase and renderReplayTargets share. nullopt when errors stop it.
 struct PreparedCase {
@@ -96,15 +92,6 @@ std::optional<PreparedCase> prepareCase(const ReplayCase& c, const MediaOptions&
         }
     prepared.options.effects = c.effects;
     return prepared;
-}
-
-// A target name as a file name: characters other than letters, digits, '_', '-' and '.' become '_'.
-std::string targetFileName(const std::string& target) {
-    std::string name = target;
-    for (char& ch : name)
-        if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '-' && ch != '.') ch = '_';
-    if (name.empty() || name[0] == '.') name.insert(0, "_");
-    return name + ".exr";
 }
 
 }  // namespace
@@ -180,7 +167,7 @@ std::filesystem::path caseTargetsFolder(const ReplayCase& c) {
 }
 
 std::filesystem::path caseTargetFile(const ReplayCase& c, const std::string& target) {
-    return caseTargetsFolder(c) / targetFileName(target);
+    return caseTargetsFolder(c) / (fileNamePart(target) + ".exr");
 }
 
 FirstDifference findFirstDifference(const ReplayCase& c, const std::vector<CaseTarget>& targets,

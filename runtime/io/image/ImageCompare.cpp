@@ -9,6 +9,7 @@
 #include <OpenImageIO/imagebufalgo.h>
 
 #include "core/Percentile.h"
+#include "core/ShortNumber.h"
 
 namespace rmfx {
 
@@ -33,12 +34,6 @@ Image toImage(const OIIO::ImageBuf& buffer) {
     return image;
 }
 
-std::string number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", v);
-    return text;
-}
-
 // A NaN matches a NaN and an infinity the same infinity; anything else against a non-finite value
 // is a mismatch. (OpenImageIO's compare takes +inf and −inf as equal, so this is counted here.)
 // Empty when every non-finite value has its match.
@@ -55,13 +50,18 @@ std::string nonFiniteMismatch(const Image& actual, const Image& reference) {
     return std::to_string(count) + (count == 1 ? " value is" : " values are") +
            " NaN or infinite in one image and not the same in the other; the first at x=" +
            std::to_string(pixel % actual.width) + " y=" + std::to_string(pixel / actual.width) + " channel " +
-           std::to_string(first % actual.channels) + ": render " + number(actual.pixels[first]) + ", reference " +
-           number(reference.pixels[first]);
+           std::to_string(first % actual.channels) + ": render " + shortNumber(actual.pixels[first]) + ", reference " +
+           shortNumber(reference.pixels[first]);
+}
+
+// What the error of a metric is called in messages.
+const char* errorWord(ErrorMetric metric) {
+    return metric == ErrorMetric::Relative ? "relative error" : metric == ErrorMetric::Itp ? "ΔE_ITP" : "error";
 }
 
 // "99th", "99.9th", "1st", "2nd", "3rd", "11th": the percentile in words.
 std::string ordinal(double n) {
-    std::string text = number(n);
+    std::string text = shortNumber(n);
     if (n != std::floor(n)) return text + "th";
     long long whole = static_cast<long long>(n);
     if (whole % 100 >= 11 && whole % 100 <= 13) return text + "th";
@@ -117,14 +117,24 @@ bool ImageComparison::passed() const {
     return problem.empty() && std::all_of(checks.begin(), checks.end(), [](const LimitCheck& c) { return c.passed(); });
 }
 
+std::string ImageComparison::checkName(const LimitCheck& check) const {
+    const std::string error = errorWord(metric);
+    switch (check.kind) {
+        case LimitCheck::Kind::Max: return "max " + error;
+        case LimitCheck::Kind::Mean: return "mean " + error;
+        case LimitCheck::Kind::Percentile: return ordinal(percentile.value_or(100.0)) + " percentile " + error;
+        case LimitCheck::Kind::FailFraction:
+            return "fail fraction (pixels with " + error + " > " + shortNumber(pixelThreshold.value_or(0.0)) + ")";
+    }
+    return error;
+}
+
 std::string ImageComparison::describe() const {
-    std::string error = metric == ErrorMetric::Relative ? "relative error "
-                        : metric == ErrorMetric::Itp    ? "ΔE_ITP "
-                                                        : "error ";
+    const std::string error = errorWord(metric) + std::string(" ");
     std::string out = problem;
     auto clause = [&](const std::string& text) { out += (out.empty() ? "" : "; ") + text; };
     auto compared = [](const LimitCheck& c) {
-        return number(c.value) + (c.passed() ? " ≤ " : " > ") + number(c.limit);
+        return shortNumber(c.value) + (c.passed() ? " ≤ " : " > ") + shortNumber(c.limit);
     };
     std::string where;
     if (metrics.maxError > 0) {
@@ -133,20 +143,18 @@ std::string ImageComparison::describe() const {
     }
     if (checks.empty() && difference.empty()) return out;
     if (checks.empty()) {
-        clause("max " + error + number(metrics.maxError) + where + ", mean " + error + number(metrics.meanError));
+        clause("max " + error + shortNumber(metrics.maxError) + where + ", mean " + error + shortNumber(metrics.meanError));
         return out;
     }
     for (const LimitCheck& c : checks) {
         switch (c.kind) {
-            case LimitCheck::Kind::Max: clause("max " + error + compared(c) + where); break;
-            case LimitCheck::Kind::Mean: clause("mean " + error + compared(c)); break;
-            case LimitCheck::Kind::Percentile:
-                clause(ordinal(percentile.value_or(100.0)) + " percentile " + error + compared(c));
-                break;
+            case LimitCheck::Kind::Max: clause(checkName(c) + " " + compared(c) + where); break;
+            case LimitCheck::Kind::Mean:
+            case LimitCheck::Kind::Percentile: clause(checkName(c) + " " + compared(c)); break;
             case LimitCheck::Kind::FailFraction:
                 clause("fail fraction " + compared(c) + " (" + std::to_string(metrics.failingPixels) + " of " +
                        std::to_string(metrics.pixelCount) + " pixels with " + error + "> " +
-                       number(pixelThreshold.value_or(0.0)) + ")");
+                       shortNumber(pixelThreshold.value_or(0.0)) + ")");
                 break;
         }
     }

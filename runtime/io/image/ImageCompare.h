@@ -74,6 +74,9 @@ struct ImageComparison {
     std::optional<double> pixelThreshold;
 
     bool passed() const;
+    // What a check measures, for a person: "max relative error", "mean error", "99th percentile
+    // ΔE_ITP", "fail fraction (pixels with error > 0.01)".
+    std::string checkName(const LimitCheck& check) const;
     // What was measured against what was allowed, one clause a check, for a person:
     // "max error 0.03125 > 0.02 at x=17 y=40 channel 0; mean error 0.0004 ≤ 0.002".
     std::string describe() const;
