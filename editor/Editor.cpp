@@ -24,6 +24,8 @@
 namespace rmfx::editor {
 namespace {
 
+const ImVec4 kErrorText(1.0f, 0.45f, 0.4f, 1.0f);  // a reload, a drop or a switch that failed
+
 glm::ivec2 windowSizeFor(glm::ivec2 effect) { return {effect.x + panelWidth, std::max(effect.y, minimumWindowHeight)}; }
 
 // The input a dropped image fills: the only one, else the first that stands in for a target (the
@@ -156,7 +158,7 @@ private:
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("after each pass, inspect on the GPU the target it wrote (as rmfx render --check);\n"
                               "a badge under each thumbnail, the first bad pixel on hover");
-        if (!healthError_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", healthError_.c_str());
+        if (!healthError_.empty()) ImGui::TextColored(kErrorText, "%s", healthError_.c_str());
     }
 
     void drawReloadStatus() {
@@ -213,7 +215,7 @@ private:
             ImGui::PopStyleColor();
         }
         if (!dropMessage_.empty()) {
-            if (dropFailed_) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+            if (dropFailed_) ImGui::PushStyleColor(ImGuiCol_Text, kErrorText);
             ImGui::TextWrapped("%s", dropMessage_.c_str());
             if (dropFailed_) ImGui::PopStyleColor();
         }

@@ -101,9 +101,7 @@ Result<LiveWorkspace::Build> LiveWorkspace::load(const std::set<std::string>& st
     failedDependencies_ = build.dependencies;
     updateWatches();
     const glm::ivec2 viewport = build.supplied.viewport;
-    FramePlanOptions options;
-    options.givenInputs = build.supplied.given;
-    options.checkHealth = checkHealth_;
+    const FramePlanOptions options = executorOptions(build);
     if (executor_) {
         // Textures whose files did not change are copied from the running build, not decoded again.
         std::vector<std::string> reusable;
@@ -377,6 +375,13 @@ void LiveWorkspace::resetVariable(const std::string& name) {
     if (const Variable* v = workspace_->findVariable(name)) (void)executor_->setVariable(name, v->value);
 }
 
+FramePlanOptions LiveWorkspace::executorOptions(const Build& build) const {
+    FramePlanOptions options;
+    options.givenInputs = build.supplied.given;
+    options.checkHealth = checkHealth_;
+    return options;
+}
+
 Result<void> LiveWorkspace::setHealthCheck(bool on) {
     if (on == checkHealth_) return {};
     checkHealth_ = on;
@@ -400,9 +405,7 @@ Result<void> LiveWorkspace::setViewport(glm::ivec2 viewport) {
         return Result<void>::failure(std::move(found));
     }
     build.supplied = std::move(*supplied);
-    FramePlanOptions options;
-    options.givenInputs = build.supplied.given;
-    options.checkHealth = checkHealth_;
+    const FramePlanOptions options = executorOptions(build);
     auto created = GlExecutor::create(build.workspace, build.supplied.viewport, options);
     append(found, created.takeDiagnostics());
     if (!created) {

@@ -122,6 +122,8 @@ private:
     void reloadInputs(const std::set<std::string>& names);
     // Reads the input images into `ws`, as the run's viewport asks (supplyInputs).
     Result<SuppliedInputs> supply(Workspace& ws) const;
+    // What every executor of this session is built with: the inputs the build was given, the check.
+    FramePlanOptions executorOptions(const Build& build) const;
 
     void updateWatches();
     void collectErrors();
