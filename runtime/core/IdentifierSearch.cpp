@@ -6,6 +6,17 @@ namespace rmfx {
 
 static bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
+// Where `word` occurs in `text` at or after `from` as a whole word; npos when nowhere.
+static size_t findWord(std::string_view text, std::string_view word, size_t from = 0) {
+    if (word.empty()) return std::string_view::npos;
+    for (size_t at = text.find(word, from); at != std::string_view::npos; at = text.find(word, at + 1)) {
+        bool before = at > 0 && identifierChar(text[at - 1]);
+        bool after = at + word.size() < text.size() && identifierChar(text[at + word.size()]);
+        if (!before && !after) return at;
+    }
+    return std::string_view::npos;
+}
+
 std::string withoutComments(std::string_view input) {
     std::string out(input);
     size_t i = 0;
@@ -34,13 +45,7 @@ std::string withoutComments(std::string_view input) {
 bool mentionsIdentifier(std::string_view text, std::string_view name) {
     if (name.empty() || text.find(name) == std::string_view::npos) return false;
     const std::string uncommented = withoutComments(text);
-    const std::string_view code = uncommented;
-    for (size_t at = code.find(name); at != std::string_view::npos; at = code.find(name, at + 1)) {
-        bool before = at > 0 && identifierChar(code[at - 1]);
-        bool after = at + name.size() < code.size() && identifierChar(code[at + name.size()]);
-        if (!before && !after) return true;
-    }
-    return false;
+    return findWord(uncommented, name) != std::string_view::npos;
 }
 
 bool declaresVertexInput(std::string_view code, std::string_view name) {
@@ -53,6 +58,15 @@ bool declaresVertexInput(std::string_view code, std::string_view name) {
         size_t start = code.find_last_of(";{}", at);
         std::string_view statement = code.substr(start == std::string_view::npos ? 0 : start + 1, at - (start == std::string_view::npos ? 0 : start + 1));
         if (mentionsIdentifier(statement, "attribute") || mentionsIdentifier(statement, "in")) return true;
+    }
+    return false;
+}
+
+bool lineDeclaresUniform(std::string_view line, std::string_view name) {
+    constexpr std::string_view keyword = "uniform";
+    for (size_t at = findWord(line, keyword); at != std::string_view::npos; at = findWord(line, keyword, at + 1)) {
+        std::string_view after = line.substr(at + keyword.size());
+        if (findWord(after.substr(0, after.find(';')), name) != std::string_view::npos) return true;
     }
     return false;
 }

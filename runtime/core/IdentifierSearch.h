@@ -17,4 +17,8 @@ std::string withoutComments(std::string_view code);
 // `in` before the name, which ends it (";", "," or "["). No regex: shaders can be long.
 bool declaresVertexInput(std::string_view code, std::string_view name);
 
+// Whether one line of GLSL holds the word `uniform` and, after it and before a ';', the word `name`
+// (comments not skipped). No regex: libstdc++'s recurses once per character of a long line.
+bool lineDeclaresUniform(std::string_view line, std::string_view name);
+
 }  // namespace rmfx

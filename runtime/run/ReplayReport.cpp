@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <ctime>
-#include <regex>
+#include <string_view>
 
 #include "core/ShortNumber.h"
 #include "io/file/AtomicFile.h"
@@ -89,15 +90,23 @@ std::string displayStyle(int width, int height) {
     return "width:" + shortNumber(std::round(width * scale)) + "px;height:" + shortNumber(std::round(height * scale)) + "px";
 }
 
+// Whether a file in img/ is one the report writes: c<digits>-<anything>.js or .png.
+bool isReportImageName(std::string_view name) {
+    if (name.size() < 2 || name[0] != 'c' || !std::isdigit(static_cast<unsigned char>(name[1]))) return false;
+    size_t afterDigits = name.find_first_not_of("0123456789", 1);
+    if (afterDigits == std::string_view::npos || name[afterDigits] != '-') return false;
+    std::string_view rest = name.substr(afterDigits + 1);
+    return rest.ends_with(".js") || rest.ends_with(".png");
+}
+
 }  // namespace
 
 Result<ReplayReportWriter> ReplayReportWriter::open(const fs::path& dir, std::string title) {
     std::error_code ec;
     // The images of an earlier report go; anything else a person put in img/ stays.
-    static const std::regex ours(R"(c[0-9]+-.*\.(js|png))");
     if (fs::is_directory(dir / "img", ec))
         for (const fs::directory_entry& entry : fs::directory_iterator(dir / "img", ec))
-            if (entry.is_regular_file(ec) && std::regex_match(entry.path().filename().string(), ours))
+            if (entry.is_regular_file(ec) && isReportImageName(entry.path().filename().string()))
                 fs::remove(entry.path(), ec);
     ec.clear();
     fs::create_directories(dir / "img", ec);

@@ -1,9 +1,10 @@
 #include "validation/GlslangCheck.h"
 
+#include "core/IdentifierSearch.h"
+
 #include <cctype>
 #include <memory>
 #include <mutex>
-#include <regex>
 #include <string_view>
 #include <utility>
 
@@ -95,7 +96,6 @@ Result<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSource& pro
 }
 
 std::optional<SourceLocation> findUniformDeclaration(const PassProgramSource& program, const std::string& name) {
-    const std::regex pattern("\\buniform\\b[^;]*\\b" + name + "\\b");
     for (const PassStage& stage : program.stages) {
         int line = 1;
         size_t start = 0;
@@ -103,7 +103,7 @@ std::optional<SourceLocation> findUniformDeclaration(const PassProgramSource& pr
         while (start < code.size()) {
             size_t end = code.find('\n', start);
             if (end == std::string::npos) end = code.size();
-            if (std::regex_search(code.begin() + static_cast<long>(start), code.begin() + static_cast<long>(end), pattern))
+            if (lineDeclaresUniform(std::string_view(code).substr(start, end - start), name))
                 return stage.shader.origin(line);
             start = end + 1;
             ++line;

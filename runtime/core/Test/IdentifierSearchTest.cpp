@@ -37,5 +37,20 @@ TEST(IdentifierSearch, VertexInputDeclarations) {
     EXPECT_FALSE(declaresVertexInput("attribute vec3 rm_Tangent", "rm_Tangent"));  // no end of statement
 }
 
+TEST(IdentifierSearch, UniformDeclarationsOnALine) {
+    EXPECT_TRUE(lineDeclaresUniform("uniform float Gain;", "Gain"));
+    EXPECT_TRUE(lineDeclaresUniform("  layout(location = 3) uniform vec4 a, Gain[2];", "Gain"));
+    EXPECT_TRUE(lineDeclaresUniform("int x; uniform float Gain;", "Gain"));
+    EXPECT_FALSE(lineDeclaresUniform("uniform float GainB;", "Gain"));
+    EXPECT_FALSE(lineDeclaresUniform("uniform float Other; float Gain;", "Gain"));  // after the ';'
+    EXPECT_FALSE(lineDeclaresUniform("float Gain; // uniforms", "Gain"));
+    EXPECT_FALSE(lineDeclaresUniform("myuniform float Gain;", "Gain"));
+    EXPECT_FALSE(lineDeclaresUniform("uniform float Gain;", ""));
+    // A line of a million characters (std::regex overflowed the stack on far less).
+    std::string longLine = "uniform float " + std::string(1'000'000, 'x') + ", Gain;";
+    EXPECT_TRUE(lineDeclaresUniform(longLine, "Gain"));
+    EXPECT_FALSE(lineDeclaresUniform(longLine, "Missing"));
+}
+
 }  // namespace
 }  // namespace rmfx

@@ -1,5 +1,7 @@
 #include "frontend/shader/ShaderPreprocessor.h"
 
+#include "frontend/shader/CompilerLogLine.h"
+
 #include "io/media/MediaResolver.h"
 
 #include <cctype>
@@ -8,7 +10,6 @@
 #include <limits>
 #include <map>
 #include <optional>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -316,14 +317,8 @@ PreprocessedShader preprocessShader(const ShaderInput& input, Diagnostics& diagn
 
 Diagnostics mapCompilerLog(const std::string& log, const PreprocessedShader& shader, const SourceLocation& fallback,
                            const std::string& element) {
-    // glslang: "ERROR: 0:12: 'x' : undeclared identifier"
-    // Mesa:    "0:12(5): error: `x' undeclared"
-    // NVIDIA:  "0(12) : error C1008: undefined variable "x""
-    static const std::regex glslang(R"(^(ERROR|WARNING):\s*\d+:(\d+):\s*(.*)$)");
-    static const std::regex mesa(R"(^\d+:(\d+)\(\d+\):\s*(error|warning):\s*(.*)$)");
-    static const std::regex nvidia(R"(^\d+\((\d+)\)\s*:\s*(error|warning)\s*(.*)$)");
     // Line numbers too large for an int are past the end of the shader: its last line.
-    auto lineNumber = [](const std::string& digits) {
+    auto lineNumber = [](std::string_view digits) {
         int n = 0;
         auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
         return ec == std::errc::result_out_of_range ? std::numeric_limits<int>::max() : n;
@@ -332,22 +327,16 @@ Diagnostics mapCompilerLog(const std::string& log, const PreprocessedShader& sha
     std::istringstream in(log);
     for (std::string line; std::getline(in, line);) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
-        // libstdc++'s regex recurses once per character: a longer line (a huge identifier quoted
-        // back, say) would overflow the stack. Its message keeps the first 4096 bytes.
+        // A longer line (a huge identifier quoted back, say) keeps its first 4096 bytes.
         constexpr size_t kMaxLogLine = 4096;
         if (line.size() > kMaxLogLine) line = line.substr(0, kMaxLogLine) + "…";
         if (line.find_first_not_of(" \t") == std::string::npos) continue;
-        std::smatch m;
         Diagnostic d;
         d.element = element;
-        if (std::regex_match(line, m, glslang)) {
-            d.severity = m[1] == "ERROR" ? Diagnostic::Severity::Error : Diagnostic::Severity::Warning;
-            d.where = shader.origin(lineNumber(m[2]));
-            d.message = m[3];
-        } else if (std::regex_match(line, m, mesa) || std::regex_match(line, m, nvidia)) {
-            d.severity = m[2] == "error" ? Diagnostic::Severity::Error : Diagnostic::Severity::Warning;
-            d.where = shader.origin(lineNumber(m[1]));
-            d.message = m[3];
+        if (std::optional<CompilerLogLine> parsed = parseCompilerLogLine(line)) {
+            d.severity = parsed->error ? Diagnostic::Severity::Error : Diagnostic::Severity::Warning;
+            d.where = shader.origin(lineNumber(parsed->lineDigits));
+            d.message = parsed->message;
         } else {
             // glslang's summary lines ("ERROR: 1 compilation errors.  No code generated.") add nothing.
             if (line.find("compilation errors") != std::string::npos || line.find("No code generated") != std::string::npos)
