@@ -16,6 +16,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -29,6 +30,7 @@
 #include "reference/CameraRays.h"
 #include "reference/RayCastImage.h"
 #include "tests/support/GlTestSupport.h"
+#include "tests/support/ModelFiles.h"
 #include "tests/support/TestSupport.h"
 #include "validation/WorkspaceLoader.h"
 
@@ -96,21 +98,6 @@ Mesh uvSphere(double radius, int segments, int rings, glm::dvec2 uvMin, glm::dve
             if (r < rings - 1) mesh.indices.insert(mesh.indices.end(), {a, c, d});
         }
     return mesh;
-}
-
-// The mesh as a Wavefront OBJ file, with %.9g so that the floats read back exactly.
-void writeObj(const std::filesystem::path& file, const Mesh& mesh) {
-    std::FILE* out = std::fopen(file.c_str(), "w");
-    ASSERT_TRUE(out) << file;
-    for (const auto& p : mesh.positions) std::fprintf(out, "v %.9g %.9g %.9g\n", p.x, p.y, p.z);
-    for (const auto& t : mesh.texcoords) std::fprintf(out, "vt %.9g %.9g\n", t.x, t.y);
-    for (const auto& n : mesh.normals) std::fprintf(out, "vn %.9g %.9g %.9g\n", n.x, n.y, n.z);
-    for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-        std::fprintf(out, "f");
-        for (int k = 0; k < 3; ++k) std::fprintf(out, " %u/%u/%u", mesh.indices[i + k] + 1, mesh.indices[i + k] + 1, mesh.indices[i + k] + 1);
-        std::fprintf(out, "\n");
-    }
-    std::fclose(out);
 }
 
 glm::dmat3 normalMatrix(const glm::dmat4& modelView) { return glm::transpose(glm::inverse(glm::dmat3(modelView))); }
@@ -188,6 +175,92 @@ TEST_F(RfxModelRenderGLTest, LitTeapotMatchesAFloat64RayCastOfTheModel) {
     };
     const MeshRayCast cast(teapot, glm::dmat4(1.0), view, projection, {size, size});
     renderAndCompare(std::move(ws), {cast, shade, 2000});
+}
+
+// An OpenGL effect drawing FILE_NAME through an RmCamera, back faces culled, coloured by its
+// texture coordinates: (u, v, 0.5).
+std::string texcoordEffect(const std::string& modelFile) {
+    return lines({
+        R"(<?xml version="1.0" encoding="UTF-8" standalone="yes"?>)",
+        "<RENDER_MONKEY>",
+        R"( <RmEffectWorkspace NAME="Tests" API="" ACTIVE_EFFECT="Tests.Model" VALIDATION_STRING="" XML_VERSION="RenderMonkey 1.71">)",
+        R"(  <RmModelData NAME="Shape" API="" FILE_NAME="C:\Media\Models\)" + modelFile + R"(" ORIENTATION="0"/>)",
+        R"(  <RmOpenGLEffect NAME="Model" API="OpenGL" ACTIVE_CAMERA="Side">)",
+        R"(   <RmCamera NAME="Side" API="" CAMERA_POSITION_X="1.6" CAMERA_POSITION_Y="1.2" CAMERA_POSITION_Z="2.0" LOOK_AT_VECTOR_X="0.3" LOOK_AT_VECTOR_Y="0.2" LOOK_AT_VECTOR_Z="0.1" UP_VECTOR_X="0.0" UP_VECTOR_Y="1.0" UP_VECTOR_Z="0.0" FOV="40.0" NEAR_CLIP_PLANE="0.1" FAR_CLIP_PLANE="20.0"/>)",
+        R"(   <RmGLPass NAME="Shade" API="OpenGL" PASS_INDEX="0" ENABLED="TRUE">)",
+        R"(    <RmModelReference NAME="Shape" API=""/>)",
+        R"(    <RmRenderStateBlock NAME="Render State Block" API="OpenGL">)",
+        R"(     <RmState NAME="GL_CullMode" API="OpenGL" STATE="8" VALUE="3" USAGE="RENDER_STATE"/>)",
+        R"(    </RmRenderStateBlock>)",
+        R"(    <RmGLShader NAME="Vertex Program" API="OpenGL" PIXEL_SHADER="FALSE"><RmShaderCode TYPE="TEXT"><![CDATA[)",
+        "void main(void) { gl_Position = ftransform(); gl_TexCoord[0] = gl_MultiTexCoord0; }]]></RmShaderCode></RmGLShader>",
+        R"(    <RmGLShader NAME="Fragment Program" API="OpenGL" PIXEL_SHADER="TRUE"><RmShaderCode TYPE="TEXT"><![CDATA[)",
+        "void main(void) { gl_FragColor = vec4(gl_TexCoord[0].xy, 0.5, 1.0); }]]></RmShaderCode></RmGLShader>",
+        "   </RmGLPass>",
+        "  </RmOpenGLEffect>",
+        " </RmEffectWorkspace>",
+        "</RENDER_MONKEY>",
+    });
+}
+
+// Docs: RenderMonkey drew a model file's own coordinates. Assimp's 3DS importer stands the model
+// up from Z up to Y up and its .x importer mirrors z, flips v and reverses the winding; a model
+// that is asymmetric along every axis, with back faces culled and coloured by its texture
+// coordinates, shows each of those as a different picture.
+TEST_F(RfxModelRenderGLTest, ModelFilesDrawWithTheirOwnCoordinatesTexcoordsAndWinding) {
+    const Mesh boxes = asymmetricBoxes();
+    const int size = 96;
+    const glm::dmat4 view = glm::lookAt(glm::dvec3(1.6, 1.2, 2.0), glm::dvec3(0.3, 0.2, 0.1), glm::dvec3(0, 1, 0));
+    const glm::dmat4 projection = glm::perspective(40.0 * std::numbers::pi / 180.0, 1.0, 0.1, 20.0);
+    const MeshRayCast cast(boxes, glm::dmat4(1.0), view, projection, {size, size});
+    auto shade = [](const SurfaceHit& hit) { return ExpectedRange(glm::dvec4(hit.texcoord, 0.5, 1.0)); };
+    // Texture coordinates jump where two faces meet (each face of a box spans its box's range):
+    // only pixels whose centre and corners see one face (two triangles in a row) are compared.
+    auto oneFace = [&](const SurfaceHit& hit, int i, int j) {
+        for (double dx : {-0.35, 0.35})
+            for (double dy : {-0.35, 0.35}) {
+                const std::optional<SurfaceHit> corner = cast.at(i + 0.5 + dx, j + 0.5 + dy);
+                if (!corner || corner->triangle / 2 != hit.triangle / 2) return false;
+            }
+        return true;
+    };
+    for (const std::string model : {"Shape.3ds", "Shape.x", "Shape.obj"}) {
+        SCOPED_TRACE(model);
+        ScratchDir media;
+        if (model.ends_with(".3ds")) write3ds(media / model, boxes);
+        if (model.ends_with(".x")) writeDirectX(media / model, boxes);
+        if (model.ends_with(".obj")) writeObj(media / model, boxes);
+        const std::filesystem::path file = media.write("model.rfx", texcoordEffect(model));
+        renderAndCompare(loadRfxWithMedia(file, media.path()), {cast, shade, 1000, oneFace});
+    }
+}
+
+// RenderMonkey's ScreenAlignedQuad.3ds lies in its file's xy plane, and the full-screen passes
+// that draw it place its corners with sign(gl_Vertex.xy): rotated to y = 0 it would draw nothing.
+TEST_F(RfxModelRenderGLTest, AScreenAlignedQuadFromA3dsFileCoversTheScreen) {
+    ScratchDir media;
+    Mesh quad;
+    quad.positions = {{-1.2f, -0.8f, 0.0f}, {1.2f, -0.8f, 0.0f}, {1.2f, 0.8f, 0.0f}, {-1.2f, 0.8f, 0.0f}};
+    quad.texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    quad.indices = {0, 1, 2, 0, 2, 3};
+    write3ds(media / "ScreenAlignedQuad.3ds", quad);
+    std::string effect = texcoordEffect("ScreenAlignedQuad.3ds");
+    const std::string transform = "gl_Position = ftransform();";
+    effect.replace(effect.find(transform), transform.size(), "gl_Position = vec4(sign(gl_Vertex.xy), 0.0, 1.0);");
+    auto ws = loadRfxWithMedia(media.write("quad.rfx", effect), media.path());
+    ASSERT_TRUE(ws);
+    const int size = 32;
+    GlRun run = runWorkspace(std::move(ws), RunSettings{{size, size}});
+    ASSERT_TRUE(run.exec);
+    RefImage image = readRef(run, run.ws->outputTargetName());
+    double worst = 0.0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const glm::dvec4 expected((x + 0.5) / size, (y + 0.5) / size, 0.5, 1.0);  // y from the bottom
+            const glm::dvec4 d = glm::abs(image.at(x, y) - expected);
+            worst = std::max({worst, d.x, d.y, d.z, d.w});
+        }
+    expectWithin("max abs error against (u, v, 0.5) across the screen", worst, 0.5 * kUnorm8Step + 1e-4);
 }
 
 // Public RenderMonkey files, from RMFX_PUBLIC_RFX_DIR; the test is skipped without it.

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "tests/support/ModelFiles.h"
 #include "tests/support/TestSupport.h"
 
 namespace rmfx {
@@ -31,7 +32,70 @@ glm::vec3 faceNormal(const Mesh& mesh, size_t t) {
     return glm::normalize(glm::cross(b - a, c - a));
 }
 
+// Every triangle written is in the loaded mesh with the same positions and texture coordinates
+// in the same winding (any rotation of its corners), and as many triangles as written.
+void expectTheFilesOwnTriangles(const Mesh& loaded, const Mesh& written) {
+    ASSERT_EQ(loaded.triangleCount(), written.triangleCount());
+    auto same = [&](uint32_t l, uint32_t w) {
+        return glm::distance(loaded.positions[l], written.positions[w]) < 1e-5f &&
+               glm::distance(loaded.texcoords[l], written.texcoords[w]) < 1e-5f;
+    };
+    for (size_t t = 0; t < written.triangleCount(); ++t) {
+        const uint32_t* w = &written.indices[3 * t];
+        bool found = false;
+        for (size_t u = 0; u < loaded.triangleCount() && !found; ++u) {
+            const uint32_t* l = &loaded.indices[3 * u];
+            for (int r = 0; r < 3 && !found; ++r)
+                found = same(l[r], w[0]) && same(l[(r + 1) % 3], w[1]) && same(l[(r + 2) % 3], w[2]);
+        }
+        EXPECT_TRUE(found) << "triangle " << t << " (" << w[0] << ", " << w[1] << ", " << w[2]
+                           << ") is not in the loaded mesh as written";
+    }
+    // Generated normals (smoothed over the corners: the boxes' faces meet there) lean to the side
+    // the file's triangles wind counter-clockwise for.
+    for (size_t t = 0; t < loaded.triangleCount(); ++t)
+        for (int k = 0; k < 3; ++k)
+            EXPECT_GT(glm::dot(faceNormal(loaded, t), loaded.normals[loaded.indices[3 * t + k]]), 0.0f) << "triangle " << t;
+}
+
 }  // namespace
+
+// RenderMonkey drew a model's own numbers; Assimp's 3DS importer rotates Z up to Y up, its .x
+// importer mirrors z, flips v and reverses the winding, and loadModel undoes both.
+TEST(ModelLoader, ThreeDsCoordinatesAreTheFilesOwn) {
+    test::ScratchDir dir;
+    const Mesh boxes = test::asymmetricBoxes();
+    test::write3ds(dir / "boxes.3ds", boxes);
+    const Result<Mesh> plain = loadModel(dir / "boxes.3ds");
+    ASSERT_TRUE(plain) << plain.error();
+    expectWellFormed(*plain);
+    expectTheFilesOwnTriangles(*plain, boxes);
+    // With local axes (a rotation about z and an origin), the vertices are still world space.
+    test::write3ds(dir / "axes.3DS", boxes, std::array<float, 12>{0, 1, 0, -1, 0, 0, 0, 0, 1, 2, 3, 4});
+    const Result<Mesh> withAxes = loadModel(dir / "axes.3DS");
+    ASSERT_TRUE(withAxes) << withAxes.error();
+    expectTheFilesOwnTriangles(*withAxes, boxes);
+}
+
+TEST(ModelLoader, DirectXCoordinatesTexcoordsAndWindingAreTheFilesOwn) {
+    test::ScratchDir dir;
+    const Mesh boxes = test::asymmetricBoxes();
+    test::writeDirectX(dir / "boxes.x", boxes);
+    const Result<Mesh> mesh = loadModel(dir / "boxes.x");
+    ASSERT_TRUE(mesh) << mesh.error();
+    expectWellFormed(*mesh);
+    expectTheFilesOwnTriangles(*mesh, boxes);
+}
+
+TEST(ModelLoader, ObjCoordinatesAreTheFilesOwn) {
+    test::ScratchDir dir;
+    Mesh boxes = test::asymmetricBoxes();
+    boxes.normals.clear();  // generated, as for the other formats
+    test::writeObj(dir / "boxes.obj", boxes);
+    const Result<Mesh> mesh = loadModel(dir / "boxes.obj");
+    ASSERT_TRUE(mesh) << mesh.error();
+    expectTheFilesOwnTriangles(*mesh, boxes);
+}
 
 TEST(ModelLoader, TriangleWithoutNormalsOrTexcoords) {
     test::ScratchDir dir;

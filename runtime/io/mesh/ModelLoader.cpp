@@ -1,6 +1,8 @@
 #include "io/mesh/ModelLoader.h"
 
+#include <cctype>
 #include <cmath>
+#include <utility>
 #include <system_error>
 #include <vector>
 
@@ -16,6 +18,26 @@ namespace {
 constexpr uint32_t kUnused = UINT32_MAX;
 
 glm::vec3 toGlm(const aiVector3D& v) { return {v.x, v.y, v.z}; }
+
+// What an Assimp importer changed from the file's numbers, to be undone (ModelLoader.h).
+enum class ImportedConvention { FileOwn, ZUpRotatedToYUp, LeftHandedMirrored };
+
+ImportedConvention conventionOf(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension == ".3ds") return ImportedConvention::ZUpRotatedToYUp;
+    if (extension == ".x") return ImportedConvention::LeftHandedMirrored;
+    return ImportedConvention::FileOwn;
+}
+
+// Back to the file's left-handed numbers: z and the normals' z mirrored again, v flipped back,
+// and each triangle's winding reversed back (which keeps the normals on the same side).
+void unmirrorLeftHanded(Mesh& mesh) {
+    for (glm::vec3& p : mesh.positions) p.z = -p.z;
+    for (glm::vec3& n : mesh.normals) n.z = -n.z;
+    for (glm::vec2& t : mesh.texcoords) t.y = 1.0f - t.y;
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+}
 
 bool isUsableNormal(glm::vec3 n) {
     const float length = glm::length(n);
@@ -69,17 +91,29 @@ Result<Mesh> loadModel(const std::filesystem::path& path) {
     if (!std::filesystem::exists(path, ec)) return Error{name + ": no such model file"};
     if (!std::filesystem::is_regular_file(path, ec)) return Error{name + ": not a model file (not a regular file)"};
 
+    const ImportedConvention convention = conventionOf(path);
     Assimp::Importer importer;
-    const aiScene* scene = importer.ReadFile(
-        name, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
-                  aiProcess_PreTransformVertices);
+    const aiScene* scene =
+        importer.ReadFile(name, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices);
     if (!scene) return Error{name + ": cannot load model: " + importer.GetErrorString()};
     if (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) return Error{name + ": cannot load model: the scene is incomplete"};
+    // The 3DS importer puts its Z-up to Y-up rotation R, (x, y, z) → (x, z, −y), on the root node
+    // (root = R · root); R⁻¹ takes it off again.
+    if (convention == ImportedConvention::ZUpRotatedToYUp && scene->mRootNode) {
+        const aiMatrix4x4 inverseOfR(1, 0, 0, 0,  //
+                                     0, 0, -1, 0,  //
+                                     0, 1, 0, 0,   //
+                                     0, 0, 0, 1);
+        scene->mRootNode->mTransformation = inverseOfR * scene->mRootNode->mTransformation;
+    }
+    scene = importer.ApplyPostProcessing(aiProcess_PreTransformVertices);
+    if (!scene) return Error{name + ": cannot load model: " + importer.GetErrorString()};
 
     Mesh mesh;
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) appendTriangles(*scene->mMeshes[m], mesh);
     if (mesh.indices.empty()) return Error{name + ": the model has no triangles"};
     repairNormals(mesh);
+    if (convention == ImportedConvention::LeftHandedMirrored) unmirrorLeftHanded(mesh);
     return mesh;
 }
 
