@@ -270,6 +270,32 @@ void main() { gl_FragColor = vec4(gl_LightSource[0].diffuse.g, gl_FrontMaterial.
     EXPECT_FLOAT_EQ(image->at(1, 1, 2), 1.0f);
 }
 
+// A shader without #version written for lenient drivers (int to float, an error in GLSL 1.10)
+// renders with GLSL 1.20's rules and says so.
+TEST_F(LegacyDialectsGLTest, ALenientShaderRendersWithGlsl120RulesAndAWarning) {
+    ScratchDir dir;
+    std::filesystem::path file = dir.write("lenient.xml", R"(<workspace version="1" name="lenient" size="4x4" profile="compatibility">
+  <output format="rgba32f"/>
+  <pass name="light">
+    <shader stage="fragment" dialect="glsl110"><![CDATA[
+const float PI = 3.14159265;
+const float SCALE = 5 * PI;
+void main() { float quarter = 1; gl_FragColor = vec4(SCALE / 100.0, quarter / 4.0, 0.0, 1.0); }
+]]></shader>
+  </pass>
+</workspace>
+)");
+    std::filesystem::path exr = dir / "lenient.exr";
+    CommandResult cli = runRmfx("render " + shellQuoted(file) + " -o " + shellQuoted(exr), dir.path());
+    ASSERT_EQ(cli.status, 0) << cli.err;
+    EXPECT_NE(cli.err.find("lenient.xml:4: warning: <pass name=\"light\">: fragment shader without #version: GLSL 1.10 rejects it"),
+              std::string::npos) << cli.err;
+    auto image = readImage(exr);
+    ASSERT_TRUE(image) << image.error();
+    EXPECT_NEAR(image->at(1, 1, 0), 5.0 * 3.14159265 / 100.0, 1e-6);
+    EXPECT_FLOAT_EQ(image->at(1, 1, 1), 0.25f);
+}
+
 // RenderMonkey's window showed colour only: an imported effect's output goes to an 8-bit file
 // without alpha (gl_legacy.rfx writes (0.45, 0.525, 0.6), alpha 1); an .exr keeps all four.
 TEST_F(LegacyDialectsGLTest, RenderCommandWritesAnImportedEffectsOutputWithoutAlphaTo8BitFiles) {

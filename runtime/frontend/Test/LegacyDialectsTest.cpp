@@ -146,6 +146,57 @@ void main() { gl_FragColor = gl_FrontMaterial.diffuse; }
     EXPECT_NE(all.find("gl_FrontMaterial"), std::string::npos) << all;
 }
 
+// Written for lenient drivers: int to float, which GLSL 1.10 does not convert implicitly.
+std::string lenientWorkspace(const std::string& dialect, const std::string& versionLine = "") {
+    return R"(<workspace version="1" profile="compatibility">
+  <pass name="lenient">
+    <shader stage="fragment" dialect=")" + dialect + R"("><![CDATA[)" + versionLine + R"(
+const float PI = 3.14159265;
+const float SCALE = 5 * PI;
+void main() { float quarter = 1; gl_FragColor = vec4(SCALE / 100.0, quarter / 4.0, 0.0, 1.0); }
+]]></shader>
+  </pass>
+</workspace>)";
+}
+
+TEST(LegacyDialects, ALegacyShaderWithoutVersionThat110RejectsCompilesWith120sRulesAndAWarning) {
+    Result<Workspace> parsed = parse(lenientWorkspace("glsl110"));
+    ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
+    Diagnostics d = validateWorkspace(*parsed).diagnostics();
+    EXPECT_FALSE(hasErrors(d)) << formatAll(d);
+    const std::string all = formatAll(d);
+    EXPECT_NE(all.find("legacy.xml:3: warning: <pass name=\"lenient\">: fragment shader without #version: GLSL 1.10 "
+                       "rejects it ("),
+              std::string::npos) << all;
+    EXPECT_NE(all.find("), so it is compiled with GLSL 1.20's rules (implicit int to float)"), std::string::npos) << all;
+    Result<PassProgramSource> program = assemblePassProgram(*parsed, parsed->passes.at(0), {});
+    ASSERT_TRUE(program) << formatAll(program.diagnostics());
+    const PassStage& fragment = program->stages.at(1);
+    EXPECT_EQ(fragment.shader.code.rfind("#version 120\n", 0), 0u) << fragment.shader.code;
+    EXPECT_EQ(fragment.shader.origin(3).line, 4);  // "const float PI" still maps to its own line
+}
+
+TEST(LegacyDialects, NoRetryForGlslEsAnExplicitVersionOrAShaderThat120RejectsToo) {
+    for (const auto& [xml, error] :
+         {std::pair{lenientWorkspace("glsles100", "precision mediump float;"), std::string("legacy.xml:5: error")},
+          std::pair{lenientWorkspace("glsl110", "#version 110"), std::string("legacy.xml:5: error")}}) {
+        Result<Workspace> parsed = parse(xml);
+        ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
+        const std::string all = formatAll(validateWorkspace(*parsed).diagnostics());
+        EXPECT_NE(all.find(error), std::string::npos) << all;
+        EXPECT_EQ(all.find("GLSL 1.20"), std::string::npos) << all;
+    }
+    std::string both = lenientWorkspace("glsl110");  // valid 1.10 but for an undeclared name
+    both.replace(both.find("5 * PI"), 6, "5.0 * PI");
+    both.replace(both.find("quarter = 1;"), 12, "quarter = 1.0;");
+    both.replace(both.find("quarter / 4.0"), 13, "undeclared");
+    Result<Workspace> parsed = parse(both);
+    ASSERT_TRUE(parsed.ok());
+    const std::string all = formatAll(validateWorkspace(*parsed).diagnostics());
+    EXPECT_NE(all.find("legacy.xml:6: error: <pass name=\"lenient\">: 'undeclared' : undeclared identifier"), std::string::npos) << all;
+    EXPECT_EQ(all.find("GLSL 1.20"), std::string::npos) << all;
+}
+
 TEST(LegacyDialects, BuiltinVertexShaderFollowsTheFragmentDialect) {
     EXPECT_EQ(builtinFullscreenVertexShader(ShaderDialect::GlslLegacy).rfind("#version 110\nattribute vec3 rm_Position;", 0), 0u);
     EXPECT_NE(builtinFullscreenVertexShader(ShaderDialect::GlslLegacy).find("gl_TexCoord[0]"), std::string::npos);

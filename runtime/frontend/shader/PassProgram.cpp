@@ -1,6 +1,7 @@
 #include "frontend/shader/PassProgram.h"
 
 #include "frontend/shader/HlslTranslationCache.h"
+#include "frontend/shader/LegacyGlslVersion.h"
 
 namespace rmfx {
 
@@ -50,6 +51,14 @@ void main() {
 )" + legacyTexCoord(dialect) + "}\n";
 }
 
+// Whether preprocessed code opens with its #version line (the preprocessor moves it first).
+static bool startsWithVersion(const std::string& code) {
+    size_t at = code.find_first_not_of(" \t");
+    if (at == std::string::npos || code[at] != '#') return false;
+    at = code.find_first_not_of(" \t", at + 1);
+    return at != std::string::npos && code.compare(at, 7, "version") == 0;
+}
+
 std::string passLabel(const Pass& pass) { return "<pass name=\"" + pass.name + "\">"; }
 
 Result<PassProgramSource> assemblePassProgram(const Workspace& ws, const Pass& pass,
@@ -93,6 +102,17 @@ Result<PassProgramSource> assemblePassProgram(const Workspace& ws, const Pass& p
         size_t before = diagnostics.size();
         auto failed = [&] { return hasErrors(Diagnostics(diagnostics.begin() + static_cast<long>(before), diagnostics.end())); };
         PassStage stage{s.stage, preprocessShader(input, diagnostics), s.where, false, s.dialect};
+        if (s.dialect == ShaderDialect::GlslLegacy && !failed() && !startsWithVersion(stage.shader.code)) {
+            if (std::optional<std::string> why = rejectedOnlyByGlsl110(stage.shader.code, s.stage)) {
+                stage.shader.code.insert(0, "#version 120\n");
+                stage.shader.lineOrigins.insert(stage.shader.lineOrigins.begin(), stage.shader.origin(1));
+                diagnostics.push_back({Diagnostic::Severity::Warning, s.where, passLabel(pass),
+                                       std::string(s.stage == ShaderStage::Vertex ? "vertex" : "fragment") +
+                                           " shader without #version: GLSL 1.10 rejects it (" + *why +
+                                           "), so it is compiled with GLSL 1.20's rules (implicit int to float), "
+                                           "as the lenient drivers it was written for did"});
+            }
+        }
         if (s.dialect == ShaderDialect::Hlsl && !failed()) {
             HlslStage hlsl{s.stage, s.entryPoint, s.profile};
             Result<HlslTranslation> translated =
