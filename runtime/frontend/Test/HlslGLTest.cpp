@@ -146,6 +146,42 @@ float4 main(float2 uv : TEXCOORD0) : COLOR { return tex2D(baseMap, uv) * gain; }
             expectNear(pixel(out, x, y), 2.0 * image.at(x, y), 1e-6, "texel " + std::to_string(x) + "," + std::to_string(y));
 }
 
+// Direct3D 9's untyped `sampler` read with texCUBE is a cube map (glslang alone makes it 2D and
+// the pass fails): each axis direction reads its own face.
+TEST_F(HlslGLTest, AnUntypedSamplerReadWithTexCubeSamplesTheCubeMap) {
+    ScratchDir dir;
+    const char* sides[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+    for (int face = 0; face < 6; ++face) {
+        RefImage image(2, 2);
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < 2; ++x) image.at(x, y) = {0.125 * (face + 1), 1.0, 0.0, 1.0};
+        writeFloatExr(dir / (std::string(sides[face]) + ".exr"), image);
+    }
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x4">
+  <cubemap name="Sky">
+    <face side="+x" file="px.exr"/> <face side="-x" file="nx.exr"/> <face side="+y" file="py.exr"/>
+    <face side="-y" file="ny.exr"/> <face side="+z" file="pz.exr"/> <face side="-z" file="nz.exr"/>
+  </cubemap>
+  <target name="out" format="rgba32f" size="4x4"/>
+  <pass name="hlsl" target="out">
+    <sampler name="Sky" texture="Sky" filter="nearest"/>
+    <shader stage="fragment"><![CDATA[
+sampler Sky : register(s0);
+float4 main(float2 uv : TEXCOORD0) : COLOR {
+    // Column x looks along +x, -y, +z, -z.
+    float3 directions[4] = { float3(1, 0.1, 0.2), float3(0.1, -1, 0.2), float3(0.2, 0.1, 1), float3(0.1, 0.2, -1) };
+    return texCUBE(Sky, directions[int(uv.x * 4)]);
+}
+]]></shader>
+  </pass>
+</workspace>)";
+    RefImage out = renderOut(xml, dir.path());
+    ASSERT_EQ(out.width, 4);
+    const int faceOfColumn[4] = {0, 3, 4, 5};  // +x, -y, +z, -z in OpenGL's face order
+    for (int x = 0; x < 4; ++x)
+        expectNear(pixel(out, x, 1), {0.125 * (faceOfColumn[x] + 1), 1.0, 0.0, 1.0}, 1e-6, "column " + std::to_string(x));
+}
+
 // A pass with a pixel shader only: Direct3D's fixed-function vertex processing gives it the
 // mesh's texture coordinates (TEXCOORDn, as (u, v, 0, 1)) and white (COLORn); rmfx's built-in
 // vertex shader hands it the same. On the full-screen triangle (u, v) is the pixel's position.
@@ -192,6 +228,33 @@ float4 main(float2 uv : TEXCOORD0) : COLOR { return Tint + Forgotten * uv.x; }
     RefImage out = renderOut(xml);
     ASSERT_EQ(out.width, 4);
     for (int x = 0; x < 4; ++x) expectNear(pixel(out, x, 1), {0.25, 0.5, 0.75, 1.0}, 1e-6, "pixel " + std::to_string(x));
+}
+
+// fxc's brace elision: an array of float2 and one of float2x2 initialised by flat lists of scalars
+// (as RenderMonkey's gausBlur samples), a trailing comma and a comment with commas included.
+TEST_F(HlslGLTest, FlatScalarListsInitialiseArraysOfVectorsAndMatricesAsFxcDid) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x4">
+  <target name="out" format="rgba32f" size="4x4"/>
+  <pass name="hlsl" target="out">
+    <shader stage="fragment"><![CDATA[
+static const float2 offsets[3] = {
+   0.125, 0.25,   // first, (x, y)
+   0.375, 0.5,
+   0.625, 0.75,
+};
+static const float2x2 turns[2] = { 1, 2, 3, 4,  5, 6, 7, 8 };
+float4 main(float2 uv : TEXCOORD0) : COLOR {
+    float2 sum = offsets[0] + offsets[1] + offsets[2];
+    return float4(sum, offsets[2].y, turns[1][0][1] + turns[0][1][0]);
+}
+]]></shader>
+  </pass>
+</workspace>)";
+    RefImage out = renderOut(xml);
+    ASSERT_EQ(out.width, 4);
+    // turns[1] = float2x2(5, 6, 7, 8): row 0 (5, 6), so [0][1] = 6; turns[0][1][0] = 3.
+    for (int x = 0; x < 4; ++x)
+        expectNear(pixel(out, x, 2), {0.125 + 0.375 + 0.625, 0.25 + 0.5 + 0.75, 0.75, 6.0 + 3.0}, 1e-6, "pixel " + std::to_string(x));
 }
 
 // An input fixed-function processing does not give is an error naming the semantic.

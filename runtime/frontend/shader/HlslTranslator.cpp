@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "frontend/shader/BracketNesting.h"
+#include "frontend/shader/HlslBraceElision.h"
+#include "frontend/shader/HlslSamplerTypes.h"
 #include "frontend/shader/HlslGlobalInitializers.h"
 #include "frontend/shader/HlslWorker.h"
 
@@ -151,6 +153,8 @@ Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const
     // The preprocessor puts a GLSL #version first; HLSL has none. Blank it, keeping the line count.
     std::string code = hlsl.code;
     if (code.rfind("#version", 0) == 0) code.erase(0, code.find('\n'));
+    // What fxc accepted and glslang does not, written out: brace elision, untyped samplers.
+    code = typeGenericSamplers(nestFlatArrayInitializers(code));
 
     // Debian's glslang crashes on mismatched brackets (BracketNesting.h): reported here, with their line.
     if (std::optional<BracketMismatch> bad = findBracketMismatch(code)) {

@@ -1,0 +1,88 @@
+#include "frontend/shader/HlslSamplerTypes.h"
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <set>
+#include <string_view>
+#include <vector>
+
+#include "core/IdentifierSearch.h"
+
+namespace rmfx {
+namespace {
+
+bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// Every whole identifier in `code`, with its offset.
+std::vector<std::pair<size_t, std::string_view>> identifiers(std::string_view code) {
+    std::vector<std::pair<size_t, std::string_view>> out;
+    for (size_t i = 0; i < code.size();) {
+        if (!identifierChar(code[i]) || std::isdigit(static_cast<unsigned char>(code[i]))) {
+            // Skip a number whole (1e5f, 0x1F), so its letters are not taken for identifiers.
+            if (std::isdigit(static_cast<unsigned char>(code[i])))
+                while (i < code.size() && (identifierChar(code[i]) || code[i] == '.')) ++i;
+            else
+                ++i;
+            continue;
+        }
+        size_t start = i;
+        while (i < code.size() && identifierChar(code[i])) ++i;
+        out.emplace_back(start, code.substr(start, i - start));
+    }
+    return out;
+}
+
+// The sampler type a texture function's name implies, or "" for tex2D… and anything else.
+std::string_view impliedType(std::string_view function) {
+    if (function.starts_with("texCUBE")) return "samplerCUBE";
+    if (function.starts_with("tex3D")) return "sampler3D";
+    if (function.starts_with("tex1D")) return "sampler1D";
+    if (function.starts_with("tex2D")) return "sampler2D";
+    return "";
+}
+
+}  // namespace
+
+std::string typeGenericSamplers(const std::string& original) {
+    const std::string blanked = withoutComments(original);
+    const std::string_view code = blanked;
+    const auto words = identifiers(code);
+    // Declarations: `sampler NAME` at brace depth 0.
+    std::map<std::string_view, size_t> declared;  // name → offset of its `sampler` keyword
+    int depth = 0;
+    size_t scanned = 0;
+    for (size_t w = 0; w + 1 < words.size(); ++w) {
+        for (; scanned < words[w].first; ++scanned) depth += code[scanned] == '{' ? 1 : code[scanned] == '}' ? -1 : 0;
+        if (depth == 0 && words[w].second == "sampler") declared.emplace(words[w + 1].second, words[w].first);
+    }
+    if (declared.empty()) return original;
+    // Reads: FUNCTION ( NAME ,
+    std::map<std::string_view, std::set<std::string_view>> reads;
+    for (size_t w = 0; w + 1 < words.size(); ++w) {
+        std::string_view type = impliedType(words[w].second);
+        if (type.empty()) continue;
+        const size_t after = words[w].first + words[w].second.size();
+        const size_t paren = code.find_first_not_of(" \t\r\n", after);
+        if (paren == std::string_view::npos || code[paren] != '(') continue;
+        const size_t argument = code.find_first_not_of(" \t\r\n", paren + 1);
+        if (argument == std::string_view::npos || argument != words[w + 1].first) continue;
+        if (declared.count(words[w + 1].second)) reads[words[w + 1].second].insert(type);
+    }
+    std::vector<std::pair<size_t, std::string_view>> edits;  // keyword offset, new type
+    for (const auto& [name, types] : reads)
+        if (types.size() == 1 && *types.begin() != "sampler2D") edits.emplace_back(declared.at(name), *types.begin());
+    if (edits.empty()) return original;
+    std::sort(edits.begin(), edits.end());
+    std::string out;
+    size_t copied = 0;
+    for (const auto& [at, type] : edits) {
+        out.append(original, copied, at - copied);
+        out += type;
+        copied = at + std::string_view("sampler").size();
+    }
+    out.append(original, copied);
+    return out;
+}
+
+}  // namespace rmfx
