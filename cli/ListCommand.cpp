@@ -1,6 +1,8 @@
 // rmfx list FILE.rfx: what a RenderMonkey workspace holds and what each effect needs to run.
 
 #include <iostream>
+#include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -8,6 +10,9 @@
 #include "cli/Commands.h"
 #include "core/IdentifierSearch.h"
 #include "frontend/rfx/RfxImporter.h"
+#include "io/media/MediaArguments.h"
+#include "io/media/MediaResolver.h"
+#include "model/BuiltinMeshNames.h"
 #include "model/VertexUsageName.h"
 #include "validation/Validation.h"
 
@@ -107,28 +112,64 @@ void describePass(std::ostream& out, const Workspace& ws, const Pass& pass, cons
     if (shown.empty()) out << "        (none)\n";
 }
 
-void describeWorkspace(std::ostream& out, const Workspace& ws) {
+// Each texture and model file as written, and where it is found, or that it is missing and what
+// stands in for it.
+void describeMedia(std::ostream& out, const Workspace& ws, const MediaOptions& options) {
+    std::map<std::string, std::string> standIns;  // reference → what stands in when it is missing
+    const bool placeholders = options.missing == MissingMedia::Placeholder;
+    for (const Texture& t : ws.textures)
+        for (const std::string& file : t.files)
+            standIns.emplace(file, placeholders ? "a magenta and grey checker stands in" : "");
+    for (const Pass& p : ws.passes) {
+        if (p.draw.file.empty()) continue;
+        if (std::optional<BuiltinMesh> stock = stockModelStandIn(p.draw.file))
+            standIns.emplace(p.draw.file, std::string("rmfx's built-in '") + builtinMeshName(*stock) + "' stands in");
+        else
+            standIns.emplace(p.draw.file, placeholders ? std::string("rmfx's built-in '") +
+                                                             builtinMeshName(placeholderMeshFor(p.draw.file)) + "' stands in"
+                                                       : "");
+    }
+    MediaResolver resolver(ws.folder, options);
+    std::ostringstream lines;
+    int missing = 0;
+    for (const auto& [reference, standIn] : standIns) {
+        MediaResolver::Found found = resolver.resolve(reference, "file");
+        lines << "      " << reference;
+        if (found.file) {
+            if (found.file->generic_string() != reference) lines << " → " << found.file->generic_string();
+        } else if (found.missing) {
+            ++missing;
+            lines << ": missing" << (standIn.empty() ? " (an error; --missing-media placeholder renders with a stand-in)" : "; " + standIn);
+        } else {
+            lines << ": " << found.error;
+        }
+        lines << "\n";
+    }
+    out << "    media files:" << (standIns.empty() ? " none" : "");
+    if (missing) out << " " << missing << " of " << standIns.size() << " missing";
+    out << "\n" << lines.str();
+}
+
+void describeWorkspace(std::ostream& out, const Workspace& ws, const MediaOptions& media) {
     for (size_t i = 0; i < ws.passes.size(); ++i)
         describePass(out, ws, ws.passes[i], i ? &ws.passes[i - 1] : nullptr);
     for (const RenderTarget& t : ws.targets)
         out << "    target '" << t.name << "': " << targetFormatName(t.format) << ", " << sizeText(t.size)
             << (t.mipmaps ? ", mipmaps" : "") << "\n";
-    std::set<std::string> media;
-    for (const Texture& t : ws.textures) media.insert(t.files.begin(), t.files.end());
-    for (const Pass& p : ws.passes)
-        if (!p.draw.file.empty()) media.insert(p.draw.file);
-    out << "    media files:" << (media.empty() ? " none" : "") << "\n";
-    for (const std::string& m : media) out << "      " << m << "\n";
+    describeMedia(out, ws, media);
 }
 
 }  // namespace
 
 int listCommand(const std::vector<std::string>& args) {
     std::vector<std::string> files;
+    MediaOptions media;
     ArgumentParser parser;
     parser.positional([&](const std::string& file) { files.push_back(file); return ""; });
-    if (!parser.parse(args).empty() || files.size() != 1) {
-        std::cerr << "rmfx list: usage: rmfx list FILE.rfx\n";
+    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, media); });
+    if (std::string error = parser.parse(args); !error.empty() || files.size() != 1) {
+        std::cerr << "rmfx list: " << (error.empty() ? "" : error + "; ")
+                  << "usage: rmfx list FILE.rfx [--media DIR ...] [--missing-media error|placeholder]\n";
         return 1;
     }
     const std::string& path = files[0];
@@ -150,7 +191,7 @@ int listCommand(const std::vector<std::string>& args) {
             status = 1;
             continue;
         }
-        describeWorkspace(std::cout, *parsed);
+        describeWorkspace(std::cout, *parsed, media);
     }
     return status;
 }

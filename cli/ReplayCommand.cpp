@@ -38,6 +38,7 @@ struct ReplayArguments {
     double frameBudget = kDefaultFrameBudgetSeconds;
     std::vector<fs::path> media;   // --media, after the manifest's <media> folders
     std::optional<bool> sandbox;   // --sandbox / --no-sandbox; nullopt: the manifest's choice (default on)
+    MissingMedia missing = MissingMedia::Error;  // --missing-media
 };
 
 std::optional<ReplayArguments> parseArguments(const std::vector<std::string>& args) {
@@ -53,6 +54,7 @@ std::optional<ReplayArguments> parseArguments(const std::vector<std::string>& ar
               auto taken = takeMediaArgument(all, i, media);
               if (taken && taken->empty()) {
                   if (arg == "--media") a.media.push_back(media.searchPath[0]);
+                  else if (arg.rfind("--missing-media", 0) == 0) a.missing = media.missing;
                   else a.sandbox = media.sandbox;
               }
               return taken;
@@ -339,6 +341,7 @@ int replayCommand(const std::vector<std::string>& args) {
     MediaOptions media = manifest.media;
     media.searchPath.insert(media.searchPath.end(), a->media.begin(), a->media.end());
     media.sandbox = a->sandbox.value_or(media.sandbox);
+    media.missing = a->missing;
     ReplayRunner runner(*a, contexts, std::move(media), manifest.folder);
     std::optional<ReplayReportWriter> report;
     int status = 0;

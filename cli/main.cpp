@@ -122,7 +122,7 @@ bench options:
                          rasterising), else gpu. CSV and JSON always hold both
   -q, --quiet            print only errors, no progress line per variant
 
-file options (render, validate, edit, bench, replay; docs/media.md):
+file options (render, validate, edit, bench, replay; --media and --missing-media on list too; docs/media.md):
   --media DIR            also look for textures, models and shader files in DIR (repeatable, in
                          order), by their trailing path components, then by file name; names are
                          matched ignoring case and "\" separates, as in RenderMonkey files
@@ -130,6 +130,10 @@ file options (render, validate, edit, bench, replay; docs/media.md):
                          folder and the --media folders ("..", absolute paths, symbolic links)
   --no-sandbox           no sandbox: the default, except for replay, which sandboxes unless told
                          so here or by its manifest (<replay sandbox="false">)
+  --missing-media error|placeholder
+                         a texture or model found nowhere: an error (default), or a stand-in with
+                         a warning: a magenta and grey checker, the built-in mesh its file name
+                         names (teapot, sphere, torus, quad, plane) or a cube (also on list)
 
 exit status: render, validate, edit: 0 success, 1 invalid workspace or arguments, 2 rendering or
 GL failure (edit: also no window, or an rmfx built without the editor), 3 a frame past its

@@ -157,3 +157,113 @@ TEST_F(CliMediaGLTest, DdsCubeMapInOneFileIsSampledByDirection) {
 }
 
 }  // namespace rmfx::test
+
+namespace rmfx::test {
+
+// --missing-media placeholder: a missing texture and cube map read as the magenta and grey
+// checker, a missing model named like a torus draws exactly as the built-in torus, one warning
+// each; without it the same files are errors. `rmfx list` says which media are missing.
+TEST_F(CliMediaGLTest, MissingMediaPlaceholdersRenderWithAWarningPerFile) {
+    ScratchDir dir;
+    auto workspace = [](const std::string& draw) {
+        return lines({
+            "<workspace version=\"1\" name=\"missing\" size=\"64x64\">",
+            "  <texture name=\"stone\" file=\"C:\\RenderMonkey\\Media\\Fieldstone.tga\" mipmaps=\"false\"/>",
+            "  <cubemap name=\"sky\" file=\"C:\\RenderMonkey\\Media\\Sky.dds\"/>",
+            "  <output format=\"rgba32f\"/>",
+            "  <pass name=\"show\">",
+            "    <sampler name=\"stoneMap\" texture=\"stone\" filter=\"nearest\"/>",
+            "    <sampler name=\"skyMap\" texture=\"sky\" filter=\"nearest\"/>",
+            "    " + draw,
+            "    <shader stage=\"fragment\"><![CDATA[",
+            "#version 450 core",
+            "uniform sampler2D stoneMap;",
+            "uniform samplerCube skyMap;",
+            "out vec4 fragColor;",
+            "void main() {",
+            "    ivec2 p = ivec2(gl_FragCoord.xy);",
+            "    fragColor = vec4(texelFetch(stoneMap, p, 0).rg, texture(skyMap, vec3(1.0, 0.3, -0.2)).rb);",
+            "}",
+            "]]></shader>",
+            "  </pass>",
+            "</workspace>",
+        });
+    };
+    dir.write("fx.xml", workspace(""));
+    CommandResult strict = runRmfx("render fx.xml -o strict.exr", dir.path());
+    EXPECT_EQ(strict.status, 1);
+    EXPECT_TRUE(has(strict.err, "fx.xml:2: error: <texture name=\"stone\">: image file")) << strict.err;
+    EXPECT_TRUE(has(strict.err, "fx.xml:3: error: <cubemap name=\"sky\">: image file")) << strict.err;
+
+    CommandResult r = runRmfx("render fx.xml -o out.exr --missing-media placeholder", dir.path());
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(has(r.err, "fx.xml:2: warning: <texture name=\"stone\">: image file 'C:\\RenderMonkey\\Media\\Fieldstone.tga' not found"))
+        << r.err;
+    EXPECT_TRUE(has(r.err, "; a magenta and grey checker stands in for the texture (--missing-media placeholder)")) << r.err;
+    EXPECT_TRUE(has(r.err, "fx.xml:3: warning: <cubemap name=\"sky\">")) << r.err;
+    auto out = readImage(dir / "out.exr");
+    ASSERT_TRUE(out) << out.error();
+    // Every texel of the 2D placeholder is magenta (r 1, g 0) or grey (0.2, 0.2), in 8x8 squares.
+    int magenta = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const float red = out->at(x, y, 0), green = out->at(x, y, 1);
+            const bool isMagenta = red == 1.0f && green == 0.0f, isGrey = red == 0.2f && green == 0.2f;
+            ASSERT_TRUE(isMagenta || isGrey) << "pixel " << x << "," << y << ": " << red << " " << green;
+            magenta += isMagenta;
+            if (x + 8 < 64) {
+                EXPECT_NE(out->at(x + 8, y, 0), red) << "pixel " << x << "," << y;
+            }
+            if (x % 8) {
+                EXPECT_EQ(out->at(x - 1, y, 0), red) << "pixel " << x << "," << y;
+            }
+        }
+    EXPECT_EQ(magenta, 64 * 64 / 2);
+    // The cube map's sample: magenta (r 1, b 1) or grey (0.2, 0.2).
+    const float skyRed = out->at(5, 5, 2), skyBlue = out->at(5, 5, 3);
+    EXPECT_TRUE((skyRed == 1.0f && skyBlue == 1.0f) || (skyRed == 0.2f && skyBlue == 0.2f)) << skyRed << " " << skyBlue;
+
+    // A missing model named like a torus: the built-in torus, pixel for pixel.
+    const std::string shade = "fragColor = vec4(gl_FragCoord.z, 0.5, 0.25, 1.0);";
+    auto modelWorkspace = [&](const std::string& draw) {
+        std::string text = workspace(draw);
+        text.replace(text.find("fragColor = vec4(texelFetch"), std::string("fragColor = vec4(texelFetch(stoneMap, p, 0).rg, texture(skyMap, vec3(1.0, 0.3, -0.2)).rb);").size(), shade);
+        return text;
+    };
+    dir.write("model.xml", modelWorkspace("<draw file=\"..\\Models\\Donut_Torus.3ds\"/>"));
+    dir.write("torus.xml", modelWorkspace("<draw mesh=\"torus\"/>"));
+    CommandResult model = runRmfx("render model.xml -o model.exr --missing-media placeholder", dir.path());
+    ASSERT_EQ(model.status, 0) << model.err;
+    EXPECT_TRUE(has(model.err, "model.xml:8: warning: <draw>: model file '..\\Models\\Donut_Torus.3ds' not found")) << model.err;
+    EXPECT_TRUE(has(model.err, "drawing rmfx's built-in 'torus' in its place (--missing-media placeholder)")) << model.err;
+    ASSERT_EQ(runRmfx("render torus.xml -o torus.exr -q --missing-media placeholder", dir.path()).status, 0);
+    auto drawn = readImage(dir / "model.exr"), torus = readImage(dir / "torus.exr");
+    ASSERT_TRUE(drawn && torus);
+    EXPECT_EQ(drawn->pixels, torus->pixels);
+    int covered = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) covered += torus->at(x, y, 1) == 0.5f;
+    EXPECT_GT(covered, 200);  // the torus is in view, not an empty frame twice
+}
+
+TEST_F(CliMediaGLTest, ListShowsWhichMediaAreMissingAndWhatStandsIn) {
+    ScratchDir dir;
+    std::string rfx = readText(sourceDir() / "tests" / "rfx" / "lit_teapot.rfx");
+    dir.write("lit.rfx", rfx);
+    dir.write("Media/Textures/ramp.png", "");  // found by name through --media (list does not read it)
+    CommandResult plain = runRmfx("list lit.rfx", dir.path());
+    ASSERT_EQ(plain.status, 0) << plain.err;
+    EXPECT_TRUE(has(plain.out, "    media files: 2 of 2 missing\n")) << plain.out;
+    EXPECT_TRUE(has(plain.out, "      ..\\Media\\Textures\\RAMP.PNG: missing (an error; --missing-media placeholder renders with a stand-in)\n"))
+        << plain.out;
+    EXPECT_TRUE(has(plain.out, "Teapot.3ds: missing; rmfx's built-in 'teapot' stands in\n")) << plain.out;
+
+    CommandResult found = runRmfx("list lit.rfx --media Media --missing-media placeholder", dir.path());
+    ASSERT_EQ(found.status, 0) << found.err;
+    EXPECT_TRUE(has(found.out, "    media files: 1 of 2 missing\n")) << found.out;
+    EXPECT_TRUE(has(found.out, "      ..\\Media\\Textures\\RAMP.PNG → " + fs::weakly_canonical(dir / "Media/Textures/ramp.png").generic_string()))
+        << found.out;
+    EXPECT_EQ(runRmfx("list lit.rfx --missing-media sometimes", dir.path()).status, 1);
+}
+
+}  // namespace rmfx::test

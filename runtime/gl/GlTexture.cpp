@@ -100,20 +100,18 @@ GlTextureInfo uploadTexture2D(Image image, const Texture& texture) {
 
 Result<GlTextureInfo> loadGlTexture(const Workspace& ws, const Texture& texture) {
     GlTextureInfo info;
+    Result<CubeFaces> faces = Error{""};
     if (texture.supplied) {
-        if (texture.kind != TextureKind::Texture2D || texture.supplied->empty())
-            return Error{label(texture) + ": the image supplied for it is empty or not a 2D image"};
-        return uploadTexture2D(*texture.supplied, texture);
-    }
-    if (texture.files.empty()) return Error{label(texture) + ": no image was given for it (rmfx render --input " + texture.name + "=FILE)"};
-    if (texture.kind == TextureKind::Texture2D) {
+        if (texture.supplied->empty()) return Error{label(texture) + ": the image supplied for it is empty"};
+        if (texture.kind == TextureKind::Texture2D) return uploadTexture2D(*texture.supplied, texture);
+        faces = cubeFromImage(*texture.supplied);  // a placeholder's cross (io/image/PlaceholderImage)
+    } else if (texture.files.empty()) {
+        return Error{label(texture) + ": no image was given for it (rmfx render --input " + texture.name + "=FILE)"};
+    } else if (texture.kind == TextureKind::Texture2D) {
         auto image = readImage(ws.folder / texture.files[0]);
         if (!image) return Error{label(texture) + ": " + image.error()};
         return uploadTexture2D(std::move(*image), texture);
-    }
-
-    Result<CubeFaces> faces = Error{""};
-    if (texture.files.size() == 1 && isDdsFile(texture.files[0])) {
+    } else if (texture.files.size() == 1 && isDdsFile(texture.files[0])) {
         faces = readDdsCubeMap(ws.folder / texture.files[0]);
     } else if (texture.layout == CubeLayout::Faces) {
         std::array<Image, 6> images;

@@ -8,8 +8,9 @@ namespace rmfx {
 
 namespace {
 
-constexpr std::array<BuiltinMesh, 6> kAllBuiltins{BuiltinMesh::FullscreenTriangle, BuiltinMesh::Cube, BuiltinMesh::Sphere,
-                                                  BuiltinMesh::Plane, BuiltinMesh::Teapot, BuiltinMesh::Quad};
+constexpr std::array<BuiltinMesh, 7> kAllBuiltins{BuiltinMesh::FullscreenTriangle, BuiltinMesh::Cube, BuiltinMesh::Sphere,
+                                                  BuiltinMesh::Plane, BuiltinMesh::Teapot, BuiltinMesh::Quad,
+                                                  BuiltinMesh::Torus};
 
 bool equalsIgnoringCase(std::string_view a, std::string_view b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
@@ -25,6 +26,12 @@ std::optional<BuiltinMesh> builtinMeshFromName(std::string_view name) {
     return std::nullopt;
 }
 
+std::string builtinMeshNameList() {
+    std::string list;
+    for (BuiltinMesh m : kAllBuiltins) list += (list.empty() ? "" : ", ") + std::string(builtinMeshName(m));
+    return list;
+}
+
 const char* builtinMeshName(BuiltinMesh which) {
     switch (which) {
         case BuiltinMesh::FullscreenTriangle: return "fullscreen";
@@ -33,6 +40,7 @@ const char* builtinMeshName(BuiltinMesh which) {
         case BuiltinMesh::Plane: return "plane";
         case BuiltinMesh::Teapot: return "teapot";
         case BuiltinMesh::Quad: return "quad";
+        case BuiltinMesh::Torus: return "torus";
     }
     return "?";
 }

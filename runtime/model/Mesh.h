@@ -20,6 +20,6 @@ struct Mesh {
     size_t triangleCount() const { return indices.size() / 3; }
 };
 
-enum class BuiltinMesh { FullscreenTriangle, Cube, Sphere, Plane, Teapot, Quad };
+enum class BuiltinMesh { FullscreenTriangle, Cube, Sphere, Plane, Teapot, Quad, Torus };
 
 }  // namespace rmfx

@@ -395,9 +395,9 @@ TEST(WorkspaceParser, ClearNeedsSomething) {
 }
 
 TEST(WorkspaceParser, DrawNeedsAKnownMeshOrAFile) {
-    EXPECT_EQ(errorsOf(workspace({"  <pass name=\"p\">", "    <draw mesh=\"torus\"/>", "  </pass>"})),
-              (Lines{at + "3: error: <draw>: attribute 'mesh': unknown mesh 'torus' (expected fullscreen, cube, sphere, "
-                          "plane, teapot)"}));
+    EXPECT_EQ(errorsOf(workspace({"  <pass name=\"p\">", "    <draw mesh=\"donut\"/>", "  </pass>"})),
+              (Lines{at + "3: error: <draw>: attribute 'mesh': unknown mesh 'donut' (expected fullscreen, cube, sphere, "
+                          "plane, teapot, quad, torus)"}));
     EXPECT_EQ(errorsOf(workspace({"  <pass name=\"p\">", "    <draw mesh=\"cube\" file=\"a.obj\"/>", "  </pass>"})),
               (Lines{at + "3: error: <draw>: give either 'mesh' (built-in) or 'file' (a model), not both"}));
 }

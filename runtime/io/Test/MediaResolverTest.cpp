@@ -181,6 +181,76 @@ TEST(MediaResolver, MissingStockRenderMonkeyModelsBecomeBuiltInMeshesWithAWarnin
     EXPECT_EQ(errors(load(dir.write("ws/out.xml", drawWorkspace("../elsewhere/Teapot.3ds")), sandbox())).size(), 1u);
 }
 
+TEST(MediaResolver, WithPlaceholdersMissingTexturesAndModelsGetStandInsAndOneWarningPerFile) {
+    test::ScratchDir dir;
+    const std::string stone = "C:\\RenderMonkey\\Media\\Textures\\Fieldstone.tga";
+    const std::string sky = "C:\\RenderMonkey\\Media\\Cubemaps\\Sky.dds";
+    fs::path file = dir.write("ws/fx.xml", lines({
+        "<workspace version=\"1\">",
+        "  <texture name=\"stone\" file=\"" + stone + "\"/>",
+        "  <cubemap name=\"sky\">" + [&] {
+            std::string faces;
+            for (const char* side : {"+x", "-x", "+y", "-y", "+z", "-z"})
+                faces += "<face side=\"" + std::string(side) + "\" file=\"" + sky + "\"/>";
+            return faces;
+        }() + "</cubemap>",
+        "  <pass name=\"a\">", kShader, "    <draw file=\"..\\Models\\MyTorus2.3ds\"/>", "  </pass>",
+        "  <pass name=\"b\">", kShader, "    <draw file=\"..\\Models\\MyTorus2.3ds\"/>", "  </pass>",
+        "  <pass name=\"c\">", kShader, "    <draw file=\"Elephant.x\"/>", "  </pass>",
+        "</workspace>"}));
+    // By default each is an error: the texture, six faces, two passes drawing one model, one more model.
+    EXPECT_EQ(errors(load(file)).size(), 1u + 6u + 2u + 1u) << formatAll(load(file).diagnostics());
+
+    MediaOptions placeholders;
+    placeholders.missing = MissingMedia::Placeholder;
+    Result<Workspace> l = load(file, placeholders);
+    ASSERT_TRUE(l.ok()) << formatAll(l.diagnostics());
+    const Lines warnings = [&] {
+        Lines out;
+        for (const Diagnostic& d : l.diagnostics()) out.push_back(d.format());
+        return out;
+    }();
+    ASSERT_EQ(warnings.size(), 4u) << formatAll(l.diagnostics());
+    EXPECT_NE(warnings[0].find("fx.xml:2: warning: <texture name=\"stone\">: image file '" + stone + "' not found"), std::string::npos) << warnings[0];
+    EXPECT_NE(warnings[0].find("; a magenta and grey checker stands in for the texture (--missing-media placeholder)"), std::string::npos);
+    EXPECT_NE(warnings[1].find("fx.xml:3: warning: <cubemap name=\"sky\">"), std::string::npos) << warnings[1];
+    EXPECT_NE(warnings[1].find("stands in for the whole cube map"), std::string::npos) << warnings[1];
+    EXPECT_NE(warnings[2].find("fx.xml:6: warning: <draw>: model file '..\\Models\\MyTorus2.3ds' not found"), std::string::npos) << warnings[2];
+    EXPECT_NE(warnings[2].find("drawing rmfx's built-in 'torus' in its place (--missing-media placeholder)"), std::string::npos);
+    EXPECT_NE(warnings[3].find("fx.xml:14: warning: <draw>: model file 'Elephant.x' not found"), std::string::npos) << warnings[3];
+    EXPECT_NE(warnings[3].find("built-in 'cube'"), std::string::npos) << warnings[3];
+
+    const Texture* texture = l->findTexture("stone");
+    ASSERT_TRUE(texture && texture->supplied);
+    EXPECT_TRUE(texture->files.empty());
+    EXPECT_EQ(texture->supplied->width, 64);
+    EXPECT_FLOAT_EQ(texture->supplied->at(0, 0, 0), 1.0f);  // magenta in the corner, grey beside it
+    EXPECT_FLOAT_EQ(texture->supplied->at(0, 0, 1), 0.0f);
+    EXPECT_FLOAT_EQ(texture->supplied->at(8, 0, 1), 0.2f);
+    const Texture* cube = l->findTexture("sky");
+    ASSERT_TRUE(cube && cube->supplied);
+    EXPECT_EQ(cube->supplied->width * 3, cube->supplied->height * 4);  // a cross
+    EXPECT_EQ(l->passes[0].draw.mesh, BuiltinMesh::Torus);
+    EXPECT_EQ(l->passes[1].draw.mesh, BuiltinMesh::Torus);
+    EXPECT_EQ(l->passes[2].draw.mesh, BuiltinMesh::Cube);
+
+    // A file that is there but refused by the sandbox is still an error.
+    dir.write("elsewhere/stone.png", "");
+    MediaOptions strict = sandbox();
+    strict.missing = MissingMedia::Placeholder;
+    EXPECT_EQ(errors(load(dir.write("ws/out.xml", textureWorkspace("../elsewhere/stone.png")), strict)).size(), 1u);
+}
+
+TEST(MediaResolver, PlaceholderMeshesByName) {
+    EXPECT_EQ(placeholderMeshFor("C:\\x\\ScreenAlignedQuad.3ds"), BuiltinMesh::Quad);
+    EXPECT_EQ(placeholderMeshFor("Models/MyTeapot2.3DS"), BuiltinMesh::Teapot);
+    EXPECT_EQ(placeholderMeshFor("SPHERE_hi.obj"), BuiltinMesh::Sphere);
+    EXPECT_EQ(placeholderMeshFor("torus.x"), BuiltinMesh::Torus);
+    EXPECT_EQ(placeholderMeshFor("GroundPlane.3ds"), BuiltinMesh::Plane);
+    EXPECT_EQ(placeholderMeshFor("Elephant.3ds"), BuiltinMesh::Cube);
+    EXPECT_EQ(placeholderMeshFor(""), BuiltinMesh::Cube);
+}
+
 TEST(MediaResolver, MakeQuadSpansClipSpaceFacingTheViewer) {
     Mesh quad = makeMesh(BuiltinMesh::Quad);
     ASSERT_EQ(quad.vertexCount(), 4u);
@@ -380,6 +450,24 @@ TEST(MediaArguments, MediaSandboxAndNoSandbox) {
     std::vector<std::string> last{"--media"};
     i = 0;
     EXPECT_EQ(takeMediaArgument(last, i, media), "--media needs a folder");
+}
+
+TEST(MediaArguments, MissingMedia) {
+    MediaOptions media;
+    EXPECT_EQ(media.missing, MissingMedia::Error);
+    std::vector<std::string> args{"--missing-media", "placeholder", "--missing-media=error", "--missing-media", "maybe",
+                                  "--missing-media"};
+    size_t i = 0;
+    EXPECT_EQ(takeMediaArgument(args, i, media), "");
+    EXPECT_EQ(i, 1u);
+    EXPECT_EQ(media.missing, MissingMedia::Placeholder);
+    i = 2;
+    EXPECT_EQ(takeMediaArgument(args, i, media), "");
+    EXPECT_EQ(media.missing, MissingMedia::Error);
+    i = 3;
+    EXPECT_EQ(takeMediaArgument(args, i, media), "--missing-media: 'maybe' is neither 'error' nor 'placeholder'");
+    i = 5;
+    EXPECT_EQ(takeMediaArgument(args, i, media), "--missing-media needs 'error' or 'placeholder'");
 }
 
 }  // namespace rmfx

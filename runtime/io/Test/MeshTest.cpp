@@ -109,7 +109,7 @@ glm::vec3 boundsMax(const Mesh& mesh) {
 
 TEST(BuiltinMeshes, EveryBuiltinIsWellFormed) {
     for (BuiltinMesh m : {BuiltinMesh::FullscreenTriangle, BuiltinMesh::Cube, BuiltinMesh::Sphere, BuiltinMesh::Plane,
-                          BuiltinMesh::Teapot}) {
+                          BuiltinMesh::Teapot, BuiltinMesh::Quad, BuiltinMesh::Torus}) {
         SCOPED_TRACE(builtinMeshName(m));
         expectWellFormed(makeMesh(m));
     }
@@ -117,12 +117,13 @@ TEST(BuiltinMeshes, EveryBuiltinIsWellFormed) {
 
 TEST(BuiltinMeshes, NamesRoundTripIgnoringCase) {
     for (BuiltinMesh m : {BuiltinMesh::FullscreenTriangle, BuiltinMesh::Cube, BuiltinMesh::Sphere, BuiltinMesh::Plane,
-                          BuiltinMesh::Teapot})
+                          BuiltinMesh::Teapot, BuiltinMesh::Quad, BuiltinMesh::Torus})
         EXPECT_EQ(builtinMeshFromName(builtinMeshName(m)), m);
     EXPECT_EQ(builtinMeshFromName("fullscreen"), BuiltinMesh::FullscreenTriangle);
     EXPECT_EQ(builtinMeshFromName("Teapot"), BuiltinMesh::Teapot);
     EXPECT_EQ(builtinMeshFromName("SPHERE"), BuiltinMesh::Sphere);
-    EXPECT_FALSE(builtinMeshFromName("torus"));
+    EXPECT_EQ(builtinMeshFromName("Torus"), BuiltinMesh::Torus);
+    EXPECT_FALSE(builtinMeshFromName("donut"));
     EXPECT_FALSE(builtinMeshFromName(""));
     EXPECT_FALSE(builtinMeshFromName("cubes"));
 }
@@ -188,6 +189,28 @@ TEST(BuiltinMeshes, SphereIsClosedUnitSphere) {
         EXPECT_GE(mesh.texcoords[v].y, 0.0f);
         EXPECT_LE(mesh.texcoords[v].y, 1.0f);
     }
+}
+
+// Pappus: volume 2π²Rr², area 4π²Rr (a polygonal torus, inscribed, falls a little short of both).
+TEST(BuiltinMeshes, TorusIsClosedWithPappusVolumeAndArea) {
+    const double R = 0.7, r = 0.3;
+    const Mesh mesh = makeTorus(float(R), float(r), 256, 128);
+    expectWellFormed(mesh);
+    expectClosedAndConsistent(mesh);
+    expectWindingMatchesNormals(mesh);
+    const double volume = 2.0 * kPi * kPi * R * r * r, surface = 4.0 * kPi * kPi * R * r;
+    EXPECT_GT(signedVolume(mesh), 0.999 * volume);
+    EXPECT_LT(signedVolume(mesh), volume);
+    EXPECT_NEAR(area(mesh), surface, 0.001 * surface);
+    for (size_t v = 0; v < mesh.vertexCount(); ++v) {
+        // Each vertex lies r from the tube's centre circle, along its normal.
+        const glm::dvec3 p(mesh.positions[v]), n(mesh.normals[v]);
+        const glm::dvec3 centre = p - r * n;
+        EXPECT_NEAR(std::hypot(centre.x, centre.z), R, 1e-5);
+        EXPECT_NEAR(centre.y, 0.0, 1e-5);
+    }
+    EXPECT_NEAR(boundsMax(makeTorus()).x, 1.0f, 1e-5f);  // the defaults fit [-1, 1]
+    EXPECT_NEAR(boundsMax(makeTorus()).y, 0.3f, 1e-5f);
 }
 
 TEST(BuiltinMeshes, SphereCountsAndSeam) {

@@ -10,6 +10,19 @@ std::optional<std::string> takeMediaArgument(const std::vector<std::string>& arg
         media.sandbox = arg == "--sandbox";
         return "";
     }
+    if (arg == "--missing-media" || arg.rfind("--missing-media=", 0) == 0) {
+        std::string value;
+        if (arg.size() > std::string("--missing-media").size()) {
+            value = arg.substr(std::string("--missing-media=").size());
+        } else {
+            if (i + 1 >= args.size()) return "--missing-media needs 'error' or 'placeholder'";
+            value = args[++i];
+        }
+        if (value == "error") media.missing = MissingMedia::Error;
+        else if (value == "placeholder") media.missing = MissingMedia::Placeholder;
+        else return "--missing-media: '" + value + "' is neither 'error' nor 'placeholder'";
+        return "";
+    }
     if (arg != "--media") return std::nullopt;
     if (i + 1 >= args.size() || args[i + 1].empty()) return "--media needs a folder";
     const std::string& folder = args[++i];

@@ -3,6 +3,9 @@
 //   --media DIR    a folder of the media search path (repeatable, searched in order)
 //   --sandbox      refuse references leading outside the workspace folder and the media folders
 //   --no-sandbox   the opposite (replay sandboxes by default)
+//   --missing-media error|placeholder
+//                  what a texture or model found nowhere becomes: an error (the default), or a
+//                  stand-in with a warning (MissingMedia::Placeholder)
 
 #include <optional>
 #include <string>
@@ -14,6 +17,7 @@ namespace rmfx {
 
 // When args[i] is one of the options above, applies it to `media`, moves `i` past its value and
 // returns "" (or why it is wrong: "--media needs a folder"); nullopt when args[i] is another option.
+// "--missing-media=placeholder" is accepted as well.
 std::optional<std::string> takeMediaArgument(const std::vector<std::string>& args, size_t& i, MediaOptions& media);
 
 }  // namespace rmfx

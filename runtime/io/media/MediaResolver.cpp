@@ -1,8 +1,10 @@
 #include "io/media/MediaResolver.h"
 
+#include "io/image/PlaceholderImage.h"
 #include "model/BuiltinMeshNames.h"
 
 #include <algorithm>
+#include <memory>
 #include <cctype>
 
 namespace rmfx {
@@ -252,6 +254,16 @@ std::optional<BuiltinMesh> stockModelStandIn(const std::string& reference) {
     return std::nullopt;
 }
 
+BuiltinMesh placeholderMeshFor(const std::string& reference) {
+    MediaReference ref = MediaReference::parse(reference);
+    std::string stem = ref.components.empty() ? "" : std::filesystem::path(ref.components.back()).stem().string();
+    std::transform(stem.begin(), stem.end(), stem.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (auto stock = stockModelStandIn(reference)) return *stock;
+    for (BuiltinMesh named : {BuiltinMesh::Teapot, BuiltinMesh::Sphere, BuiltinMesh::Torus, BuiltinMesh::Quad, BuiltinMesh::Plane})
+        if (stem.find(builtinMeshName(named)) != std::string::npos) return named;
+    return BuiltinMesh::Cube;
+}
+
 Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options, const std::set<std::string>& givenTextures) {
     Diagnostics out;
     MediaResolver resolver(ws.folder, options);
@@ -262,12 +274,32 @@ Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options, c
         else
             out.push_back({Diagnostic::Severity::Error, where, element, found.error});
     };
+    const bool placeholders = options.missing == MissingMedia::Placeholder;
     for (Texture& t : ws.textures) {
         if (givenTextures.count(t.name)) continue;
         std::string element = std::string(t.kind == TextureKind::Cube ? "<cubemap" : "<texture") + " name=\"" + t.name + "\">";
-        for (size_t i = 0; i < t.files.size(); ++i)
-            resolve(t.files[i], i < t.fileLocations.size() ? t.fileLocations[i] : t.where, element, "image file");
+        std::set<std::string> missing;  // one warning per file, though six faces may name the same
+        for (size_t i = 0; i < t.files.size(); ++i) {
+            const SourceLocation& where = i < t.fileLocations.size() ? t.fileLocations[i] : t.where;
+            MediaResolver::Found found = resolver.resolve(t.files[i], "image file");
+            if (found.file) {
+                t.files[i] = found.file->generic_string();
+            } else if (found.missing && placeholders) {
+                if (missing.insert(t.files[i]).second)
+                    out.push_back({Diagnostic::Severity::Warning, where, element,
+                                   found.error + "; a magenta and grey checker stands in for the " +
+                                       (t.kind == TextureKind::Cube ? "whole cube map" : "texture") +
+                                       " (--missing-media placeholder)"});
+            } else {
+                out.push_back({Diagnostic::Severity::Error, where, element, found.error});
+            }
+        }
+        if (!missing.empty()) {
+            t.supplied = std::make_shared<const Image>(placeholderImage(t.kind));
+            t.files.clear();
+        }
     }
+    std::set<std::string> missingModels;  // one warning per file, though many passes draw it
     for (Pass& pass : ws.passes) {
         for (ShaderSource& shader : pass.shaders)
             if (!shader.file.empty()) resolve(shader.file, shader.where, "<shader>", "shader file");
@@ -280,6 +312,14 @@ Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options, c
             // them the usual full-screen quad (and the stock teapot…) would stop every such effect.
             out.push_back({Diagnostic::Severity::Warning, pass.draw.where, "<draw>",
                            found.error + "; drawing rmfx's built-in '" + builtinMeshName(*standIn) + "' in its place"});
+            pass.draw.mesh = standIn;
+            pass.draw.file.clear();
+        } else if (found.missing && placeholders) {
+            const BuiltinMesh standIn = placeholderMeshFor(pass.draw.file);
+            if (missingModels.insert(pass.draw.file).second)
+                out.push_back({Diagnostic::Severity::Warning, pass.draw.where, "<draw>",
+                               found.error + "; drawing rmfx's built-in '" + builtinMeshName(standIn) +
+                                   "' in its place (--missing-media placeholder)"});
             pass.draw.mesh = standIn;
             pass.draw.file.clear();
         } else {

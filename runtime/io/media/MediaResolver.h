@@ -25,12 +25,20 @@
 
 namespace rmfx {
 
+// What a reference that finds no file anywhere becomes (--missing-media).
+enum class MissingMedia {
+    Error,        // an error naming it (the default)
+    Placeholder,  // a warning, and a stand-in: a checker image (io/image/PlaceholderImage), the
+                  // built-in mesh named like the model or a cube (placeholderMeshFor)
+};
+
 struct MediaOptions {
     // Folders searched after the workspace folder, in order: given by the person running rmfx
     // (--media, a replay manifest), never by the workspace.
     std::vector<std::filesystem::path> searchPath;
     // Refuse references that lead outside the workspace folder and the search path.
     bool sandbox = false;
+    MissingMedia missing = MissingMedia::Error;
 };
 
 // A reference as written, split into components: backslashes and slashes separate, "." and
@@ -60,6 +68,11 @@ bool liesInside(const std::filesystem::path& file, const std::filesystem::path& 
 // RenderMonkey's stock models that rmfx has built in (ScreenAlignedQuad, Teapot, Sphere, Cube), by
 // the reference's file name ignoring case and extension: what stands in for one that is missing.
 std::optional<BuiltinMesh> stockModelStandIn(const std::string& reference);
+
+// With --missing-media placeholder, the built-in mesh that stands in for any missing model: the
+// one its file name names (teapot, sphere, torus, quad, plane, cube, ignoring case, anywhere in
+// the name: "MyTeapot2.3ds" is a teapot), else a cube.
+BuiltinMesh placeholderMeshFor(const std::string& reference);
 
 class MediaResolver {
 public:
@@ -94,7 +107,9 @@ private:
 // Resolves every file reference of `ws` once, in place: Texture::files, DrawCall::file and
 // ShaderSource::file then name the file found (relative to ws.folder when it lies there, else
 // absolute), which is what the executor, hot reload and listings use. Each reference that finds
-// nothing, finds two files, or (sandbox) leads outside gives an error naming its element.
+// nothing, finds two files, or (sandbox) leads outside gives an error naming its element. With
+// MissingMedia::Placeholder, a texture or model found nowhere gets a stand-in and a warning
+// instead: the texture's files are cleared and its `supplied` image is the placeholder.
 // `givenTextures`: textures whose files the person running rmfx named (rmfx render --texture),
 // taken as they are: not searched for and not sandboxed.
 Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options,

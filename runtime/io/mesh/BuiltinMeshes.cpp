@@ -100,6 +100,30 @@ Mesh makeQuad() {
     return mesh;
 }
 
+Mesh makeTorus(float majorRadius, float minorRadius, int segments, int sides) {
+    segments = std::max(segments, 3);
+    sides = std::max(sides, 3);
+    const float pi = 3.14159265358979323846f;
+    Mesh mesh;
+    // u around the y axis, v around the tube; the seams are duplicated so both run 0..1.
+    for (int i = 0; i <= segments; ++i) {
+        const float u = 2.0f * pi * float(i) / float(segments);
+        for (int j = 0; j <= sides; ++j) {
+            const float v = 2.0f * pi * float(j) / float(sides);
+            const glm::vec3 normal(std::cos(v) * std::sin(u), std::sin(v), std::cos(v) * std::cos(u));
+            mesh.positions.push_back(majorRadius * glm::vec3(std::sin(u), 0.0f, std::cos(u)) + minorRadius * normal);
+            mesh.normals.push_back(normal);
+            mesh.texcoords.emplace_back(float(i) / float(segments), float(j) / float(sides));
+        }
+    }
+    const auto at = [&](int i, int j) { return static_cast<uint32_t>(i * (sides + 1) + j); };
+    // d/du × d/dv points out of the tube, so (i, j), (i + 1, j), (i + 1, j + 1) winds counter-clockwise seen from outside.
+    for (int i = 0; i < segments; ++i)
+        for (int j = 0; j < sides; ++j)
+            mesh.indices.insert(mesh.indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    return mesh;
+}
+
 Mesh makeMesh(BuiltinMesh which) {
     switch (which) {
         case BuiltinMesh::FullscreenTriangle: return makeFullscreenTriangle();
@@ -108,6 +132,7 @@ Mesh makeMesh(BuiltinMesh which) {
         case BuiltinMesh::Plane: return makePlane();
         case BuiltinMesh::Teapot: return makeTeapot();
         case BuiltinMesh::Quad: return makeQuad();
+        case BuiltinMesh::Torus: return makeTorus();
     }
     return {};
 }

@@ -27,5 +27,8 @@ Mesh makeQuad();
 // (subdivisions+1)^2 vertices, patch after patch in the classic order (rim, body, handle,
 // spout, lid, bottom). Texcoords are the patch parameters.
 Mesh makeTeapot(int subdivisions = 10);
+// A ring around the Y axis, centred at the origin: the tube's centre at majorRadius, the tube
+// minorRadius thick (the defaults fit [-1,1]); texcoords u around the ring, v around the tube.
+Mesh makeTorus(float majorRadius = 0.7f, float minorRadius = 0.3f, int segments = 48, int sides = 24);
 
 }  // namespace rmfx

@@ -202,7 +202,7 @@ void PassChildParser::parseDraw(const XMLElement* e, DrawCall& d) {
     if (mesh) {
         d.mesh = builtinMeshFromName(*mesh);
         if (!d.mesh)
-            r.error("attribute 'mesh': unknown mesh '" + *mesh + "' (expected fullscreen, cube, sphere, plane, teapot)");
+            r.error("attribute 'mesh': unknown mesh '" + *mesh + "' (expected " + builtinMeshNameList() + ")");
     }
     if (file) d.file = *file;
     if (auto t = r.numbers<3>("translate")) d.translate = {(*t)[0], (*t)[1], (*t)[2]};
