@@ -257,6 +257,35 @@ float4 main(float2 uv : TEXCOORD0) : COLOR {
         expectNear(pixel(out, x, 2), {0.125 + 0.375 + 0.625, 0.25 + 0.5 + 0.75, 0.75, 6.0 + 3.0}, 1e-6, "pixel " + std::to_string(x));
 }
 
+// RenderMonkey's template pixel shader takes `float4 inDiffuse : COLOR0` that its vertex shader
+// never writes; Direct3D 9 ran it, GL would not link it. The missing inputs get defined values.
+TEST_F(HlslGLTest, PixelShaderInputsTheVertexShaderDoesNotWriteGetDefinedValuesAndAWarning) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x4">
+  <float name="depth" value="0.5"/>
+  <float name="w" value="1"/>
+  <target name="out" format="rgba32f" size="4x4"/>
+  <pass name="hlsl" target="out">
+    )" + vertexShaderXml(passThroughVertexShader) +
+                            R"(    <shader stage="fragment"><![CDATA[
+float4 main(float4 inDiffuse : COLOR0, float2 uv : TEXCOORD0, float3 extra : TEXCOORD3) : COLOR {
+    return inDiffuse * 0.5 + float4(extra, 0.25 * uv.x);
+}
+]]></shader>
+  </pass>
+</workspace>)";
+    std::unique_ptr<Workspace> ws = hlslWorkspace(xml);
+    ASSERT_TRUE(ws);
+    const std::string warnings = formatAll(validateWorkspace(*ws).diagnostics());
+    EXPECT_NE(warnings.find("warning: <pass name=\"hlsl\">: the pixel shader reads COLOR0, TEXCOORD3, which the vertex "
+                            "shader does not write; Direct3D 9 ran it anyway, so rmfx supplies them"),
+              std::string::npos) << warnings;
+    RefImage out = renderOut(xml);
+    ASSERT_EQ(out.width, 4);
+    // COLOR0 white, TEXCOORD3 (0, 0, 0); uv.x the pixel's texture coordinate (x + 0.5) / 4.
+    for (int x = 0; x < 4; ++x)
+        expectNear(pixel(out, x, 1), {0.5, 0.5, 0.5, 0.5 + 0.25 * (x + 0.5) / 4.0}, 1e-6, "pixel " + std::to_string(x));
+}
+
 // An input fixed-function processing does not give is an error naming the semantic.
 TEST_F(HlslGLTest, PixelShaderWithoutAVertexShaderReadingANormalIsAnError) {
     Result<Workspace> parsed = parseWorkspaceText(R"(<workspace version="1" name="hlsl" size="4x4">

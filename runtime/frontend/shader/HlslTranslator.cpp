@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/IdentifierSearch.h"
 #include "frontend/shader/BracketNesting.h"
 #include "frontend/shader/HlslBraceElision.h"
 #include "frontend/shader/HlslSamplerTypes.h"
@@ -144,6 +145,26 @@ Result<FixedFunctionVaryings> hlslFixedFunctionVaryings(const std::vector<Reflec
         out.assignments += "    " + input.name + " = " + value + swizzle->second + ";\n";
     }
     return out;
+}
+
+std::vector<std::string> supplyUnwrittenVaryings(std::string& vertexGlsl, const std::vector<ReflectedVariable>& pixelInputs) {
+    static const std::map<std::string, std::string> swizzles = {{"float", ".x"}, {"vec2", ".xy"}, {"vec3", ".xyz"}, {"vec4", ""}};
+    std::string declarations, assignments;
+    std::vector<std::string> supplied;
+    for (const ReflectedVariable& input : pixelInputs) {
+        auto swizzle = swizzles.find(input.type);
+        if (mentionsIdentifier(vertexGlsl, input.name) || swizzle == swizzles.end() || !input.arraySuffix.empty()) continue;
+        const std::string value = splitSemantic(input.semantic).first == "COLOR" ? "vec4(1.0)" : "vec4(0.0, 0.0, 0.0, 1.0)";
+        declarations += "out " + input.type + " " + input.name + ";\n";
+        assignments += "    " + input.name + " = " + value + swizzle->second + ";\n";
+        supplied.push_back(input.semantic);
+    }
+    const size_t main = vertexGlsl.find("void main()");
+    const size_t body = main == std::string::npos ? std::string::npos : vertexGlsl.find('{', main);
+    if (supplied.empty() || body == std::string::npos) return {};
+    vertexGlsl.insert(body + 1, "\n" + assignments);
+    vertexGlsl.insert(main, declarations);
+    return supplied;
 }
 
 Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const HlslStage& stage,

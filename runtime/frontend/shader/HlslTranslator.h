@@ -68,4 +68,12 @@ struct FixedFunctionVaryings {
 };
 Result<FixedFunctionVaryings> hlslFixedFunctionVaryings(const std::vector<ReflectedVariable>& pixelInputs);
 
+// For a pass whose HLSL vertex shader does not write an input its pixel shader declares
+// (RenderMonkey's own template passes `float4 inDiffuse : COLOR0` to a pixel shader whose vertex
+// shader writes only TEXCOORD0): Direct3D 9 ran it, GL does not link it. Adds each missing output
+// to the translated vertex shader, written at the start of its main() with a defined value:
+// COLORn opaque white, any other semantic (0, 0, 0, 1) cut to the input's size. Returns the
+// semantics supplied, for a warning; none when nothing is missing.
+std::vector<std::string> supplyUnwrittenVaryings(std::string& vertexGlsl, const std::vector<ReflectedVariable>& pixelInputs);
+
 }  // namespace rmfx

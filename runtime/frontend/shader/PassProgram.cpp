@@ -130,6 +130,19 @@ Result<PassProgramSource> assemblePassProgram(const Workspace& ws, const Pass& p
     };
     if (vertex) add(*vertex);
     if (fragment) add(*fragment);
+    if (vertex && fragment && vertex->dialect == ShaderDialect::Hlsl && fragment->dialect == ShaderDialect::Hlsl && ok &&
+        program.stages.size() == 2) {
+        std::vector<std::string> supplied = supplyUnwrittenVaryings(program.stages[0].shader.code, pixelInputs);
+        if (!supplied.empty()) {
+            std::string list;
+            for (const std::string& semantic : supplied) list += (list.empty() ? "" : ", ") + semantic;
+            diagnostics.push_back({Diagnostic::Severity::Warning, fragment->where, passLabel(pass),
+                                   "the pixel shader reads " + list + ", which the vertex shader does not write; " +
+                                       "Direct3D 9 ran it anyway, so rmfx supplies " +
+                                       (supplied.size() == 1 ? "it" : "them") +
+                                       " (COLORn opaque white, others (0, 0, 0, 1))"});
+        }
+    }
     if (!vertex) {
         bool fullscreen = pass.draw.mesh == BuiltinMesh::FullscreenTriangle;
         // An HLSL fragment shader arrives as GLSL 4.50, so its built-in vertex shader is GLSL 4.50.
