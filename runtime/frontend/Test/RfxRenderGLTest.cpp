@@ -6,6 +6,8 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -113,6 +115,62 @@ TEST_F(RfxCoreRenderGLTest, Direct3DStreamsInitialValuesAndCbuffersReachTheShade
             for (int c = 0; c < 4; ++c) worst = std::max(worst, std::abs(atGl(image, x, y, c) - expected[c]));
         }
     expectWithin("max abs error against the effect's maths", worst, kOutputRounding + 1e-6);
+}
+
+}  // namespace
+}  // namespace rmfx::test
+
+namespace rmfx::test {
+namespace {
+
+// A legacy pass drawing to TARGET (empty: the screen) whose fragment shader is `body`, reading
+// the renderable textures `reads` through samplers of their names.
+std::string feedbackPass(const std::string& name, int index, const std::string& target, const std::vector<std::string>& reads,
+                         const std::string& body) {
+    std::string uniforms, objects;
+    for (const std::string& r : reads) {
+        uniforms += "uniform sampler2D " + r + ";\n";
+        objects += "<RmTextureObject NAME=\"" + r + "\" API=\"OpenGL\" STATE_INDEX=\"0\"><RmTextureReference NAME=\"" + r +
+                   "\" API=\"\"/></RmTextureObject>\n<RmSampler NAME=\"" + r + "\" API=\"\" REGISTER=\"-1\"/>\n";
+    }
+    return "<RmGLPass NAME=\"" + name + "\" API=\"OpenGL\" PASS_INDEX=\"" + std::to_string(index) + "\" ENABLED=\"TRUE\">\n" +
+           "<RmRenderTarget NAME=\"" + (target.empty() ? "Screen" : target) + "\" API=\"\" INDEX=\"0\" RENDER_TO_SCREEN=\"" +
+           (target.empty() ? "TRUE" : "FALSE") +
+           "\" COLOR_CLEAR=\"FALSE\" DEPTH_CLEAR=\"FALSE\" CLEAR_COLOR_VALUE=\"0\" DEPTH_CLEAR_VALUE=\"1.0\"/>\n" +
+           "<RmGLShader NAME=\"F\" API=\"OpenGL\" PIXEL_SHADER=\"TRUE\"><RmShaderCode TYPE=\"TEXT\"><![CDATA[" + uniforms +
+           "void main(void) { " + body + " }]]></RmShaderCode></RmGLShader>\n" + objects + "</RmGLPass>\n";
+}
+
+class RfxFeedbackRenderGLTest : public CompatibilityGlTest {};
+
+// RenderMonkey's feedback pattern: "Combine" reads Sum, which only the later "Copy back" writes,
+// so it reads what the last frame left there; Sum grows by 0.25 a frame. rmfx reads such a
+// target as frame="previous" (it would otherwise be a cycle between the two passes).
+TEST_F(RfxFeedbackRenderGLTest, APassReadingATargetOnlyALaterPassWritesReadsTheLastFrames) {
+    auto target = [](const std::string& name) {
+        return "<RmRenderableTexture NAME=\"" + name + "\" API=\"\" FILE_NAME=\"\" WIDTH=\"4\" HEIGHT=\"4\" FORMAT=\"116\" "
+               "USE_VIEWPORT_DIMENSIONS=\"FALSE\" GENERATE_MIPMAPS=\"FALSE\"/>\n";
+    };
+    const std::string rfx = "<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\" ACTIVE_EFFECT=\"W.E\">\n"
+                            "<RmOpenGLEffect NAME=\"E\" API=\"OpenGL\">\n" +
+                            target("Sum") + target("Temp") +
+                            feedbackPass("Combine", 0, "Temp", {"Sum"}, "gl_FragColor = texture2D(Sum, vec2(0.5)) + vec4(0.25);") +
+                            feedbackPass("Copy back", 1, "Sum", {"Temp"}, "gl_FragColor = texture2D(Temp, vec2(0.5));") +
+                            feedbackPass("Show", 2, "", {"Temp"}, "gl_FragColor = vec4(texture2D(Temp, vec2(0.5)).rgb * 0.25, 1.0);") +
+                            "</RmOpenGLEffect>\n</RmEffectWorkspace>\n</RENDER_MONKEY>\n";
+    ScratchDir dir;
+    Result<Workspace> imported = loadWorkspace(dir.write("feedback.rfx", rfx));
+    ASSERT_TRUE(imported.ok()) << formatAll(imported.diagnostics());
+    ASSERT_EQ(imported->passes.size(), 3u);
+    EXPECT_TRUE(imported->passes[0].samplers.at(0).previousFrame);   // Sum: written later
+    EXPECT_FALSE(imported->passes[1].samplers.at(0).previousFrame);  // Temp: written this frame
+    EXPECT_FALSE(imported->passes[2].samplers.at(0).previousFrame);
+    for (int frames : {1, 3}) {
+        GlRun run = runWorkspace(std::make_unique<Workspace>(*imported), RunSettings{{kSize, kSize}, frames});
+        ASSERT_TRUE(run.exec);
+        // Temp after n frames: 0.25 n (Sum starts at 0); the output shows a quarter of it.
+        expectUniformOutput(run, {0.0625 * frames, 0.0625 * frames, 0.0625 * frames});
+    }
 }
 
 }  // namespace

@@ -118,6 +118,8 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
             carriedSeparateAlpha = separateAlpha;
         }
         if (effect.api == RfxApi::Direct3D) rfx::finishD3dRenderStates(p.pass, separateAlpha);
+        // No RmModelReference: rmfx's full-screen triangle (docs/rendermonkey.md).
+        if (!p.pass.draw.mesh && p.pass.draw.file.empty()) p.pass.draw.mesh = BuiltinMesh::FullscreenTriangle;
         if (p.pass.shaders.empty() && p.runnable) {
             if (previous) {
                 // The program comes with what it reads: samplers and streams, unless the pass
@@ -149,6 +151,17 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
         if (!pass.clear.depth) pass.clear.depth = 1.0f;
         break;
     }
+    // RenderMonkey runs the passes in order, and a renderable texture keeps its contents from one
+    // frame to the next: a pass reading one that no pass before it has written this frame reads
+    // what the last frame left there (feedback effects "copy back" a later pass's result).
+    for (size_t i = 0; i < ws.passes.size(); ++i)
+        for (Sampler& s : ws.passes[i].samplers) {
+            if (s.target.empty()) continue;
+            const bool writtenBefore = std::any_of(ws.passes.begin(), ws.passes.begin() + static_cast<long>(i), [&](const Pass& p) {
+                return p.enabled && p.target == s.target;
+            });
+            if (!writtenBefore) s.previousFrame = true;
+        }
     // Texture variables no pass samples are left out: RenderMonkey files keep textures of other
     // effects at the workspace level, and their missing media must not stop this effect.
     std::erase_if(ws.textures, [&](const Texture& t) {

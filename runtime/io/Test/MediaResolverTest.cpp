@@ -167,6 +167,14 @@ TEST(MediaResolver, MissingStockRenderMonkeyModelsBecomeBuiltInMeshesWithAWarnin
 
     EXPECT_EQ(load(dir.write("ws/teapot.xml", drawWorkspace("..\\models\\TEAPOT.3DS")))->passes[0].draw.mesh,
               BuiltinMesh::Teapot);
+    // Two passes drawing the same missing stock model: one warning.
+    fs::path twice = dir.write("ws/twice.xml", lines({"<workspace version=\"1\">", "  <pass name=\"a\">", kShader,
+                                                      "    <draw file=\"" + quad + "\"/>", "  </pass>", "  <pass name=\"b\">",
+                                                      kShader, "    <draw file=\"" + quad + "\"/>", "  </pass>", "</workspace>"}));
+    Result<Workspace> both = load(twice);
+    ASSERT_TRUE(both.ok()) << formatAll(both.diagnostics());
+    EXPECT_EQ(both.diagnostics().size(), 1u) << formatAll(both.diagnostics());
+    EXPECT_EQ(both->passes[1].draw.mesh, BuiltinMesh::Quad);
 
     // A stock model that is there is used as it is; any other missing model stays an error.
     dir.write("ws/Sphere.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");

@@ -310,8 +310,9 @@ Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options, c
         } else if (auto standIn = found.missing ? stockModelStandIn(pass.draw.file) : std::nullopt) {
             // Effects name RenderMonkey's own media by absolute paths into its install; without
             // them the usual full-screen quad (and the stock teapot…) would stop every such effect.
-            out.push_back({Diagnostic::Severity::Warning, pass.draw.where, "<draw>",
-                           found.error + "; drawing rmfx's built-in '" + builtinMeshName(*standIn) + "' in its place"});
+            if (missingModels.insert(pass.draw.file).second)
+                out.push_back({Diagnostic::Severity::Warning, pass.draw.where, "<draw>",
+                               found.error + "; drawing rmfx's built-in '" + builtinMeshName(*standIn) + "' in its place"});
             pass.draw.mesh = standIn;
             pass.draw.file.clear();
         } else if (found.missing && placeholders) {
