@@ -9,6 +9,7 @@
 #include "cli/ArgumentParser.h"
 #include "cli/Commands.h"
 #include "cli/OptionValues.h"
+#include "core/DiagnosticRepeats.h"
 #include "core/FrameWatchdog.h"
 #include "frontend/rfx/RfxImporter.h"
 #include "gl/GlContext.h"
@@ -276,11 +277,12 @@ int renderCommand(const std::vector<std::string>& args) {
         return 2;
     }
     auto run = runHeadless(ws, a->run, a->executor);
+    // The GL build assembles the shaders validation did: what it says again is not repeated.
     if (!run) {
-        std::cerr << formatAll(run.diagnostics());
+        std::cerr << formatAll(withoutRepeats(run.diagnostics(), loaded.diagnostics()));
         return 2;
     }
-    if (!a->quiet) std::cerr << formatAll(run.diagnostics());  // warnings (streams no shader reads…)
+    if (!a->quiet) std::cerr << formatAll(withoutRepeats(run.diagnostics(), loaded.diagnostics()));  // warnings (streams no shader reads…)
     std::unique_ptr<GlExecutor>& executor = *run;
     const bool unhealthy = a->executor.checkHealth && reportHealth(*executor, a->run.frames, a->quiet);
     if (a->explain) {
