@@ -17,6 +17,7 @@ usage:
   rmfx validate WORKSPACE...          check workspaces (structure, references, shaders) without GL
   rmfx list FILE.rfx                  list a RenderMonkey file's effects: passes, shaders, targets,
                                       samplers, models, streams, the variables each pass needs, media
+                                      files and which are missing (--media, --missing-media)
   rmfx replay MANIFEST [options]      regression tests: render the manifest's cases and compare them
                                       with their reference images (docs/replay.md)
   rmfx edit WORKSPACE [options]       open the editor: the running effect beside a panel of its
