@@ -182,6 +182,29 @@ float4 main(float2 uv : TEXCOORD0) : COLOR {
         expectNear(pixel(out, x, 1), {0.125 * (faceOfColumn[x] + 1), 1.0, 0.0, 1.0}, 1e-6, "column " + std::to_string(x));
 }
 
+// tex1D on an untyped sampler bound to an image one texel high (Direct3D 9 has no 1D textures):
+// the texel under u.
+TEST_F(HlslGLTest, Tex1DOnAnUntypedSamplerReadsAnImageOneTexelHigh) {
+    ScratchDir dir;
+    RefImage ramp(4, 1);
+    for (int x = 0; x < 4; ++x) ramp.at(x, 0) = {0.125 * (x + 1), 2.0 - x, 0.5, 1.0};
+    writeFloatExr(dir / "ramp.exr", ramp);
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x4">
+  <texture name="Ramp" file="ramp.exr" mipmaps="false"/>
+  <target name="out" format="rgba32f" size="4x4"/>
+  <pass name="hlsl" target="out">
+    <sampler name="Rainbow" texture="Ramp" filter="nearest"/>
+    <shader stage="fragment"><![CDATA[
+sampler Rainbow : register(s0);
+float4 main(float2 uv : TEXCOORD0) : COLOR { return tex1D(Rainbow, uv.x); }
+]]></shader>
+  </pass>
+</workspace>)";
+    RefImage out = renderOut(xml, dir.path());
+    ASSERT_EQ(out.width, 4);
+    for (int x = 0; x < 4; ++x) expectNear(pixel(out, x, 2), ramp.at(x, 0), 1e-6, "column " + std::to_string(x));
+}
+
 // A pass with a pixel shader only: Direct3D's fixed-function vertex processing gives it the
 // mesh's texture coordinates (TEXCOORDn, as (u, v, 0, 1)) and white (COLORn); rmfx's built-in
 // vertex shader hands it the same. On the full-screen triangle (u, v) is the pixel's position.

@@ -57,8 +57,13 @@ std::string typeGenericSamplers(const std::string& original) {
         if (depth == 0 && words[w].second == "sampler") declared.emplace(words[w + 1].second, words[w].first);
     }
     if (declared.empty()) return original;
-    // Reads: FUNCTION ( NAME ,
+    // Reads: FUNCTION ( NAME , … ); a plain two-argument tex1D's second argument is kept too.
+    struct Tex1DCall {
+        size_t function, argument, end;  // offsets: `tex1D`, its second argument, the closing ')'
+    };
     std::map<std::string_view, std::set<std::string_view>> reads;
+    std::map<std::string_view, std::vector<Tex1DCall>> plainTex1D;
+    std::set<std::string_view> otherTex1D;  // read with tex1Dlod, tex1Dbias… too
     for (size_t w = 0; w + 1 < words.size(); ++w) {
         std::string_view type = impliedType(words[w].second);
         if (type.empty()) continue;
@@ -66,20 +71,51 @@ std::string typeGenericSamplers(const std::string& original) {
         const size_t paren = code.find_first_not_of(" \t\r\n", after);
         if (paren == std::string_view::npos || code[paren] != '(') continue;
         const size_t argument = code.find_first_not_of(" \t\r\n", paren + 1);
-        if (argument == std::string_view::npos || argument != words[w + 1].first) continue;
-        if (declared.count(words[w + 1].second)) reads[words[w + 1].second].insert(type);
+        const std::string_view name = words[w + 1].second;
+        if (argument == std::string_view::npos || argument != words[w + 1].first || !declared.count(name)) continue;
+        reads[name].insert(type);
+        if (type != "sampler1D") continue;
+        // The arguments, split at top-level commas, up to the matching ')'.
+        std::vector<size_t> commas;
+        int nesting = 0;
+        size_t close = std::string_view::npos;
+        for (size_t i = paren + 1; i < code.size() && close == std::string_view::npos; ++i) {
+            if (code[i] == '(') ++nesting;
+            else if (code[i] == ')' && nesting-- == 0) close = i;
+            else if (code[i] == ',' && nesting == 0) commas.push_back(i);
+        }
+        if (words[w].second == "tex1D" && commas.size() == 1 && close != std::string_view::npos)
+            plainTex1D[name].push_back({words[w].first, commas[0] + 1, close});
+        else
+            otherTex1D.insert(name);
     }
-    std::vector<std::pair<size_t, std::string_view>> edits;  // keyword offset, new type
-    for (const auto& [name, types] : reads)
-        if (types.size() == 1 && *types.begin() != "sampler2D") edits.emplace_back(declared.at(name), *types.begin());
+    struct Edit {
+        size_t at, length;
+        std::string text;
+    };
+    std::vector<Edit> edits;
+    for (const auto& [name, types] : reads) {
+        if (types.size() != 1 || *types.begin() == "sampler2D") continue;
+        if (*types.begin() == "sampler1D" && !otherTex1D.count(name)) {
+            // Direct3D 9 has no 1D textures: RenderMonkey's are images one texel high, and rmfx
+            // binds them as 2D textures. The sampler stays 2D; each tex1D reads the middle row.
+            for (const Tex1DCall& call : plainTex1D[name]) {
+                edits.push_back({call.function, 5, "tex2D"});
+                edits.push_back({call.argument, 0, "float2("});
+                edits.push_back({call.end, 0, ", 0.5)"});
+            }
+            continue;
+        }
+        edits.push_back({declared.at(name), std::string_view("sampler").size(), std::string(*types.begin())});
+    }
     if (edits.empty()) return original;
-    std::sort(edits.begin(), edits.end());
+    std::sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.at < b.at; });
     std::string out;
     size_t copied = 0;
-    for (const auto& [at, type] : edits) {
-        out.append(original, copied, at - copied);
-        out += type;
-        copied = at + std::string_view("sampler").size();
+    for (const Edit& edit : edits) {
+        out.append(original, copied, edit.at - copied);
+        out += edit.text;
+        copied = edit.at + edit.length;
     }
     out.append(original, copied);
     return out;
