@@ -4,14 +4,14 @@
 
 namespace rmfx {
 
-static bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // Where `word` occurs in `text` at or after `from` as a whole word; npos when nowhere.
 static size_t findWord(std::string_view text, std::string_view word, size_t from = 0) {
     if (word.empty()) return std::string_view::npos;
     for (size_t at = text.find(word, from); at != std::string_view::npos; at = text.find(word, at + 1)) {
-        bool before = at > 0 && identifierChar(text[at - 1]);
-        bool after = at + word.size() < text.size() && identifierChar(text[at + word.size()]);
+        bool before = at > 0 && isIdentifierChar(text[at - 1]);
+        bool after = at + word.size() < text.size() && isIdentifierChar(text[at + word.size()]);
         if (!before && !after) return at;
     }
     return std::string_view::npos;
@@ -52,7 +52,7 @@ bool declaresVertexInput(std::string_view code, std::string_view name) {
     if (name.empty()) return false;
     for (size_t at = code.find(name); at != std::string_view::npos; at = code.find(name, at + 1)) {
         size_t end = at + name.size();
-        if ((at > 0 && identifierChar(code[at - 1])) || (end < code.size() && identifierChar(code[end]))) continue;
+        if ((at > 0 && isIdentifierChar(code[at - 1])) || (end < code.size() && isIdentifierChar(code[end]))) continue;
         size_t next = code.find_first_not_of(" \t\r\n", end);
         if (next == std::string_view::npos || (code[next] != ';' && code[next] != ',' && code[next] != '[')) continue;
         size_t start = code.find_last_of(";{}", at);

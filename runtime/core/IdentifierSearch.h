@@ -7,6 +7,9 @@
 
 namespace rmfx {
 
+// A character of a C-like identifier: a letter, a digit or '_' (the C locale, as a regex's \w).
+bool isIdentifierChar(char c);
+
 bool mentionsIdentifier(std::string_view code, std::string_view name);
 
 // The code with its // and /* */ comments and "string literals" turned into spaces, newlines kept

@@ -10,8 +10,6 @@
 namespace rmfx {
 namespace {
 
-bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
 // Components of an HLSL vector or matrix type name ("float2" 2, "half3x4" 12); 0 for scalars and
 // anything else.
 int components(std::string_view type) {
@@ -32,9 +30,9 @@ size_t skipSpaceBack(std::string_view code, size_t at) {  // the last non-space 
 
 // The identifier ending at `end` (inclusive): its first character's offset, npos if none.
 size_t identifierStart(std::string_view code, size_t end) {
-    if (end == std::string_view::npos || !identifierChar(code[end])) return std::string_view::npos;
+    if (end == std::string_view::npos || !isIdentifierChar(code[end])) return std::string_view::npos;
     size_t start = end;
-    while (start > 0 && identifierChar(code[start - 1])) --start;
+    while (start > 0 && isIdentifierChar(code[start - 1])) --start;
     return start;
 }
 

@@ -13,8 +13,6 @@
 namespace rmfx {
 namespace {
 
-bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
 // The code with comments, string literals and preprocessor lines turned into spaces (newlines
 // kept, so offsets and line numbers still match the input).
 std::string blanked(const std::string& code) {

@@ -12,22 +12,20 @@
 namespace rmfx {
 namespace {
 
-bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
 // Every whole identifier in `code`, with its offset.
 std::vector<std::pair<size_t, std::string_view>> identifiers(std::string_view code) {
     std::vector<std::pair<size_t, std::string_view>> out;
     for (size_t i = 0; i < code.size();) {
-        if (!identifierChar(code[i]) || std::isdigit(static_cast<unsigned char>(code[i]))) {
+        if (!isIdentifierChar(code[i]) || std::isdigit(static_cast<unsigned char>(code[i]))) {
             // Skip a number whole (1e5f, 0x1F), so its letters are not taken for identifiers.
             if (std::isdigit(static_cast<unsigned char>(code[i])))
-                while (i < code.size() && (identifierChar(code[i]) || code[i] == '.')) ++i;
+                while (i < code.size() && (isIdentifierChar(code[i]) || code[i] == '.')) ++i;
             else
                 ++i;
             continue;
         }
         size_t start = i;
-        while (i < code.size() && identifierChar(code[i])) ++i;
+        while (i < code.size() && isIdentifierChar(code[i])) ++i;
         out.emplace_back(start, code.substr(start, i - start));
     }
     return out;
