@@ -127,36 +127,45 @@ std::string flattenBlocks(SpirvGlsl spirv, const std::map<std::string, HlslGloba
     return std::move(glsl);
 }
 
+// The declaration `out TYPE NAME;` and the assignment `NAME = vec4Value.xy…;` (for the end or the
+// start of main) of a varying fed from a vec4; nullopt unless it is a float scalar or vector.
+std::optional<FixedFunctionVaryings> vec4Varying(const ReflectedVariable& varying, const std::string& vec4Value) {
+    static const std::map<std::string, std::string> swizzles = {{"float", ".x"}, {"vec2", ".xy"}, {"vec3", ".xyz"}, {"vec4", ""}};
+    auto swizzle = swizzles.find(varying.type);
+    if (swizzle == swizzles.end() || !varying.arraySuffix.empty()) return std::nullopt;
+    return FixedFunctionVaryings{"out " + varying.type + " " + varying.name + ";\n",
+                                 "    " + varying.name + " = " + vec4Value + swizzle->second + ";\n"};
+}
+
 }  // namespace
 
 Result<FixedFunctionVaryings> hlslFixedFunctionVaryings(const std::vector<ReflectedVariable>& pixelInputs) {
-    static const std::map<std::string, std::string> swizzles = {{"float", ".x"}, {"vec2", ".xy"}, {"vec3", ".xyz"}, {"vec4", ""}};
     FixedFunctionVaryings out;
     for (const ReflectedVariable& input : pixelInputs) {
         auto [semantic, index] = splitSemantic(input.semantic);
-        auto swizzle = swizzles.find(input.type);
         std::string value = semantic == "TEXCOORD" ? "vec4(rm_TexCoordIn, 0.0, 1.0)" : semantic == "COLOR" ? "vec4(1.0)" : "";
-        if (value.empty() || swizzle == swizzles.end() || !input.arraySuffix.empty()) {
+        std::optional<FixedFunctionVaryings> varying = value.empty() ? std::nullopt : vec4Varying(input, value);
+        if (!varying) {
             return Error{"the HLSL pixel shader reads " + input.semantic +
                          ", which a pass without a vertex shader (Direct3D's fixed-function vertex processing) does "
                          "not provide: give the pass a vertex shader"};
         }
-        out.declarations += "out " + input.type + " " + input.name + ";\n";
-        out.assignments += "    " + input.name + " = " + value + swizzle->second + ";\n";
+        out.declarations += varying->declarations;
+        out.assignments += varying->assignments;
     }
     return out;
 }
 
 std::vector<std::string> supplyUnwrittenVaryings(std::string& vertexGlsl, const std::vector<ReflectedVariable>& pixelInputs) {
-    static const std::map<std::string, std::string> swizzles = {{"float", ".x"}, {"vec2", ".xy"}, {"vec3", ".xyz"}, {"vec4", ""}};
     std::string declarations, assignments;
     std::vector<std::string> supplied;
     for (const ReflectedVariable& input : pixelInputs) {
-        auto swizzle = swizzles.find(input.type);
-        if (mentionsIdentifier(vertexGlsl, input.name) || swizzle == swizzles.end() || !input.arraySuffix.empty()) continue;
+        if (mentionsIdentifier(vertexGlsl, input.name)) continue;
         const std::string value = splitSemantic(input.semantic).first == "COLOR" ? "vec4(1.0)" : "vec4(0.0, 0.0, 0.0, 1.0)";
-        declarations += "out " + input.type + " " + input.name + ";\n";
-        assignments += "    " + input.name + " = " + value + swizzle->second + ";\n";
+        std::optional<FixedFunctionVaryings> varying = vec4Varying(input, value);
+        if (!varying) continue;
+        declarations += varying->declarations;
+        assignments += varying->assignments;
         supplied.push_back(input.semantic);
     }
     const size_t main = vertexGlsl.find("void main()");
