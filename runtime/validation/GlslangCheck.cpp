@@ -1,10 +1,10 @@
 #include "validation/GlslangCheck.h"
 
 #include "core/IdentifierSearch.h"
+#include "frontend/shader/GlslangProcess.h"
 
 #include <cctype>
 #include <memory>
-#include <mutex>
 #include <string_view>
 #include <utility>
 
@@ -13,11 +13,6 @@
 
 namespace rmfx {
 namespace {
-
-void initializeGlslangOnce() {
-    static std::once_flag flag;
-    std::call_once(flag, [] { glslang::InitializeProcess(); });
-}
 
 EShLanguage language(ShaderStage stage) {
     return stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;

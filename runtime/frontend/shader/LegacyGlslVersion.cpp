@@ -1,11 +1,10 @@
 #include "frontend/shader/LegacyGlslVersion.h"
 
-#include <mutex>
-
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 
 #include "frontend/shader/CompilerLogLine.h"
+#include "frontend/shader/GlslangProcess.h"
 
 namespace rmfx {
 namespace {
@@ -18,8 +17,7 @@ struct Parsed {
 // Parsed as a desktop driver sees a stage without #version: `version`, no profile (the
 // compatibility built-ins), no client API.
 Parsed parseAs(const std::string& code, ShaderStage stage, int version) {
-    static std::once_flag initialized;
-    std::call_once(initialized, [] { glslang::InitializeProcess(); });
+    initializeGlslangOnce();
     const EShLanguage language = stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
     glslang::TShader shader(language);
     const char* text = code.c_str();
