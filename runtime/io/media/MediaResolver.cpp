@@ -242,11 +242,17 @@ MediaResolver::Found MediaResolver::resolve(const std::string& reference, const 
     return {std::nullopt, message, true};
 }
 
-std::optional<BuiltinMesh> stockModelStandIn(const std::string& reference) {
+// The reference's file name without its extension, in lower case ("" for none).
+static std::string lowerCaseStem(const std::string& reference) {
     MediaReference ref = MediaReference::parse(reference);
-    if (ref.components.empty()) return std::nullopt;
+    if (ref.components.empty()) return "";
     std::string stem = std::filesystem::path(ref.components.back()).stem().string();
     std::transform(stem.begin(), stem.end(), stem.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return stem;
+}
+
+std::optional<BuiltinMesh> stockModelStandIn(const std::string& reference) {
+    const std::string stem = lowerCaseStem(reference);
     if (stem == "screenalignedquad") return BuiltinMesh::Quad;
     if (stem == "teapot") return BuiltinMesh::Teapot;
     if (stem == "sphere") return BuiltinMesh::Sphere;
@@ -255,10 +261,8 @@ std::optional<BuiltinMesh> stockModelStandIn(const std::string& reference) {
 }
 
 BuiltinMesh placeholderMeshFor(const std::string& reference) {
-    MediaReference ref = MediaReference::parse(reference);
-    std::string stem = ref.components.empty() ? "" : std::filesystem::path(ref.components.back()).stem().string();
-    std::transform(stem.begin(), stem.end(), stem.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (auto stock = stockModelStandIn(reference)) return *stock;
+    const std::string stem = lowerCaseStem(reference);
     for (BuiltinMesh named : {BuiltinMesh::Teapot, BuiltinMesh::Sphere, BuiltinMesh::Torus, BuiltinMesh::Quad, BuiltinMesh::Plane})
         if (stem.find(builtinMeshName(named)) != std::string::npos) return named;
     return BuiltinMesh::Cube;
