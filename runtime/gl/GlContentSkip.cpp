@@ -61,6 +61,8 @@ Result<std::unique_ptr<GlContentSkip>> GlContentSkip::create() {
     skip->channelsLocation_ = glGetUniformLocation(skip->program_.get(), "Channels");
     glProgramUniform1i(skip->program_.get(), glGetUniformLocation(skip->program_.get(), "Source"), 0);
     skip->empty_ = createFramebuffer();
+    glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &skip->maxSize_.x);
+    glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &skip->maxSize_.y);
     skip->nearest_ = createSampler();
     glSamplerParameteri(skip->nearest_.get(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glSamplerParameteri(skip->nearest_.get(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -118,6 +120,7 @@ void GlContentSkip::plan(const Workspace& ws, const std::vector<GpuPass*>& sched
 
 void GlContentSkip::beginFrame() {
     for (Probe& p : probes_) p.issued = false;
+    conditionOf_ = -1;
 }
 
 void GlContentSkip::issueProbe(Probe& probe) {
@@ -125,8 +128,12 @@ void GlContentSkip::issueProbe(Probe& probe) {
     if (!t.resource) return;
     const GpuResource& r = *t.resource;
     const GLuint texture = r.textures[t.writtenThisFrame ? r.writeBuffer() : r.front].get();
-    glNamedFramebufferParameteri(empty_.get(), GL_FRAMEBUFFER_DEFAULT_WIDTH, r.spec.size.x);
-    glNamedFramebufferParameteri(empty_.get(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, r.spec.size.y);
+    if (r.spec.size.x > maxSize_.x || r.spec.size.y > maxSize_.y) return;  // the effect then runs unconditionally
+    if (r.spec.size != emptySize_) {  // each change makes the driver validate the framebuffer again
+        glNamedFramebufferParameteri(empty_.get(), GL_FRAMEBUFFER_DEFAULT_WIDTH, r.spec.size.x);
+        glNamedFramebufferParameteri(empty_.get(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, r.spec.size.y);
+        emptySize_ = r.spec.size;
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, empty_.get());
     glViewport(0, 0, r.spec.size.x, r.spec.size.y);
     glDisable(GL_BLEND);
@@ -150,10 +157,13 @@ void GlContentSkip::issueProbe(Probe& probe) {
 
 void GlContentSkip::beforePass(size_t index) {
     if (index >= effectOfPass_.size() || effectOfPass_[index] < 0) return;
+    if (conditionOf_ == effectOfPass_[index]) return;
     const ActiveEffect& e = effects_[static_cast<size_t>(effectOfPass_[index])];
     Probe& probe = probes_[e.probe];
     if (!probe.issued) issueProbe(probe);
-    if (probe.issued) glBeginConditionalRender(probe.queries[slot_].get(), GL_QUERY_WAIT);
+    if (!probe.issued) return;
+    glBeginConditionalRender(probe.queries[slot_].get(), GL_QUERY_WAIT);
+    conditionOf_ = effectOfPass_[index];
 }
 
 void GlContentSkip::afterPass(size_t index) {
@@ -161,7 +171,10 @@ void GlContentSkip::afterPass(size_t index) {
     const ActiveEffect& e = effects_[static_cast<size_t>(effectOfPass_[index])];
     const Probe& probe = probes_[e.probe];
     if (!probe.issued) return;
-    glEndConditionalRender();
+    const bool nextInTheSameEffect = index + 1 < effectOfPass_.size() && effectOfPass_[index + 1] == effectOfPass_[index];
+    if (spanning_ && nextInTheSameEffect && index != e.last) return;
+    if (conditionOf_ >= 0) glEndConditionalRender();
+    conditionOf_ = -1;
     if (index != e.last) return;
     const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glBeginConditionalRender(probe.queries[slot_].get(), GL_QUERY_WAIT_INVERTED);

@@ -35,6 +35,11 @@ public:
     void plan(const Workspace& ws, const std::vector<GpuPass*>& schedule, const GlRenderTargets& targets,
               const std::vector<std::string>& outputs);
 
+    // Whether one conditional rendering may span consecutive passes of an effect (each pass's
+    // begin and end cost the driver a wait on the query): not when something else draws between
+    // passes that must run whatever the condition (the health check).
+    void setSpanning(bool spanning) { spanning_ = spanning; }
+
     void beginFrame();
     // Around scheduled pass `index` (its position in the schedule given to plan()).
     void beforePass(size_t index);
@@ -64,6 +69,8 @@ private:
 
     ProgramHandle program_;
     FramebufferHandle empty_;
+    glm::ivec2 maxSize_{0, 0};    // the largest framebuffer
+    glm::ivec2 emptySize_{0, 0};  // empty_'s default size
     SamplerHandle nearest_;
     VertexArrayHandle vertexArray_;
     int channelsLocation_ = -1;
@@ -73,6 +80,8 @@ private:
     std::vector<int> effectOfPass_;  // schedule position → index into effects_, or -1
     int slot_ = 0;                   // the query of this frame in each probe's ring
     int lastFrameSlot_ = -1;         // the last finished frame's, -1 before the first
+    bool spanning_ = true;
+    int conditionOf_ = -1;           // the effect whose condition is active, or -1
     std::map<std::string, std::string> skipped_;
 };
 
