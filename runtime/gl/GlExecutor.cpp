@@ -188,6 +188,7 @@ struct GlExecutor::Build {
             auto skip = GlContentSkip::create();
             if (!skip) return Failure::failure({workspaceError(ws, "", skip.error())});
             impl->contentSkip = std::move(*skip);
+            impl->contentSkip->setSpanning(!options.checkHealth);  // the check's draws must not be skipped
         }
         if (options.checkHealth) {
             auto check = GlHealthCheck::create();
@@ -279,7 +280,7 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
         if (memory.spec.mipmaps) glGenerateTextureMipmap(memory.textures[memory.writeBuffer()].get());
         if (s.healthCheck)
             s.healthCheck->afterPass(position, pass.name, target.name, memory.textures[memory.writeBuffer()].get(),
-                                     memory.spec.format, healthInputs);
+                                     memory.spec.size, memory.spec.format, healthInputs);
         s.timers.passDone(pass.name);
         for (const std::string& e : drainGlErrors())
             d.push_back({Diagnostic::Severity::Error, pass.where, passLabel(pass), e + " while drawing into '" + target.name + "'"});

@@ -72,10 +72,14 @@ void main() {
     if (negativeInf) record(2, pixel);
     if (negative) record(3, pixel);
     if (atLargest) record(4, pixel);
+    // Counted by the occlusion query that lets the pixel draw below run only where a kind was found.
+    if (!(nan || positiveInf || negativeInf || negative || atLargest)) discard;
 }
 )";
 
 // One fragment per kind (a 5x1 viewport): the first pass of the frame to hold it records where and what.
+// Drawn under conditional rendering on the count draw's occlusion query, without waiting for it:
+// drawn or not when nothing was found, it changes nothing.
 const char* const fetchSource = "#version 450 core\n" RMFX_HEALTH_BLOCK R"(
 uniform sampler2D Target;
 uniform sampler2D Inputs[8];
@@ -141,6 +145,9 @@ Result<std::unique_ptr<GlHealthCheck>> GlHealthCheck::create() {
     check->fetchInputCount_ = glGetUniformLocation(f, "InputCount");
     check->fetchInputs_ = glGetUniformLocation(f, "Inputs");
     check->empty_ = createFramebuffer();
+    glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &check->maxSize_.x);
+    glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &check->maxSize_.y);
+    check->found_ = createQuery(GL_ANY_SAMPLES_PASSED);
     check->vertexArray_ = createVertexArray();
     return check;
 }
@@ -174,25 +181,28 @@ void GlHealthCheck::beginFrame(int frame, size_t passes) {
 }
 
 void GlHealthCheck::afterPass(size_t position, const std::string& pass, const std::string& target, unsigned texture,
-                              TargetFormat format, const std::vector<Input>& inputs) {
+                              glm::ivec2 size, TargetFormat format, const std::vector<Input>& inputs) {
     if (position >= passes_.size()) return;
     PassHealth& health = passes_[position];
     health.pass = pass;
     health.target = target;
     const FormatHealthLimits limits = formatHealthLimits(format);
     health.inspected = limits.inspected;
-    if (!limits.inspected || texture == 0) return;
-    GLint width = 0, height = 0;
-    glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &width);
-    glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &height);
-    if (width <= 0 || height <= 0) return;
-    widths_[position] = width;
+    if (!limits.inspected || texture == 0 || size.x <= 0 || size.y <= 0 || size.x > maxSize_.x || size.y > maxSize_.y)
+        return;
+    widths_[position] = size.x;
 
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_.get());
     glBindTextureUnit(kTargetUnit, texture);
     glBindSampler(kTargetUnit, 0);
-    glNamedFramebufferParameteri(empty_.get(), GL_FRAMEBUFFER_DEFAULT_WIDTH, std::max(width, healthKindCount));
-    glNamedFramebufferParameteri(empty_.get(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, height);
+    // Changed only when the size does: each change makes the driver validate the framebuffer again
+    // (and a framebuffer larger than the draw costs llvmpipe its whole area).
+    const glm::ivec2 defaultSize{std::max(size.x, healthKindCount), size.y};
+    if (defaultSize != emptySize_) {
+        glNamedFramebufferParameteri(empty_.get(), GL_FRAMEBUFFER_DEFAULT_WIDTH, defaultSize.x);
+        glNamedFramebufferParameteri(empty_.get(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, defaultSize.y);
+        emptySize_ = defaultSize;
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, empty_.get());
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
@@ -200,14 +210,18 @@ void GlHealthCheck::afterPass(size_t position, const std::string& pass, const st
     glDisable(GL_CULL_FACE);
     glDisable(GL_SCISSOR_TEST);
     glBindVertexArray(vertexArray_.get());
-    glViewport(0, 0, width, height);
+    glViewport(0, 0, size.x, size.y);
     const GLuint r = reduce_.get();
     glUseProgram(r);
     glUniform1i(reducePosition_, static_cast<GLint>(position));
     glUniform1i(reduceChannels_, limits.channels);
     glUniform1i(reduceNegatives_, limits.holdsNegatives ? 1 : 0);
     glUniform4f(reduceLargest_, limits.largest.x, limits.largest.y, limits.largest.z, limits.largest.w);
+    glBeginQuery(GL_ANY_SAMPLES_PASSED, found_.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    glEndQuery(GL_ANY_SAMPLES_PASSED);
+    // Orders this count before the pixel draw's reads, and every earlier pixel draw's writes
+    // before the next pass's: no second barrier is needed after the pixel draw.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
     const GLuint f = fetch_.get();
@@ -220,8 +234,9 @@ void GlHealthCheck::afterPass(size_t position, const std::string& pass, const st
     glUniform1i(fetchInputCount_, count);
     glUniform1i(fetchPosition_, static_cast<GLint>(position));
     glViewport(0, 0, healthKindCount, 1);
+    glBeginConditionalRender(found_.get(), GL_QUERY_NO_WAIT);
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glEndConditionalRender();
     glBindVertexArray(0);
     glBindTextureUnit(kTargetUnit, 0);
 }

@@ -3,14 +3,17 @@
 // each pass a full-screen draw over the target's size (into a framebuffer without attachments)
 // reads the target it wrote, counts the pixels holding each kind (NaN, ±Inf, negative, at the
 // format's largest) with atomics in a storage buffer and keeps the first such pixel in reading
-// order; a second draw of five fragments lets the first pass of the frame that holds a kind
-// record that pixel's value and its inputs' texels there. Nothing is read back until
+// order; a second draw of five fragments, only where the first found something (conditional
+// rendering on its occlusion query), lets the first pass of the frame that holds a kind record that
+// pixel's value and its inputs' texels there. Nothing is read back until
 // the frame ends, and then only the buffer (a few hundred bytes per pass): no stall between passes.
 // Needs a current GL 4.5 context.
 
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <glm/vec2.hpp>
 
 #include "core/Result.h"
 #include "gl/GlHandles.h"
@@ -31,10 +34,10 @@ public:
     };
 
     void beginFrame(int frame, size_t passes);
-    // After scheduled pass `position` drew into `texture` (of `format`, `target`'s memory), with
-    // its 2D inputs still bound to their units.
+    // After scheduled pass `position` drew into `texture` (level 0 of `size`, of `format`,
+    // `target`'s memory), with its 2D inputs still bound to their units.
     void afterPass(size_t position, const std::string& pass, const std::string& target, unsigned texture,
-                   TargetFormat format, const std::vector<Input>& inputs);
+                   glm::ivec2 size, TargetFormat format, const std::vector<Input>& inputs);
     // Reads the buffer (waits for the frame's GPU work).
     FrameHealth endFrame();
 
@@ -47,6 +50,9 @@ private:
     int fetchPosition_ = -1, fetchInputCount_ = -1, fetchInputs_ = -1;
     BufferHandle buffer_;
     FramebufferHandle empty_;  // no attachment: the shaders only write the buffer
+    glm::ivec2 maxSize_{0, 0};    // the largest framebuffer
+    glm::ivec2 emptySize_{0, 0};  // empty_'s default size
+    QueryHandle found_;         // whether the last count draw found anything
     VertexArrayHandle vertexArray_;
     size_t capacity_ = 0;  // passes the buffer holds
     int frame_ = 0;
