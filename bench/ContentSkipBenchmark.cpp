@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -84,6 +85,13 @@ struct Pair {
 
 double median(std::vector<double> v) { return v.empty() ? 0.0 : percentile(std::move(v), 0.5); }
 
+// This thread's CPU time: what issuing a frame costs the caller, the driver's work on it included.
+double threadCpuMilliseconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -140,6 +148,7 @@ int main(int argc, char** argv) {
     for (Input i : {Input::Dark, Input::Bright, Input::Alternating})
         for (Executor e : {Executor::SkipOn, Executor::SkipOff, Executor::NoEffects}) pairs.push_back({e, i});
     std::map<std::pair<Executor, Input>, std::vector<double>> roundMedians;  // ms
+    std::map<std::pair<Executor, Input>, std::vector<double>> issueCpu;      // ms per frame, renderFrame alone
     std::map<Input, std::pair<int, int>> skippedFrames;                       // skip on: frames skipping any effect, frames
     std::string frameError;
 
@@ -153,7 +162,9 @@ int main(int argc, char** argv) {
             glFinish();
             const float time = static_cast<float>(k) / 60.0f;
             auto start = Clock::now();
+            const double cpuStart = threadCpuMilliseconds();
             Diagnostics d = executor.renderFrame({time, 1.0f / 60.0f}).takeDiagnostics();
+            if (count) issueCpu[{pair.executor, pair.input}].push_back(threadCpuMilliseconds() - cpuStart);
             glFinish();
             times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
             if (hasErrors(d) && frameError.empty()) frameError = formatAll(d);
@@ -213,6 +224,13 @@ int main(int argc, char** argv) {
                     spread(ratios(Executor::SkipOn, Executor::SkipOff, i)).c_str(),
                     spread(ratios(Executor::SkipOn, Executor::NoEffects, i)).c_str(), skipping, total, target);
     }
+    // What the calling thread spends issuing a frame (renderFrame, before glFinish): on a GPU whose
+    // passes take microseconds, this is most of a small frame.
+    std::printf("\nCPU time to issue a frame (ms, this thread, median of all frames):\n");
+    std::printf("%-12s %8s %9s %11s\n", "input", "skip on", "skip off", "no effects");
+    for (Input i : {Input::Dark, Input::Bright, Input::Alternating})
+        std::printf("%-12s %8.3f %9.3f %11.3f\n", name(i), median(issueCpu[{Executor::SkipOn, i}]),
+                    median(issueCpu[{Executor::SkipOff, i}]), median(issueCpu[{Executor::NoEffects, i}]));
     // Where a dark frame's time goes: each pass's GPU time (timer queries), skip on against no effects.
     std::printf("\nGPU time of each pass on a dark frame (ms, timer queries; median of 5 frames):\n");
     std::map<std::string, std::map<Executor, double>> passMs;
