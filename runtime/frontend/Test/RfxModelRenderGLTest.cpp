@@ -38,6 +38,10 @@ namespace rmfx::test {
 namespace {
 
 constexpr double kUnorm8Step = 1.0 / 255.0;
+// How far an 8-bit output may lie from the exact value: Direct3D 10 and later let a float-to-unorm
+// conversion be off by 0.6 of a step, and GPUs follow it (an NVIDIA H200 wrote 144 for 144.59,
+// where llvmpipe rounds to nearest).
+constexpr double kUnorm8Conversion = 0.6 * kUnorm8Step;
 
 // docs/rendermonkey.md: light 0 is directional from the camera, position (0, 0, 1, 0) in eye space,
 // diffuse (1, 1, 1); the front material's diffuse is (0.8, 0.8, 0.8); gl_Color is white.
@@ -137,8 +141,8 @@ void renderAndCompare(std::unique_ptr<Workspace> ws, const ModelCheck& check) {
     RayCastImage reference = rayCastImage(check.cast, check.shade, glm::dvec4(0.0, 0.0, 0.0, 1.0), check.comparable);
     EXPECT_GE(reference.comparedSurfacePixels, check.minComparedPixels)
         << "too few pixels of the model to compare (" << reference.surfacePixels << " on the surface)";
-    // Half a step of the 8-bit output's rounding, and float arithmetic on the GPU.
-    const double tolerance = 0.5 * kUnorm8Step + 1e-4;
+    // The 8-bit output's conversion, and float arithmetic on the GPU.
+    const double tolerance = kUnorm8Conversion + 1e-4;
     RayCastDifference d = worstExcess(image, reference);
     expectWithin("max distance outside the float64 ray cast's range", d.worst, tolerance);
     if (d.worst > tolerance) ADD_FAILURE() << d.describe(image, reference);
@@ -260,7 +264,7 @@ TEST_F(RfxModelRenderGLTest, AScreenAlignedQuadFromA3dsFileCoversTheScreen) {
             const glm::dvec4 d = glm::abs(image.at(x, y) - expected);
             worst = std::max({worst, d.x, d.y, d.z, d.w});
         }
-    expectWithin("max abs error against (u, v, 0.5) across the screen", worst, 0.5 * kUnorm8Step + 1e-4);
+    expectWithin("max abs error against (u, v, 0.5) across the screen", worst, kUnorm8Conversion + 1e-4);
 }
 
 // Public RenderMonkey files, from RMFX_PUBLIC_RFX_DIR; the test is skipped without it.
