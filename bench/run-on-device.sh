@@ -2,7 +2,7 @@
 # On a lent GPU machine (no Debian packages there): the render, the replay, the benchmarks and the
 # GL test suite, from a bundle of the programs made here (docs/performance.md, "On a GPU"):
 #
-#   python3 scripts/device-bundle.py /tmp/bundle build/rmfx build/rmfx_bench_effects build/tests/rmfx_gl_tests
+#   python3 scripts/device-bundle.py /tmp/bundle build/rmfx build/rmfx-hlsl-worker build/rmfx_bench_* build/tests/rmfx_gl_tests
 #   mkdir -p .devbundle && tar cf - -C /tmp bundle | xz -6 -T2 >.devbundle/bundle.tar.xz
 #   then, there, with .devbundle, .gl (the GL loaders' .debs) and samples/media carried:
 #   bash bench/run-on-device.sh
@@ -10,7 +10,8 @@
 # Everything goes to $OUT (default /tmp/device-out): log.txt and results.tar.gz (the image, replay
 # JUnit report and failures, benchmark tables, GL test report). Each part has its own time limit,
 # so a failing one leaves time for the others. QUICK=1 runs a few seconds of each (a dry run);
-# PARTS picks some of render replay bench accuracy probe gltests.
+# PARTS picks some of render replay bench accuracy probe gltests health skip sequence (the last
+# three: rmfx_bench_health_check, rmfx_bench_content_skip, rmfx_bench_sequence, when bundled).
 set -uo pipefail
 out=${OUT:-/tmp/device-out}
 quick=${QUICK:-0}
@@ -33,7 +34,9 @@ for d in /usr/local/nvidia/lib64 /usr/local/nvidia/lib; do [ -d "$d" ] && LD_LIB
 # The GL tests were built here with /work/main as their source folder and /work/main/build as the build.
 if [ "$root" != /work/main ]; then mkdir -p /work && ln -sfn "$root" /work/main; fi
 mkdir -p build/tests
-cp "$bundle/bin/rmfx" "$bundle/bin/rmfx_bench_effects" build/
+for p in rmfx rmfx-hlsl-worker rmfx_bench_effects rmfx_bench_health_check rmfx_bench_content_skip rmfx_bench_sequence; do
+  [ -f "$bundle/bin/$p" ] && cp "$bundle/bin/$p" build/
+done
 cp "$bundle/bin/rmfx_gl_tests" build/tests/
 
 part "machine"
@@ -70,6 +73,27 @@ if has probe; then  # bench/device-probes/*.xml: each target of each written as 
       timeout 30 build/rmfx render "$w" --target "$t" -o "$out/results/$(basename "$w" .xml)-$t.exr"
     done
   done
+fi
+
+if has health; then
+  part "rmfx_bench_health_check (render --check against no check, 512x512)"
+  if [ "$quick" = 1 ]; then args="--rounds 1 --frames 2"; else args="--rounds 10 --frames 20"; fi
+  timeout "${HEALTH_SECONDS:-90}" build/rmfx_bench_health_check $args
+  echo "exit status: $?"
+fi
+
+if has skip; then
+  part "rmfx_bench_content_skip (dark, bright, alternating; 512x512)"
+  if [ "$quick" = 1 ]; then args="--rounds 1 --frames 2"; else args="--rounds 10 --frames 20"; fi
+  timeout "${SKIP_SECONDS:-120}" build/rmfx_bench_content_skip $args
+  echo "exit status: $?"
+fi
+
+if has sequence; then
+  part "rmfx_bench_sequence (60 frames of 1920x1080 EXR through hdr_lighting, overlap on and off)"
+  if [ "$quick" = 1 ]; then args="--frames 3 --size 256x128 --repetitions 1"; else args="--frames 60 --repetitions ${SEQUENCE_REPETITIONS:-3}"; fi
+  timeout "${SEQUENCE_SECONDS:-200}" build/rmfx_bench_sequence $args
+  echo "exit status: $?"
 fi
 
 if has gltests; then
