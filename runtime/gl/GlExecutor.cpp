@@ -239,6 +239,7 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
         GpuTarget& target = *gp.target;
         GpuResource& memory = *target.resource;
         GLuint framebuffer = memory.framebuffers[memory.writeBuffer()].get();
+        if (s.healthCheck) s.healthCheck->beforeWriting(memory.textures[memory.writeBuffer()].get());
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
         glViewport(0, 0, memory.spec.size.x, memory.spec.size.y);
         applyRenderState(pass);

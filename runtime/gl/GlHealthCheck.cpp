@@ -16,26 +16,25 @@ constexpr int kMaxInputs = 8;
 // The unit the inspected target is bound to: above those a pass's samplers use.
 constexpr GLuint kTargetUnit = 31;
 
-// The storage buffer: the first finding of each kind, then (count, first pixel) per pass and kind.
-// Mirrors the std430 block of the shaders below.
-struct FirstRecord {
-    std::int32_t pass;
-    std::int32_t pixel;
-    std::int32_t padding[2];
-    float value[4];
-    float inputs[kMaxInputs][4];
-};
-static_assert(sizeof(FirstRecord) == 160);
+// Two storage buffers: per pass and kind, its count and first pixel (binding 0), and what the pixel
+// draw found there (binding 1). Mirror the std430 blocks of the shaders below.
 struct PassEntry {
     std::int32_t count;
     std::int32_t first;
 };
-constexpr size_t kFirstsBytes = sizeof(FirstRecord) * healthKindCount;
+struct PixelRecord {
+    std::int32_t pixel;
+    std::int32_t padding[3];
+    float value[4];
+    float inputs[kMaxInputs][4];
+};
+static_assert(sizeof(PixelRecord) == 160);
 
-#define RMFX_HEALTH_BLOCK                                                               \
-    "struct First { int pass; int pixel; int pad0; int pad1; vec4 value; vec4 inputs[8]; };\n" \
-    "struct Entry { int count; int first; };\n"                                         \
-    "layout(std430, binding = 0) buffer Health { First firsts[5]; Entry entries[]; };\n"
+#define RMFX_HEALTH_BLOCK                                                         \
+    "struct Entry { int count; int first; };\n"                                  \
+    "struct Record { int pixel; int pad0; int pad1; int pad2; vec4 value; vec4 inputs[8]; };\n" \
+    "layout(std430, binding = 0) buffer Entries { Entry entries[]; };\n"         \
+    "layout(std430, binding = 1) buffer Records { Record records[]; };\n"
 
 // Fragment shaders drawn over an attachment-less framebuffer: a compute dispatch costs about a
 // millisecond on llvmpipe whatever it does, a draw a fraction of that.
@@ -72,14 +71,11 @@ void main() {
     if (negativeInf) record(2, pixel);
     if (negative) record(3, pixel);
     if (atLargest) record(4, pixel);
-    // Counted by the occlusion query that lets the pixel draw below run only where a kind was found.
-    if (!(nan || positiveInf || negativeInf || negative || atLargest)) discard;
 }
 )";
 
-// One fragment per kind (a 5x1 viewport): the first pass of the frame to hold it records where and what.
-// Drawn under conditional rendering on the count draw's occlusion query, without waiting for it:
-// drawn or not when nothing was found, it changes nothing.
+// One fragment per kind (a 5x1 viewport): where a pass holds the kind, the first pixel's value and
+// its inputs' texels there, in the pass's own record (the frame's first pass is chosen on reading).
 const char* const fetchSource = "#version 450 core\n" RMFX_HEALTH_BLOCK R"(
 uniform sampler2D Target;
 uniform sampler2D Inputs[8];
@@ -87,17 +83,17 @@ uniform int InputCount;
 uniform int Position;
 void main() {
     int kind = int(gl_FragCoord.x);
-    Entry e = entries[Position * 5 + kind];
+    int slot = Position * 5 + kind;
+    Entry e = entries[slot];
     if (e.count == 0) return;
-    if (atomicCompSwap(firsts[kind].pass, -1, Position) != -1) return;
     ivec2 size = textureSize(Target, 0);
     ivec2 p = ivec2(e.first % size.x, size.y - 1 - e.first / size.x);
-    firsts[kind].pixel = e.first;
-    firsts[kind].value = texelFetch(Target, p, 0);
+    records[slot].pixel = e.first;
+    records[slot].value = texelFetch(Target, p, 0);
     vec2 centre = (vec2(p) + 0.5) / vec2(size);
     for (int i = 0; i < InputCount; ++i) {
         ivec2 s = textureSize(Inputs[i], 0);
-        firsts[kind].inputs[i] = texelFetch(Inputs[i], clamp(ivec2(centre * vec2(s)), ivec2(0), s - 1), 0);
+        records[slot].inputs[i] = texelFetch(Inputs[i], clamp(ivec2(centre * vec2(s)), ivec2(0), s - 1), 0);
     }
 }
 )";
@@ -147,17 +143,18 @@ Result<std::unique_ptr<GlHealthCheck>> GlHealthCheck::create() {
     check->empty_ = createFramebuffer();
     glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &check->maxSize_.x);
     glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &check->maxSize_.y);
-    check->found_ = createQuery(GL_ANY_SAMPLES_PASSED);
     check->vertexArray_ = createVertexArray();
     return check;
 }
 
 void GlHealthCheck::growBuffer(size_t passes) {
-    if (buffer_.get() && passes <= capacity_) return;
+    if (entries_.get() && passes <= capacity_) return;
     capacity_ = std::max<size_t>(passes, 16);
-    buffer_ = createBuffer();
-    glNamedBufferStorage(buffer_.get(), static_cast<GLsizeiptr>(kFirstsBytes + capacity_ * healthKindCount * sizeof(PassEntry)),
-                         nullptr, GL_DYNAMIC_STORAGE_BIT);
+    entries_ = createBuffer();
+    glNamedBufferStorage(entries_.get(), static_cast<GLsizeiptr>(capacity_ * healthKindCount * sizeof(PassEntry)), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
+    records_ = createBuffer();
+    glNamedBufferStorage(records_.get(), static_cast<GLsizeiptr>(capacity_ * healthKindCount * sizeof(PixelRecord)), nullptr, 0);
 }
 
 void GlHealthCheck::beginFrame(int frame, size_t passes) {
@@ -166,18 +163,63 @@ void GlHealthCheck::beginFrame(int frame, size_t passes) {
     passes_.assign(passes, PassHealth{});
     inputLabels_.assign(passes, {});
     widths_.assign(passes, 0);
-    std::vector<unsigned char> initial(kFirstsBytes + passes * healthKindCount * sizeof(PassEntry), 0);
-    for (int k = 0; k < healthKindCount; ++k) {
-        FirstRecord record{};
-        record.pass = -1;
-        std::memcpy(initial.data() + k * sizeof(FirstRecord), &record, sizeof record);
-    }
-    for (size_t i = 0; i < passes * healthKindCount; ++i) {
-        PassEntry entry{0, INT_MAX};
-        std::memcpy(initial.data() + kFirstsBytes + i * sizeof(PassEntry), &entry, sizeof entry);
-    }
+    pending_.clear();
+    std::vector<PassEntry> initial(passes * healthKindCount, PassEntry{0, INT_MAX});
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glNamedBufferSubData(buffer_.get(), 0, static_cast<GLsizeiptr>(initial.size()), initial.data());
+    if (!initial.empty())
+        glNamedBufferSubData(entries_.get(), 0, static_cast<GLsizeiptr>(initial.size() * sizeof(PassEntry)), initial.data());
+}
+
+void GlHealthCheck::bindCommonState() {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, entries_.get());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, records_.get());
+    glBindFramebuffer(GL_FRAMEBUFFER, empty_.get());
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_SCISSOR_TEST);
+    glBindVertexArray(vertexArray_.get());
+}
+
+void GlHealthCheck::drawCount(const Inspection& i) {
+    // Changed only when the size does: each change makes the driver validate the framebuffer again
+    // (and a framebuffer larger than the draw costs llvmpipe its whole area).
+    const glm::ivec2 defaultSize{std::max(i.size.x, healthKindCount), i.size.y};
+    if (defaultSize != emptySize_) {
+        glNamedFramebufferParameteri(empty_.get(), GL_FRAMEBUFFER_DEFAULT_WIDTH, defaultSize.x);
+        glNamedFramebufferParameteri(empty_.get(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, defaultSize.y);
+        emptySize_ = defaultSize;
+    }
+    glBindTextureUnit(kTargetUnit, i.texture);
+    glBindSampler(kTargetUnit, 0);
+    glViewport(0, 0, i.size.x, i.size.y);
+    glUseProgram(reduce_.get());
+    glUniform1i(reducePosition_, static_cast<GLint>(i.position));
+    glUniform1i(reduceChannels_, i.limits.channels);
+    glUniform1i(reduceNegatives_, i.limits.holdsNegatives ? 1 : 0);
+    glUniform4f(reduceLargest_, i.limits.largest.x, i.limits.largest.y, i.limits.largest.z, i.limits.largest.w);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void GlHealthCheck::drawPixel(const Inspection& i) {
+    glBindTextureUnit(kTargetUnit, i.texture);
+    glUseProgram(fetch_.get());
+    GLint units[kMaxInputs] = {};
+    const int count = std::min(static_cast<int>(i.inputs.size()), kMaxInputs);
+    for (int k = 0; k < kMaxInputs; ++k) {
+        units[k] = static_cast<GLint>(kTargetUnit);
+        if (k >= count) continue;
+        const Input& input = i.inputs[static_cast<size_t>(k)];
+        units[k] = k;
+        glBindTextureUnit(static_cast<GLuint>(k), input.texture);
+        glBindSampler(static_cast<GLuint>(k), 0);
+    }
+    glUniform1iv(fetchInputs_, kMaxInputs, units);
+    glUniform1i(fetchInputCount_, count);
+    glUniform1i(fetchPosition_, static_cast<GLint>(i.position));
+    glViewport(0, 0, healthKindCount, 1);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 void GlHealthCheck::afterPass(size_t position, const std::string& pass, const std::string& target, unsigned texture,
@@ -191,86 +233,67 @@ void GlHealthCheck::afterPass(size_t position, const std::string& pass, const st
     if (!limits.inspected || texture == 0 || size.x <= 0 || size.y <= 0 || size.x > maxSize_.x || size.y > maxSize_.y)
         return;
     widths_[position] = size.x;
-
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_.get());
-    glBindTextureUnit(kTargetUnit, texture);
-    glBindSampler(kTargetUnit, 0);
-    // Changed only when the size does: each change makes the driver validate the framebuffer again
-    // (and a framebuffer larger than the draw costs llvmpipe its whole area).
-    const glm::ivec2 defaultSize{std::max(size.x, healthKindCount), size.y};
-    if (defaultSize != emptySize_) {
-        glNamedFramebufferParameteri(empty_.get(), GL_FRAMEBUFFER_DEFAULT_WIDTH, defaultSize.x);
-        glNamedFramebufferParameteri(empty_.get(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, defaultSize.y);
-        emptySize_ = defaultSize;
+    Inspection inspection{position, texture, size, limits, {}};
+    for (size_t k = 0; k < inputs.size() && k < static_cast<size_t>(kMaxInputs); ++k) {
+        inputLabels_[position].push_back(inputs[k].label);
+        inspection.inputs.push_back(inputs[k]);
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, empty_.get());
-    glDisable(GL_BLEND);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_SCISSOR_TEST);
-    glBindVertexArray(vertexArray_.get());
-    glViewport(0, 0, size.x, size.y);
-    const GLuint r = reduce_.get();
-    glUseProgram(r);
-    glUniform1i(reducePosition_, static_cast<GLint>(position));
-    glUniform1i(reduceChannels_, limits.channels);
-    glUniform1i(reduceNegatives_, limits.holdsNegatives ? 1 : 0);
-    glUniform4f(reduceLargest_, limits.largest.x, limits.largest.y, limits.largest.z, limits.largest.w);
-    glBeginQuery(GL_ANY_SAMPLES_PASSED, found_.get());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glEndQuery(GL_ANY_SAMPLES_PASSED);
-    // Orders this count before the pixel draw's reads, and every earlier pixel draw's writes
-    // before the next pass's: no second barrier is needed after the pixel draw.
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    pending_.push_back(std::move(inspection));
+}
 
-    const GLuint f = fetch_.get();
-    glUseProgram(f);
-    GLint units[kMaxInputs] = {};
-    int count = std::min(static_cast<int>(inputs.size()), kMaxInputs);
-    for (int i = 0; i < kMaxInputs; ++i) units[i] = i < count ? inputs[static_cast<size_t>(i)].unit : static_cast<GLint>(kTargetUnit);
-    for (int i = 0; i < count; ++i) inputLabels_[position].push_back(inputs[static_cast<size_t>(i)].label);
-    glUniform1iv(fetchInputs_, kMaxInputs, units);
-    glUniform1i(fetchInputCount_, count);
-    glUniform1i(fetchPosition_, static_cast<GLint>(position));
-    glViewport(0, 0, healthKindCount, 1);
-    glBeginConditionalRender(found_.get(), GL_QUERY_NO_WAIT);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glEndConditionalRender();
+void GlHealthCheck::beforeWriting(unsigned texture) {
+    for (const Inspection& i : pending_) {
+        bool read = i.texture == texture;
+        for (const Input& input : i.inputs) read = read || input.texture == texture;
+        if (read) {
+            inspectPending();
+            return;
+        }
+    }
+}
+
+void GlHealthCheck::inspectPending() {
+    if (pending_.empty()) return;
+    // None of the count draws waits for another; one barrier orders them all before the pixel draws.
+    bindCommonState();
+    for (const Inspection& i : pending_) drawCount(i);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    for (const Inspection& i : pending_) drawPixel(i);
     glBindVertexArray(0);
     glBindTextureUnit(kTargetUnit, 0);
+    pending_.clear();
 }
 
 FrameHealth GlHealthCheck::endFrame() {
+    inspectPending();
     FrameHealth frame;
     const size_t passes = passes_.size();
-    std::vector<unsigned char> data(kFirstsBytes + passes * healthKindCount * sizeof(PassEntry));
+    std::vector<PassEntry> entries(passes * healthKindCount);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glGetNamedBufferSubData(buffer_.get(), 0, static_cast<GLsizeiptr>(data.size()), data.data());
-    std::vector<std::array<PassEntry, healthKindCount>> entries(passes);
-    for (size_t p = 0; p < passes; ++p) {
-        for (int k = 0; k < healthKindCount; ++k) {
-            std::memcpy(&entries[p][static_cast<size_t>(k)],
-                        data.data() + kFirstsBytes + (p * healthKindCount + static_cast<size_t>(k)) * sizeof(PassEntry),
-                        sizeof(PassEntry));
-            passes_[p].counts[static_cast<size_t>(k)] = entries[p][static_cast<size_t>(k)].count;
-        }
-    }
+    if (!entries.empty())
+        glGetNamedBufferSubData(entries_.get(), 0, static_cast<GLsizeiptr>(entries.size() * sizeof(PassEntry)), entries.data());
+    for (size_t p = 0; p < passes; ++p)
+        for (int k = 0; k < healthKindCount; ++k)
+            passes_[p].counts[static_cast<size_t>(k)] = entries[p * healthKindCount + static_cast<size_t>(k)].count;
     for (int k = 0; k < healthKindCount; ++k) {
-        FirstRecord record;
-        std::memcpy(&record, data.data() + k * sizeof(FirstRecord), sizeof record);
-        if (record.pass < 0 || static_cast<size_t>(record.pass) >= passes) continue;
-        const PassHealth& p = passes_[static_cast<size_t>(record.pass)];
+        size_t first = passes;
+        for (size_t p = 0; p < passes && first == passes; ++p)
+            if (passes_[p].counts[static_cast<size_t>(k)] > 0) first = p;
+        if (first == passes) continue;
+        PixelRecord record{};
+        glGetNamedBufferSubData(records_.get(), static_cast<GLintptr>((first * healthKindCount + static_cast<size_t>(k)) * sizeof record),
+                                sizeof record, &record);
+        const PassHealth& p = passes_[first];
         HealthFinding finding;
         finding.kind = allHealthKinds[static_cast<size_t>(k)];
         finding.frame = frame_;
         finding.pass = p.pass;
         finding.target = p.target;
         finding.count = p.counts[static_cast<size_t>(k)];
-        const int width = std::max(1, widths_[static_cast<size_t>(record.pass)]);
+        const int width = std::max(1, widths_[first]);
         finding.pixel = glm::ivec2(record.pixel % width, record.pixel / width);
         finding.value = glm::vec4(record.value[0], record.value[1], record.value[2], record.value[3]);
-        const auto& labels = inputLabels_[static_cast<size_t>(record.pass)];
+        const auto& labels = inputLabels_[first];
         for (size_t i = 0; i < labels.size(); ++i)
             finding.inputs.push_back({labels[i], glm::vec4(record.inputs[i][0], record.inputs[i][1], record.inputs[i][2],
                                                            record.inputs[i][3])});

@@ -221,6 +221,59 @@ void main() { fragColor = vec4(texelFetch(s, ivec2(gl_FragCoord.xy), 0).rrr * 0.
     }
 }
 
+// The inspections wait for memory to be written again: a target that holds NaN after its first
+// pass and is overwritten clean later in the frame is reported for that first pass, with the
+// value it held then, and the pass that read it sees its NaN input.
+TEST_F(HealthCheckGLTest, ATargetOverwrittenLaterInTheFrameIsReportedAsItsFirstPassLeftIt) {
+    const std::string xml = R"(<workspace version="1" name="overwrite">
+  <target name="t" format="rgba32f" scale="1"/>
+  <target name="u" format="rgba32f" scale="1"/>
+  <pass name="poison" target="t"><shader stage="fragment"><![CDATA[
+#version 450 core
+out vec4 fragColor;
+void main() {
+    fragColor = vec4(uintBitsToFloat(0x7fc00000u), 2.0, 3.0, 4.0);
+}
+]]></shader></pass>
+  <pass name="copy" target="u"><sampler name="s" target="t"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D s;
+out vec4 fragColor;
+void main() { fragColor = vec4(0.5, texelFetch(s, ivec2(gl_FragCoord.xy), 0).gba); }
+]]></shader></pass>
+  <pass name="clean" target="t"><sampler name="s" target="u"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D s;
+out vec4 fragColor;
+void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0) * 2.0; }
+]]></shader></pass>
+  <pass name="final"><sampler name="s" target="t"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D s;
+out vec4 fragColor;
+void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0); }
+]]></shader></pass>
+</workspace>
+)";
+    const glm::ivec2 size{7, 5};
+    GlRun run = runChecked(workspaceFromText(xml), size);
+    ASSERT_TRUE(run.exec);
+    const FrameHealth* health = run.exec->frameHealth();
+    ASSERT_TRUE(health);
+    ASSERT_EQ(health->passes.size(), 4u);
+    EXPECT_EQ(health->passes[0].counts[0], size.x * size.y) << "poison";
+    EXPECT_EQ(health->passes[2].counts[0], 0) << "clean: t overwritten";
+    ASSERT_EQ(health->findings.size(), 1u);
+    const HealthFinding& f = health->findings.front();
+    EXPECT_EQ(f.kind, HealthKind::NaN);
+    EXPECT_EQ(f.pass, "poison");
+    EXPECT_EQ(f.pixel, glm::ivec2(0, 0));
+    EXPECT_TRUE(std::isnan(f.value.x));
+    EXPECT_EQ(f.value.y, 2.0f);
+    EXPECT_EQ(f.value.w, 4.0f);
+    EXPECT_TRUE(f.inputs.empty());
+}
+
 // The effects as shipped: HDRLighting over 3 frames keeps every inspected target finite.
 TEST_F(HealthCheckGLTest, HdrLightingAsShippedHasNoNanOrInfinity) {
     GlRun run = runChecked(effectWorkspace("hdr_lighting.xml"), {96, 64}, 3);
