@@ -58,7 +58,7 @@ SamplerHandle samplerObject(const Sampler& spec) {
     glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(gl::magFilter(spec.filter)));
     glSamplerParameteri(s, GL_TEXTURE_WRAP_S, static_cast<GLint>(gl::wrapMode(spec.wrapS)));
     glSamplerParameteri(s, GL_TEXTURE_WRAP_T, static_cast<GLint>(gl::wrapMode(spec.wrapT)));
-    glSamplerParameteri(s, GL_TEXTURE_WRAP_R, static_cast<GLint>(gl::wrapMode(spec.wrapT)));
+    glSamplerParameteri(s, GL_TEXTURE_WRAP_R, static_cast<GLint>(gl::wrapMode(spec.wrapR)));
     glSamplerParameterfv(s, GL_TEXTURE_BORDER_COLOR, glm::value_ptr(spec.border));
     return handle;
 }

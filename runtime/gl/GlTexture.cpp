@@ -71,7 +71,7 @@ void applySwizzle(GLuint texture, int channels) {
 }
 
 std::string label(const Texture& t) {
-    return std::string(t.kind == TextureKind::Cube ? "cubemap '" : "texture '") + t.name + "'";
+    return std::string(textureElementName(t.kind)) + " '" + t.name + "'";
 }
 
 GlTextureInfo uploadTexture2D(Image image, const Texture& texture) {
@@ -96,6 +96,33 @@ GlTextureInfo uploadTexture2D(Image image, const Texture& texture) {
     return info;
 }
 
+// Each slice's rows flipped as a 2D texture's are; slice 0 at r = 0, as Direct3D's w = 0.
+GlTextureInfo uploadVolume(Image image, const Texture& texture) {
+    GlTextureInfo info;
+    UploadFormat f = chooseFormat(image, texture.colorSpace);
+    info.width = image.width;
+    info.height = image.height;
+    const size_t row = static_cast<size_t>(image.width) * image.channels;
+    const size_t slice = row * image.height;
+    std::vector<float> flipped(image.pixels.size());
+    for (int z = 0; z < image.depth; ++z)
+        for (int y = 0; y < image.height; ++y)
+            std::copy_n(image.pixels.begin() + static_cast<long>(z * slice + y * row), row,
+                        flipped.begin() + static_cast<long>(z * slice + (image.height - 1 - y) * row));
+    const int largest = std::max({image.width, image.height, image.depth});
+    const int levels = texture.mipmaps ? static_cast<int>(std::floor(std::log2(largest))) + 1 : 1;
+    glCreateTextures(GL_TEXTURE_3D, 1, &info.name);
+    glTextureStorage3D(info.name, levels, f.internal, image.width, image.height, image.depth);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage3D(info.name, 0, 0, 0, 0, image.width, image.height, image.depth, f.pixelFormat, GL_FLOAT,
+                        flipped.data());
+    if (f.swizzleGray) applySwizzle(info.name, image.channels);
+    if (texture.mipmaps) glGenerateTextureMipmap(info.name);
+    info.bytes = static_cast<size_t>(image.width) * image.height * image.depth * bytesPerTexel(f.internal) *
+                 (texture.mipmaps ? 8 : 7) / 7;
+    return info;
+}
+
 }  // namespace
 
 Result<GlTextureInfo> loadGlTexture(const Workspace& ws, const Texture& texture) {
@@ -104,6 +131,12 @@ Result<GlTextureInfo> loadGlTexture(const Workspace& ws, const Texture& texture)
     if (texture.supplied) {
         if (texture.supplied->empty()) return Error{label(texture) + ": the image supplied for it is empty"};
         if (texture.kind == TextureKind::Texture2D) return uploadTexture2D(*texture.supplied, texture);
+        if (texture.kind == TextureKind::Volume) {
+            if (texture.supplied->pixels.size() !=
+                static_cast<size_t>(texture.supplied->width) * texture.supplied->height * texture.supplied->depth * texture.supplied->channels)
+                return Error{label(texture) + ": the image supplied for it is not a whole volume"};
+            return uploadVolume(*texture.supplied, texture);
+        }
         faces = cubeFromImage(*texture.supplied);  // a placeholder's cross (io/image/PlaceholderImage)
     } else if (texture.files.empty()) {
         return Error{label(texture) + ": no image was given for it (rmfx render --input " + texture.name + "=FILE)"};
@@ -111,6 +144,10 @@ Result<GlTextureInfo> loadGlTexture(const Workspace& ws, const Texture& texture)
         auto image = readImage(ws.folder / texture.files[0]);
         if (!image) return Error{label(texture) + ": " + image.error()};
         return uploadTexture2D(std::move(*image), texture);
+    } else if (texture.kind == TextureKind::Volume) {
+        auto image = readVolumeImage(ws.folder / texture.files[0]);
+        if (!image) return Error{label(texture) + ": " + image.error()};
+        return uploadVolume(std::move(*image), texture);
     } else if (texture.files.size() == 1 && isDdsFile(texture.files[0])) {
         faces = readDdsCubeMap(ws.folder / texture.files[0]);
     } else if (texture.layout == CubeLayout::Faces) {

@@ -14,7 +14,7 @@ namespace {
 // empty when `source` is not a 2D or cube texture or the copy raised a GL error.
 TextureHandle copyTexture(GLuint source) {
     drainGlErrors();
-    GLint target = 0, levels = 0, width = 0, height = 0, internal = 0;
+    GLint target = 0, levels = 0, width = 0, height = 0, depth = 1, internal = 0;
     GLint swizzle[4] = {GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA};
     glGetTextureParameteriv(source, GL_TEXTURE_TARGET, &target);
     glGetTextureParameteriv(source, GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
@@ -22,14 +22,20 @@ TextureHandle copyTexture(GLuint source) {
     glGetTextureLevelParameteriv(source, 0, GL_TEXTURE_WIDTH, &width);
     glGetTextureLevelParameteriv(source, 0, GL_TEXTURE_HEIGHT, &height);
     glGetTextureLevelParameteriv(source, 0, GL_TEXTURE_INTERNAL_FORMAT, &internal);
-    if ((target != GL_TEXTURE_2D && target != GL_TEXTURE_CUBE_MAP) || levels < 1 || width < 1 || height < 1) return {};
+    if (target == GL_TEXTURE_3D) glGetTextureLevelParameteriv(source, 0, GL_TEXTURE_DEPTH, &depth);
+    if ((target != GL_TEXTURE_2D && target != GL_TEXTURE_CUBE_MAP && target != GL_TEXTURE_3D) || levels < 1 || width < 1 ||
+        height < 1 || depth < 1)
+        return {};
     TextureHandle copy = createTexture(static_cast<GLenum>(target));
-    glTextureStorage2D(copy.get(), levels, static_cast<GLenum>(internal), width, height);
+    if (target == GL_TEXTURE_3D)
+        glTextureStorage3D(copy.get(), levels, static_cast<GLenum>(internal), width, height, depth);
+    else
+        glTextureStorage2D(copy.get(), levels, static_cast<GLenum>(internal), width, height);
     glTextureParameteriv(copy.get(), GL_TEXTURE_SWIZZLE_RGBA, swizzle);
     for (GLint level = 0; level < levels; ++level)
         glCopyImageSubData(source, static_cast<GLenum>(target), level, 0, 0, 0, copy.get(), static_cast<GLenum>(target),
                            level, 0, 0, 0, std::max(1, width >> level), std::max(1, height >> level),
-                           target == GL_TEXTURE_CUBE_MAP ? 6 : 1);
+                           target == GL_TEXTURE_CUBE_MAP ? 6 : std::max(1, depth >> level));
     if (!drainGlErrors().empty()) return {};
     return copy;
 }

@@ -29,15 +29,17 @@ std::string bindingMismatch(const Workspace& ws, const UniformSource& source, co
                            (arraySize > 1 ? "[" + std::to_string(arraySize) + "]" : "");
     if (arraySize > 1) return declared + ", but arrays cannot be bound to variables";
     if (const auto* s = std::get_if<BoundSampler>(&source)) {
-        bool cube = false;
-        if (!s->sampler->texture.empty()) {
-            const Texture* t = ws.findTexture(s->sampler->texture);
-            cube = t && t->kind == TextureKind::Cube;
-        }
-        UniformType wanted = cube ? UniformType::SamplerCube : UniformType::Sampler2D;
+        TextureKind kind = TextureKind::Texture2D;
+        if (!s->sampler->texture.empty())
+            if (const Texture* t = ws.findTexture(s->sampler->texture)) kind = t->kind;
+        UniformType wanted = kind == TextureKind::Cube     ? UniformType::SamplerCube
+                             : kind == TextureKind::Volume ? UniformType::Sampler3D
+                                                           : UniformType::Sampler2D;
         if (type == wanted) return {};
         return declared + ", but <sampler name=\"" + uniform + "\"> (" + where(s->sampler->where) + ") binds " +
-               (cube ? "a cube map and needs samplerCube" : "a 2D image and needs sampler2D");
+               (kind == TextureKind::Cube     ? "a cube map and needs samplerCube"
+                : kind == TextureKind::Volume ? "a volume (3D) texture and needs sampler3D"
+                                              : "a 2D image and needs sampler2D");
     }
     auto variableMismatch = [&](const Variable& v, const char* kind) -> std::string {
         if (uniformAccepts(type, v.value.type)) return {};

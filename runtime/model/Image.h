@@ -13,7 +13,8 @@ struct Image {
     int channels = 0;           // 1..4
     bool highDynamicRange = false;  // file held float/half data; false: 8/16-bit integer data
     int bitsPerChannel = 32;    // of the source file: 8, 16, 32 (half reads as 16)
-    std::vector<float> pixels;  // width * height * channels; integer files as value / max (no colour conversion)
+    std::vector<float> pixels;  // width * height * depth * channels; integer files as value / max (no colour conversion)
+    int depth = 1;              // slices of a volume (3D) image, each width x height, slice 0 first (last: positional initialisers)
 
     float& at(int x, int y, int c) { return pixels[(static_cast<size_t>(y) * width + x) * channels + c]; }
     float at(int x, int y, int c) const { return pixels[(static_cast<size_t>(y) * width + x) * channels + c]; }

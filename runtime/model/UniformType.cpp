@@ -57,7 +57,8 @@ UniformType uniformTypeFromGl(int glType) {
         case kFloatMat4: return UniformType::Mat4;
         case kSampler2d: return UniformType::Sampler2D;
         case kSamplerCube: return UniformType::SamplerCube;
-        case kSampler1d: case kSampler3d: case kSampler2dShadow: case kSampler2dArray:
+        case kSampler3d: return UniformType::Sampler3D;
+        case kSampler1d: case kSampler2dShadow: case kSampler2dArray:
         case kSamplerCubeShadow: case kIntSampler2d: case kUnsignedIntSampler2d:
         case kSampler2dMultisample: case kSamplerBuffer: case kSamplerCubeMapArray:
         case kIntSamplerCube: case kUnsignedIntSamplerCube:
@@ -86,6 +87,7 @@ const char* uniformTypeName(UniformType type) {
         case UniformType::Mat4: return "mat4";
         case UniformType::Sampler2D: return "sampler2D";
         case UniformType::SamplerCube: return "samplerCube";
+        case UniformType::Sampler3D: return "sampler3D";
         case UniformType::OtherSampler: return "a sampler type rmfx does not bind";
         case UniformType::Other: return "a type rmfx does not bind";
     }
@@ -93,7 +95,8 @@ const char* uniformTypeName(UniformType type) {
 }
 
 bool isSampler(UniformType type) {
-    return type == UniformType::Sampler2D || type == UniformType::SamplerCube || type == UniformType::OtherSampler;
+    return type == UniformType::Sampler2D || type == UniformType::SamplerCube || type == UniformType::Sampler3D ||
+           type == UniformType::OtherSampler;
 }
 
 bool uniformAccepts(UniformType uniform, ValueType variable) {

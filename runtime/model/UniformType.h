@@ -9,7 +9,7 @@ namespace rmfx {
 
 enum class UniformType {
     Float, Int, UInt, Bool, Vec2, Vec3, Vec4, IVec2, IVec3, IVec4, BVec2, BVec3, BVec4,
-    Mat2, Mat3, Mat4, Sampler2D, SamplerCube, OtherSampler, Other
+    Mat2, Mat3, Mat4, Sampler2D, SamplerCube, Sampler3D, OtherSampler, Other
 };
 
 // From a GL type enum (GL_FLOAT_VEC3 …), which both glslang's reflection and glGetActiveUniform give.

@@ -39,7 +39,11 @@ struct Variable {
 };
 
 enum class ColorSpace { Linear, Srgb };
-enum class TextureKind { Texture2D, Cube };
+enum class TextureKind { Texture2D, Cube, Volume };  // Volume: a 3D texture (sampler3D)
+// The workspace element that declares one: "texture", "cubemap" or "volume".
+inline const char* textureElementName(TextureKind kind) {
+    return kind == TextureKind::Cube ? "cubemap" : kind == TextureKind::Volume ? "volume" : "texture";
+}
 // FromImage: one image whose shape says its layout, 2:1 equirect or a 4:3 / 3:4 cross (rmfx render --texture).
 enum class CubeLayout { Faces, Cross, Equirect, FromImage };
 
@@ -108,7 +112,7 @@ struct Sampler {
     bool previousFrame = false;  // read the target as the previous frame left it
     Filter filter = Filter::Linear;
     MipmapMode mipmap = MipmapMode::None;
-    Wrap wrapS = Wrap::Clamp, wrapT = Wrap::Clamp;
+    Wrap wrapS = Wrap::Clamp, wrapT = Wrap::Clamp, wrapR = Wrap::Clamp;  // R: volume textures' third axis
     glm::vec4 border{0.0f};
     SourceLocation where;
 };

@@ -50,7 +50,8 @@ Result<void> replaceTextures(Workspace& ws, const std::vector<TextureArgument>& 
         }
         const bool cube = texture->kind == TextureKind::Cube;
         if (!cube && a.files.size() != 1) {
-            error(a, "'" + a.name + "' is a 2D texture: give one image, not " + std::to_string(a.files.size()));
+            error(a, "'" + a.name + "' is a " + (texture->kind == TextureKind::Volume ? "volume texture" : "2D texture") +
+                         ": give one image, not " + std::to_string(a.files.size()));
             continue;
         }
         if (cube && a.files.size() != 1 && a.files.size() != 6) {

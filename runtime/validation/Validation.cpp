@@ -62,7 +62,7 @@ private:
         unique(ws_.variables, "variable", [](const Variable& v) { return valueTypeName(v.value.type); });
         unique(ws_.textures, "texture", [&](const Texture& t) {
             if (t.files.empty() && ws_.findInput(t.name)) return "input";
-            return t.kind == TextureKind::Cube ? "cubemap" : "texture";
+            return textureElementName(t.kind);
         });
         unique(ws_.targets, "target", [](const RenderTarget&) { return "target"; });
         unique(ws_.passes, "pass", [](const Pass&) { return "pass"; });

@@ -50,6 +50,33 @@ inline Bytes header(const char* fourCC, uint32_t caps2 = 0, uint32_t depth = 0) 
     return b;
 }
 
+// The header of an uncompressed A8R8G8B8 volume texture (texels follow as B, G, R, A bytes, row
+// by row, slice by slice).
+inline Bytes uncompressedVolumeHeader(uint32_t width, uint32_t height, uint32_t depth) {
+    Bytes b{'D', 'D', 'S', ' '};
+    put32(b, 124);
+    put32(b, 0x1 | 0x2 | 0x4 | 0x8 | 0x1000 | 0x800000);  // caps height width pitch pixelformat depth
+    put32(b, height);
+    put32(b, width);
+    put32(b, width * 4);  // pitch
+    put32(b, depth);
+    put32(b, 1);  // mip levels
+    for (int i = 0; i < 11; ++i) put32(b, 0);
+    put32(b, 32);    // DDS_PIXELFORMAT size
+    put32(b, 0x41);  // DDPF_RGB | DDPF_ALPHAPIXELS
+    put32(b, 0);     // no FourCC
+    put32(b, 32);    // bits per texel
+    put32(b, 0x00FF0000);
+    put32(b, 0x0000FF00);
+    put32(b, 0x000000FF);
+    put32(b, 0xFF000000);
+    put32(b, 0x1000 | 0x8);  // DDSCAPS_TEXTURE | COMPLEX
+    put32(b, 0x200000);      // DDSCAPS2_VOLUME
+    for (int i = 0; i < 3; ++i) put32(b, 0);
+    EXPECT_EQ(b.size(), 128u);
+    return b;
+}
+
 // A DXT colour block: two RGB565 end points and a 2-bit index per texel, row by row.
 inline void colorBlock(Bytes& b, uint16_t c0, uint16_t c1, const std::array<int, 16>& index) {
     put16(b, c0);

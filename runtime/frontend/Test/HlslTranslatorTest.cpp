@@ -166,6 +166,25 @@ TEST(HlslTranslator, UniformsAndSamplersKeepTheirHlslNamesAsPlainUniforms) {
     }
 }
 
+// SPIRV-Cross renames names on its list of GLSL words (`noise` → `_noise`); samplers keep the
+// names the pass binds, in D3D9 and D3D10 style, 2D and 3D.
+TEST(HlslTranslator, SamplersNamedLikeGlslWordsKeepTheirNames) {
+    auto uniforms = linkPair(vertexShader, lines({
+                                               "sampler noise;",
+                                               "sampler3D volume;",
+                                               "Texture2D input2;",
+                                               "SamplerState linearSampler;",
+                                               "float4 main(float2 uv : TEXCOORD1) : COLOR0 {",
+                                               "    return tex2D(noise, uv) + tex3D(volume, uv.xyx) + input2.Sample(linearSampler, uv);",
+                                               "}",
+                                           }));
+    EXPECT_EQ(names(uniforms), (std::vector<std::string>{"WorldViewProjection", "input2", "noise", "volume"}));
+    for (const ActiveUniform& u : uniforms) {
+        if (u.name == "noise" || u.name == "input2") EXPECT_EQ(u.type, UniformType::Sampler2D) << u.name;
+        if (u.name == "volume") EXPECT_EQ(u.type, UniformType::Sampler3D);
+    }
+}
+
 TEST(HlslTranslator, CbufferMembersAreUniformsByNameBesideTheGlobals) {
     auto uniforms = linkPair(vertexShader, lines({
                                                "cbuffer Lights : register(b1) { float4 lightColour; float lightGain; };",

@@ -355,11 +355,8 @@ TEST(RfxImporter, TexturesKeepFileNamesAsWritten) {
     ASSERT_NE(sky, nullptr);
     EXPECT_EQ(sky->kind, TextureKind::Cube);
     EXPECT_EQ(sky->files, std::vector<std::string>{"C:\\Program Files\\RenderMonkey\\Media\\Textures\\Snow.dds"});
-    EXPECT_EQ(ws.findTexture("Volume"), nullptr);
-    int line = lineOf(rfxDir() / "gl_legacy.rfx", "Rm3DTextureVariable NAME=\"Volume\"");
-    EXPECT_NE(allWarnings("gl_legacy.rfx", "Other").find("gl_legacy.rfx:" + std::to_string(line) +
-                                                         ": warning: <Rm3DTextureVariable NAME=\"Volume\">: rmfx has no 3D textures"),
-              std::string::npos);
+    EXPECT_EQ(ws.findTexture("Volume"), nullptr);  // a volume texture no pass samples: left out like "Unused"
+    EXPECT_EQ(allWarnings("gl_legacy.rfx", "Other").find("Rm3DTextureVariable"), std::string::npos);
 }
 
 TEST(RfxImporter, GlSamplerStatesOfTextureVariables) {
@@ -381,7 +378,8 @@ TEST(RfxImporter, GlSamplerStatesOfTextureVariables) {
     int line = lineOf(rfxDir() / "gl_legacy.rfx", "<RmTextureObject NAME=\"Sky\"");
     std::string at = "gl_legacy.rfx:" + std::to_string(line) + ": warning: <RmTextureObject NAME=\"Sky\">: ";
     EXPECT_NE(warnings.find(at + "minify and magnify filters differ"), std::string::npos) << warnings;
-    EXPECT_NE(warnings.find(at + "its R wrap differs from S"), std::string::npos) << warnings;
+    EXPECT_EQ(sky.wrapR, Wrap::Clamp);  // GL_TextureWrapR 1 (GL_CLAMP), kept for volumes; a cube map ignores it
+    EXPECT_EQ(warnings.find("R wrap"), std::string::npos) << warnings;
     // 1082130432 = 0x40800000 = 4.0f
     EXPECT_NE(warnings.find("sampler state GL_TextureMaxAnisotropyEXT = 4 has no equivalent"), std::string::npos) << warnings;
 }
@@ -630,15 +628,22 @@ TEST(RfxImporter, BadInputsAreErrorsWithFileAndLine) {
                   std::string::npos) << errors;
         EXPECT_EQ(errors.find("has no <RmTextureObject"), std::string::npos) << errors;
     }
-    // A 3D texture (RenderMonkey's NoiseVolume.dds, in many real files) is named as what it is.
-    std::string volume = errorsOf(glEffect(
+    // A 3D texture (RenderMonkey's NoiseVolume.dds, in many real files) is a volume texture.
+    Result<Workspace> volume = importRfxText(glEffect(
         "<Rm3DTextureVariable NAME=\"Noise\" FILE_NAME=\"NoiseVolume.dds\"/>\n"
         "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n"
-        "<RmTextureObject NAME=\"s\"><RmTextureReference NAME=\"Noise\"/></RmTextureObject>\n<RmSampler NAME=\"s\"/>\n" +
-        std::string(kFragment) + "\n</RmGLPass>\n"));
-    EXPECT_NE(volume.find("t.rfx:6: error: <RmTextureReference NAME=\"Noise\">: 'Noise' is a 3D texture (line 4), which "
-                          "rmfx does not have: this pass cannot be imported"),
-              std::string::npos) << volume;
+        "<RmTextureObject NAME=\"s\"><RmTextureReference NAME=\"Noise\"/>"
+        "<RmState NAME=\"GL_TextureWrapR\" STATE=\"32882\" VALUE=\"2\"/></RmTextureObject>\n<RmSampler NAME=\"s\"/>\n" +
+        std::string(kFragment) + "\n</RmGLPass>\n"), "t.rfx", ".", {""});
+    ASSERT_TRUE(volume) << formatAll(volume.diagnostics());
+    const Texture* noise = volume->findTexture("Noise");
+    ASSERT_NE(noise, nullptr);
+    EXPECT_EQ(noise->kind, TextureKind::Volume);
+    EXPECT_EQ(noise->files, std::vector<std::string>{"NoiseVolume.dds"});
+    ASSERT_EQ(volume->passes.size(), 1u);
+    ASSERT_EQ(volume->passes[0].samplers.size(), 1u);
+    EXPECT_EQ(volume->passes[0].samplers[0].wrapR, Wrap::Clamp);  // 2: clamp to edge
+    EXPECT_EQ(volume->passes[0].samplers[0].wrapS, Wrap::Repeat);
     EXPECT_NE(errorsOf(pass("<RmRenderStateBlock>\n<RmState NAME=\"GL_DepthFunction\" STATE=\"45\" VALUE=\"9\"/>\n</RmRenderStateBlock>\n"))
                   .find("t.rfx:7: error: <RmState NAME=\"GL_DepthFunction\">: VALUE 9 is not a compare function (it takes 1, 2, 3, 4, 5, 6, 7, 8)"),
               std::string::npos);

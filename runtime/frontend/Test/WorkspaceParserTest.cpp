@@ -99,7 +99,7 @@ TEST(WorkspaceParser, UnknownElementInWorkspace) {
         "  <texure name=\"t\" file=\"t.png\"/>",
     }));
     EXPECT_EQ(d, (Lines{at + "3: error: unknown element <texure> in <workspace> (expected description, camera, code, "
-                             "float, int, bool, vec2, vec3, vec4, color, mat4, texture, cubemap, input, target, pass, effect, output)"}));
+                             "float, int, bool, vec2, vec3, vec4, color, mat4, texture, cubemap, volume, input, target, pass, effect, output)"}));
 }
 
 TEST(WorkspaceParser, AnEffectsSourceAndItsChannels) {

@@ -1,9 +1,11 @@
 #include "frontend/shader/SpirvToGlsl.h"
 
+#include <map>
 #include <set>
 
 #include <spirv_cross/spirv_cross_c.h>
 
+#include "core/IdentifierSearch.h"
 #include "frontend/shader/HlslSemantics.h"
 
 namespace rmfx {
@@ -169,6 +171,51 @@ void nameCombinedSamplers(CrossCompiler& cross) {
     }
 }
 
+// The samplers' names before compiling: SPIRV-Cross prefixes '_' to names on its list of GLSL
+// words (a sampler called `noise`, common in RenderMonkey effects, becomes `_noise`), and rmfx
+// binds a sampler by its HLSL name.
+std::map<spvc_variable_id, std::string> samplerNames(const CrossCompiler& cross) {
+    std::map<spvc_variable_id, std::string> names;
+    for (const spvc_reflected_resource& r : cross.resources(SPVC_RESOURCE_TYPE_SAMPLED_IMAGE)) names[r.id] = cross.name(r.id);
+    const spvc_combined_image_sampler* combined = nullptr;
+    size_t count = 0;
+    spvc_compiler_get_combined_image_samplers(cross.get(), &combined, &count);
+    for (size_t i = 0; i < count; ++i) names[combined[i].combined_id] = cross.name(combined[i].combined_id);
+    return names;
+}
+
+// Whether GLSL 4.50 takes `name` as a sampler's name in code that SPIRV-Cross wrote: not a
+// keyword, and not a built-in function such code calls (a sampler named `texture` would hide it).
+bool usableSamplerName(const std::string& name) {
+    static const std::set<std::string> taken = {
+        "attribute", "const", "uniform", "varying", "buffer", "shared", "coherent", "volatile", "restrict", "readonly",
+        "writeonly", "layout", "centroid", "flat", "smooth", "noperspective", "patch", "sample", "break", "continue",
+        "do", "for", "while", "switch", "case", "default", "if", "else", "subroutine", "in", "out", "inout", "float",
+        "double", "int", "void", "bool", "true", "false", "invariant", "precise", "discard", "return", "struct",
+        "common", "partition", "active", "asm", "class", "union", "enum", "typedef", "template", "this", "resource",
+        "goto", "inline", "noinline", "public", "static", "extern", "external", "interface", "long", "short", "half",
+        "fixed", "unsigned", "superp", "input", "output", "filter", "sizeof", "cast", "namespace", "using", "lowp",
+        "mediump", "highp", "precision", "main", "texture", "textureLod", "textureProj", "textureProjLod", "textureGrad",
+        "textureOffset", "textureLodOffset", "textureGradOffset", "textureSize", "textureQueryLod", "textureQueryLevels",
+        "texelFetch", "texelFetchOffset", "textureGather", "textureGatherOffset", "textureGatherOffsets",
+        "textureProjOffset", "textureProjLodOffset", "textureProjGrad", "textureProjGradOffset", "textureSamples"};
+    return !name.empty() && !taken.count(name) && name.rfind("gl_", 0) != 0;
+}
+
+// Each whole-word `from` in `code` replaced by `to`.
+void renameIdentifier(std::string& code, const std::string& from, const std::string& to) {
+    for (size_t at = code.find(from); at != std::string::npos; at = code.find(from, at)) {
+        const bool starts = at == 0 || !isIdentifierChar(code[at - 1]);
+        const bool ends = at + from.size() >= code.size() || !isIdentifierChar(code[at + from.size()]);
+        if (starts && ends) {
+            code.replace(at, from.size(), to);
+            at += to.size();
+        } else {
+            at += from.size();
+        }
+    }
+}
+
 // Read after compiling: SPIRV-Cross renames identifiers GLSL reserves while it compiles.
 ReflectedBlock reflectBlock(spvc_compiler c, spvc_type_id blockType) {
     ReflectedBlock block;
@@ -202,6 +249,7 @@ Result<SpirvGlsl> spirvToGlsl(const std::vector<unsigned>& spirv, ShaderStage st
     renameInterface(cross, stage);
     const std::vector<spvc_type_id> blocks = prepareBlocks(cross);
     nameCombinedSamplers(cross);
+    const std::map<spvc_variable_id, std::string> samplersBefore = samplerNames(cross);
     spvc_compiler_options options = nullptr;
     spvc_compiler_create_compiler_options(cross.get(), &options);
     spvc_compiler_options_set_uint(options, SPVC_COMPILER_OPTION_GLSL_VERSION, 450);
@@ -213,6 +261,10 @@ Result<SpirvGlsl> spirvToGlsl(const std::vector<unsigned>& spirv, ShaderStage st
     if (spvc_compiler_compile(cross.get(), &glsl) != SPVC_SUCCESS) return Error{cross.error()};
     SpirvGlsl out;
     out.code = glsl;
+    for (const auto& [id, before] : samplerNames(cross))
+        if (auto original = samplersBefore.find(id); original != samplersBefore.end() && original->second != before &&
+                                                     usableSamplerName(original->second))
+            renameIdentifier(out.code, before, original->second);
     for (spvc_type_id block : blocks) out.blocks.push_back(reflectBlock(cross.get(), block));
     out.inputs = reflectInputs(cross);
     return out;

@@ -58,7 +58,7 @@ public:
                 if (auto v = parseVariable(e)) ws.variables.push_back(std::move(*v));
             } else if (tag == "code") {
                 if (auto c = parseSnippet(e)) ws.snippets.push_back(std::move(*c));
-            } else if (tag == "texture" || tag == "cubemap") {
+            } else if (tag == "texture" || tag == "cubemap" || tag == "volume") {
                 if (auto t = parseTexture(e)) ws.textures.push_back(std::move(*t));
             } else if (tag == "input") {
                 parseInput(e, ws);
@@ -79,7 +79,7 @@ public:
             } else {
                 unexpected(e, "unknown element <" + std::string(tag) +
                                   "> in <workspace> (expected description, camera, code, float, int, bool, vec2, vec3, "
-                                  "vec4, color, mat4, texture, cubemap, input, target, pass, effect, output)");
+                                  "vec4, color, mat4, texture, cubemap, volume, input, target, pass, effect, output)");
             }
         }
         if (ws.passes.empty()) r.error("no <pass>: nothing to render");
@@ -248,7 +248,7 @@ private:
                              : std::initializer_list<const char*>{"name", "file", "colorspace", "mipmaps"});
         Texture t;
         t.where = r.where();
-        t.kind = cube ? TextureKind::Cube : TextureKind::Texture2D;
+        t.kind = cube ? TextureKind::Cube : std::string_view(e->Name()) == "volume" ? TextureKind::Volume : TextureKind::Texture2D;
         auto name = r.identifier("name");
         if (auto cs = r.choice<ColorSpace>("colorspace", {{"linear", ColorSpace::Linear}, {"srgb", ColorSpace::Srgb}}))
             t.colorSpace = *cs;

@@ -141,10 +141,56 @@ TEST(DdsTexture, WhatIsNoFullCubeMapIsAClearError) {
     auto volumeFile = writeBytes(dir, "volume.dds", volume);
     auto asCube = readDdsCubeMap(volumeFile);
     ASSERT_FALSE(asCube);
-    EXPECT_EQ(asCube.error(), "'" + volumeFile.string() + "' is a volume texture (depth 2): volume textures are not supported");
+    EXPECT_EQ(asCube.error(), "'" + volumeFile.string() + "' is a volume texture (depth 2), not a cube map: declare it a <volume>");
     auto as2d = readImage(volumeFile);
     ASSERT_FALSE(as2d);
-    EXPECT_NE(as2d.error().find("volume images are not supported"), std::string::npos) << as2d.error();
+    EXPECT_NE(as2d.error().find("a volume image (2 slices): it can only be a volume texture"), std::string::npos) << as2d.error();
+}
+
+// RenderMonkey's NoiseVolume.dds is such a file: an uncompressed DDS volume texture (here
+// A8R8G8B8, 4x2 texels, 3 slices, each texel's colour telling where it is), read slice by slice.
+TEST(DdsTexture, AVolumeTextureReadsAsSlicesInFileOrder) {
+    test::ScratchDir dir;
+    Bytes volume = uncompressedVolumeHeader(4, 2, 3);
+    for (int z = 0; z < 3; ++z)
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < 4; ++x)
+                volume.insert(volume.end(), {static_cast<uint8_t>(z * 100), static_cast<uint8_t>(y * 100),
+                                             static_cast<uint8_t>(x * 60), 255});  // B G R A
+    auto file = writeBytes(dir, "volume.dds", volume);
+    auto image = readVolumeImage(file);
+    ASSERT_TRUE(image) << image.error();
+    EXPECT_EQ(image->width, 4);
+    EXPECT_EQ(image->height, 2);
+    EXPECT_EQ(image->depth, 3);
+    EXPECT_EQ(image->channels, 4);
+    ASSERT_EQ(image->pixels.size(), 4u * 2 * 3 * 4);
+    for (int z = 0; z < 3; ++z)
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < 4; ++x) {
+                const float* t = &image->pixels[((static_cast<size_t>(z) * 2 + y) * 4 + x) * 4];
+                EXPECT_EQ(t[0], x * 60 / 255.0f) << x << "," << y << "," << z;
+                EXPECT_EQ(t[1], y * 100 / 255.0f) << x << "," << y << "," << z;
+                EXPECT_EQ(t[2], z * 100 / 255.0f) << x << "," << y << "," << z;
+                EXPECT_EQ(t[3], 1.0f);
+            }
+
+    Bytes flat = header("DXT1");
+    colorBlock(flat, kRed, 0, kAllZero);
+    auto flatFile = writeBytes(dir, "flat.dds", flat);
+    auto notVolume = readVolumeImage(flatFile);
+    ASSERT_FALSE(notVolume);
+    EXPECT_NE(notVolume.error().find("a 2D image, not a volume"), std::string::npos) << notVolume.error();
+
+    // OpenImageIO 2.4 decodes only the first slice of a DXT volume: refused, not drawn wrong.
+    Bytes compressed = header("DXT1", kVolume, 2);
+    colorBlock(compressed, kRed, 0, kAllZero);
+    colorBlock(compressed, kBlue, 0, kAllZero);
+    auto compressedFile = writeBytes(dir, "dxt-volume.dds", compressed);
+    auto refused = readVolumeImage(compressedFile);
+    ASSERT_FALSE(refused);
+    EXPECT_NE(refused.error().find("a DXT1-compressed volume: only uncompressed DDS volumes can be read"), std::string::npos)
+        << refused.error();
 }
 
 }  // namespace rmfx

@@ -25,7 +25,7 @@ Result<CubeFaces> readDdsCubeMap(const std::filesystem::path& file) {
         std::string sides = spec.get_string_attribute("dds:CubeMapSides");
         if (spec.depth > 1 || format == "Volume Texture")
             return Error{name + " is a volume texture (depth " + std::to_string(spec.depth) +
-                         "): volume textures are not supported"};
+                         "), not a cube map: declare it a <volume>"};
         if (format != "CubeFace Environment")
             return Error{name + " is a 2D DDS texture, not a cube map: use it as a texture, or give six faces"};
         if (sides != "+x -x +y -y +z -z")

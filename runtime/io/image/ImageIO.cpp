@@ -33,7 +33,11 @@ bool isFloatType(OIIO::TypeDesc type) {
 
 }  // namespace
 
-Result<Image> readImage(const fs::path& file) {
+namespace {
+
+enum class Dimensions { Flat, Volume };
+
+Result<Image> readImageFile(const fs::path& file, Dimensions dimensions) {
     std::error_code ec;
     if (!fs::exists(file, ec))
         return imageFileError(file, "no such file");
@@ -48,28 +52,40 @@ Result<Image> readImage(const fs::path& file) {
         return imageFileError(file, "cannot read image: " + oneLine(OIIO::geterror()));
 
     const OIIO::ImageSpec spec = in->spec();
+    const int depth = std::max(spec.depth, 1);
     if (spec.width <= 0 || spec.height <= 0)
         return imageFileError(file, "image has no pixels (" + std::to_string(spec.width) + "x" +
                                    std::to_string(spec.height) + ")");
-    if (spec.width > kMaxSide || spec.height > kMaxSide ||
-        int64_t(spec.width) * spec.height > kMaxPixels)
+    if (spec.width > kMaxSide || spec.height > kMaxSide || depth > kMaxSide ||
+        int64_t(spec.width) * spec.height * depth > kMaxPixels)
         return imageFileError(file, "image too large (" + std::to_string(spec.width) + "x" +
-                                   std::to_string(spec.height) + ")");
-    if (spec.depth > 1)
-        return imageFileError(file, "volume images are not supported");
+                                   std::to_string(spec.height) + (depth > 1 ? "x" + std::to_string(depth) : "") + ")");
+    if (dimensions == Dimensions::Flat && depth > 1)
+        return imageFileError(file, "a volume image (" + std::to_string(depth) +
+                                   " slices): it can only be a volume texture (<volume>, RenderMonkey's Rm3DTextureVariable)");
+    if (dimensions == Dimensions::Volume && depth == 1)
+        return imageFileError(file, "a 2D image, not a volume: a volume texture needs a file with depth, such as a DDS volume texture");
+    // OpenImageIO 2.4 decodes only the first slice of a block-compressed DDS volume (the others
+    // come back zero): refused rather than drawn wrong.
+    const std::string compression = spec.get_string_attribute("compression");
+    if (depth > 1 && compression.rfind("DXT", 0) == 0)
+        return imageFileError(file, "a " + compression +
+                                   "-compressed volume: only uncompressed DDS volumes can be read (re-save it uncompressed, "
+                                   "for example A8R8G8B8 or L8)");
     if (spec.nchannels < 1)
         return imageFileError(file, "unsupported channel count " + std::to_string(spec.nchannels));
 
     Image image;
     image.width = spec.width;
     image.height = spec.height;
+    image.depth = depth;
     image.channels = std::min(spec.nchannels, 4);
     image.highDynamicRange = isFloatType(spec.format);
     image.bitsPerChannel = static_cast<int>(spec.format.size() * 8);
 
     // 8- and 16-bit data is read as it is stored and scaled here, so that a byte b becomes
     // exactly b / 255.0f (OpenImageIO's own conversion multiplies by a rounded reciprocal).
-    const size_t count = size_t(image.width) * image.height * image.channels;
+    const size_t count = size_t(image.width) * image.height * image.depth * image.channels;
     bool ok = false;
     if (spec.format.basetype == OIIO::TypeDesc::UINT8) {
         std::vector<uint8_t> raw(count);
@@ -88,6 +104,12 @@ Result<Image> readImage(const fs::path& file) {
     in->close();
     return image;
 }
+
+}  // namespace
+
+Result<Image> readImage(const fs::path& file) { return readImageFile(file, Dimensions::Flat); }
+
+Result<Image> readVolumeImage(const fs::path& file) { return readImageFile(file, Dimensions::Volume); }
 
 float srgbEncode(float linear) {
     const double v = linear;

@@ -15,6 +15,8 @@ namespace rmfx {
 // Any format OpenImageIO reads. Keeps 1..4 channels (files with more keep the first four).
 // Errors name the file.
 Result<Image> readImage(const std::filesystem::path& file);
+// A volume (3D) image, such as a DDS volume texture: Image::depth slices. A 2D file is an error.
+Result<Image> readVolumeImage(const std::filesystem::path& file);
 
 struct WriteOptions {
     DisplayTransform transform = DisplayTransform::None;

@@ -1,7 +1,8 @@
 #pragma once
 // What stands in for a texture whose image file is missing (--missing-media placeholder): a
 // magenta and dark grey checker, 8 texels a square, that no effect shows on purpose. A 2D texture
-// gets 64x64; a cube map a 4:3 cross of 32x32 faces (io/image/CubeMapLayout reads it).
+// gets 64x64; a cube map a 4:3 cross of 32x32 faces (io/image/CubeMapLayout reads it); a volume
+// 32x32x32, checkered in depth too.
 
 #include "model/Image.h"
 #include "model/Workspace.h"

@@ -281,7 +281,7 @@ Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options, c
     const bool placeholders = options.missing == MissingMedia::Placeholder;
     for (Texture& t : ws.textures) {
         if (givenTextures.count(t.name)) continue;
-        std::string element = std::string(t.kind == TextureKind::Cube ? "<cubemap" : "<texture") + " name=\"" + t.name + "\">";
+        std::string element = "<" + std::string(textureElementName(t.kind)) + " name=\"" + t.name + "\">";
         std::set<std::string> missing;  // one warning per file, though six faces may name the same
         for (size_t i = 0; i < t.files.size(); ++i) {
             const SourceLocation& where = i < t.fileLocations.size() ? t.fileLocations[i] : t.where;
@@ -292,7 +292,9 @@ Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options, c
                 if (missing.insert(t.files[i]).second)
                     out.push_back({Diagnostic::Severity::Warning, where, element,
                                    found.error + "; a magenta and grey checker stands in for the " +
-                                       (t.kind == TextureKind::Cube ? "whole cube map" : "texture") +
+                                       (t.kind == TextureKind::Cube     ? "whole cube map"
+                                        : t.kind == TextureKind::Volume ? "volume texture"
+                                                                        : "texture") +
                                        " (--missing-media placeholder)"});
             } else {
                 out.push_back({Diagnostic::Severity::Error, where, element, found.error});

@@ -192,11 +192,13 @@ bool readDeclaration(const RfxElement& e, Declarations& into) {
         if (auto v = readVariable(e, tag)) into.variables.push_back(std::move(*v));
         return true;
     }
-    if (tag == "Rm2DTextureVariable" || tag == "RmCubemapVariable") {
+    if (tag == "Rm2DTextureVariable" || tag == "RmCubemapVariable" || tag == "Rm3DTextureVariable") {
         Texture t;
         t.name = e.text("NAME").value_or("");
-        t.kind = tag == "RmCubemapVariable" ? TextureKind::Cube : TextureKind::Texture2D;
-        // One file: a cube map comes as one DDS holding the six faces.
+        t.kind = tag == "RmCubemapVariable"     ? TextureKind::Cube
+                 : tag == "Rm3DTextureVariable" ? TextureKind::Volume
+                                                : TextureKind::Texture2D;
+        // One file: a cube map comes as one DDS holding the six faces, a volume as a DDS volume.
         if (auto file = e.text("FILE_NAME")) {
             t.files.push_back(*file);
             t.fileLocations.push_back(e.where());
@@ -220,12 +222,10 @@ bool readDeclaration(const RfxElement& e, Declarations& into) {
                       " is not applied: the model is drawn as the file holds it (RenderMonkey does not document the values)");
         return true;
     }
-    if (tag == "Rm3DTextureVariable" || tag == "RmLightVariable" || tag == "RmMaterialVariable") {
-        e.warning("rmfx has no " + std::string(tag == "Rm3DTextureVariable" ? "3D textures" : tag == "RmLightVariable" ? "light variables" : "material variables") +
+    if (tag == "RmLightVariable" || tag == "RmMaterialVariable") {
+        e.warning("rmfx has no " + std::string(tag == "RmLightVariable" ? "light variables" : "material variables") +
                   "; a pass that uses it cannot be imported");
-        into.unsupported.push_back({e.name(),
-                                    tag == "Rm3DTextureVariable" ? "a 3D texture" : tag == "RmLightVariable" ? "a light variable" : "a material variable",
-                                    e.where()});
+        into.unsupported.push_back({e.name(), tag == "RmLightVariable" ? "a light variable" : "a material variable", e.where()});
         return true;
     }
     return tag == "RmStringVariable";  // notes and metadata: nothing to run

@@ -23,11 +23,11 @@ struct ModelDeclaration {
     SourceLocation where;
 };
 
-// A declaration rmfx reads past (a 3D texture, a light, a material): named, so that what refers
+// A declaration rmfx reads past (a light, a material): named, so that what refers
 // to it can say so.
 struct UnsupportedDeclaration {
     std::string name;
-    std::string what;  // "a 3D texture"
+    std::string what;  // "a light variable"
     SourceLocation where;
 };
 
@@ -42,7 +42,7 @@ struct Declarations {
 
 // Reads `e` into `into` when it is a declaration element (RmFloatVariable, Rm2DTextureVariable,
 // RmRenderableTexture, RmStreamMap, RmModelData…) and returns true; false for any other element.
-// Declarations rmfx cannot use (lights, materials, strings, 3D textures) give a warning and true.
+// Declarations rmfx cannot use (lights, materials, strings) give a warning and true.
 bool readDeclaration(const RfxElement& e, Declarations& into);
 
 }  // namespace rmfx::rfx

@@ -45,7 +45,6 @@ void SamplerStates::wrap(const RfxElement& state, int axis, long long value, boo
         }
     }
     wrap_[axis] = *w;
-    if (axis == 2) wrapRSet_ = true;
 }
 
 void SamplerStates::applyGl(const RfxElement& state) {
@@ -131,8 +130,7 @@ void SamplerStates::applyD3d(const RfxElement& state) {
 void SamplerStates::finish(const RfxElement& textureObject, Sampler& sampler) const {
     sampler.wrapS = wrap_[0];
     sampler.wrapT = wrap_[1];
-    if (wrapRSet_ && wrap_[2] != wrap_[0])
-        textureObject.warning("its R wrap differs from S; rmfx samplers wrap R like S (cube maps only use S and T)");
+    sampler.wrapR = wrap_[2];
     sampler.border = border_;
     sampler.filter = mag_ ? *mag_ : min_ ? *min_ : default_;
     if (min_ && mag_ && *min_ != *mag_)

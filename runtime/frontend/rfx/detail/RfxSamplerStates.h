@@ -32,7 +32,6 @@ public:
 private:
     void wrap(const RfxElement& state, int axis, long long value, bool direct3d);
     Wrap wrap_[3] = {Wrap::Repeat, Wrap::Repeat, Wrap::Repeat};
-    bool wrapRSet_ = false;
     std::optional<Filter> min_, mag_;
     MipmapMode mip_ = MipmapMode::None;
     bool mipExplicit_ = false;  // set by a state, not a default

@@ -162,7 +162,7 @@ std::optional<VertexStream> PassChildParser::parseStream(const XMLElement* e) {
 
 std::optional<Sampler> PassChildParser::parseSampler(const XMLElement* e) {
     ElementReader r(e, file_, diagnostics_,
-                    {"name", "texture", "target", "frame", "filter", "mipmap", "wrap", "wrap-s", "wrap-t", "border"});
+                    {"name", "texture", "target", "frame", "filter", "mipmap", "wrap", "wrap-s", "wrap-t", "wrap-r", "border"});
     Sampler s;
     s.where = r.where();
     auto name = r.identifier("name");
@@ -185,6 +185,7 @@ std::optional<Sampler> PassChildParser::parseSampler(const XMLElement* e) {
     Wrap both = r.choice<Wrap>("wrap", wraps).value_or(Wrap::Clamp);
     s.wrapS = r.choice<Wrap>("wrap-s", wraps).value_or(both);
     s.wrapT = r.choice<Wrap>("wrap-t", wraps).value_or(both);
+    s.wrapR = r.choice<Wrap>("wrap-r", wraps).value_or(both);
     if (auto b = r.numbers<4>("border")) s.border = {(*b)[0], (*b)[1], (*b)[2], (*b)[3]};
     noChildren(e);
     if (!name || (!texture && !target)) return std::nullopt;
