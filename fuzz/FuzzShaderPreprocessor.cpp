@@ -11,6 +11,7 @@
 #include <algorithm>
 
 #include "frontend/shader/HlslGlobalInitializers.h"
+#include "frontend/shader/HlslWritableGlobals.h"
 #include "frontend/shader/ShaderPreprocessor.h"
 #include "fuzz/FuzzEntries.h"
 #include "fuzz/FuzzInputFiles.h"
@@ -71,6 +72,12 @@ void fuzzShaderPreprocessor(const std::uint8_t* data, std::size_t size) {
                   "HLSL global '" + init.name + "' at line " + std::to_string(init.line) + " of " + std::to_string(lines));
         fuzzCheck(init.constant || init.values.empty(), "values read from an initializer that is not constant");
     }
+    const HlslWritableGlobals writable = giveWrittenGlobalsACopy(out.code, "main");
+    fuzzCheck(std::count(writable.code.begin(), writable.code.end(), '\n') == static_cast<long>(lines),
+              "giving written HLSL globals a copy moved lines");
+    fuzzCheck(writable.written.size() == writable.lines.size(), "a written HLSL global without its line");
+    for (int line : writable.lines)
+        fuzzCheck(line >= 1 && static_cast<size_t>(line) <= lines + 1, "a written HLSL global at line " + std::to_string(line));
 }
 
 }  // namespace rmfx::fuzz

@@ -280,6 +280,56 @@ float4 main(float2 uv : TEXCOORD0) : COLOR {
         expectNear(pixel(out, x, 2), {0.125 + 0.375 + 0.625, 0.25 + 0.5 + 0.75, 0.75, 6.0 + 3.0}, 1e-6, "pixel " + std::to_string(x));
 }
 
+// fxc let a shader assign to a global constant (a copy private to each run): Gain doubled and
+// Tint's x replaced inside the shader, a helper function reading the copies, the constants
+// themselves fed by the workspace's variables and unchanged for the next pass.
+TEST_F(HlslGLTest, AssignmentsToGlobalsWriteACopyAsFxcDid) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x4">
+  <float name="Gain" value="0.75"/>
+  <vec4 name="Tint" value="0.5 0.25 0.125 1"/>
+  <target name="out" format="rgba32f" size="4x4"/>
+  <target name="again" format="rgba32f" size="4x4"/>
+  <pass name="hlsl" target="out">
+    <shader stage="fragment"><![CDATA[
+float Gain;
+float4 Tint;
+float4 scaled(float4 c) { return c * Gain; }
+float4 main(float2 uv : TEXCOORD0) : COLOR {
+    Gain *= 2;
+    Tint.x = 0.25;
+    Tint[1] += Gain == 1.5 ? 1 : 0;
+    return scaled(Tint);
+}
+]]></shader>
+  </pass>
+  <pass name="hlsl_again" target="again">
+    <shader stage="fragment"><![CDATA[
+float Gain;
+float4 Tint;
+float4 main(float2 uv : TEXCOORD0) : COLOR { return Tint * Gain; }
+]]></shader>
+  </pass>
+</workspace>)";
+    std::unique_ptr<Workspace> ws = hlslWorkspace(xml);
+    ASSERT_TRUE(ws);
+    const std::string warnings = formatAll(validateWorkspace(*ws).diagnostics());
+    EXPECT_NE(warnings.find("hlsl-test.xml:8: warning: <pass name=\"hlsl\">: the shader assigns to HLSL global 'Gain'"),
+              std::string::npos) << warnings;
+    EXPECT_NE(warnings.find("hlsl-test.xml:9: warning: <pass name=\"hlsl\">: the shader assigns to HLSL global 'Tint'"),
+              std::string::npos) << warnings;
+    GlRun run = runWorkspace(std::move(ws), {{4, 4}, 1, 1.0f / 60.0f});
+    ASSERT_TRUE(run.exec);
+    RefImage out = readRef(run, "out"), again = readRef(run, "again");
+    ASSERT_EQ(out.width, 4);
+    ASSERT_EQ(again.width, 4);
+    const double gain = 0.75 * 2;  // the copy, doubled
+    const glm::dvec4 tint{0.25, 0.25 + 1.0, 0.125, 1.0};
+    for (int x = 0; x < 4; ++x) {
+        expectNear(pixel(out, x, 1), tint * gain, 1e-6, "pixel " + std::to_string(x));
+        expectNear(pixel(again, x, 1), glm::dvec4(0.5, 0.25, 0.125, 1.0) * 0.75, 1e-6, "next pass, pixel " + std::to_string(x));
+    }
+}
+
 // RenderMonkey's template pixel shader takes `float4 inDiffuse : COLOR0` that its vertex shader
 // never writes; Direct3D 9 ran it, GL would not link it. The missing inputs get defined values.
 TEST_F(HlslGLTest, PixelShaderInputsTheVertexShaderDoesNotWriteGetDefinedValuesAndAWarning) {

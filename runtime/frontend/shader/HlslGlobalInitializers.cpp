@@ -9,25 +9,10 @@
 #include <string_view>
 
 #include "core/IdentifierSearch.h"
+#include "frontend/shader/HlslBlankedCode.h"
 
 namespace rmfx {
 namespace {
-
-// The code with comments, string literals and preprocessor lines turned into spaces (newlines
-// kept, so offsets and line numbers still match the input).
-std::string blanked(const std::string& code) {
-    std::string out = withoutComments(code);
-    size_t line = 0;
-    while (line < out.size()) {
-        size_t first = out.find_first_not_of(" \t", line);
-        if (first != std::string::npos && out[first] == '#')
-            for (size_t i = first; i < out.size() && out[i] != '\n'; ++i) out[i] = ' ';
-        size_t next = out.find('\n', line);
-        if (next == std::string::npos) break;
-        line = next + 1;
-    }
-    return out;
-}
 
 std::string trimmed(std::string_view s) {
     size_t a = s.find_first_not_of(" \t\r\n"), b = s.find_last_not_of(" \t\r\n");
@@ -169,7 +154,7 @@ std::optional<HlslGlobalInitializer> declaration(const LineIndex& lines, size_t 
 }  // namespace
 
 std::vector<HlslGlobalInitializer> findHlslGlobalInitializers(const std::string& source) {
-    const std::string code = blanked(source);
+    const std::string code = blankedHlsl(source);
     const LineIndex lines(code);
     enum class Scope { Buffer, Initializer, Other };
     std::vector<Scope> scopes;

@@ -12,6 +12,7 @@
 #include "frontend/shader/BracketNesting.h"
 #include "frontend/shader/HlslBraceElision.h"
 #include "frontend/shader/HlslSamplerTypes.h"
+#include "frontend/shader/HlslWritableGlobals.h"
 #include "frontend/shader/HlslGlobalInitializers.h"
 #include "frontend/shader/HlslWorker.h"
 
@@ -183,8 +184,17 @@ Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const
     // The preprocessor puts a GLSL #version first; HLSL has none. Blank it, keeping the line count.
     std::string code = hlsl.code;
     if (code.rfind("#version", 0) == 0) code.erase(0, code.find('\n'));
-    // What fxc accepted and glslang does not, written out: brace elision, untyped samplers.
+    // What fxc accepted and glslang does not, written out: brace elision, untyped samplers, writes
+    // to globals.
     code = typeGenericSamplers(nestFlatArrayInitializers(code));
+    std::string entry = stage.entryPoint.empty() ? "main" : stage.entryPoint;
+    HlslWritableGlobals writable = giveWrittenGlobalsACopy(code, entry);
+    code = std::move(writable.code);
+    for (size_t i = 0; i < writable.written.size(); ++i)
+        diagnostics.push_back({Diagnostic::Severity::Warning, hlsl.origin(writable.lines[i]), element,
+                               "the shader assigns to HLSL global '" + writable.written[i] +
+                                   "': Direct3D 9's compiler gave each run of the shader a writable copy of the "
+                                   "constant, and so does rmfx"});
 
     // Debian's glslang crashes on mismatched brackets (BracketNesting.h): reported here, with their line.
     if (std::optional<BracketMismatch> bad = findBracketMismatch(code)) {
@@ -192,7 +202,6 @@ Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const
         diagnostics.push_back({Diagnostic::Severity::Error, at.file.empty() ? where : at, element, bad->message});
         return Result<HlslTranslation>::failure(std::move(diagnostics));
     }
-    std::string entry = stage.entryPoint.empty() ? "main" : stage.entryPoint;
     // In a process of its own: Debian's glslang crashes on some malformed HLSL (core/IsolatedProgram.h).
     Result<GlslangHlslOutcome> isolated = compileHlslInWorker({stage.stage == ShaderStage::Vertex, entry, code});
     if (!isolated) {

@@ -1,0 +1,103 @@
+// fxc's writable copies of assigned globals, written out (frontend/shader/HlslWritableGlobals):
+// which assignments count, what hides a global, and that lines stay where they were.
+
+#include "frontend/shader/HlslWritableGlobals.h"
+
+#include <algorithm>
+
+#include <gtest/gtest.h>
+
+#include "tests/support/TestSupport.h"
+
+namespace rmfx {
+namespace {
+
+using test::lines;
+
+size_t lineCount(const std::string& s) { return static_cast<size_t>(std::count(s.begin(), s.end(), '\n')); }
+
+}  // namespace
+
+TEST(HlslWritableGlobals, AssignedGlobalsGetACopySetAtTheEntryPointAndUsedEverywhere) {
+    const std::string code = lines({
+        "float Gain : register(c0);",
+        "float4 Tint = float4(1, 0.5, 0, 1);",
+        "float4x4 Unwritten;",
+        "sampler2D Base;",
+        "float helper() { return Gain; }",
+        "float4 main(float2 uv : TEXCOORD0) : COLOR0 {",
+        "    Gain *= 2;",
+        "    Tint.x = helper();",
+        "    return Tint * mul(Unwritten, float4(uv, 0, 1)) + tex2D(Base, uv);",
+        "}",
+    });
+    HlslWritableGlobals out = giveWrittenGlobalsACopy(code, "main");
+    EXPECT_EQ(out.written, (std::vector<std::string>{"Gain", "Tint"}));
+    EXPECT_EQ(out.lines, (std::vector<int>{1, 2}));
+    EXPECT_EQ(out.code, lines({
+                            "float Gain : register(c0); static float rm_writable_Gain;",
+                            "float4 Tint = float4(1, 0.5, 0, 1); static float4 rm_writable_Tint;",
+                            "float4x4 Unwritten;",
+                            "sampler2D Base;",
+                            "float helper() { return rm_writable_Gain; }",
+                            "float4 main(float2 uv : TEXCOORD0) : COLOR0 { rm_writable_Gain = Gain; rm_writable_Tint = Tint;",
+                            "    rm_writable_Gain *= 2;",
+                            "    rm_writable_Tint.x = helper();",
+                            "    return rm_writable_Tint * mul(Unwritten, float4(uv, 0, 1)) + tex2D(Base, uv);",
+                            "}",
+                        }));
+    EXPECT_EQ(lineCount(out.code), lineCount(code));
+}
+
+TEST(HlslWritableGlobals, EveryKindOfAssignmentCountsAndComparisonsDoNot) {
+    for (const char* statement : {"g = 1;", "g += 1;", "g -= 1;", "g /= 2;", "g++;", "--g;", "g.x = 1;", "g [0] = 1;",
+                                  "g.xy *= 2;", "g <<= 1;"}) {
+        SCOPED_TRACE(statement);
+        const std::string code = "int4 g;\nfloat4 main() : COLOR0 { " + std::string(statement) + " return g; }\n";
+        EXPECT_EQ(giveWrittenGlobalsACopy(code, "main").written, std::vector<std::string>{"g"});
+    }
+    for (const char* statement : {"if (g == 1) return 1;", "float4 h = g;", "return g.x <= 1 ? g : -g;", "f(g);"}) {
+        SCOPED_TRACE(statement);
+        const std::string code = "int4 g;\nfloat4 main() : COLOR0 { " + std::string(statement) + " return g; }\n";
+        HlslWritableGlobals out = giveWrittenGlobalsACopy(code, "main");
+        EXPECT_TRUE(out.written.empty());
+        EXPECT_EQ(out.code, code);
+    }
+}
+
+TEST(HlslWritableGlobals, WhatDeclaresTheNameItselfIsLeftAlone) {
+    // A local or a parameter of the same name hides the global; a static or const global is the
+    // shader's own; a comment or a string is no use.
+    const std::string code = lines({
+        "float a;",
+        "static float b = 1;",
+        "const float c = 2;",
+        "float d;",
+        "float f(float a) { a = 3; return a; }",
+        "float4 main() : COLOR0 {",
+        "    float d = 4; d += 1;",
+        "    b = 2;",
+        "    // a = 5;",
+        "    return f(a) + b + c + d;",
+        "}",
+    });
+    HlslWritableGlobals out = giveWrittenGlobalsACopy(code, "main");
+    EXPECT_TRUE(out.written.empty());
+    EXPECT_EQ(out.code, code);
+}
+
+TEST(HlslWritableGlobals, WithoutTheEntryPointNothingChanges) {
+    const std::string code = "float g;\nfloat4 ps() : COLOR0 { g = 1; return g; }\n";
+    EXPECT_EQ(giveWrittenGlobalsACopy(code, "main").code, code);
+    EXPECT_EQ(giveWrittenGlobalsACopy(code, "ps").written, std::vector<std::string>{"g"});
+}
+
+TEST(HlslWritableGlobals, BrokenCodeComesBackWithoutACrash) {
+    for (const char* code : {"float g; float4 main() { g = ", "}}} float g; float4 main() { g = 1; }", "float4 main( { g",
+                             "float g[; float4 main() { g[0 = 1; }", ""}) {
+        SCOPED_TRACE(code);
+        (void)giveWrittenGlobalsACopy(code, "main");
+    }
+}
+
+}  // namespace rmfx
