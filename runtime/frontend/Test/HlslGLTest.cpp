@@ -280,6 +280,32 @@ float4 main(float2 uv : TEXCOORD0) : COLOR {
         expectNear(pixel(out, x, 2), {0.125 + 0.375 + 0.625, 0.25 + 0.5 + 0.75, 0.75, 6.0 + 3.0}, 1e-6, "pixel " + std::to_string(x));
 }
 
+// Swizzles of scalars replicate them, as fxc's did: a variable, a component, a call's result, a
+// parenthesised expression and a literal.
+TEST_F(HlslGLTest, SwizzlesOfScalarsReplicateThem) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x4">
+  <target name="out" format="rgba32f" size="4x4"/>
+  <pass name="hlsl" target="out">
+    <shader stage="fragment"><![CDATA[
+float4 main(float2 uv : TEXCOORD0) : COLOR {
+    float f = 0.5;
+    float2 a = f.xx;
+    float3 b = uv.x.xxx;
+    float4 c = dot(a, a).xxxx;
+    float4 d = (f * 2).rrrr;
+    return float4(a.y, b.z, c.w, d.a) + 0.125f.xxxx;
+}
+]]></shader>
+  </pass>
+</workspace>)";
+    RefImage out = renderOut(xml);
+    ASSERT_EQ(out.width, 4);
+    for (int x = 0; x < 4; ++x) {
+        const double u = (x + 0.5) / 4.0;
+        expectNear(pixel(out, x, 1), glm::dvec4(0.5, u, 0.5, 1.0) + 0.125, 1e-6, "pixel " + std::to_string(x));
+    }
+}
+
 // fxc let a shader assign to a global constant (a copy private to each run): Gain doubled and
 // Tint's x replaced inside the shader, a helper function reading the copies, the constants
 // themselves fed by the workspace's variables and unchanged for the next pass.
