@@ -46,6 +46,11 @@ std::string statesText(const Pass& p) {
     else
         out << "off";
     out << "; cull " << cull[static_cast<int>(p.raster.cull)] << (p.raster.frontCounterClockwise ? "" : ", front clockwise");
+    static const char* mode[] = {"fill", "line", "point"};
+    if (p.raster.frontMode != PolygonMode::Fill || p.raster.backMode != PolygonMode::Fill)
+        out << "; polygons: front " << mode[static_cast<int>(p.raster.frontMode)] << ", back "
+            << mode[static_cast<int>(p.raster.backMode)];
+    if (p.raster.lineWidth != 1.0f) out << "; lines " << formatValue(Value::ofFloat(p.raster.lineWidth)) << " pixels wide";
     return out.str();
 }
 

@@ -242,7 +242,7 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
         if (s.healthCheck) s.healthCheck->beforeWriting(memory.textures[memory.writeBuffer()].get());
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
         glViewport(0, 0, memory.spec.size.x, memory.spec.size.y);
-        applyRenderState(pass);
+        applyRenderState(pass, s.compatibility);
         if (pass.clear.color) glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, glm::value_ptr(*pass.clear.color));
         if (pass.clear.depth) {
             glDepthMask(GL_TRUE);
@@ -275,6 +275,7 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
             }
         }
         gp.mesh->draw(gp.streams);
+        restoreFilledPolygons(pass, s.compatibility);  // what draws next (the checks, the editor) fills
         target.writtenThisFrame = true;
         s.lastFramePasses.push_back(pass.name);
         if (s.contentSkip) s.contentSkip->afterPass(position);

@@ -6,7 +6,22 @@
 
 namespace rmfx {
 
-void applyRenderState(const Pass& pass) {
+namespace {
+
+GLenum polygonMode(PolygonMode mode) {
+    return mode == PolygonMode::Line ? GL_LINE : mode == PolygonMode::Point ? GL_POINT : GL_FILL;
+}
+
+}  // namespace
+
+void applyRenderState(const Pass& pass, bool compatibility) {
+    if (compatibility) {
+        glPolygonMode(GL_FRONT, polygonMode(pass.raster.frontMode));
+        glPolygonMode(GL_BACK, polygonMode(pass.raster.backMode));
+        glLineWidth(pass.raster.lineWidth);
+    } else {
+        glPolygonMode(GL_FRONT_AND_BACK, polygonMode(pass.raster.frontMode));
+    }
     if (pass.blend.enabled) {
         glEnable(GL_BLEND);
         glBlendFuncSeparate(gl::blendFactor(pass.blend.srcColor), gl::blendFactor(pass.blend.dstColor),
@@ -30,6 +45,12 @@ void applyRenderState(const Pass& pass) {
         glCullFace(pass.raster.cull == CullFace::Back ? GL_BACK : GL_FRONT);
     }
     glFrontFace(pass.raster.frontCounterClockwise ? GL_CCW : GL_CW);
+}
+
+void restoreFilledPolygons(const Pass& pass, bool compatibility) {
+    if (pass.raster.frontMode != PolygonMode::Fill || pass.raster.backMode != PolygonMode::Fill)
+        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    if (compatibility && pass.raster.lineWidth != 1.0f) glLineWidth(1.0f);
 }
 
 }  // namespace rmfx

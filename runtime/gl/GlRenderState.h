@@ -5,6 +5,10 @@
 
 namespace rmfx {
 
-void applyRenderState(const Pass& pass);
+// `compatibility`: the context is a compatibility-profile one, which draws front and back faces
+// in their own polygon modes and lines wider than a pixel (validation refuses both otherwise).
+void applyRenderState(const Pass& pass, bool compatibility);
+// After the pass's draw: filled polygons and 1-pixel lines again, where the pass changed them.
+void restoreFilledPolygons(const Pass& pass, bool compatibility);
 
 }  // namespace rmfx

@@ -173,9 +173,17 @@ struct DepthState {
 
 enum class CullFace { None, Back, Front };
 
+enum class PolygonMode { Fill, Line, Point };
+
 struct RasterState {
     CullFace cull = CullFace::None;
     bool frontCounterClockwise = true;
+    // How front- and back-facing polygons are drawn (glPolygonMode): filled, as outlines (the
+    // silhouette effects that draw back faces as thick lines) or as points. A core-profile
+    // workspace draws both faces one way.
+    PolygonMode frontMode = PolygonMode::Fill, backMode = PolygonMode::Fill;
+    float lineWidth = 1.0f;  // of lines and outlines, in pixels
+    SourceLocation polygonModeWhere;  // the element that set the modes, for errors
 };
 
 struct ClearState {

@@ -248,6 +248,16 @@ private:
             if (s.dialect == ShaderDialect::GlslLegacy && ws_.profile != GlProfile::Compatibility)
                 error(s.where, "<shader>", "legacy GLSL (dialect=\"glsl110\") in " + label +
                                                " needs a compatibility-profile context: <workspace profile=\"compatibility\">");
+        if (ws_.profile != GlProfile::Compatibility) {
+            const SourceLocation& at = pass.raster.polygonModeWhere.file.empty() ? pass.where : pass.raster.polygonModeWhere;
+            if (pass.raster.frontMode != pass.raster.backMode)
+                error(at, "<polygon-mode>", label + " draws front and back faces differently, which only a "
+                                                    "compatibility-profile context can: <workspace profile=\"compatibility\">");
+            if (pass.raster.lineWidth != 1.0f)
+                error(at, "<polygon-mode>", label + " draws lines " + formatValue(Value::ofFloat(pass.raster.lineWidth)) +
+                                                    " pixels wide, which only a compatibility-profile context can "
+                                                    "(core OpenGL draws them 1 pixel wide): <workspace profile=\"compatibility\">");
+        }
         if (!pass.target.empty() && !ws_.findTarget(pass.target) &&
             !(pass.target == Workspace::implicitOutputName && ws_.output.target.empty()))
             error(pass.where, label, "target '" + pass.target + "' is not declared");

@@ -122,13 +122,9 @@ TEST(RfxImporter, GlRenderStatesMapToBlendDepthAndRaster) {
     EXPECT_EQ(show.raster.cull, CullFace::Back);  // 3
     EXPECT_TRUE(show.raster.frontCounterClockwise);
 
-    // GL_LineWidth holds the bits of 2.5f (0x40200000 = 1075838976): warned about, as a float.
-    int line = lineOf(rfxDir() / "gl_legacy.rfx", "GL_LineWidth");
-    EXPECT_NE(allWarnings("gl_legacy.rfx").find("gl_legacy.rfx:" + std::to_string(line) +
-                                                ": warning: <RmState NAME=\"GL_LineWidth\">: render state GL_LineWidth = 2.5 "
-                                                "has no equivalent"),
-              std::string::npos)
-        << allWarnings("gl_legacy.rfx");
+    // GL_LineWidth holds the bits of 2.5f (0x40200000 = 1075838976).
+    EXPECT_EQ(show.raster.lineWidth, 2.5f);
+    EXPECT_EQ(allWarnings("gl_legacy.rfx").find("GL_LineWidth"), std::string::npos) << allWarnings("gl_legacy.rfx");
 }
 
 TEST(RfxImporter, RenderStatesCarryOverInRunOrderFromThePassesThatRun) {
@@ -172,6 +168,35 @@ std::string d3dState(int number, const std::string& value) {
 std::string d3dEffect(const std::string& passes) {
     return "<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\" ACTIVE_EFFECT=\"W.E\">\n<RmDirectXEffect NAME=\"E\" API=\"D3D\">\n" +
            passes + "</RmDirectXEffect>\n</RmEffectWorkspace>\n</RENDER_MONKEY>\n";
+}
+
+// Silhouette outlines: back faces drawn as lines (RenderMonkey's 1 GL_POINT, 2 GL_LINE, 3 GL_FILL)
+// of a width; Direct3D's D3DRS_FILLMODE (1 point, 2 wireframe, 3 solid) sets both faces.
+TEST(RfxImporter, PolygonModesAndLineWidthAreApplied) {
+    const std::string gl = glEffect(
+        "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\"><RmRenderStateBlock NAME=\"S\">"
+        "<RmState NAME=\"GL_PolyFrontMode\" STATE=\"27\" VALUE=\"3\"/><RmState NAME=\"GL_PolyBackMode\" STATE=\"28\" VALUE=\"2\"/>"
+        "<RmState NAME=\"GL_LineWidth\" STATE=\"25\" VALUE=\"1082130432\"/></RmRenderStateBlock>\n" +
+        std::string(kFragment) + "</RmGLPass>\n");
+    Result<Workspace> outline = importRfxText(gl, "t.rfx", ".", {""});
+    ASSERT_TRUE(outline) << formatAll(outline.diagnostics());
+    ASSERT_EQ(outline->passes.size(), 1u);
+    EXPECT_EQ(outline->passes[0].raster.frontMode, PolygonMode::Fill);
+    EXPECT_EQ(outline->passes[0].raster.backMode, PolygonMode::Line);
+    EXPECT_EQ(outline->passes[0].raster.lineWidth, 4.0f);  // 0x40800000
+    EXPECT_EQ(outline->passes[0].raster.polygonModeWhere.line, 4);
+
+    Result<Workspace> wire = importRfxText(d3dEffect(d3dStatePass(0, d3dState(8, "2"))), "t.rfx", ".", {""});
+    ASSERT_TRUE(wire) << formatAll(wire.diagnostics());
+    EXPECT_EQ(wire->passes[0].raster.frontMode, PolygonMode::Line);
+    EXPECT_EQ(wire->passes[0].raster.backMode, PolygonMode::Line);
+    EXPECT_NE(errorsOf(d3dEffect(d3dStatePass(0, d3dState(8, "4")))).find("VALUE 4 is not a D3DFILLMODE (it takes 1, 2, 3)"),
+              std::string::npos);
+    EXPECT_NE(errorsOf(glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"0\"><RmRenderStateBlock NAME=\"S\">"
+                                "<RmState NAME=\"GL_LineWidth\" STATE=\"25\" VALUE=\"0.25\"/></RmRenderStateBlock>" +
+                                std::string(kFragment) + "</RmGLPass>\n"))
+                  .find("VALUE 0.25 is not a line width from 1 to 64 pixels"),
+              std::string::npos);
 }
 
 TEST(RfxImporter, Direct3dSeparateAlphaBlendingCarriesOverWithTheOtherStates) {
@@ -553,7 +578,7 @@ TEST(RfxImporter, Direct3dEffectWithHlslStatesAndAnAssemblyPass) {
               std::string::npos)
         << warnings;
     EXPECT_NE(warnings.find("D3DRS_DEPTHBIAS = 0.5 has no equivalent"), std::string::npos) << warnings;
-    EXPECT_NE(warnings.find("D3DRS_FILLMODE = 2 has no equivalent"), std::string::npos) << warnings;
+    EXPECT_EQ(warnings.find("D3DRS_FILLMODE"), std::string::npos) << warnings;  // 3, solid: applied
 }
 
 TEST(RfxImporter, AssemblyShaderInAnEnabledPassIsAnError) {

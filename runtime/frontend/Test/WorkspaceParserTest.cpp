@@ -126,7 +126,7 @@ TEST(WorkspaceParser, UnknownElementInPass) {
         "  </pass>",
     }));
     EXPECT_EQ(d, (Lines{at + "4: error: unknown element <blnd> in <pass name=\"blur\"> (expected clear, blend, depth, "
-                             "cull, shader, sampler, draw, stream, or a value element such as float)"}));
+                             "cull, polygon-mode, shader, sampler, draw, stream, or a value element such as float)"}));
 }
 
 TEST(WorkspaceParser, UnknownElementInLeafElement) {

@@ -404,7 +404,8 @@ private:
         p.name = r.identifier("name").value_or("");
         p.target = r.string("target").value_or("");
         p.enabled = r.boolean("enabled").value_or(true);
-        bool drawSeen = false, clearSeen = false, blendSeen = false, depthSeen = false, cullSeen = false;
+        bool drawSeen = false, clearSeen = false, blendSeen = false, depthSeen = false, cullSeen = false,
+             polygonModeSeen = false;
         auto once = [&](const XMLElement* c, bool& seen) {
             if (seen) unexpected(c, "<" + std::string(c->Name()) + "> is given twice in " + r.label());
             seen = true;
@@ -423,6 +424,9 @@ private:
             } else if (tag == "cull") {
                 once(c, cullSeen);
                 passChildren_.parseCull(c, p.raster);
+            } else if (tag == "polygon-mode") {
+                once(c, polygonModeSeen);
+                passChildren_.parsePolygonMode(c, p.raster);
             } else if (tag == "shader") {
                 if (auto s = passChildren_.parseShader(c)) {
                     for (const ShaderSource& other : p.shaders)
@@ -444,7 +448,7 @@ private:
                 if (auto v = parseVariable(c)) p.constants.push_back(std::move(*v));
             } else {
                 unexpected(c, "unknown element <" + std::string(tag) + "> in " + r.label() +
-                                  " (expected clear, blend, depth, cull, shader, sampler, draw, stream, or a value "
+                                  " (expected clear, blend, depth, cull, polygon-mode, shader, sampler, draw, stream, or a value "
                                   "element such as float)");
             }
         }

@@ -47,6 +47,9 @@ constexpr Choice<BlendOp> blendOps[] = {  // the same numbers in both APIs
 constexpr Choice<CullFace> glCull[] = {{1, CullFace::None}, {2, CullFace::Front}, {3, CullFace::Back}};
 constexpr Choice<bool> glFrontFace[] = {{1, true}, {2, false}};  // → frontCounterClockwise
 constexpr Choice<bool> boolean[] = {{0, false}, {1, true}};
+constexpr Choice<PolygonMode> glPolygonModes[] = {{1, PolygonMode::Point}, {2, PolygonMode::Line}, {3, PolygonMode::Fill}};
+// D3DFILLMODE: 1 D3DFILL_POINT, 2 D3DFILL_WIREFRAME, 3 D3DFILL_SOLID.
+constexpr Choice<PolygonMode> d3dFillModes[] = {{1, PolygonMode::Point}, {2, PolygonMode::Line}, {3, PolygonMode::Fill}};
 
 // Direct3D 9 enumerations.
 constexpr Choice<BlendFactor> d3dBlend[] = {
@@ -73,7 +76,7 @@ constexpr Unmodelled glUnmodelled[] = {
     {"GL_FogDensity", true},     {"GL_FogStart", true},          {"GL_FogEnd", true},
     {"GL_FogMode", false},       {"GL_PointSize", true},         {"GL_PointMin", true},
     {"GL_PointMax", true},       {"GL_PointSmooth", false},      {"GL_LineWidth", true},
-    {"GL_LineSmooth", false},    {"GL_PolyFrontMode", false},    {"GL_PolyBackMode", false},
+    {"GL_LineSmooth", false},
     {"GL_PolySmooth", false},    {"GL_PolyOffsetFactor", true},  {"GL_PolyOffsetUnits", true},
     {"GL_PolyOffsetPoint", false}, {"GL_PolyOffsetLine", false}, {"GL_PolyOffsetFill", false},
     {"GL_AlphaEnable", false},   {"GL_AlphaFunction", false},    {"GL_AlphaReference", true},
@@ -170,6 +173,15 @@ void applyGlRenderState(const RfxElement& state, Pass& pass) {
         if (auto op = pick(state, "blend equation", v, blendOps)) pass.blend.colorOp = pass.blend.alphaOp = *op;
     } else if (name == "GL_BlendColor") {
         pass.blend.constant = unpackArgb(v);
+    } else if (name == "GL_PolyFrontMode" || name == "GL_PolyBackMode") {
+        // RenderMonkey's enumeration: 1 GL_POINT, 2 GL_LINE, 3 GL_FILL.
+        PolygonMode& mode = name == "GL_PolyFrontMode" ? pass.raster.frontMode : pass.raster.backMode;
+        set(mode, glPolygonModes, "polygon mode");
+        pass.raster.polygonModeWhere = state.where();
+    } else if (name == "GL_LineWidth") {
+        const float width = floatFromBits(v);
+        if (width >= 1.0f && width <= 64.0f) pass.raster.lineWidth = width;
+        else state.error("VALUE " + formatValue(Value::ofFloat(width)) + " is not a line width from 1 to 64 pixels");
     } else {
         for (const Unmodelled& u : glUnmodelled)
             if (u.name == name) return warnUnmodelled(state, name, v, u.isFloat);
@@ -222,6 +234,12 @@ void applyD3dRenderState(const RfxElement& state, Pass& pass, bool& separateAlph
                 pass.raster.frontCounterClockwise = v == 2;
             } else {
                 state.error("VALUE " + std::to_string(v) + " is not a D3DCULL (it takes 1, 2, 3)");
+            }
+            break;
+        case 8:  // D3DRS_FILLMODE: both faces
+            if (auto mode = pick(state, "D3DFILLMODE", v, d3dFillModes)) {
+                pass.raster.frontMode = pass.raster.backMode = *mode;
+                pass.raster.polygonModeWhere = state.where();
             }
             break;
         case 206:  // D3DRS_SEPARATEALPHABLENDENABLE

@@ -91,6 +91,20 @@ void PassChildParser::parseDepth(const XMLElement* e, DepthState& d) {
     noChildren(e);
 }
 
+void PassChildParser::parsePolygonMode(const XMLElement* e, RasterState& s) {
+    ElementReader r(e, file_, diagnostics_, {"front", "back", "line-width"});
+    std::initializer_list<std::pair<const char*, PolygonMode>> modes = {
+        {"fill", PolygonMode::Fill}, {"line", PolygonMode::Line}, {"point", PolygonMode::Point}};
+    s.frontMode = r.choice<PolygonMode>("front", modes).value_or(PolygonMode::Fill);
+    s.backMode = r.choice<PolygonMode>("back", modes).value_or(s.frontMode);
+    if (auto width = r.number("line-width")) {
+        if (*width >= 1.0f && *width <= 64.0f) s.lineWidth = *width;
+        else r.error("line-width must be from 1 to 64 pixels");
+    }
+    s.polygonModeWhere = r.where();
+    noChildren(e);
+}
+
 void PassChildParser::parseCull(const XMLElement* e, RasterState& s) {
     ElementReader r(e, file_, diagnostics_, {"face", "front"});
     s.cull = r.choice<CullFace>("face", {{"none", CullFace::None}, {"back", CullFace::Back},

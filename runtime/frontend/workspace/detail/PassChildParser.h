@@ -21,6 +21,7 @@ public:
     void parseBlend(const XMLElement* e, BlendState& b);
     void parseDepth(const XMLElement* e, DepthState& d);
     void parseCull(const XMLElement* e, RasterState& s);
+    void parsePolygonMode(const XMLElement* e, RasterState& s);
     std::optional<ShaderSource> parseShader(const XMLElement* e);
     std::optional<VertexStream> parseStream(const XMLElement* e);
     std::optional<Sampler> parseSampler(const XMLElement* e);
