@@ -1,6 +1,7 @@
 #include "gl/GlExecutor.h"
 
 #include <algorithm>
+#include <map>
 #include <optional>
 
 #include <epoxy/gl.h>
@@ -232,6 +233,9 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
     std::vector<GlHealthCheck::Input> healthInputs;
     const FrameCamera camera(camera_, viewport_);
     const FrameInputs inputs{clock, frame_, &camera, viewport_, s.mouse, s.mouseButtons, &s.current.switchedOff};
+    // The named cameras passes look through (RmCameraReference): fixed, built once a frame.
+    std::map<std::string, FrameCamera> namedCameras;
+    for (const NamedCamera& c : s.ws.cameras) namedCameras.emplace(c.name, FrameCamera(OrbitCamera(c.settings), viewport_));
     for (size_t position = 0; position < s.schedule.size(); ++position) {
         if (s.contentSkip) s.contentSkip->beforePass(position);
         const GpuPass& gp = *s.schedule[position];
@@ -250,8 +254,12 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
             glDepthMask(pass.depth.write ? GL_TRUE : GL_FALSE);
         }
         glUseProgram(gp.program.get());
-        uploadUniforms(gp, inputs);
-        if (s.compatibility) loadFixedFunctionState(camera.projection, camera.view * gp.model);
+        const auto named = pass.camera.empty() ? namedCameras.end() : namedCameras.find(pass.camera);
+        const FrameCamera& passCamera = named == namedCameras.end() ? camera : named->second;
+        FrameInputs passInputs = inputs;
+        passInputs.camera = &passCamera;
+        uploadUniforms(gp, passInputs);
+        if (s.compatibility) loadFixedFunctionState(passCamera.projection, passCamera.view * gp.model);
         healthInputs.clear();
         for (const SamplerSlot& slot : gp.samplers) {
             GLuint texture = slot.texture;

@@ -14,7 +14,17 @@ glm::vec3 OrbitCamera::position() const {
     return settings_.target + offset * settings_.distance;
 }
 
-glm::mat4 OrbitCamera::view() const { return glm::lookAt(position(), settings_.target, glm::vec3(0, 1, 0)); }
+glm::mat4 OrbitCamera::view() const {
+    const glm::vec3 eye = position();
+    if (settings_.rollDegrees == 0.0f) return glm::lookAt(eye, settings_.target, glm::vec3(0, 1, 0));
+    // +Y made perpendicular to the viewing direction (pitch stays within ±89°), then turned toward
+    // the camera's right by the roll.
+    const glm::vec3 forward = glm::normalize(settings_.target - eye);
+    const glm::vec3 up = glm::normalize(glm::vec3(0, 1, 0) - forward * forward.y);
+    const glm::vec3 right = glm::cross(forward, up);
+    const float roll = glm::radians(settings_.rollDegrees);
+    return glm::lookAt(eye, settings_.target, up * std::cos(roll) + right * std::sin(roll));
+}
 
 glm::mat4 OrbitCamera::projection(float aspect) const {
     return glm::perspective(glm::radians(settings_.fovYDegrees), aspect, settings_.nearPlane, settings_.farPlane);

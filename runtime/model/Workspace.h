@@ -226,6 +226,8 @@ struct Pass {
     std::vector<Sampler> samplers;
     std::vector<Variable> constants;    // pass-local values, shadowing workspace variables
     DrawCall draw;                      // default: the full-screen triangle
+    std::string camera;                 // a NamedCamera; empty: the workspace's camera
+    SourceLocation cameraWhere;
     // Empty: rmfx's layout (locations 0 position, 1 normal, 2 texcoord). Else these streams,
     // by attribute name or compatibility built-in.
     std::vector<VertexStream> streams;
@@ -266,7 +268,17 @@ struct OrbitCameraSettings {
     float pitchDegrees = 15.0f;   // above the horizon
     float fovYDegrees = 60.0f;
     float nearPlane = 0.05f, farPlane = 100.0f;
+    // About the viewing direction: positive turns the camera's up from +Y's direction toward its
+    // right (the picture turns the other way).
+    float rollDegrees = 0.0f;
     SourceLocation where;
+};
+
+// A fixed camera a pass may look through instead of the workspace's (<camera name="…">,
+// RenderMonkey's RmCameraReference): a light's view for a shadow map, a second viewpoint.
+struct NamedCamera {
+    std::string name;
+    OrbitCameraSettings settings;
 };
 
 struct Workspace {
@@ -287,6 +299,13 @@ struct Workspace {
     std::vector<Effect> effects;
     Output output;
     OrbitCameraSettings camera;
+    std::vector<NamedCamera> cameras;  // the named ones passes may look through
+
+    const NamedCamera* findCamera(const std::string& name) const {
+        for (const NamedCamera& c : cameras)
+            if (c.name == name) return &c;
+        return nullptr;
+    }
 
     static constexpr const char* implicitOutputName = "output";
 

@@ -244,6 +244,13 @@ private:
 
     void checkPass(const Pass& pass) {
         std::string label = passLabel(pass);
+        if (!pass.camera.empty() && !ws_.findCamera(pass.camera)) {
+            std::string known;
+            for (const NamedCamera& c : ws_.cameras) known += (known.empty() ? "" : ", ") + c.name;
+            error(pass.cameraWhere.file.empty() ? pass.where : pass.cameraWhere, label,
+                  "camera '" + pass.camera + "' is not declared (" +
+                      (known.empty() ? std::string("the workspace names no camera: <camera name=\"…\">") : "named cameras: " + known) + ")");
+        }
         for (const ShaderSource& s : pass.shaders)
             if (s.dialect == ShaderDialect::GlslLegacy && ws_.profile != GlProfile::Compatibility)
                 error(s.where, "<shader>", "legacy GLSL (dialect=\"glsl110\") in " + label +

@@ -69,6 +69,17 @@ TEST(RfxCameraFraming, AnRmCameraOrOnlyAScreenAlignedQuadLeavesTheCameraAlone) {
                                                           "UP_VECTOR_Z=\"0\" FOV=\"45\" NEAR_CLIP_PLANE=\"1\" "
                                                           "FAR_CLIP_PLANE=\"1000\"/>\n"));
     EXPECT_FLOAT_EQ(placed.camera.distance, 300.0f);
+    EXPECT_EQ(placed.camera.rollDegrees, 0.0f);
+    // UP_VECTOR +X, looking down -Z: rolled 90° (the camera's right is +X); −X: −90°.
+    for (const auto& [x, roll] : {std::pair{"1", 90.0f}, std::pair{"-1", -90.0f}}) {
+        Workspace rolled = load(dir, effectDrawing("big.obj", std::string("<RmCamera NAME=\"C\" CAMERA_POSITION_X=\"0\" "
+                                                                          "CAMERA_POSITION_Y=\"0\" CAMERA_POSITION_Z=\"300\" "
+                                                                          "LOOK_AT_VECTOR_X=\"0\" LOOK_AT_VECTOR_Y=\"0\" "
+                                                                          "LOOK_AT_VECTOR_Z=\"0\" UP_VECTOR_X=\"") +
+                                                                  x + "\" UP_VECTOR_Y=\"0\" UP_VECTOR_Z=\"0\" FOV=\"45\" "
+                                                                      "NEAR_CLIP_PLANE=\"1\" FAR_CLIP_PLANE=\"1000\"/>\n"));
+        EXPECT_NEAR(rolled.camera.rollDegrees, roll, 1e-4) << x;
+    }
     Workspace quad = load(dir, effectDrawing("C:\\Program Files\\RenderMonkey\\Media\\ScreenAlignedQuad.3ds"));
     EXPECT_FLOAT_EQ(quad.camera.distance, OrbitCameraSettings{}.distance);
 }

@@ -146,7 +146,7 @@ TEST(WorkspaceParser, UnknownAttributeListsTheKnownOnes) {
         "    <shader stage=\"fragment\" file=\"blur.frag\"/>",
         "  </pass>",
     }));
-    EXPECT_EQ(d, (Lines{at + "4: error: <pass name=\"blur\">: unknown attribute 'blnd' (expected one of: name, target, enabled)"}));
+    EXPECT_EQ(d, (Lines{at + "4: error: <pass name=\"blur\">: unknown attribute 'blnd' (expected one of: name, target, enabled, camera)"}));
 
     EXPECT_EQ(errorsOf(workspace({"  <description lang=\"en\">x</description>"})),
               (Lines{at + "2: error: <description>: unknown attribute 'lang' (it takes none)"}));

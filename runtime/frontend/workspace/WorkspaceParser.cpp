@@ -53,7 +53,17 @@ public:
                 ElementReader d(e, file_, diagnostics_, {});
                 ws.description = e->GetText() ? e->GetText() : "";
             } else if (tag == "camera") {
-                parseCamera(e, ws.camera);
+                if (e->Attribute("name")) {
+                    NamedCamera named;
+                    named.name = e->Attribute("name");
+                    parseCamera(e, named.settings);
+                    if (ws.findCamera(named.name))
+                        unexpected(e, "a second <camera name=\"" + named.name + "\">: camera names are unique");
+                    else
+                        ws.cameras.push_back(std::move(named));
+                } else {
+                    parseCamera(e, ws.camera);
+                }
             } else if (valueTypeFromElement(tag)) {
                 if (auto v = parseVariable(e)) ws.variables.push_back(std::move(*v));
             } else if (tag == "code") {
@@ -102,8 +112,10 @@ private:
     }
 
     void parseCamera(const XMLElement* e, OrbitCameraSettings& c) {
-        ElementReader r(e, file_, diagnostics_, {"target", "distance", "yaw", "pitch", "fov", "near", "far"});
+        ElementReader r(e, file_, diagnostics_, {"name", "target", "distance", "yaw", "pitch", "roll", "fov", "near", "far"});
         c.where = r.where();
+        if (e->Attribute("name")) (void)r.identifier("name");
+        c.rollDegrees = r.number("roll").value_or(c.rollDegrees);
         if (auto t = r.numbers<3>("target")) c.target = {(*t)[0], (*t)[1], (*t)[2]};
         c.distance = r.number("distance").value_or(c.distance);
         c.yawDegrees = r.number("yaw").value_or(c.yawDegrees);
@@ -398,11 +410,15 @@ private:
     }
 
     Pass parsePass(const XMLElement* e) {
-        ElementReader r(e, file_, diagnostics_, {"name", "target", "enabled"});
+        ElementReader r(e, file_, diagnostics_, {"name", "target", "enabled", "camera"});
         Pass p;
         p.where = r.where();
         p.name = r.identifier("name").value_or("");
         p.target = r.string("target").value_or("");
+        if (auto camera = r.identifier("camera", false)) {
+            p.camera = *camera;
+            p.cameraWhere = r.where();
+        }
         p.enabled = r.boolean("enabled").value_or(true);
         bool drawSeen = false, clearSeen = false, blendSeen = false, depthSeen = false, cullSeen = false,
              polygonModeSeen = false;

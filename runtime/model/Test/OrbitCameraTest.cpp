@@ -4,6 +4,7 @@
 #include <limits>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 #include <glm/vec4.hpp>
 #include <gtest/gtest.h>
@@ -33,6 +34,30 @@ TEST(OrbitCamera, PositionIsOnTheSphereAroundTheTarget) {
     expectNear(OrbitCamera(settings(0, 0, 2)).position(), {0, 0, 2});  // yaw 0: on +Z
     expectNear(OrbitCamera(settings(90, 0, 2)).position(), {2, 0, 0});
     expectNear(OrbitCamera(settings(0, 30, 2, {1, 1, 1})).position(), {1, 1 + 2 * 0.5f, 1 + 2 * std::sqrt(3.0f) / 2});
+}
+
+// A roll turns the camera's up toward its right: the view equals glm::lookAt with that up, built
+// here from the eye, the target and the roll by hand.
+TEST(OrbitCamera, RollTurnsTheUpVectorAboutTheViewingDirection) {
+    OrbitCameraSettings rolled = settings(0, 0, 2);
+    rolled.rollDegrees = 90.0f;
+    // On +Z looking down -Z, the right is +X: rolled 90°, up is +X and world +X is the view's up.
+    glm::vec4 x = OrbitCamera(rolled).view() * glm::vec4(1, 0, 0, 0);
+    expectNear(glm::vec3(x), {0, 1, 0});
+    for (float roll : {-135.0f, -30.0f, 10.0f, 170.0f}) {
+        OrbitCameraSettings s = settings(35, 20, 3, {0.5f, -1, 2});
+        s.rollDegrees = roll;
+        OrbitCamera camera(s);
+        const glm::dvec3 eye = camera.position(), target = s.target;
+        const glm::dvec3 forward = glm::normalize(target - eye);
+        const glm::dvec3 up0 = glm::normalize(glm::dvec3(0, 1, 0) - forward * forward.y);
+        const glm::dvec3 right = glm::cross(forward, up0);
+        const double r = glm::radians(static_cast<double>(roll));
+        const glm::dmat4 expected = glm::lookAt(eye, target, up0 * std::cos(r) + right * std::sin(r));
+        const glm::mat4 actual = camera.view();
+        for (int c = 0; c < 4; ++c)
+            for (int row = 0; row < 4; ++row) EXPECT_NEAR(actual[c][row], expected[c][row], 1e-5) << roll << " " << c << "," << row;
+    }
 }
 
 TEST(OrbitCamera, ViewLooksAtTheTarget) {

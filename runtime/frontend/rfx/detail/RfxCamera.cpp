@@ -28,8 +28,18 @@ OrbitCameraSettings orbitFromRmCamera(const RfxElement& camera) {
     s.distance = distance;
     s.yawDegrees = glm::degrees(std::atan2(offset.x, offset.z));
     s.pitchDegrees = std::clamp(glm::degrees(std::asin(std::clamp(offset.y / distance, -1.0f, 1.0f))), -89.0f, 89.0f);
-    if (glm::length(up) > 0 && glm::dot(glm::normalize(up), glm::vec3(0, 1, 0)) < 0.999f)
-        camera.warning("UP_VECTOR is not +Y; rmfx's orbit camera keeps +Y up, so the view is not rolled");
+    // The roll that turns the orbit camera's up (+Y made perpendicular to the view) into
+    // UP_VECTOR's, as OrbitCamera::view() applies it.
+    const glm::vec3 forward = -offset / distance;
+    const glm::vec3 plainUp = glm::vec3(0, 1, 0) - forward * forward.y;
+    const glm::vec3 given = up - forward * glm::dot(up, forward);
+    if (glm::length(plainUp) > 1e-4f && glm::length(given) > 1e-4f) {
+        const glm::vec3 u = glm::normalize(plainUp), right = glm::cross(forward, u);
+        s.rollDegrees = glm::degrees(std::atan2(glm::dot(given, right), glm::dot(given, u)));
+        if (std::abs(s.rollDegrees) < 1e-3f) s.rollDegrees = 0.0f;
+    } else if (glm::length(given) <= 1e-4f) {
+        camera.warning("UP_VECTOR lies along the viewing direction: it says nothing of the roll, which stays 0");
+    }
     if (auto fov = camera.number("FOV")) {
         if (*fov > 0 && *fov < 180) s.fovYDegrees = *fov;
         else camera.error("FOV " + std::to_string(*fov) + " is not an angle in (0, 180) degrees");
