@@ -500,10 +500,10 @@ TEST(RfxImporter, GlesEffectFeedsNamedAttributes) {
               std::string::npos);
 }
 
-TEST(RfxImporter, Direct3dEffectWithHlslStatesAndAnAssemblyPass) {
+TEST(RfxImporter, Direct3dEffectWithHlslStatesAndADisabledAssemblyPass) {
     Workspace ws = imported("d3d_hlsl.rfx");
     EXPECT_EQ(ws.profile, GlProfile::Core);
-    ASSERT_EQ(ws.passes.size(), 2u);  // the disabled assembly pass is left out, with a warning
+    ASSERT_EQ(ws.passes.size(), 3u);  // the disabled assembly pass is kept, translated to HLSL
     const Pass& fill = ws.passes[0];
     ASSERT_EQ(fill.shaders.size(), 2u);
     EXPECT_EQ(fill.shaders[0].dialect, ShaderDialect::Hlsl);
@@ -545,13 +545,19 @@ TEST(RfxImporter, Direct3dEffectWithHlslStatesAndAnAssemblyPass) {
     EXPECT_EQ(s.mipmap, MipmapMode::None);
 
     std::string warnings = allWarnings("d3d_hlsl.rfx");
-    EXPECT_NE(warnings.find("d3d_hlsl.rfx:" + std::to_string(lineOf(rfxDir() / "d3d_hlsl.rfx", "NAME=\"Legacy\"")) +
-                            ": warning: <pass \"Legacy\">: disabled, and it could not run"),
-              std::string::npos)
-        << warnings;
+    const Pass& legacy = ws.passes[2];
+    EXPECT_FALSE(legacy.enabled);
+    ASSERT_EQ(legacy.shaders.size(), 1u);
+    EXPECT_EQ(legacy.shaders[0].dialect, ShaderDialect::Hlsl);
+    EXPECT_EQ(legacy.shaders[0].entryPoint, "rm_asm_main");
+    EXPECT_EQ(legacy.shaders[0].profile, "ps_3_0");
     int line = lineOf(rfxDir() / "d3d_hlsl.rfx", "<RmShader NAME=");
     EXPECT_NE(warnings.find("d3d_hlsl.rfx:" + std::to_string(line) +
-                            ": warning: <RmShader NAME=\"Pixel Shader\">: an assembly shader"),
+                            ": warning: <RmShader NAME=\"Pixel Shader\">: Direct3D assembly (ps_1_1) translated to HLSL"),
+              std::string::npos)
+        << warnings;
+    EXPECT_NE(warnings.find("d3d_hlsl.rfx:" + std::to_string(lineOf(rfxDir() / "d3d_hlsl.rfx", "mov r0, c0")) +
+                            ": warning: <RmShader NAME=\"Pixel Shader\">: c0 is neither defined (def) nor set"),
               std::string::npos)
         << warnings;
     EXPECT_NE(warnings.find("D3DRS_DEPTHBIAS = 0.5 has no equivalent"), std::string::npos) << warnings;
