@@ -69,7 +69,7 @@ public:
             line_ = in.line;
             instruction(in);
         }
-        if (depth_ != 0) error(lastLine_, "a flow-control block (if, rep, loop) is not closed");
+        if (!blocks_.empty()) error(blocks_.back().second, blocks_.back().first + " is never closed (no matching end)");
         finish();
         out.messages = std::move(messages_);
         std::string text;
@@ -810,7 +810,12 @@ private:
                 emit("if (b" + std::to_string(in.sources[0].index) + ") {");
             }
             ++depth_;
+            blocks_.push_back({op, in.line});
         } else if (op == "else") {
+            if (blocks_.empty() || blocks_.back().first != "if") {
+                error(in.line, "else without an if");
+                return true;
+            }
             emit("} else {");
         } else if (op == "endif" || op == "endrep" || op == "endloop") {
             if (depth_ == 0) {
@@ -818,6 +823,10 @@ private:
                 return true;
             }
             --depth_;
+            const auto [opened, openedLine] = blocks_.back();
+            blocks_.pop_back();
+            if ((op == "endif") != (opened == "if") || (op == "endrep" && opened != "rep") || (op == "endloop" && opened != "loop"))
+                error(in.line, op + " closes the " + opened + " of line " + std::to_string(openedLine));
             emit("}");
         } else if (op == "rep" || op == "loop") {
             const size_t n = op == "loop" ? 2 : 1;
@@ -833,7 +842,12 @@ private:
             else emit("{ int aL = " + i + ".y; for (int " + k + " = 0; " + k + " < " + i + ".x; ++" + k + ", aL += " + i + ".z) {");
             if (op == "loop") loops_.push_back(depth_);
             ++depth_;
+            blocks_.push_back({op, in.line});
         } else if (op == "break") {
+            if (std::none_of(blocks_.begin(), blocks_.end(), [](const auto& b) { return b.first != "if"; })) {
+                error(in.line, "break outside a rep or loop");
+                return true;
+            }
             if (!in.comparison.empty()) {
                 if (!need(in, 2, false)) return true;
                 emit("if (" + scalar(in.sources[0]) + " " + compare(in.comparison) + " " + scalar(in.sources[1]) + ") break;");
@@ -877,6 +891,7 @@ private:
     std::vector<std::string> lines_;
     int lastLine_ = 1, line_ = 1, depth_ = 0, constCount_ = 1;
     std::vector<int> loops_;
+    std::vector<std::pair<std::string, int>> blocks_;  // open if/rep/loop and their lines
     std::vector<Message> messages_;
     std::map<int, std::string> inputSemantics_, outputSemantics_;
     std::map<int, SamplerKind> samplerKinds_;
