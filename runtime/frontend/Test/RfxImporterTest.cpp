@@ -740,3 +740,54 @@ TEST(RfxImporter, ListNamesEveryEffectWithItsApiAndActiveFlag) {
 
 }  // namespace
 }  // namespace rmfx
+
+namespace rmfx {
+namespace {
+
+// Direct3D assembly shaders: translated to HLSL, problems at their .rfx line (body from line 4).
+TEST(RfxImporter, AssemblyShadersBecomeHlslAndTheirErrorsNameTheRfxLine) {
+    const std::string vs = "<RmShader NAME=\"VS\" PIXEL_SHADER=\"FALSE\"><RmShaderCode><![CDATA[\nvs.1.1\n"
+                           "dcl_position v0\nm4x4 oPos, v0, c0\nmov oT0, c4]]></RmShaderCode>\n"
+                           "<RmShaderConstant NAME=\"M\" REGISTER=\"0\"/></RmShader>\n";
+    const std::string matrix = "<RmMatrixVariable NAME=\"M\" VARIABLE_SEMANTIC=\"\" VALUE_0=\"1\" VALUE_1=\"0\" VALUE_2=\"0\" "
+                               "VALUE_3=\"0\" VALUE_4=\"0\" VALUE_5=\"1\" VALUE_6=\"0\" VALUE_7=\"0\" VALUE_8=\"0\" VALUE_9=\"0\" "
+                               "VALUE_10=\"1\" VALUE_11=\"0\" VALUE_12=\"0\" VALUE_13=\"0\" VALUE_14=\"0\" VALUE_15=\"1\"/>\n";
+    auto pass = [&](bool enabled, const std::string& ps) {
+        return matrix + "<RmPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"" + (enabled ? "TRUE" : "FALSE") + "\">\n" + vs +
+               "<RmShader NAME=\"PS\" PIXEL_SHADER=\"TRUE\"><RmShaderCode><![CDATA[\nps.1.1\n" + ps +
+               "]]></RmShaderCode></RmShader>\n</RmPass>\n";
+    };
+    Result<Workspace> ok = importRfxText(d3dEffect(pass(true, "mov r0, t0")), "t.rfx", ".", {""});
+    ASSERT_TRUE(ok.ok()) << formatAll(ok.diagnostics());
+    ASSERT_EQ(ok->passes.size(), 1u);
+    ASSERT_EQ(ok->passes[0].shaders.size(), 2u);
+    const ShaderSource& v = ok->passes[0].shaders[0];
+    EXPECT_EQ(v.dialect, ShaderDialect::Hlsl);
+    EXPECT_EQ(v.entryPoint, "rm_asm_main");
+    EXPECT_EQ(v.profile, "vs_3_0");
+    EXPECT_EQ(v.codeLine, 6);  // the CDATA's first line: generated line N is the code's line N
+    EXPECT_NE(v.code.find("float4x4 M;"), std::string::npos) << v.code;
+    const std::string warnings = formatAll(ok.diagnostics());
+    EXPECT_NE(warnings.find("t.rfx:6: warning: <RmShader NAME=\"VS\">: Direct3D assembly (vs_1_1) translated to HLSL"),
+              std::string::npos)
+        << warnings;
+    EXPECT_NE(warnings.find("t.rfx:10: warning: <RmShader NAME=\"VS\">: c4 is neither defined"), std::string::npos) << warnings;
+
+    std::string errors = errorsOf(d3dEffect(pass(true, "mov r0, t0\ntexbem t1, t0")));
+    EXPECT_NE(errors.find("t.rfx:15: error: <RmShader NAME=\"PS\">: the instruction 'texbem' is not supported"), std::string::npos)
+        << errors;
+    EXPECT_NE(errors.find("error: <pass \"P\">: the effect cannot run: its pixel shader <RmShader NAME=\"PS\"> (line 12) "
+                          "could not be translated from assembly"),
+              std::string::npos)
+        << errors;
+
+    // In a disabled pass the same problems are warnings, and the pass is left out (leaving none).
+    Result<Workspace> disabled = importRfxText(d3dEffect(pass(false, "mov r0, t0\nfoo r0")), "t.rfx", ".", {""});
+    EXPECT_EQ(formatAll(disabled.diagnostics()).find("error: <RmShader"), std::string::npos) << formatAll(disabled.diagnostics());
+    EXPECT_NE(formatAll(disabled.diagnostics()).find("t.rfx:15: warning: <RmShader NAME=\"PS\">: unknown instruction 'foo'"),
+              std::string::npos)
+        << formatAll(disabled.diagnostics());
+}
+
+}  // namespace
+}  // namespace rmfx
