@@ -238,6 +238,16 @@ TEST(D3DAsmToHlsl, ConstantRegistersFromVariablesAndDefinitions) {
         << lineOf(s.hlsl, 1);
 }
 
+TEST(D3DAsmToHlsl, VariablesWhoseNamesCannotBeHlslGlobalsAreErrors) {
+    for (const char* name : {"half", "r3", "oT1", "my value", "c"}) {
+        HlslFromAsm h = hlslOf("vs_2_0\ndcl_position v0\nmov oPos, c0\n", {{name, 0, ValueType::Vec4, false, 3}});
+        EXPECT_EQ(firstError(h.messages), "line 3: the variable '" + std::string(name) +
+                                              "' of register c0 cannot be an HLSL global of that name (a keyword, a "
+                                              "register's name or not an identifier), through which rmfx would bind it");
+    }
+    EXPECT_TRUE(hlslOf("vs_2_0\ndcl_position v0\nmov oPos, c0\n", {{"halfScale", 0, ValueType::Vec4, false, 0}}).ok());
+}
+
 TEST(D3DAsmToHlsl, VertexInputsByDeclarationOrStreamRegister) {
     HlslFromAsm h = hlslOf("vs.1.1\nmov oPos, v0\nmov oT1, v3\nmov oD0, v5\n", {}, {},
                            {{0, "POSITION0"}, {3, "TEXCOORD1"}, {5, "COLOR0"}});

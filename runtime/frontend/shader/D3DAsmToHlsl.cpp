@@ -1,6 +1,7 @@
 #include "frontend/shader/D3DAsmToHlsl.h"
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <set>
 #include <sstream>
@@ -42,9 +43,40 @@ const char* kHelpers =
     "float4 rm_logp(float x) { float a = abs(x); if (a == 0.0) return float4(-1e38, 1.0, -1e38, 1.0); "
     "float e = floor(log2(a)); return float4(e, a / exp2(e), log2(a), 1.0); } ";
 
-struct Param {
-    std::string declaration;  // "float4 v0 : POSITION0"
-};
+}  // namespace
+
+bool hlslIdentifier(const std::string& name) {
+    static const std::set<std::string> reserved = {
+        "bool", "int", "uint", "half", "float", "double", "vector", "matrix", "string", "void", "true", "false",
+        "in", "out", "inout", "uniform", "static", "const", "extern", "shared", "volatile", "register", "struct",
+        "typedef", "sampler", "sampler1D", "sampler2D", "sampler3D", "samplerCUBE", "texture", "if", "else",
+        "for", "while", "do", "return", "break", "continue", "discard", "pass", "technique", "compile", "asm",
+        "row_major", "column_major", "snorm", "unorm", "packoffset", "cbuffer", "tbuffer", "namespace", "switch",
+        "case", "default", "inline", "precise", "centroid", "linear", "nointerpolation", "noperspective", "sample"};
+    if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0])) || reserved.count(name)) return false;
+    if (name.rfind("rm_", 0) == 0) return false;  // the translation's own names
+    for (char ch : name)
+        if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_') return false;
+    const std::string lowered = [&] {
+        std::string l = name;
+        for (char& c : l) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return l;
+    }();
+    // Register-like names would meet the locals the translation declares (r0, c, oPos…).
+    if (lowered == "c" || lowered == "a0" || lowered == "al" || lowered == "opos" || lowered == "ofog" ||
+        lowered == "opts" || lowered == "odepth" || lowered == "vface" || lowered == "vpos")
+        return false;
+    if (lowered.size() >= 2 && std::string("rvtibo").find(lowered[0]) != std::string::npos) {
+        size_t k = 1;
+        if (lowered[0] == 'o' && (lowered[1] == 'd' || lowered[1] == 't' || lowered[1] == 'c')) k = 2;
+        bool digits = k < lowered.size();
+        for (size_t i = k; i < lowered.size(); ++i) digits = digits && std::isdigit(static_cast<unsigned char>(lowered[i]));
+        if (digits) return false;
+    }
+    return true;
+}
+
+namespace {
 
 class Generator {
 public:
@@ -276,6 +308,12 @@ private:
                                                    " is outside c0…c255");
                 continue;
             }
+            if (!hlslIdentifier(b.name)) {
+                error(b.line > 0 ? b.line : 1, "the variable '" + b.name + "' of register c" + std::to_string(b.firstRegister) +
+                                                   " cannot be an HLSL global of that name (a keyword, a register's name "
+                                                   "or not an identifier), through which rmfx would bind it");
+                continue;
+            }
             if (declared.insert(b.name).second) head += std::string(hlslType(b.type)) + " " + b.name + "; ";
             for (size_t i = 0; i < regs.size(); ++i) bound.push_back({b.firstRegister + static_cast<int>(i), regs[i]});
         }
@@ -285,6 +323,11 @@ private:
             if (k == SamplerKind::Cube) type = "samplerCUBE";
             else if (k == SamplerKind::Volume) type = "sampler3D";
             std::string name = samplerName(stage);
+            if (!hlslIdentifier(name) && name.rfind("rm_asm_sampler", 0) != 0) {
+                error(samplerLines_[stage], "the sampler '" + name + "' of stage " + std::to_string(stage) +
+                                                " cannot be an HLSL global of that name");
+                continue;
+            }
             if (name.rfind("rm_asm_sampler", 0) == 0)
                 warning(samplerLines_[stage], "no texture object is bound to sampler stage " + std::to_string(stage) +
                                                   " (an RmTextureObject or RmSampler of register " + std::to_string(stage) + ")");

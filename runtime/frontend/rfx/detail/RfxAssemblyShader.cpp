@@ -60,6 +60,14 @@ std::optional<ShaderSource> readAssemblyShader(const RfxElement& c, const Assemb
         if (tag != "RmShaderConstant" && tag != "RmSampler") continue;
         auto reg = child.integer("REGISTER", 0, tag == "RmSampler" ? 15 : 255);
         if (!reg) continue;
+        if (!d3dasm::hlslIdentifier(child.name())) {
+            c.diagnostics().push_back({context.passEnabled ? Diagnostic::Severity::Error : Diagnostic::Severity::Warning,
+                                       child.where(), child.label(),
+                                       "'" + child.name() + "' cannot be the name of an HLSL global (a keyword, a register's "
+                                       "name or not an identifier), which the translated assembly binds it through"});
+            failed = true;
+            continue;
+        }
         if (tag == "RmSampler") {
             std::erase_if(samplers, [&](const d3dasm::SamplerBinding& b) { return b.name == child.name(); });
             d3dasm::SamplerKind kind = d3dasm::SamplerKind::Unknown;
@@ -74,6 +82,10 @@ std::optional<ShaderSource> readAssemblyShader(const RfxElement& c, const Assemb
                              !v->semantic.empty() && findSemantic(v->semantic).has_value(), 0});
     }
 
+    if (failed) {
+        why += "could not be translated from assembly";
+        return std::nullopt;
+    }
     d3dasm::HlslFromAsm hlsl = d3dasm::translateAssembly(parsed.program, constants, samplers, context.streams);
     report(hlsl.messages);
     if (failed) {
