@@ -47,12 +47,12 @@ const char* kHelpers =
 
 bool hlslIdentifier(const std::string& name) {
     static const std::set<std::string> reserved = {
-        "bool", "int", "uint", "half", "float", "double", "vector", "matrix", "string", "void", "true", "false",
+        "bool", "int", "uint", "half", "float", "double", "vector", "matrix", "void", "true", "false",
         "in", "out", "inout", "uniform", "static", "const", "extern", "shared", "volatile", "register", "struct",
         "typedef", "sampler", "sampler1D", "sampler2D", "sampler3D", "samplerCUBE", "texture", "if", "else",
-        "for", "while", "do", "return", "break", "continue", "discard", "pass", "technique", "compile", "asm",
+        "for", "while", "do", "return", "break", "continue", "discard",
         "row_major", "column_major", "snorm", "unorm", "packoffset", "cbuffer", "tbuffer", "namespace", "switch",
-        "case", "default", "inline", "precise", "centroid", "linear", "nointerpolation", "noperspective", "sample"};
+        "case", "default", "inline", "precise", "centroid", "linear", "nointerpolation", "noperspective", "string"};
     if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0])) || reserved.count(name)) return false;
     if (name.rfind("rm_", 0) == 0) return false;  // the translation's own names
     for (char ch : name)
