@@ -338,7 +338,8 @@ TEST(D3DAsmToHlsl, GeneratedVertexShadersCompile) {
                    "mov r0, c0\nrep i0\nadd r0, r0, v1\nendrep\nif b0\nnrm r1, r0\nelse\nabs r1, r0\nendif\n"
                    "rep i0\nif_gt r0.x, r1.x\nbreak\nendif\nendrep\n"
                    "sincos r2.xy, r0.x, c1, c2\npow r3, r0.x, r1.y\ncrs r4.xyz, r0, r1\nlrp r5, r0, r1, r2\nsgn r6, r0, r1, r2\n"
-                   "mova a0.x, r0.x\nmov r7, c[a0.x + 1]\nm4x4 oPos, v0, c0\nmov oT0, r7\n",
+                   "mova a0.x, r0.x\nmov r7, c[a0.x + 1]\nm4x4 oPos, v0, c0\nmov oT0, r7\n"
+                   "defi i1, 2, 4, 1, 0\nmov r8, c0\nloop aL, i1\nadd r8, r8, c[aL]\nendloop\nmov oT1, r8\n",
                    ShaderStage::Vertex, {{"m", 0, ValueType::Mat4, false, 0}});
 }
 
