@@ -180,8 +180,14 @@ private:
                 const Source& s = in.sources[k];
                 int rows = 1;
                 if (k == 1 && in.opcode.size() == 4 && in.opcode[0] == 'm' && in.opcode[2] == 'x') rows = in.opcode[3] - '0';
-                for (int r = 0; r < rows; ++r) use(s.type, s.index + r, false, in);
-                if (s.relativeComponent >= 0 || s.relativeToLoop) relative_ = true;
+                const bool relative = s.relativeComponent >= 0 || s.relativeToLoop;
+                relative_ = relative_ || relative;
+                // A relative read may reach any register: it counts towards their number, and is
+                // not warned about as an unset one.
+                for (int r = 0; r < rows; ++r) {
+                    if (relative && s.type == RegisterType::Const) relativeReach_ = std::max(relativeReach_, s.index + r + 1);
+                    else use(s.type, s.index + r, false, in);
+                }
             }
         }
     }
@@ -192,10 +198,12 @@ private:
             case RegisterType::Const:
                 if (written) error(in.line, "c" + std::to_string(index) + " is a constant register: it cannot be written");
                 constUsed_.insert(index);
+                firstConstLine_.try_emplace(index, in.line);
                 break;
             case RegisterType::Input:
                 if (written) error(in.line, "v" + std::to_string(index) + " is an input register: it cannot be written");
                 inputs_.insert(index);
+                firstInputLine_.try_emplace(index, in.line);
                 break;
             case RegisterType::Texture:
                 if (!p_.pixel) {
@@ -369,7 +377,7 @@ private:
     // How many constant registers the code can read: those it names, and with relative
     // addressing every one a variable or def fills.
     void countConstants() {
-        int count = 1;
+        int count = std::max(1, std::min(256, relativeReach_));
         for (int c : constUsed_) count = std::max(count, c + 1);
         for (auto& [c, v] : defined_) count = std::max(count, c + 1);
         if (relative_)
@@ -481,15 +489,11 @@ private:
                 if (s.relativeComponent >= 0 || s.relativeToLoop) {
                     std::string a = s.relativeToLoop ? "aL" : std::string("a0.") + "xyzw"[s.relativeComponent];
                     at = "clamp(" + a + " + " + i + ", 0, " + std::to_string(constCount_ - 1) + ")";
-                } else {
-                    if (!firstConstLine_.count(index)) firstConstLine_[index] = line_;
                 }
                 std::string v = "c[" + at + "]";
                 return ps1x_ ? "clamp(" + v + ", " + range(true) + ", " + range(false) + ")" : v;
             }
-            case RegisterType::Input:
-                if (!firstInputLine_.count(index)) firstInputLine_[index] = line_;
-                return "v" + i;
+            case RegisterType::Input: return "v" + i;
             case RegisterType::Texture: return ps13_ ? "t" + i : texcoord(index);
             case RegisterType::Address: return "float4(a0)";
             case RegisterType::ConstInt: return "float4(i" + i + ")";
@@ -943,6 +947,7 @@ private:
     std::set<int> temps_, constUsed_, inputs_, textures_, texcoords_, texcoordInputs_, samplersUsed_;
     std::map<int, int> firstConstLine_, firstInputLine_, samplerLines_;
     std::set<std::pair<RegisterType, int>> outputs_;
+    int relativeReach_ = 0;
     bool relative_ = false, addressUsed_ = false, faceUsed_ = false, positionUsed_ = false;
 };
 
