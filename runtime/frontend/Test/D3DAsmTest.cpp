@@ -120,6 +120,10 @@ TEST(D3DAsmParser, ModifiersMasksAndSwizzles) {
     EXPECT_EQ(a.instructions[2].sources[0].modifier, SourceModifier::AbsNegate);
     EXPECT_EQ(a.instructions[2].sources[0].swizzle, (std::array<int, 4>{3, 2, 1, 0}));
     EXPECT_TRUE(parsed("ps_2_0\ndcl_centroid t0\ntexld_pp r0, t0, s0\n").instructions.size() == 2);
+    Program d = parsed("ps_3_0\ndcl_texcoord2_centroid v0\ndcl_pp v1\n");
+    EXPECT_EQ(d.instructions[0].declaration.usage, "texcoord");
+    EXPECT_EQ(d.instructions[0].declaration.usageIndex, 2);
+    EXPECT_EQ(d.instructions[1].declaration.usage, "");
 }
 
 TEST(D3DAsmParser, ErrorsNameTheLineAndTheInstruction) {
@@ -194,14 +198,18 @@ TEST(D3DAsmToHlsl, Vs11ScalarsReadWWithoutASwizzleAndTheAddressRegisterRoundsDow
     EXPECT_EQ(lineOf(h.hlsl, 3), "r0 = rm_rep(1.0 / (v0).w);");
     EXPECT_EQ(lineOf(h.hlsl, 4), "r1 = rm_expp((v0.xxxx).x);");
     EXPECT_EQ(lineOf(h.hlsl, 5), "a0.x = int4(floor(v0.xxxx)).x;");
+    // Colour outputs before vs_3_0 are clamped to [0, 1].
+    HlslFromAsm d = hlslOf("vs_2_0\ndcl_position v0\nmov oPos, v0\nadd oD1.xyz, v0, v0\n");
+    ASSERT_TRUE(d.ok()) << firstError(d.messages);
+    EXPECT_EQ(lineOf(d.hlsl, 4), "oD1.xyz = (saturate(v0 + v0)).xyz; }");
 }
 
 TEST(D3DAsmToHlsl, InstructionModifiersAndPs1xRanges) {
     HlslFromAsm h = hlslOf("ps.1.1\ndef c0, 2, 0, 0, 0\nmul_x4 r0, v0, c0\nadd_sat r1, v0_bias, 1-v1\nmov_d2 r0.a, r1.b\n");
     ASSERT_TRUE(h.ok()) << firstError(h.messages);
-    // ps_1_1 reads constants clamped to [-1, 1] and keeps temps there.
-    EXPECT_EQ(lineOf(h.hlsl, 3), "r0 = clamp((v0 * clamp(c[0], -1.0, 1.0)) * 4.0, -1.0, 1.0);");
-    EXPECT_EQ(lineOf(h.hlsl, 4), "r1 = saturate((v0 - 0.5) + (1.0 - v1));");
+    // ps_1_1 reads constants clamped to [-1, 1], colours to [0, 1], and keeps temps in [-1, 1].
+    EXPECT_EQ(lineOf(h.hlsl, 3), "r0 = clamp((saturate(v0) * clamp(c[0], -1.0, 1.0)) * 4.0, -1.0, 1.0);");
+    EXPECT_EQ(lineOf(h.hlsl, 4), "r1 = saturate((saturate(v0) - 0.5) + (1.0 - saturate(v1)));");
     EXPECT_TRUE(contains(lineOf(h.hlsl, 5), "r0.w = (clamp((r1.zzzz) * 0.5, -1.0, 1.0)).w;")) << lineOf(h.hlsl, 5);
     EXPECT_TRUE(contains(lineOf(h.hlsl, 5), "oC0 = r0;"));
     EXPECT_TRUE(contains(lineOf(h.hlsl, 1), "float4 v0 : COLOR0, float4 v1 : COLOR1, out float4 oC0 : COLOR0")) << lineOf(h.hlsl, 1);

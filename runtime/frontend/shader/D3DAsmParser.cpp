@@ -211,6 +211,10 @@ private:
         if (in.opcode == "dcl") {
             if (u != std::string::npos) {
                 std::string usage = word.substr(u + 1);
+                // dcl_texcoord0_centroid, dcl_pp t0: modifiers after the usage are ignored.
+                for (const char* m : {"_centroid", "_pp"})
+                    if (size_t at = usage.find(m); at != std::string::npos) usage.erase(at, std::string(m).size());
+                if (usage == "pp" || usage == "centroid") usage.clear();
                 size_t d = usage.size();
                 while (d > 0 && std::isdigit(static_cast<unsigned char>(usage[d - 1]))) --d;
                 // dcl_2d: the digit belongs to the name

@@ -493,7 +493,8 @@ private:
                 std::string v = "c[" + at + "]";
                 return ps1x_ ? "clamp(" + v + ", " + range(true) + ", " + range(false) + ")" : v;
             }
-            case RegisterType::Input: return "v" + i;
+            // ps_1_x colour registers hold [0, 1]; an HLSL vertex shader may have written more.
+            case RegisterType::Input: return ps1x_ ? "saturate(v" + i + ")" : "v" + i;
             case RegisterType::Texture: return ps13_ ? "t" + i : texcoord(index);
             case RegisterType::Address: return "float4(a0)";
             case RegisterType::ConstInt: return "float4(i" + i + ")";
@@ -547,7 +548,8 @@ private:
         }
         static const char* scales[] = {"0.125", "0.25", "0.5", "", "2.0", "4.0", "8.0"};
         if (in.shift != 0) value = "(" + value + ") * " + scales[in.shift + 3];
-        if (in.saturate) value = "saturate(" + value + ")";
+        // Direct3D clamps the colour outputs of vertex shaders before vs_3_0 to [0, 1].
+        if (in.saturate || (d.type == RegisterType::OutColor && p_.major < 3)) value = "saturate(" + value + ")";
         else if (ps1x_ && (d.type == RegisterType::Temp || d.type == RegisterType::Texture))
             value = "clamp(" + value + ", " + range(true) + ", " + range(false) + ")";
         std::string target;
