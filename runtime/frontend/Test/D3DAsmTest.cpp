@@ -72,6 +72,11 @@ TEST(D3DAsmParser, CommentsOfEveryKindAndMacros) {
     EXPECT_EQ(p.instructions[1].sources[0].index, 8);
     EXPECT_EQ(p.instructions[1].sources[0].modifier, SourceModifier::Negate);
     EXPECT_EQ(parseError("vs.1.1\n#include \"x\"\n"), "line 2: preprocessor directive #include is not supported in assembly");
+    // A macro is not expanded inside itself; macros that double at each step are cut off.
+    EXPECT_EQ(parsed("vs.1.1\n#define r0 r0\nmov r0, v0\n").instructions.size(), 1u);
+    std::string doubling = "vs.1.1\n#define M0 r0\n";
+    for (int i = 1; i < 40; ++i) doubling += "#define M" + std::to_string(i) + " M" + std::to_string(i - 1) + " M" + std::to_string(i - 1) + "\n";
+    EXPECT_EQ(parseError(doubling + "mov M39, v0\n"), "line 42: the macros expand this line to more than 65536 characters");
 }
 
 TEST(D3DAsmParser, DefinitionsAndDeclarations) {

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <map>
+#include <set>
 #include <optional>
 #include <string_view>
 
@@ -71,7 +72,8 @@ private:
             directive(s, line);
             return;
         }
-        statements.push_back({expand(s), line});
+        if (macros_.empty()) statements.push_back({s, line});
+        else if (std::string e = expand(s, line); !e.empty()) statements.push_back({e, line});
     }
 
     void directive(const std::string& s, int line) {
@@ -101,21 +103,42 @@ private:
         }
     }
 
-    std::string expand(const std::string& s, int depth = 0) const {
-        if (macros_.empty() || depth > 8) return s;
+    // As the C preprocessor: a macro is not expanded inside its own expansion. The result is
+    // capped, since macros that each use the next twice grow exponentially.
+    std::string expand(const std::string& s, int line) {
+        std::set<std::string> active;
         std::string out;
+        if (!expandInto(s, active, out)) {
+            messages_.push_back({true, line, "the macros expand this line to more than " + std::to_string(kMaxExpansion) +
+                                                 " characters"});
+            return "";
+        }
+        return out;
+    }
+
+    static constexpr size_t kMaxExpansion = 65536;
+
+    bool expandInto(const std::string& s, std::set<std::string>& active, std::string& out) const {
         for (size_t i = 0; i < s.size();) {
+            if (out.size() > kMaxExpansion) return false;
             if (identStart(s[i]) && (i == 0 || !identChar(s[i - 1]))) {
                 size_t b = i;
                 while (i < s.size() && identChar(s[i])) ++i;
                 std::string word = s.substr(b, i - b);
                 auto m = macros_.find(word);
-                out += m == macros_.end() ? word : expand(m->second, depth + 1);
+                if (m == macros_.end() || active.count(word)) {
+                    out += word;
+                } else {
+                    active.insert(word);
+                    const bool ok = expandInto(m->second, active, out);
+                    active.erase(word);
+                    if (!ok) return false;
+                }
             } else {
                 out += s[i++];
             }
         }
-        return out;
+        return out.size() <= kMaxExpansion;
     }
 
     std::vector<Message>& messages_;
