@@ -127,7 +127,6 @@ private:
     // --- declarations ---------------------------------------------------------------------
     static std::string usageSemantic(const Declaration& d) {
         std::string u = upper(d.usage);
-        if (u == "POSITIONT") u = "POSITIONT";
         return u + std::to_string(d.usageIndex);
     }
 
@@ -858,7 +857,6 @@ private:
                 }
                 emit("if (b" + std::to_string(in.sources[0].index) + ") {");
             }
-            ++depth_;
             blocks_.push_back({op, in.line});
         } else if (op == "else") {
             if (blocks_.empty() || blocks_.back().first != "if") {
@@ -867,16 +865,15 @@ private:
             }
             emit("} else {");
         } else if (op == "endif" || op == "endrep" || op == "endloop") {
-            if (depth_ == 0) {
+            if (blocks_.empty()) {
                 error(in.line, op + " without a matching block");
                 return true;
             }
-            --depth_;
             const auto [opened, openedLine] = blocks_.back();
             blocks_.pop_back();
-            if ((op == "endif") != (opened == "if") || (op == "endrep" && opened != "rep") || (op == "endloop" && opened != "loop"))
+            if (op != "end" + opened)
                 error(in.line, op + " closes the " + opened + " of line " + std::to_string(openedLine));
-            emit("}");
+            emit(opened == "loop" ? "} }" : "}");  // a loop opened a block for aL too
         } else if (op == "rep" || op == "loop") {
             const size_t n = op == "loop" ? 2 : 1;
             if (!need(in, n, false)) return true;
@@ -886,11 +883,9 @@ private:
                 return true;
             }
             const std::string i = "i" + std::to_string(count.index);
-            const std::string k = "rm_n" + std::to_string(depth_);
+            const std::string k = "rm_n" + std::to_string(blocks_.size());
             if (op == "rep") emit("for (int " + k + " = 0; " + k + " < " + i + ".x; ++" + k + ") {");
             else emit("{ int aL = " + i + ".y; for (int " + k + " = 0; " + k + " < " + i + ".x; ++" + k + ", aL += " + i + ".z) {");
-            if (op == "loop") loops_.push_back(depth_);
-            ++depth_;
             blocks_.push_back({op, in.line});
         } else if (op == "break") {
             if (std::none_of(blocks_.begin(), blocks_.end(), [](const auto& b) { return b.first != "if"; })) {
@@ -905,10 +900,6 @@ private:
             }
         } else {
             return false;
-        }
-        if (op == "endloop" && !loops_.empty()) {
-            loops_.pop_back();
-            emit("}");
         }
         return true;
     }
@@ -938,8 +929,7 @@ private:
     const std::vector<InputRegister>& streams_;
     bool ps1x_ = false, ps13_ = false, ps14_ = false, vs1x_ = false;
     std::vector<std::string> lines_;
-    int lastLine_ = 1, line_ = 1, depth_ = 0, constCount_ = 1;
-    std::vector<int> loops_;
+    int lastLine_ = 1, line_ = 1, constCount_ = 1;
     std::vector<std::pair<std::string, int>> blocks_;  // open if/rep/loop and their lines
     std::vector<Message> messages_;
     std::map<int, std::string> inputSemantics_, outputSemantics_;
