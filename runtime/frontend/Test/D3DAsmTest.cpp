@@ -98,6 +98,8 @@ TEST(D3DAsmParser, DefinitionsAndDeclarations) {
     EXPECT_EQ(s.instructions[3].destination.mask, 0x3u);
     EXPECT_EQ(parseError("vs_2_0\n\ndef c0, 1, 2, 3\n"), "line 3: def: expected a register and four values, found 3 operands");
     EXPECT_EQ(parseError("vs_2_0\ndef c0, 1, 2, x, 4\n"), "line 2: def: 'x' is not a number");
+    EXPECT_EQ(parseError("vs_2_0\ndef c0, 1, 2, 1e99, 4\n"), "line 2: def: '1e99' is out of range");
+    EXPECT_EQ(parseError("vs_2_0\ndefi i0, 1, 2.5, 0, 0\n"), "line 2: defi: '2.5' is not a 32-bit integer");
 }
 
 TEST(D3DAsmParser, ModifiersMasksAndSwizzles) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <map>
 #include <set>
@@ -320,6 +321,9 @@ private:
             char* end = nullptr;
             double x = std::strtod(v.c_str(), &end);
             if (v.empty() || end != v.c_str() + v.size()) return fail(in.opcode + ": '" + operands[k] + "' is not a number");
+            if (!std::isfinite(static_cast<float>(x))) return fail(in.opcode + ": '" + operands[k] + "' is out of range");
+            if (in.opcode == "defi" && (x != std::floor(x) || x < -2147483648.0 || x > 2147483647.0))
+                return fail("defi: '" + operands[k] + "' is not a 32-bit integer");
             in.values[k - 1] = static_cast<float>(x);
         }
         program_.instructions.push_back(std::move(in));

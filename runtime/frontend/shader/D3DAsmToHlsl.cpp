@@ -359,10 +359,13 @@ private:
                 warning(firstConstLine_[reg], "c" + std::to_string(reg) +
                                                   " is neither defined (def) nor set by an RmShaderConstant: Direct3D left it "
                                                   "unset, so it reads 0");
+        // defi values are whole numbers (the parser checks); kept as floats, the largest rounds up.
+        auto integer = [](float f) {
+            return std::to_string(static_cast<long long>(std::clamp<double>(f, -2147483648.0, 2147483647.0)));
+        };
         for (auto& [reg, v] : intDefined_)
-            body += "int4 i" + std::to_string(reg) + " = int4(" + std::to_string(static_cast<int>(v[0])) + ", " +
-                    std::to_string(static_cast<int>(v[1])) + ", " + std::to_string(static_cast<int>(v[2])) + ", " +
-                    std::to_string(static_cast<int>(v[3])) + "); ";
+            body += "int4 i" + std::to_string(reg) + " = int4(" + integer(v[0]) + ", " + integer(v[1]) + ", " + integer(v[2]) +
+                    ", " + integer(v[3]) + "); ";
         for (auto& [reg, v] : boolDefined_) body += "bool b" + std::to_string(reg) + " = " + (v ? "true" : "false") + "; ";
         for (int r : temps_) body += "float4 r" + std::to_string(r) + " = float4(0.0, 0.0, 0.0, 0.0); ";
         for (int t : textures_) body += "float4 t" + std::to_string(t) + " = float4(0.0, 0.0, 0.0, 0.0); ";
