@@ -321,6 +321,8 @@ TEST(D3DAsmToHlsl, UnsupportedAndMisusedInstructionsAreErrorsAtTheirLine) {
     EXPECT_EQ(firstError(hlslOf("ps_2_0\ntexld r0, t0, c0\nmov oC0, r0\n").messages),
               "line 2: texld: the second source must be a sampler s#");
     EXPECT_EQ(firstError(hlslOf("ps.1.1\nmov oC0, v0\n").messages), "line 2: ps_1_x writes its colour to r0, not to oC#/oDepth");
+    EXPECT_EQ(firstError(hlslOf("vs_2_0\ndcl_position v0\nmov oPos, c300\n").messages),
+              "line 3: register index 300 is beyond Direct3D 9's 256 registers of its kind");
     EXPECT_EQ(firstError(hlslOf("vs_2_0\ndcl_position v0\nrep i0\nmov oPos, v0\n").messages),
               "line 3: rep is never closed (no matching end)");
     EXPECT_EQ(firstError(hlslOf("vs_2_0\ndcl_position v0\nbreak\nmov oPos, v0\n").messages), "line 3: break outside a rep or loop");

@@ -192,6 +192,13 @@ private:
     }
 
     void use(RegisterType t, int index, bool written, const Instruction& in) {
+        // Direct3D 9's largest register files: 256 constants (vs), 32 temporaries, 16 of the others.
+        const int limit = t == RegisterType::Const ? 256 : t == RegisterType::Temp ? 32 : 16;
+        if (index >= limit) {
+            error(in.line, "register index " + std::to_string(index) + " is beyond Direct3D 9's " + std::to_string(limit) +
+                               " registers of its kind");
+            return;
+        }
         switch (t) {
             case RegisterType::Temp: temps_.insert(index); break;
             case RegisterType::Const:
