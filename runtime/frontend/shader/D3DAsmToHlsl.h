@@ -55,10 +55,6 @@ struct HlslFromAsm {
     bool ok() const;
 };
 
-// Whether `name` can be the HLSL global a variable or sampler is declared as (not a keyword, not a
-// register's name, an identifier): the generated code names them so that rmfx binds them by name.
-bool hlslIdentifier(const std::string& name);
-
 HlslFromAsm translateAssembly(const Program& program, const std::vector<ConstantBinding>& constants,
                               const std::vector<SamplerBinding>& samplers, const std::vector<InputRegister>& streams);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "frontend/shader/D3DAsmHlslNames.h"
 #include "frontend/shader/D3DAsmParser.h"
 #include "model/SemanticValues.h"
 
