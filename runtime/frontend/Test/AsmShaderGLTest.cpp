@@ -23,7 +23,9 @@ namespace rmfx::test {
 namespace {
 
 constexpr int kSize = 16;
-constexpr double kOutputRounding = 0.5 / 255.0;
+// Direct3D 10's float-to-unorm rule lets the 8-bit output be off by 0.6 of a step, and GPUs use
+// it (an NVIDIA H200 wrote 144 for 144.59; RfxModelRenderGLTest says more).
+constexpr double kOutputRounding = 0.6 / 255.0;
 
 using Vec4 = std::array<double, 4>;
 
