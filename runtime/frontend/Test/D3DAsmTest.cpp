@@ -309,9 +309,29 @@ TEST(D3DAsmToHlsl, TextureInstructionsOfEachPixelShaderVersion) {
     EXPECT_EQ(lineOf(p20.hlsl, 13), "oDepth = (r4.xxxx).x; }");
 }
 
+TEST(D3DAsmToHlsl, BumpEnvironmentInstructionsReadTheStagesBumpMatrix) {
+    SamplerBinding bumped{"env", 1, SamplerKind::Texture2D};
+    bumped.bumpMatrix = {0.5f, 0.25f, -0.25f, 2.0f};
+    bumped.bumpScale = 4.0f;
+    bumped.bumpOffset = 0.5f;
+    HlslFromAsm h = hlslOf("ps.1.1\ntex t0\ntexbem t1, t0\ntexbeml t2, t0_bx2\nmov r0, t1\n", {},
+                           {{"bump", 0, SamplerKind::Texture2D}, bumped, {"other", 2, SamplerKind::Texture2D}});
+    ASSERT_TRUE(h.ok()) << firstError(h.messages);
+    EXPECT_EQ(lineOf(h.hlsl, 3), "t1 = clamp(tex2D(env, (float4(rm_tc1.x + 0.5 * (t0).x + -0.25 * (t0).y, rm_tc1.y + 0.25 * "
+                                 "(t0).x + 2.0 * (t0).y, 0.0, 1.0)).xy), -1.0, 1.0);");
+    // Stage 2 has the default matrix, scale and offset: 0.
+    EXPECT_EQ(lineOf(h.hlsl, 4), "t2 = clamp((tex2D(other, (float4(rm_tc2.x + 0.0 * ((2.0 * t0 - 1.0)).x + 0.0 * ((2.0 * t0 - 1.0)).y, "
+                                 "rm_tc2.y + 0.0 * ((2.0 * t0 - 1.0)).x + 0.0 * ((2.0 * t0 - 1.0)).y, 0.0, 1.0)).xy)) * "
+                                 "(((2.0 * t0 - 1.0)).z * 0.0 + 0.0), -1.0, 1.0);");
+    HlslFromAsm b = hlslOf("ps.1.4\ntexld r1, t0\ntexcrd r0.rgb, t1\nbem r1.xy, r0, r1\nphase\ntexld r1, r1\n", {}, {bumped});
+    ASSERT_TRUE(b.ok()) << firstError(b.messages);
+    EXPECT_EQ(lineOf(b.hlsl, 4), "r1.xy = (clamp(float4((r0).x + 0.5 * (r1).x + -0.25 * (r1).y, (r0).y + 0.25 * (r1).x + 2.0 * "
+                                 "(r1).y, 0.0, 0.0), -8.0, 8.0)).xy;");
+}
+
 TEST(D3DAsmToHlsl, UnsupportedAndMisusedInstructionsAreErrorsAtTheirLine) {
-    EXPECT_EQ(firstError(hlslOf("ps.1.1\ntex t0\n\ntexbem t1, t0\n").messages),
-              "line 4: the instruction 'texbem' is not supported by rmfx's assembly translation");
+    EXPECT_EQ(firstError(hlslOf("ps.1.1\ntex t0\n\ntexm3x2depth t1, t0\n").messages),
+              "line 4: the instruction 'texm3x2depth' is not supported by rmfx's assembly translation");
     EXPECT_EQ(firstError(hlslOf("vs.1.1\nmov oPos, v0\nfoo r0, v0\n", {}, {}, {{0, "POSITION0"}}).messages),
               "line 3: unknown instruction 'foo'");
     EXPECT_EQ(firstError(hlslOf("vs.1.1\nmad r0, v0, v0\nmov oPos, r0\n", {}, {}, {{0, "POSITION0"}}).messages),

@@ -773,8 +773,8 @@ TEST(RfxImporter, AssemblyShadersBecomeHlslAndTheirErrorsNameTheRfxLine) {
         << warnings;
     EXPECT_NE(warnings.find("t.rfx:10: warning: <RmShader NAME=\"VS\">: c4 is neither defined"), std::string::npos) << warnings;
 
-    std::string errors = errorsOf(d3dEffect(pass(true, "mov r0, t0\ntexbem t1, t0")));
-    EXPECT_NE(errors.find("t.rfx:15: error: <RmShader NAME=\"PS\">: the instruction 'texbem' is not supported"), std::string::npos)
+    std::string errors = errorsOf(d3dEffect(pass(true, "mov r0, t0\ntexm3x2depth t1, t0")));
+    EXPECT_NE(errors.find("t.rfx:15: error: <RmShader NAME=\"PS\">: the instruction 'texm3x2depth' is not supported"), std::string::npos)
         << errors;
     EXPECT_NE(errors.find("error: <pass \"P\">: the effect cannot run: its pixel shader <RmShader NAME=\"PS\"> (line 12) "
                           "could not be translated from assembly"),
@@ -787,6 +787,34 @@ TEST(RfxImporter, AssemblyShadersBecomeHlslAndTheirErrorsNameTheRfxLine) {
     EXPECT_NE(formatAll(disabled.diagnostics()).find("t.rfx:15: warning: <RmShader NAME=\"PS\">: unknown instruction 'foo'"),
               std::string::npos)
         << formatAll(disabled.diagnostics());
+}
+
+// Texture stage states (USAGE="TEXTURE_STATE") share their numbers with the sampler states but are
+// not sampler states: D3DTSS_COLOROP (1) is no D3DSAMP_ADDRESSU, and the bump matrix (7-10) reaches
+// texbem instead of the mip filter.
+TEST(RfxImporter, TextureStageStatesAreNotSamplerStatesAndFeedTexbem) {
+    const std::string text = d3dEffect(
+        "<Rm2DTextureVariable NAME=\"Tex\" FILE_NAME=\"\"/>\n"
+        "<RmPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n"
+        "<RmShader NAME=\"PS\" PIXEL_SHADER=\"TRUE\"><RmShaderCode><![CDATA[ps.1.1\ntex t0\ntexbem t1, t0\nmov r0, t1]]>"
+        "</RmShaderCode></RmShader>\n"
+        "<RmTextureObject NAME=\"bump\" STATE_INDEX=\"0\"><RmTextureReference NAME=\"Tex\"/></RmTextureObject>\n"
+        "<RmTextureObject NAME=\"env\" STATE_INDEX=\"1\"><RmTextureReference NAME=\"Tex\"/>\n"
+        "<RmState NAME=\"D3DTSS_COLOROP\" STATE=\"1\" VALUE=\"4\" USAGE=\"TEXTURE_STATE\"/>\n"
+        "<RmState NAME=\"D3DTSS_BUMPENVMAT00\" STATE=\"7\" VALUE=\"0.500000\" USAGE=\"TEXTURE_STATE\"/>\n"
+        "<RmState NAME=\"D3DTSS_BUMPENVMAT11\" STATE=\"10\" VALUE=\"1056964608\" USAGE=\"TEXTURE_STATE\"/>\n"
+        "<RmState NAME=\"D3DTSS_TEXCOORDINDEX\" STATE=\"11\" VALUE=\"1\" USAGE=\"TEXTURE_STATE\"/>\n"
+        "</RmTextureObject>\n</RmPass>\n");
+    Result<Workspace> ws = importRfxText(text, "t.rfx", ".", {""});
+    ASSERT_TRUE(ws.ok()) << formatAll(ws.diagnostics());
+    const Pass& p = ws->passes[0];
+    ASSERT_EQ(p.samplers.size(), 2u);
+    EXPECT_EQ(p.samplers[1].uniform, "env");
+    EXPECT_EQ(p.samplers[1].wrapS, Wrap::Repeat);  // Direct3D's default, not D3DTADDRESS_BORDER (4)
+    EXPECT_EQ(p.samplers[1].mipmap, MipmapMode::None);
+    const std::string& code = p.shaders[0].code;
+    EXPECT_NE(code.find("rm_tc1.x + 0.5 * (t0).x + 0.0 * (t0).y, rm_tc1.y + 0.0 * (t0).x + 0.5 * (t0).y"), std::string::npos) << code;
+    EXPECT_EQ(formatAll(ws.diagnostics()).find("TEXCOORDINDEX"), std::string::npos) << formatAll(ws.diagnostics());
 }
 
 }  // namespace

@@ -263,6 +263,17 @@ private:
         return {};
     }
 
+    const SamplerBinding* binding(int stage) const {
+        for (const SamplerBinding& b : samplerBindings_)
+            if (b.stage == stage) return &b;
+        return nullptr;
+    }
+
+    std::array<float, 4> bumpMatrix(int stage) const {
+        const SamplerBinding* b = binding(stage);
+        return b ? b->bumpMatrix : std::array<float, 4>{};
+    }
+
     std::string samplerName(int stage) {
         for (const SamplerBinding& b : samplerBindings_)
             if (b.stage == stage) return b.name;
@@ -675,7 +686,7 @@ private:
         }
         if (texture(in)) return;
         if (flow(in)) return;
-        static const std::set<std::string> unsupported = {"texbem", "texbeml", "bem", "texm3x2depth", "texdepth",
+        static const std::set<std::string> unsupported = {"texm3x2depth", "texdepth",
                                                           "setp", "call", "callnz", "label", "ret", "breakp"};
         if (unsupported.count(op))
             error(in.line, "the instruction '" + op + "' is not supported by rmfx's assembly translation");
@@ -767,6 +778,37 @@ private:
                                   : op == "texreg2gb" ? "float4(" + s + ".y, " + s + ".z, 0.0, 1.0)"
                                                       : "float4(" + s + ".xyz, 1.0)";
             write(in, sample(d, c));
+            return true;
+        }
+        if (op == "texbem" || op == "texbeml") {
+            // The coordinates of stage d moved by the stage's bump matrix times t(n).rg.
+            if (!texRegister(in, 1)) return true;
+            const std::string src = "(" + source(in.sources[0]) + ")";
+            const std::array<float, 4> m = bumpMatrix(d);
+            const std::string tc = texcoord(d);
+            const std::string u = tc + ".x + " + number(m[0]) + " * " + src + ".x + " + number(m[2]) + " * " + src + ".y";
+            const std::string v = tc + ".y + " + number(m[1]) + " * " + src + ".x + " + number(m[3]) + " * " + src + ".y";
+            std::string texel = sample(d, "float4(" + u + ", " + v + ", 0.0, 1.0)");
+            if (op == "texbeml") {
+                const SamplerBinding* b = binding(d);
+                texel = "(" + texel + ") * (" + src + ".z * " + number(b ? b->bumpScale : 0.0f) + " + " +
+                        number(b ? b->bumpOffset : 0.0f) + ")";
+            }
+            write(in, texel);
+            return true;
+        }
+        if (op == "bem") {
+            // ps_1_4: dest.xy = src0.xy + the bump matrix of stage dest times src1.xy.
+            if (!need(in, 2)) return true;
+            if (!ps14_ || in.destination.type != RegisterType::Temp) {
+                error(in.line, "bem exists only in ps_1_4, writing a temporary register r#");
+                return true;
+            }
+            const std::string a = "(" + source(in.sources[0]) + ")", b = "(" + source(in.sources[1]) + ")";
+            const std::array<float, 4> m = bumpMatrix(d);
+            write(in, "float4(" + a + ".x + " + number(m[0]) + " * " + b + ".x + " + number(m[2]) + " * " + b + ".y, " + a +
+                          ".y + " + number(m[1]) + " * " + b + ".x + " + number(m[3]) + " * " + b + ".y, 0.0, 0.0)",
+                  0x3);
             return true;
         }
         if (op == "texm3x2pad" || op == "texm3x3pad") {

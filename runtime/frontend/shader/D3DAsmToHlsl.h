@@ -17,6 +17,7 @@
 // RenderMonkey stored the same way row by row; rmfx's stored matrices put VALUE_0…3 in the first
 // column (the HLSL row 0): the two are read differently (ConstantBinding::semanticMatrix).
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,10 @@ struct SamplerBinding {
     std::string name;  // the sampler uniform: the RmTextureObject / RmSampler name
     int stage = 0;
     SamplerKind kind = SamplerKind::Unknown;  // from the bound texture; dcl_* wins
+    // The stage's D3DTSS_BUMPENVMAT00, 01, 10, 11, BUMPENVLSCALE and BUMPENVLOFFSET, which texbem,
+    // texbeml and bem read (Direct3D's defaults: 0).
+    std::array<float, 4> bumpMatrix{};
+    float bumpScale = 0.0f, bumpOffset = 0.0f;
 };
 
 // vs_1_1 without dcl_*: v# is the stream channel with REGISTER="#".

@@ -10,6 +10,7 @@
 #include "frontend/rfx/detail/RfxPackedColor.h"
 #include "frontend/rfx/detail/RfxRenderStates.h"
 #include "frontend/rfx/detail/RfxSamplerStates.h"
+#include "frontend/rfx/detail/RfxTextureStageStates.h"
 #include "frontend/shader/HlslSemantics.h"
 
 namespace rmfx::rfx {
@@ -157,7 +158,13 @@ private:
             d3dasm::SamplerKind kind = d3dasm::SamplerKind::Texture2D;
             if (const Texture* t = scopes_.texture(textureOf_[name]); t && t->kind == TextureKind::Cube)
                 kind = d3dasm::SamplerKind::Cube;
-            context.samplers.push_back({name, stage, kind});
+            d3dasm::SamplerBinding binding{name, stage, kind};
+            if (auto st = stageStates_.find(name); st != stageStates_.end()) {
+                binding.bumpMatrix = st->second.bumpMatrix;
+                binding.bumpScale = st->second.bumpScale;
+                binding.bumpOffset = st->second.bumpOffset;
+            }
+            context.samplers.push_back(binding);
         }
         if (streamMap_)
             for (size_t i = 0; i < streamMap_->streams.size() && i < streamMap_->registers.size(); ++i)
@@ -271,8 +278,11 @@ private:
         }
         SamplerStates states(api_ == RfxApi::Direct3D, mipmaps);
         for (const XMLElement* x = c.xml()->FirstChildElement("RmState"); x; x = x->NextSiblingElement("RmState")) {
-            if (api_ == RfxApi::Direct3D) states.applyD3d(at(x));
-            else states.applyGl(at(x));
+            if (api_ != RfxApi::Direct3D) states.applyGl(at(x));
+            else if (at(x).text("USAGE", false).value_or("") == "TEXTURE_STATE")
+                applyTextureStageState(at(x), objectStages_.count(s.uniform) ? objectStages_[s.uniform] : 0,
+                                       stageStates_[s.uniform]);
+            else states.applyD3d(at(x));
         }
         states.finish(c, s);
         out_.pass.samplers.push_back(std::move(s));
@@ -336,6 +346,7 @@ private:
     std::vector<RfxElement> assemblyShaders_;
     std::map<std::string, int> objectStages_;         // texture object → STATE_INDEX (its sampler stage)
     std::map<std::string, std::string> textureOf_;    // texture object → the texture it binds
+    std::map<std::string, TextureStageStates> stageStates_;  // texture object → its texture stage states
 };
 
 }  // namespace
