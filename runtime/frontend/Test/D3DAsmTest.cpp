@@ -199,12 +199,12 @@ TEST(D3DAsmToHlsl, LinesAreKeptAndEveryArithmeticInstructionIsWritten) {
     EXPECT_TRUE(contains(lineOf(h.hlsl, 37), "}"));
 }
 
-TEST(D3DAsmToHlsl, Vs11ScalarsReadWWithoutASwizzleAndTheAddressRegisterRoundsDown) {
+TEST(D3DAsmToHlsl, Vs11ScalarsReadWWithoutASwizzleAndTheAddressRegisterRoundsToNearest) {
     HlslFromAsm h = hlslOf("vs.1.1\ndcl_position v0\nrcp r0, v0\nexpp r1, v0.x\nmov a0.x, v0.x\nmov oPos, v0\n");
     ASSERT_TRUE(h.ok()) << firstError(h.messages);
     EXPECT_EQ(lineOf(h.hlsl, 3), "r0 = rm_rep(1.0 / (v0).w);");
     EXPECT_EQ(lineOf(h.hlsl, 4), "r1 = rm_expp((v0.xxxx).x);");
-    EXPECT_EQ(lineOf(h.hlsl, 5), "a0.x = int4(floor(v0.xxxx)).x;");
+    EXPECT_EQ(lineOf(h.hlsl, 5), "a0.x = int4(floor((v0.xxxx) + 0.5)).x;");
     // Colour outputs before vs_3_0 are clamped to [0, 1].
     HlslFromAsm d = hlslOf("vs_2_0\ndcl_position v0\nmov oPos, v0\nadd oD1.xyz, v0, v0\n");
     ASSERT_TRUE(d.ok()) << firstError(d.messages);

@@ -550,9 +550,8 @@ private:
                 target = "t" + std::to_string(d.index);
                 break;
             case RegisterType::Address: {
-                const bool round = in.opcode == "mova";
-                const std::string v = round ? "floor((" + value + ") + 0.5)" : "floor(" + value + ")";
-                emit("a0." + std::string(maskText(mask)) + " = int4(" + v + ")." + maskText(mask) + ";");
+                // mova, and vs_1_1's mov to a0, round to nearest (Direct3D 9's asm reference).
+                emit("a0." + std::string(maskText(mask)) + " = int4(floor((" + value + ") + 0.5))." + maskText(mask) + ";");
                 return;
             }
             case RegisterType::OutPosition: case RegisterType::OutColor: case RegisterType::OutTexcoord:
