@@ -204,7 +204,10 @@ TEST(D3DAsmToHlsl, Vs11ScalarsReadWWithoutASwizzleAndTheAddressRegisterRoundsToN
     ASSERT_TRUE(h.ok()) << firstError(h.messages);
     EXPECT_EQ(lineOf(h.hlsl, 3), "r0 = rm_rep(1.0 / (v0).w);");
     EXPECT_EQ(lineOf(h.hlsl, 4), "r1 = rm_expp((v0.xxxx).x);");
-    EXPECT_EQ(lineOf(h.hlsl, 5), "a0.x = int4(floor((v0.xxxx) + 0.5)).x;");
+    EXPECT_EQ(lineOf(h.hlsl, 5), "a0.x = int4(floor((rm_rep((v0.xxxx).x)) + 0.5)).x;");
+    HlslFromAsm w = hlslOf("vs.1.1\ndcl_position v0\nmov a0.x, v0\nmov oPos, c[a0.x]\n");
+    ASSERT_TRUE(w.ok()) << firstError(w.messages);
+    EXPECT_EQ(lineOf(w.hlsl, 3), "a0.x = int4(floor((rm_rep((v0).w)) + 0.5)).x;");
     // Colour outputs before vs_3_0 are clamped to [0, 1].
     HlslFromAsm d = hlslOf("vs_2_0\ndcl_position v0\nmov oPos, v0\nadd oD1.xyz, v0, v0\n");
     ASSERT_TRUE(d.ok()) << firstError(d.messages);

@@ -638,7 +638,9 @@ private:
             {"m4x4", 2}, {"m4x3", 2}, {"m3x4", 2}, {"m3x3", 2}, {"m3x2", 2}};
         if (auto a = arity.find(op); a != arity.end()) {
             if (!need(in, static_cast<size_t>(a->second))) return;
-            if (op == "mov" || op == "mova") write(in, S(0));
+            // vs_1_1's mov to a0 reads the source's .w without a swizzle, as its scalar instructions do.
+            if (op == "mov" && in.destination.type == RegisterType::Address && vs1x_) write(in, "rm_rep(" + X(0) + ")");
+            else if (op == "mov" || op == "mova") write(in, S(0));
             else if (op == "add") write(in, S(0) + " + " + S(1));
             else if (op == "sub") write(in, S(0) + " - " + S(1));
             else if (op == "mul") write(in, S(0) + " * " + S(1));
