@@ -21,8 +21,8 @@ cmake --build --preset fuzz
 # Per target: -max_len (bytes), -timeout (s per input), -rss_limit_mb. Workspaces carry the
 # shaders they name, so theirs are the longest inputs.
 declare -A max_len=([workspace]=131072 [shader_preprocessor]=16384 [replay_manifest]=16384 [variable_value_writer]=32768
-                  [rfx_import]=65536)
-declare -A timeout=([workspace]=10 [shader_preprocessor]=10 [replay_manifest]=10 [variable_value_writer]=10 [rfx_import]=10)
+                  [rfx_import]=65536 [d3d_asm]=16384)
+declare -A timeout=([workspace]=10 [shader_preprocessor]=10 [replay_manifest]=10 [variable_value_writer]=10 [rfx_import]=10 [d3d_asm]=10)
 rss_limit_mb=2048
 
 # A workspace file followed by the files it names as "//@@ NAME" parts (fuzz/FuzzInputFiles.h):
@@ -59,7 +59,7 @@ seed() {  # seed TARGET FILE NAME: adds a seed to the target's working corpus
 
 make_seeds() {
   local t f
-  for t in workspace shader_preprocessor replay_manifest variable_value_writer rfx_import; do
+  for t in workspace shader_preprocessor replay_manifest variable_value_writer rfx_import d3d_asm; do
     mkdir -p "$build/fuzz-corpus/$t"
   done
   local workspaces replays
@@ -81,6 +81,10 @@ make_seeds() {
     { cat "$f"; for g in tests/rfx/*; do case $g in *.rfx) ;; *) printf '\n//@@ %s\n' "$(basename "$g")"; cat "$g" ;; esac; done; } \
       >"$build/fuzz-corpus/rfx_import/seed-$(basename "$f")"
   done
+  # Assembly shaders written for the d3d_asm target (fuzz/seeds/d3d_asm/).
+  for f in fuzz/seeds/d3d_asm/*; do
+    [ -f "$f" ] && seed d3d_asm "$f" "$(basename "$f")"
+  done
   # Every saved finding seeds its target too.
   for t in tests/fuzz-regressions/*/; do
     t=$(basename "$t")
@@ -98,10 +102,11 @@ make_dictionary() {
   case $t in
     workspace | variable_value_writer) sources=(runtime/frontend/workspace/WorkspaceParser.cpp runtime/core/Value.cpp runtime/io/mesh/BuiltinMeshes.cpp) ;;
     rfx_import) sources=(runtime/frontend/rfx/*.cpp runtime/frontend/rfx/detail/*.cpp) ;;
+    d3d_asm) sources=(runtime/frontend/shader/D3DAsmParser.cpp runtime/frontend/shader/D3DAsmToHlsl.cpp) ;;
     replay_manifest) sources=(runtime/frontend/replay/ReplayManifest.cpp runtime/io/image/ImageCompare.cpp) ;;
   esac
   {
-    [ "$t" = shader_preprocessor ] || cat fuzz/dictionaries/xml.dict
+    [ "$t" = shader_preprocessor ] || [ "$t" = d3d_asm ] || cat fuzz/dictionaries/xml.dict
     [ -f "fuzz/dictionaries/$t.dict" ] && cat "fuzz/dictionaries/$t.dict"
     if [ ${#sources[@]} -gt 0 ]; then
       grep -ho '"[a-zA-Z][a-zA-Z0-9_-]\{0,23\}"' "${sources[@]}" | sort -u

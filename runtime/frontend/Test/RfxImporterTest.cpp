@@ -523,10 +523,10 @@ TEST(RfxImporter, GlesEffectFeedsNamedAttributes) {
               std::string::npos);
 }
 
-TEST(RfxImporter, Direct3dEffectWithHlslStatesAndAnAssemblyPass) {
+TEST(RfxImporter, Direct3dEffectWithHlslStatesAndADisabledAssemblyPass) {
     Workspace ws = imported("d3d_hlsl.rfx");
     EXPECT_EQ(ws.profile, GlProfile::Core);
-    ASSERT_EQ(ws.passes.size(), 2u);  // the disabled assembly pass is left out, with a warning
+    ASSERT_EQ(ws.passes.size(), 3u);  // the disabled assembly pass is kept, translated to HLSL
     const Pass& fill = ws.passes[0];
     ASSERT_EQ(fill.shaders.size(), 2u);
     EXPECT_EQ(fill.shaders[0].dialect, ShaderDialect::Hlsl);
@@ -568,13 +568,19 @@ TEST(RfxImporter, Direct3dEffectWithHlslStatesAndAnAssemblyPass) {
     EXPECT_EQ(s.mipmap, MipmapMode::None);
 
     std::string warnings = allWarnings("d3d_hlsl.rfx");
-    EXPECT_NE(warnings.find("d3d_hlsl.rfx:" + std::to_string(lineOf(rfxDir() / "d3d_hlsl.rfx", "NAME=\"Legacy\"")) +
-                            ": warning: <pass \"Legacy\">: disabled, and it could not run"),
-              std::string::npos)
-        << warnings;
+    const Pass& legacy = ws.passes[2];
+    EXPECT_FALSE(legacy.enabled);
+    ASSERT_EQ(legacy.shaders.size(), 1u);
+    EXPECT_EQ(legacy.shaders[0].dialect, ShaderDialect::Hlsl);
+    EXPECT_EQ(legacy.shaders[0].entryPoint, "rm_asm_main");
+    EXPECT_EQ(legacy.shaders[0].profile, "ps_3_0");
     int line = lineOf(rfxDir() / "d3d_hlsl.rfx", "<RmShader NAME=");
     EXPECT_NE(warnings.find("d3d_hlsl.rfx:" + std::to_string(line) +
-                            ": warning: <RmShader NAME=\"Pixel Shader\">: an assembly shader"),
+                            ": warning: <RmShader NAME=\"Pixel Shader\">: Direct3D assembly (ps_1_1) translated to HLSL"),
+              std::string::npos)
+        << warnings;
+    EXPECT_NE(warnings.find("d3d_hlsl.rfx:" + std::to_string(lineOf(rfxDir() / "d3d_hlsl.rfx", "mov r0, c0")) +
+                            ": warning: <RmShader NAME=\"Pixel Shader\">: c0 is neither defined (def) nor set"),
               std::string::npos)
         << warnings;
     EXPECT_NE(warnings.find("D3DRS_DEPTHBIAS = 0.5 has no equivalent"), std::string::npos) << warnings;
@@ -760,6 +766,85 @@ TEST(RfxImporter, ListNamesEveryEffectWithItsApiAndActiveFlag) {
     EXPECT_TRUE((*list)[0].active);
     EXPECT_EQ((*list)[1].path, "Tests.Group.Other");
     EXPECT_FALSE((*list)[1].active);
+}
+
+}  // namespace
+}  // namespace rmfx
+
+namespace rmfx {
+namespace {
+
+// Direct3D assembly shaders: translated to HLSL, problems at their .rfx line (body from line 4).
+TEST(RfxImporter, AssemblyShadersBecomeHlslAndTheirErrorsNameTheRfxLine) {
+    const std::string vs = "<RmShader NAME=\"VS\" PIXEL_SHADER=\"FALSE\"><RmShaderCode><![CDATA[\nvs.1.1\n"
+                           "dcl_position v0\nm4x4 oPos, v0, c0\nmov oT0, c4]]></RmShaderCode>\n"
+                           "<RmShaderConstant NAME=\"M\" REGISTER=\"0\"/></RmShader>\n";
+    const std::string matrix = "<RmMatrixVariable NAME=\"M\" VARIABLE_SEMANTIC=\"\" VALUE_0=\"1\" VALUE_1=\"0\" VALUE_2=\"0\" "
+                               "VALUE_3=\"0\" VALUE_4=\"0\" VALUE_5=\"1\" VALUE_6=\"0\" VALUE_7=\"0\" VALUE_8=\"0\" VALUE_9=\"0\" "
+                               "VALUE_10=\"1\" VALUE_11=\"0\" VALUE_12=\"0\" VALUE_13=\"0\" VALUE_14=\"0\" VALUE_15=\"1\"/>\n";
+    auto pass = [&](bool enabled, const std::string& ps) {
+        return matrix + "<RmPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"" + (enabled ? "TRUE" : "FALSE") + "\">\n" + vs +
+               "<RmShader NAME=\"PS\" PIXEL_SHADER=\"TRUE\"><RmShaderCode><![CDATA[\nps.1.1\n" + ps +
+               "]]></RmShaderCode></RmShader>\n</RmPass>\n";
+    };
+    Result<Workspace> ok = importRfxText(d3dEffect(pass(true, "mov r0, t0")), "t.rfx", ".", {""});
+    ASSERT_TRUE(ok.ok()) << formatAll(ok.diagnostics());
+    ASSERT_EQ(ok->passes.size(), 1u);
+    ASSERT_EQ(ok->passes[0].shaders.size(), 2u);
+    const ShaderSource& v = ok->passes[0].shaders[0];
+    EXPECT_EQ(v.dialect, ShaderDialect::Hlsl);
+    EXPECT_EQ(v.entryPoint, "rm_asm_main");
+    EXPECT_EQ(v.profile, "vs_3_0");
+    EXPECT_EQ(v.codeLine, 6);  // the CDATA's first line: generated line N is the code's line N
+    EXPECT_NE(v.code.find("float4x4 M;"), std::string::npos) << v.code;
+    const std::string warnings = formatAll(ok.diagnostics());
+    EXPECT_NE(warnings.find("t.rfx:6: warning: <RmShader NAME=\"VS\">: Direct3D assembly (vs_1_1) translated to HLSL"),
+              std::string::npos)
+        << warnings;
+    EXPECT_NE(warnings.find("t.rfx:10: warning: <RmShader NAME=\"VS\">: c4 is neither defined"), std::string::npos) << warnings;
+
+    std::string errors = errorsOf(d3dEffect(pass(true, "mov r0, t0\ntexm3x2depth t1, t0")));
+    EXPECT_NE(errors.find("t.rfx:15: error: <RmShader NAME=\"PS\">: the instruction 'texm3x2depth' is not supported"), std::string::npos)
+        << errors;
+    EXPECT_NE(errors.find("error: <pass \"P\">: the effect cannot run: its pixel shader <RmShader NAME=\"PS\"> (line 12) "
+                          "could not be translated from assembly"),
+              std::string::npos)
+        << errors;
+
+    // In a disabled pass the same problems are warnings, and the pass is left out (leaving none).
+    Result<Workspace> disabled = importRfxText(d3dEffect(pass(false, "mov r0, t0\nfoo r0")), "t.rfx", ".", {""});
+    EXPECT_EQ(formatAll(disabled.diagnostics()).find("error: <RmShader"), std::string::npos) << formatAll(disabled.diagnostics());
+    EXPECT_NE(formatAll(disabled.diagnostics()).find("t.rfx:15: warning: <RmShader NAME=\"PS\">: unknown instruction 'foo'"),
+              std::string::npos)
+        << formatAll(disabled.diagnostics());
+}
+
+// Texture stage states (USAGE="TEXTURE_STATE") share their numbers with the sampler states but are
+// not sampler states: D3DTSS_COLOROP (1) is no D3DSAMP_ADDRESSU, and the bump matrix (7-10) reaches
+// texbem instead of the mip filter.
+TEST(RfxImporter, TextureStageStatesAreNotSamplerStatesAndFeedTexbem) {
+    const std::string text = d3dEffect(
+        "<Rm2DTextureVariable NAME=\"Tex\" FILE_NAME=\"\"/>\n"
+        "<RmPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n"
+        "<RmShader NAME=\"PS\" PIXEL_SHADER=\"TRUE\"><RmShaderCode><![CDATA[ps.1.1\ntex t0\ntexbem t1, t0\nmov r0, t1]]>"
+        "</RmShaderCode></RmShader>\n"
+        "<RmTextureObject NAME=\"bump\" STATE_INDEX=\"0\"><RmTextureReference NAME=\"Tex\"/></RmTextureObject>\n"
+        "<RmTextureObject NAME=\"env\" STATE_INDEX=\"1\"><RmTextureReference NAME=\"Tex\"/>\n"
+        "<RmState NAME=\"D3DTSS_COLOROP\" STATE=\"1\" VALUE=\"4\" USAGE=\"TEXTURE_STATE\"/>\n"
+        "<RmState NAME=\"D3DTSS_BUMPENVMAT00\" STATE=\"7\" VALUE=\"0.500000\" USAGE=\"TEXTURE_STATE\"/>\n"
+        "<RmState NAME=\"D3DTSS_BUMPENVMAT11\" STATE=\"10\" VALUE=\"1056964608\" USAGE=\"TEXTURE_STATE\"/>\n"
+        "<RmState NAME=\"D3DTSS_TEXCOORDINDEX\" STATE=\"11\" VALUE=\"1\" USAGE=\"TEXTURE_STATE\"/>\n"
+        "</RmTextureObject>\n</RmPass>\n");
+    Result<Workspace> ws = importRfxText(text, "t.rfx", ".", {""});
+    ASSERT_TRUE(ws.ok()) << formatAll(ws.diagnostics());
+    const Pass& p = ws->passes[0];
+    ASSERT_EQ(p.samplers.size(), 2u);
+    EXPECT_EQ(p.samplers[1].uniform, "env");
+    EXPECT_EQ(p.samplers[1].wrapS, Wrap::Repeat);  // Direct3D's default, not D3DTADDRESS_BORDER (4)
+    EXPECT_EQ(p.samplers[1].mipmap, MipmapMode::None);
+    const std::string& code = p.shaders[0].code;
+    EXPECT_NE(code.find("rm_tc1.x + 0.5 * (t0).x + 0.0 * (t0).y, rm_tc1.y + 0.0 * (t0).x + 0.5 * (t0).y"), std::string::npos) << code;
+    EXPECT_EQ(formatAll(ws.diagnostics()).find("TEXCOORDINDEX"), std::string::npos) << formatAll(ws.diagnostics());
 }
 
 }  // namespace

@@ -132,6 +132,18 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
                                        "it has no shaders and no pass runs before it to lend its program"});
             }
         }
+        // A Direct3D pass with a vertex shader and no pixel shader ran with the pixel shader the
+        // pass before it left on the device (the assembly fur's shell passes set only a vertex
+        // shader), with that pass's samplers unless it names its own.
+        const auto hasStage = [](const std::vector<ShaderSource>& shaders, ShaderStage stage) {
+            return std::any_of(shaders.begin(), shaders.end(), [&](const ShaderSource& s) { return s.stage == stage; });
+        };
+        if (effect.api == RfxApi::Direct3D && p.runnable && previous && hasStage(p.pass.shaders, ShaderStage::Vertex) &&
+            !hasStage(p.pass.shaders, ShaderStage::Fragment) && hasStage(previous->shaders, ShaderStage::Fragment)) {
+            for (const ShaderSource& s : previous->shaders)
+                if (s.stage == ShaderStage::Fragment) p.pass.shaders.push_back(s);
+            if (p.pass.samplers.empty()) p.pass.samplers = previous->samplers;
+        }
         if (!p.runnable && p.pass.enabled)
             diagnostics.push_back({Diagnostic::Severity::Error, p.pass.where, "<pass \"" + p.pass.name + "\">",
                                    "the effect cannot run: " + p.whyNotRunnable + " (disable the pass to run the rest)"});

@@ -178,6 +178,7 @@ StreamMapDeclaration readStreamMap(const RfxElement& e) {
             }
             map.streams.push_back({*u, static_cast<int>(*index), channel.text("ATTRIBUTE_NAME", false).value_or(""),
                                    true, channel.where()});
+            map.registers.push_back(static_cast<int>(channel.integer("REGISTER", 0, 255, false).value_or(-1)));
         }
     return map;
 }

@@ -14,6 +14,7 @@ namespace rmfx::rfx {
 struct StreamMapDeclaration {
     std::string name;
     std::vector<VertexStream> streams;
+    std::vector<int> registers;  // each stream's REGISTER (the v# of a vs_1_1 without dcl_*), -1 when absent
     SourceLocation where;
 };
 

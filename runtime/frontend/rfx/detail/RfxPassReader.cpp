@@ -1,13 +1,16 @@
 #include "frontend/rfx/detail/RfxPassReader.h"
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <string_view>
 
 #include "core/IdentifierSearch.h"
+#include "frontend/rfx/detail/RfxAssemblyShader.h"
 #include "frontend/rfx/detail/RfxPackedColor.h"
 #include "frontend/rfx/detail/RfxRenderStates.h"
 #include "frontend/rfx/detail/RfxSamplerStates.h"
+#include "frontend/rfx/detail/RfxTextureStageStates.h"
 #include "frontend/shader/HlslSemantics.h"
 
 namespace rmfx::rfx {
@@ -35,6 +38,9 @@ public:
         out_.pass.enabled = enabled.value_or(true);
         out_.index = index.value_or(0);
         for (const XMLElement* c = e_.xml()->FirstChildElement(); c; c = c->NextSiblingElement()) child(c);
+        // After the children: an assembly shader reads variables, texture objects and the stream
+        // map that RenderMonkey writes after it.
+        for (const RfxElement& c : assemblyShaders_) assemblyShader(c);
         bindStreams();
         checkConstants();
         for (const auto& [sampler, where] : samplersWithoutObject_)
@@ -54,6 +60,9 @@ private:
             takePassDeclarations(c);
         } else if (tag == "RmGLShader" || tag == "RmGLESShader" || tag == "RmHLSLShader") {
             shader(c, tag);
+        } else if (tag == "RmShader" && api_ == RfxApi::Direct3D) {
+            assemblyShaders_.push_back(c);
+            constantsOf(c);
         } else if (tag == "RmShader") {
             c.warning("an assembly shader: rmfx compiles only HLSL and GLSL, so this pass cannot run");
             out_.runnable = false;
@@ -138,6 +147,53 @@ private:
         out_.pass.shaders.push_back(std::move(s));
     }
 
+    void assemblyShader(const RfxElement& c) {
+        AssemblyContext context;
+        context.variable = [this](const std::string& name) -> const Variable* {
+            for (const Variable& v : out_.pass.constants)
+                if (v.name == name) return &v;
+            return scopes_.variable(name);
+        };
+        for (const auto& [name, stage] : objectStages_) {
+            d3dasm::SamplerKind kind = d3dasm::SamplerKind::Texture2D;
+            if (const Texture* t = scopes_.texture(textureOf_[name]); t && t->kind == TextureKind::Cube)
+                kind = d3dasm::SamplerKind::Cube;
+            d3dasm::SamplerBinding binding{name, stage, kind};
+            if (auto st = stageStates_.find(name); st != stageStates_.end()) {
+                binding.bumpMatrix = st->second.bumpMatrix;
+                binding.bumpScale = st->second.bumpScale;
+                binding.bumpOffset = st->second.bumpOffset;
+            }
+            context.samplers.push_back(binding);
+        }
+        if (streamMap_)
+            for (size_t i = 0; i < streamMap_->streams.size() && i < streamMap_->registers.size(); ++i)
+                if (streamMap_->registers[i] >= 0)
+                    context.streams.push_back({streamMap_->registers[i], streamSemantic(streamMap_->streams[i])});
+        context.passEnabled = out_.pass.enabled;
+        std::string why;
+        std::optional<ShaderSource> s = readAssemblyShader(c, context, why);
+        if (!s) {
+            if (out_.runnable) out_.whyNotRunnable = why;
+            out_.runnable = false;
+            return;
+        }
+        for (const ShaderSource& other : out_.pass.shaders)
+            if (other.stage == s->stage) {
+                c.error(std::string("the pass already has a ") + (s->stage == ShaderStage::Fragment ? "pixel" : "vertex") +
+                        " shader (line " + std::to_string(other.where.line) + ")");
+                return;
+            }
+        out_.pass.shaders.push_back(std::move(*s));
+    }
+
+    // "TEXCOORD1" for the texture coordinates of index 1.
+    static std::string streamSemantic(const VertexStream& stream) {
+        std::string name = hlslVertexInputName(stream.usage, stream.usageIndex);
+        const std::string prefix = "rm_hlsl_in_";
+        return name.rfind(prefix, 0) == 0 ? name.substr(prefix.size()) : name;
+    }
+
     // RmShaderConstant and RmSampler children of a D3D shader.
     void constantsOf(const RfxElement& c) {
         for (const XMLElement* x = c.xml()->FirstChildElement(); x; x = x->NextSiblingElement()) {
@@ -197,6 +253,7 @@ private:
         s.where = c.where();
         // The sampler has its object, even one whose texture is reported missing below.
         textureObjects_.insert(s.uniform);
+        if (auto stage = c.integer("STATE_INDEX", 0, 15, false)) objectStages_[s.uniform] = static_cast<int>(*stage);
         std::erase_if(samplersWithoutObject_, [&](const auto& p) { return p.first == s.uniform; });
         const XMLElement* ref = c.xml()->FirstChildElement("RmTextureReference");
         if (!ref) {
@@ -204,6 +261,7 @@ private:
             return;
         }
         std::string texture = at(ref).name();
+        textureOf_[s.uniform] = texture;
         bool mipmaps = true;
         if (scopes_.texture(texture)) {
             s.texture = texture;
@@ -220,8 +278,11 @@ private:
         }
         SamplerStates states(api_ == RfxApi::Direct3D, mipmaps);
         for (const XMLElement* x = c.xml()->FirstChildElement("RmState"); x; x = x->NextSiblingElement("RmState")) {
-            if (api_ == RfxApi::Direct3D) states.applyD3d(at(x));
-            else states.applyGl(at(x));
+            if (api_ != RfxApi::Direct3D) states.applyGl(at(x));
+            else if (at(x).text("USAGE", false).value_or("") == "TEXTURE_STATE")
+                applyTextureStageState(at(x), objectStages_.count(s.uniform) ? objectStages_[s.uniform] : 0,
+                                       stageStates_[s.uniform]);
+            else states.applyD3d(at(x));
         }
         states.finish(c, s);
         out_.pass.samplers.push_back(std::move(s));
@@ -282,6 +343,10 @@ private:
     std::vector<std::pair<std::string, RfxElement>> samplersWithoutObject_;
     std::set<std::string> textureObjects_;
     std::vector<RfxElement> constants_;
+    std::vector<RfxElement> assemblyShaders_;
+    std::map<std::string, int> objectStages_;         // texture object → STATE_INDEX (its sampler stage)
+    std::map<std::string, std::string> textureOf_;    // texture object → the texture it binds
+    std::map<std::string, TextureStageStates> stageStates_;  // texture object → its texture stage states
 };
 
 }  // namespace
