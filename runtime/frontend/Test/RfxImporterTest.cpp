@@ -849,3 +849,42 @@ TEST(RfxImporter, TextureStageStatesAreNotSamplerStatesAndFeedTexbem) {
 
 }  // namespace
 }  // namespace rmfx
+
+namespace rmfx {
+
+// RmCameraReference: a pass names a camera of the effect; the active one is the camera the viewer
+// moves, any other a fixed camera of its own; one the effect lacks is a warning.
+TEST(RfxImporter, CameraReferencesPickAPassesCamera) {
+    auto camera = [](const std::string& name, const std::string& z, const std::string& upX) {
+        return "<RmCamera NAME=\"" + name + "\" CAMERA_POSITION_X=\"0\" CAMERA_POSITION_Y=\"0\" CAMERA_POSITION_Z=\"" + z +
+               "\" LOOK_AT_VECTOR_X=\"0\" LOOK_AT_VECTOR_Y=\"0\" LOOK_AT_VECTOR_Z=\"0\" UP_VECTOR_X=\"" + upX +
+               "\" UP_VECTOR_Y=\"1\" UP_VECTOR_Z=\"0\" FOV=\"45\" NEAR_CLIP_PLANE=\"1\" FAR_CLIP_PLANE=\"100\"/>\n";
+    };
+    auto pass = [](int index, const std::string& reference) {
+        return "<RmGLPass NAME=\"P" + std::to_string(index) + "\" PASS_INDEX=\"" + std::to_string(index) + "\" ENABLED=\"TRUE\">" +
+               (reference.empty() ? "" : "<RmCameraReference NAME=\"" + reference + "\"/>") + std::string(kFragment) +
+               "</RmGLPass>\n";
+    };
+    const std::string text = "<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\" ACTIVE_EFFECT=\"W.E\">\n"
+                             "<RmOpenGLEffect NAME=\"E\" API=\"OpenGL\" ACTIVE_CAMERA=\"Viewer\">\n" +
+                             camera("Viewer", "10", "0") + camera("Light", "20", "1") + pass(0, "Viewer") + pass(1, "Light") +
+                             pass(2, "") + pass(3, "Nowhere") + "</RmOpenGLEffect>\n</RmEffectWorkspace>\n</RENDER_MONKEY>\n";
+    Result<Workspace> ws = importRfxText(text, "t.rfx", ".", {""});
+    ASSERT_TRUE(ws) << formatAll(ws.diagnostics());
+    EXPECT_FLOAT_EQ(ws->camera.distance, 10.0f);
+    ASSERT_EQ(ws->cameras.size(), 1u);
+    EXPECT_EQ(ws->cameras[0].name, "Light");
+    EXPECT_FLOAT_EQ(ws->cameras[0].settings.distance, 20.0f);
+    EXPECT_NEAR(ws->cameras[0].settings.rollDegrees, 45.0f, 1e-4);  // up (1, 1, 0) looking down -Z
+    ASSERT_EQ(ws->passes.size(), 4u);
+    EXPECT_EQ(ws->passes[0].camera, "");  // the active one
+    EXPECT_EQ(ws->passes[1].camera, "Light");
+    EXPECT_EQ(ws->passes[2].camera, "");
+    EXPECT_EQ(ws->passes[3].camera, "");
+    EXPECT_NE(formatAll(ws.diagnostics())
+                  .find("t.rfx:9: warning: <RmCameraReference NAME=\"Nowhere\">: the effect has no <RmCamera NAME=\"Nowhere\">"),
+              std::string::npos)
+        << formatAll(ws.diagnostics());
+}
+
+}  // namespace rmfx

@@ -55,6 +55,14 @@ void readCamera(const RfxEffectEntry& effect, const std::string& file, Diagnosti
         e.warning("ACTIVE_CAMERA '" + active + "' names no <RmCamera> of the effect; " +
                   (chosen ? "using the first one, '" + chosenName + "'" : "rmfx's default camera is used"));
     if (chosen) ws.camera = orbitFromRmCamera(RfxElement(chosen, file, diagnostics));
+    // Every other camera, for the passes that look through it (RmCameraReference); a pass that
+    // names the active one uses the camera the viewer moves.
+    for (const XMLElement* c = effect.element->FirstChildElement("RmCamera"); c; c = c->NextSiblingElement("RmCamera")) {
+        if (c == chosen) continue;
+        RfxElement camera(c, file, diagnostics);
+        if (ws.findCamera(camera.name())) continue;
+        ws.cameras.push_back({camera.name(), orbitFromRmCamera(camera)});
+    }
 }
 
 Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path& path,
@@ -118,6 +126,16 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
             carriedSeparateAlpha = separateAlpha;
         }
         if (effect.api == RfxApi::Direct3D) rfx::finishD3dRenderStates(p.pass, separateAlpha);
+        if (!p.pass.camera.empty() && !ws.findCamera(p.pass.camera)) {
+            // Not among the named ones: the effect's chosen (active) camera, or none at all.
+            bool declared = false;
+            for (const XMLElement* c = effect.element->FirstChildElement("RmCamera"); c && !declared; c = c->NextSiblingElement("RmCamera"))
+                declared = RfxElement(c, file, diagnostics).name() == p.pass.camera;
+            if (!declared)
+                diagnostics.push_back({Diagnostic::Severity::Warning, p.pass.cameraWhere, "<RmCameraReference NAME=\"" + p.pass.camera + "\">",
+                                       "the effect has no <RmCamera NAME=\"" + p.pass.camera + "\">; the pass uses the effect's camera"});
+            p.pass.camera.clear();  // the active camera: the one the viewer moves
+        }
         // No RmModelReference: rmfx's full-screen triangle (docs/rendermonkey.md).
         if (!p.pass.draw.mesh && p.pass.draw.file.empty()) p.pass.draw.mesh = BuiltinMesh::FullscreenTriangle;
         if (p.pass.shaders.empty() && p.runnable) {

@@ -89,7 +89,11 @@ private:
             sampler(c);
         } else if (tag == "RmShaderConstant") {
             constant(c);
-        } else if (tag == "RmCameraReference" || tag == "RmPlugInData") {
+        } else if (tag == "RmCameraReference") {
+            // Checked by the importer, which knows the effect's cameras and which one is active.
+            out_.pass.camera = c.name();
+            out_.pass.cameraWhere = c.where();
+        } else if (tag == "RmPlugInData") {
             // the effect's camera is the only one rmfx has; plug-in data is editor state
         } else {
             c.warning("rmfx does not support <" + std::string(tag) + "> in a pass; ignored");
