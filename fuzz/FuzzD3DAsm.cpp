@@ -23,9 +23,9 @@ void fuzzD3DAsm(const std::uint8_t* data, std::size_t size) {
     checkLines(parsed.messages);
     if (!parsed.ok()) return;
     const std::vector<d3dasm::ConstantBinding> constants = {
-        {"wvp", 0, ValueType::Mat4, true, 0}, {"light", 4, ValueType::Vec4, false, 0},
-        {"scale", 5, ValueType::Float, false, 0}, {"stored", 6, ValueType::Mat4, false, 0},
-        {"offset", 10, ValueType::Vec3, false, 0}};
+        {"wvp", 0, ValueType::Mat4, 0}, {"light", 4, ValueType::Vec4, 0},
+        {"scale", 5, ValueType::Float, 0}, {"stored", 6, ValueType::Mat4, 0},
+        {"offset", 10, ValueType::Vec3, 0}};
     const std::vector<d3dasm::SamplerBinding> samplers = {
         {"base", 0, d3dasm::SamplerKind::Texture2D}, {"env", 1, d3dasm::SamplerKind::Cube}, {"vol", 2, d3dasm::SamplerKind::Volume}};
     const std::vector<d3dasm::InputRegister> streams = {{0, "POSITION0"}, {1, "NORMAL0"}, {2, "TEXCOORD0"}, {3, "TANGENT0"}};

@@ -1,5 +1,7 @@
 #include "gl/GlPassBindings.h"
 
+#include <algorithm>
+
 #include <epoxy/gl.h>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -162,7 +164,11 @@ Result<void> bindUniforms(GpuPass& gp, const UniformSources& sources) {
         slot.name = name;
         slot.type = type;
         slot.source = source;
-        if (const auto* m = std::get_if<BoundSemantic>(&source)) slot.semantic = m->info;
+        if (const auto* m = std::get_if<BoundSemantic>(&source)) {
+            slot.semantic = m->info;
+            slot.transposed = std::any_of(gp.pass->shaders.begin(), gp.pass->shaders.end(),
+                                          [](const ShaderSource& s) { return s.dialect == ShaderDialect::Hlsl; });
+        }
         else if (const auto* c = std::get_if<BoundConstant>(&source)) slot.value = &c->constant->value;
         else if (const auto* v = std::get_if<BoundVariable>(&source)) slot.value = &sources.values.at(v->variable->name);
         gp.uniforms.push_back(std::move(slot));

@@ -10,7 +10,8 @@ namespace {
 glm::dmat4 toDouble(const glm::mat4& m) { return glm::dmat4(m); }
 
 // A value's first components into a uniform of the given type (a vec3 takes a vec4's xyz).
-void uploadValue(GLuint program, GLint location, UniformType type, const float* data) {
+void uploadValue(GLuint program, GLint location, UniformType type, const float* data, bool transposed = false) {
+    const GLboolean transpose = transposed ? GL_TRUE : GL_FALSE;
     switch (type) {
         case UniformType::Float: glProgramUniform1f(program, location, data[0]); break;
         case UniformType::Int:
@@ -18,9 +19,9 @@ void uploadValue(GLuint program, GLint location, UniformType type, const float* 
         case UniformType::Vec2: glProgramUniform2fv(program, location, 1, data); break;
         case UniformType::Vec3: glProgramUniform3fv(program, location, 1, data); break;
         case UniformType::Vec4: glProgramUniform4fv(program, location, 1, data); break;
-        case UniformType::Mat2: glProgramUniformMatrix2fv(program, location, 1, GL_FALSE, data); break;
-        case UniformType::Mat3: glProgramUniformMatrix3fv(program, location, 1, GL_FALSE, data); break;
-        case UniformType::Mat4: glProgramUniformMatrix4fv(program, location, 1, GL_FALSE, data); break;
+        case UniformType::Mat2: glProgramUniformMatrix2fv(program, location, 1, transpose, data); break;
+        case UniformType::Mat3: glProgramUniformMatrix3fv(program, location, 1, transpose, data); break;
+        case UniformType::Mat4: glProgramUniformMatrix4fv(program, location, 1, transpose, data); break;
         default: break;
     }
 }
@@ -102,7 +103,7 @@ void uploadUniforms(const GpuPass& gp, const FrameInputs& f) {
         }
         if (u.semantic) {
             if (!semantics) semantics = semanticInputs(gp, f);
-            uploadValue(program, u.location, u.type, semanticValue(*u.semantic, *semantics).data.data());
+            uploadValue(program, u.location, u.type, semanticValue(*u.semantic, *semantics).data.data(), u.transposed);
             continue;
         }
         if (u.value) {

@@ -230,14 +230,15 @@ TEST(D3DAsmToHlsl, InstructionModifiersAndPs1xRanges) {
 
 TEST(D3DAsmToHlsl, ConstantRegistersFromVariablesAndDefinitions) {
     HlslFromAsm h = hlslOf("vs.1.1\ndcl_position v0\ndef c9, 1, 2, 3, 4\nm4x4 oPos, v0, c0\nmul oT0, c4, c8\nmov oT1, c9\nmov oT2, c10\n",
-                           {{"stored", 0, ValueType::Mat4, false, 0},
-                            {"light", 4, ValueType::Vec4, false, 0},
-                            {"scale", 8, ValueType::Float, false, 0},
-                            {"view_proj", 20, ValueType::Mat4, true, 0}});
+                           {{"stored", 0, ValueType::Mat4, 0},
+                            {"light", 4, ValueType::Vec4, 0},
+                            {"scale", 8, ValueType::Float, 0},
+                            {"view_proj", 20, ValueType::Mat4, 0}});
     ASSERT_TRUE(h.ok()) << firstError(h.messages);
     const std::string first = lineOf(h.hlsl, 1);
     EXPECT_TRUE(contains(first, "float4x4 stored; float4 light; float scale; float4x4 view_proj;")) << first;
-    // Stored matrices: register i is HLSL row i (VALUE_4i…); semantic matrices: rmfx's row i.
+    // Register i is HLSL row i: VALUE_4i… of a stored matrix, row i of a semantic one (which
+    // reaches HLSL transposed).
     EXPECT_TRUE(contains(first, "c[1] = float4(stored[1][0], stored[1][1], stored[1][2], stored[1][3]);")) << first;
     EXPECT_TRUE(contains(first, "c[4] = light;")) << first;
     EXPECT_TRUE(contains(first, "c[8] = float4(float(scale), 0.0, 0.0, 0.0);")) << first;
@@ -250,20 +251,20 @@ TEST(D3DAsmToHlsl, ConstantRegistersFromVariablesAndDefinitions) {
     EXPECT_TRUE(warned);
 
     HlslFromAsm s = hlslOf("vs_2_0\ndcl_position v0\nmova a0.x, v0.x\nmov oPos, c[a0.x]\n",
-                           {{"view_proj", 0, ValueType::Mat4, true, 0}});
+                           {{"view_proj", 0, ValueType::Mat4, 0}});
     ASSERT_TRUE(s.ok()) << firstError(s.messages);
-    EXPECT_TRUE(contains(lineOf(s.hlsl, 1), "c[2] = float4(view_proj[0][2], view_proj[1][2], view_proj[2][2], view_proj[3][2]);"))
+    EXPECT_TRUE(contains(lineOf(s.hlsl, 1), "c[2] = float4(view_proj[2][0], view_proj[2][1], view_proj[2][2], view_proj[2][3]);"))
         << lineOf(s.hlsl, 1);
 }
 
 TEST(D3DAsmToHlsl, VariablesWhoseNamesCannotBeHlslGlobalsAreErrors) {
     for (const char* name : {"half", "r3", "oT1", "my value", "c"}) {
-        HlslFromAsm h = hlslOf("vs_2_0\ndcl_position v0\nmov oPos, c0\n", {{name, 0, ValueType::Vec4, false, 3}});
+        HlslFromAsm h = hlslOf("vs_2_0\ndcl_position v0\nmov oPos, c0\n", {{name, 0, ValueType::Vec4, 3}});
         EXPECT_EQ(firstError(h.messages), "line 3: the variable '" + std::string(name) +
                                               "' of register c0 cannot be an HLSL global of that name (a keyword, a "
                                               "register's name or not an identifier), through which rmfx would bind it");
     }
-    EXPECT_TRUE(hlslOf("vs_2_0\ndcl_position v0\nmov oPos, c0\n", {{"halfScale", 0, ValueType::Vec4, false, 0}}).ok());
+    EXPECT_TRUE(hlslOf("vs_2_0\ndcl_position v0\nmov oPos, c0\n", {{"halfScale", 0, ValueType::Vec4, 0}}).ok());
 }
 
 TEST(D3DAsmToHlsl, VertexInputsByDeclarationOrStreamRegister) {
@@ -373,14 +374,14 @@ TEST(D3DAsmToHlsl, GeneratedVertexShadersCompile) {
                    "lit r2, r0\ndst r3, r0, r1\nexpp r4, r0.x\nlogp r4, r0.y\nfrc r5, r0\nslt r6, r0, r1\nsge r6, r0, r1\n"
                    "mov a0.x, r0.x\nmov r7, c[a0.x + 8]\nmin r7, r7, c20.y\nmax r7, r7, -c20.y\nmov oD0, r7\n"
                    "mov oT0.xy, v1\nmov oFog, r0.x\nmov oPts, c20.z\n",
-                   ShaderStage::Vertex, {{"view_proj_matrix", 0, ValueType::Mat4, true, 0}, {"tint", 8, ValueType::Vec4, false, 0}});
+                   ShaderStage::Vertex, {{"view_proj_matrix", 0, ValueType::Mat4, 0}, {"tint", 8, ValueType::Vec4, 0}});
     expectCompiles("vs_2_0\ndcl_position v0\ndcl_texcoord0 v1\ndefi i0, 3, 0, 1, 0\ndefb b0, true\n"
                    "mov r0, c0\nrep i0\nadd r0, r0, v1\nendrep\nif b0\nnrm r1, r0\nelse\nabs r1, r0\nendif\n"
                    "rep i0\nif_gt r0.x, r1.x\nbreak\nendif\nendrep\n"
                    "sincos r2.xy, r0.x, c1, c2\npow r3, r0.x, r1.y\ncrs r4.xyz, r0, r1\nlrp r5, r0, r1, r2\nsgn r6, r0, r1, r2\n"
                    "mova a0.x, r0.x\nmov r7, c[a0.x + 1]\nm4x4 oPos, v0, c0\nmov oT0, r7\n"
                    "defi i1, 2, 4, 1, 0\nmov r8, c0\nloop aL, i1\nadd r8, r8, c[aL]\nendloop\nmov oT1, r8\n",
-                   ShaderStage::Vertex, {{"m", 0, ValueType::Mat4, false, 0}});
+                   ShaderStage::Vertex, {{"m", 0, ValueType::Mat4, 0}});
 }
 
 TEST(D3DAsmToHlsl, GeneratedPixelShadersCompile) {
@@ -391,7 +392,7 @@ TEST(D3DAsmToHlsl, GeneratedPixelShadersCompile) {
                    {{"base", 0, SamplerKind::Texture2D}, {"env", 5, SamplerKind::Cube}});
     expectCompiles("ps.1.3\ntex t0\ntexm3x3pad t1, t0\ntexm3x3pad t2, t0\ntexm3x3spec t3, t0, c0\ntexm3x2pad t0, t3\n"
                    "mov r0, t3\n",
-                   ShaderStage::Fragment, {{"eye", 0, ValueType::Vec4, false, 0}}, {});
+                   ShaderStage::Fragment, {{"eye", 0, ValueType::Vec4, 0}}, {});
     expectCompiles("ps.1.4\ntexld r0, t0\ntexcrd r1.rgb, t1\nphase\ntexld r2, r1_dz\ncnd r0, r0, r2, r1\n"
                    "dp3_sat r0, r0_bx2, r2_x2\n",
                    ShaderStage::Fragment, {}, {{"a", 0, SamplerKind::Texture2D}, {"b", 2, SamplerKind::Volume}});

@@ -115,6 +115,34 @@ float4 main(float2 uv : TEXCOORD0) : COLOR {
     expectNear(pixel(out, 3, 0), {0.875, 0.5, 0, 1}, 1e-6, "TEXCOORD0 at the pixel centre");
 }
 
+// RenderMonkey's HLSL multiplies its semantic matrices as M·v (`mul(view_proj_matrix, Pos)`), as
+// its assembly does (`m4x4`): a semantic matrix reaches HLSL so that mul(M, v) is M·v, while a
+// stored one keeps the layout above. World here is the pass's translate and scale.
+TEST_F(HlslGLTest, SemanticMatricesMultiplyAsRenderMonkeysMulOfMatrixAndVector) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x1">
+  <mat4 name="world" semantic="World"/>
+  <target name="out" format="rgba32f" size="4x1"/>
+  <pass name="hlsl" target="out">
+    <draw mesh="fullscreen" translate="0.5 -0.25 1" scale="2 0.5 1.5"/>
+    <shader stage="fragment"><![CDATA[
+float4x4 world;
+float4 main(float2 uv : TEXCOORD0) : COLOR {
+    float4 v = float4(1, -2, 3, 1);
+    return uv.x < 0.5 ? mul(world, v) : mul(v, world);
+}
+]]></shader>
+  </pass>
+</workspace>)";
+    RefImage out = renderOut(xml);
+    ASSERT_EQ(out.width, 4);
+    // World = translate(0.5, -0.25, 1) · scale(2, 0.5, 1.5), in column-vector convention.
+    const glm::dvec4 worldTimesV{2.0 * 1 + 0.5, 0.5 * -2 - 0.25, 1.5 * 3 + 1, 1};
+    // v · World: each column of World dotted with v; the translation lands in w.
+    const glm::dvec4 vTimesWorld{2.0 * 1, 0.5 * -2, 1.5 * 3, 0.5 * 1 - 0.25 * -2 + 1 * 3 + 1};
+    expectNear(pixel(out, 0, 0), worldTimesV, 1e-5, "mul(world, v)");
+    expectNear(pixel(out, 3, 0), vTimesWorld, 1e-5, "mul(v, world)");
+}
+
 // A 4x4 float image read with tex2D at the texel centres comes back texel for texel, the same
 // way up as a GLSL texture() read of it (row 0 at the bottom).
 TEST_F(HlslGLTest, Tex2DReadsTheTextureBoundUnderTheHlslSamplerName) {

@@ -251,9 +251,8 @@ private:
                     for (int j = 0; j < 4; ++j) {
                         if (j) parts += ", ";
                         if (j >= size) parts += "0.0";
-                        // HLSL's m[r][c] holds rmfx's column r, row c (HlslTranslator.h).
-                        else parts += b.semanticMatrix ? n + "[" + std::to_string(j) + "][" + std::to_string(i) + "]"
-                                                       : n + "[" + std::to_string(i) + "][" + std::to_string(j) + "]";
+                        // HLSL row i: VALUE_4i… of a stored matrix, row i of a semantic one.
+                        else parts += n + "[" + std::to_string(i) + "][" + std::to_string(j) + "]";
                     }
                     rows.push_back("float4(" + parts + ")");
                 }

@@ -13,9 +13,10 @@
 // a float variable is (v, 0, 0, 0), a vector its four components, and a 4×4 matrix takes four
 // registers, register base+i holding row i of the matrix as RenderMonkey stored it (VALUE_4i …
 // VALUE_4i+3), so that `m4x4 oPos, v0, c0` computes M·v, as RenderMonkey's HLSL twins do with
-// `mul(view_proj_matrix, Pos)`. rmfx's semantic matrices are OpenGL's column-vector ones, which
-// RenderMonkey stored the same way row by row; rmfx's stored matrices put VALUE_0…3 in the first
-// column (the HLSL row 0): the two are read differently (ConstantBinding::semanticMatrix).
+// `mul(view_proj_matrix, Pos)`. rmfx's stored matrices put VALUE_0…3 in the first column, which
+// is the HLSL row 0; its semantic matrices (OpenGL's column-vector convention, as RenderMonkey's)
+// reach HLSL shaders transposed (gl/GlPassBindings), so that HLSL row i is their row i too: every
+// matrix is read the same way.
 
 #include <array>
 #include <string>
@@ -30,7 +31,6 @@ struct ConstantBinding {
     std::string name;  // the variable, declared as an HLSL global of its type
     int firstRegister = 0;
     ValueType type = ValueType::Float;
-    bool semanticMatrix = false;  // a matrix rmfx computes (VARIABLE_SEMANTIC): registers read its rows
     int line = 0;                 // of the code, for messages; 0: the first
 };
 

@@ -4,7 +4,6 @@
 
 #include "frontend/shader/D3DAsmHlslNames.h"
 #include "frontend/shader/D3DAsmParser.h"
-#include "model/SemanticValues.h"
 
 namespace rmfx::rfx {
 
@@ -79,8 +78,7 @@ std::optional<ShaderSource> readAssemblyShader(const RfxElement& c, const Assemb
         }
         const Variable* v = context.variable ? context.variable(child.name()) : nullptr;
         if (!v) continue;  // the register reads 0, which the translation warns about where it is read
-        constants.push_back({child.name(), static_cast<int>(*reg), v->value.type,
-                             !v->semantic.empty() && findSemantic(v->semantic).has_value(), 0});
+        constants.push_back({child.name(), static_cast<int>(*reg), v->value.type, 0});
     }
 
     if (failed) {
