@@ -413,6 +413,59 @@ float4 main(float4 inDiffuse : COLOR0, float2 uv : TEXCOORD0, float3 extra : TEX
         expectNear(pixel(out, x, 1), {0.5, 0.5, 0.5, 0.5 + 0.25 * (x + 0.5) / 4.0}, 1e-6, "pixel " + std::to_string(x));
 }
 
+// The stages declare a varying with different sizes (a float written, a float4 read; a float4
+// written, a float2 read): Direct3D 9 matched registers, and so does rmfx.
+TEST_F(HlslGLTest, VaryingsOfDifferentSizesMatchAsRegistersDid) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x4">
+  <target name="out" format="rgba32f" size="4x4"/>
+  <pass name="hlsl" target="out">
+    )" + vertexShaderXml(R"(
+struct VS_OUTPUT { float4 Pos : POSITION; float Depth : TEXCOORD2; float4 Wide : TEXCOORD3; };
+VS_OUTPUT main(float4 Pos : POSITION, float2 Tex : TEXCOORD0) {
+    VS_OUTPUT o;
+    o.Pos = float4(Pos.xy, 0.5, 1);
+    o.Depth = 0.75;
+    o.Wide = float4(Tex, 0.25, 0.5);
+    return o;
+}
+)") + R"(    <shader stage="fragment"><![CDATA[
+float4 main(float4 depth : TEXCOORD2, float2 wide : TEXCOORD3) : COLOR {
+    return depth + float4(wide, 0, 0) * 0;
+}
+]]></shader>
+  </pass>
+  <target name="out2" format="rgba32f" size="4x4"/>
+  <pass name="hlsl2" target="out2">
+    )" + vertexShaderXml(R"(
+struct VS_OUTPUT { float4 Pos : POSITION; float4 Wide : TEXCOORD3; };
+VS_OUTPUT main(float4 Pos : POSITION, float2 Tex : TEXCOORD0) {
+    VS_OUTPUT o;
+    o.Pos = float4(Pos.xy, 0.5, 1);
+    o.Wide = float4(Tex, 0.25, 0.5);
+    return o;
+}
+)") + R"(    <shader stage="fragment"><![CDATA[
+float4 main(float2 wide : TEXCOORD3) : COLOR { return float4(wide, 1, 1); }
+]]></shader>
+  </pass>
+</workspace>)";
+    std::unique_ptr<Workspace> ws = hlslWorkspace(xml);
+    ASSERT_TRUE(ws);
+    const std::string warnings = formatAll(validateWorkspace(*ws).diagnostics());
+    EXPECT_NE(warnings.find("<pass name=\"hlsl\">: the stages declare TEXCOORD2 (float → vec4), TEXCOORD3 (vec4 → vec2) "
+                            "with different sizes"),
+              std::string::npos) << warnings;
+    GlRun run = runWorkspace(std::move(ws), {{4, 4}, 1, 1.0f / 60.0f});
+    ASSERT_TRUE(run.exec);
+    RefImage out = readRef(run, "out"), out2 = readRef(run, "out2");
+    ASSERT_EQ(out.width, 4);
+    ASSERT_EQ(out2.width, 4);
+    for (int x = 0; x < 4; ++x) {
+        expectNear(pixel(out, x, 1), {0.75, 0.0, 0.0, 1.0}, 1e-6, "float → float4, pixel " + std::to_string(x));
+        expectNear(pixel(out2, x, 1), {(x + 0.5) / 4.0, (1 + 0.5) / 4.0, 1.0, 1.0}, 1e-6, "float4 → float2, pixel " + std::to_string(x));
+    }
+}
+
 // An input fixed-function processing does not give is an error naming the semantic.
 TEST_F(HlslGLTest, PixelShaderWithoutAVertexShaderReadingANormalIsAnError) {
     Result<Workspace> parsed = parseWorkspaceText(R"(<workspace version="1" name="hlsl" size="4x4">

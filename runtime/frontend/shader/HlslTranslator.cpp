@@ -177,6 +177,54 @@ std::vector<std::string> supplyUnwrittenVaryings(std::string& vertexGlsl, const 
     return supplied;
 }
 
+std::vector<std::string> matchVaryingSizes(std::string& vertexGlsl, const std::vector<ReflectedVariable>& pixelInputs) {
+    static const std::map<std::string, int> sizes = {{"float", 1}, {"vec2", 2}, {"vec3", 3}, {"vec4", 4}};
+    static const char* const swizzles[] = {"", ".x", ".xy", ".xyz"};
+    std::vector<std::string> matched;
+    std::string assignments;
+    for (const ReflectedVariable& input : pixelInputs) {
+        auto wanted = sizes.find(input.type);
+        if (wanted == sizes.end() || !input.arraySuffix.empty()) continue;
+        for (const auto& [type, size] : sizes) {
+            const std::string declaration = "out " + type + " " + input.name + ";";
+            const size_t at = vertexGlsl.find(declaration);
+            if (at == std::string::npos || type == input.type) continue;
+            const std::string kept = input.name + "_written";
+            // Every use of the output now reads and writes the private variable.
+            for (size_t use = vertexGlsl.find(input.name); use != std::string::npos; use = vertexGlsl.find(input.name, use)) {
+                const bool word = (use == 0 || !isIdentifierChar(vertexGlsl[use - 1])) &&
+                                  (use + input.name.size() >= vertexGlsl.size() || !isIdentifierChar(vertexGlsl[use + input.name.size()]));
+                if (word) {
+                    vertexGlsl.replace(use, input.name.size(), kept);
+                    use += kept.size();
+                } else {
+                    use += input.name.size();
+                }
+            }
+            const std::string privateDeclaration = "out " + type + " " + kept + ";";
+            const size_t declared = vertexGlsl.find(privateDeclaration);
+            if (declared == std::string::npos) break;
+            vertexGlsl.replace(declared, privateDeclaration.size(), type + " " + kept + ";\nout " + input.type + " " + input.name + ";");
+            std::string value;
+            if (size > wanted->second) {
+                value = kept + swizzles[wanted->second];
+            } else {
+                value = input.type + "(" + kept;
+                for (int c = size; c < wanted->second; ++c) value += c == 3 ? ", 1.0" : ", 0.0";
+                value += ")";
+            }
+            assignments += "    " + input.name + " = " + value + ";\n";
+            matched.push_back(input.semantic + " (" + type + " → " + input.type + ")");
+            break;
+        }
+    }
+    // SPIRV-Cross writes the vertex shader's outputs in main(), its last function.
+    const size_t end = vertexGlsl.rfind('}');
+    if (matched.empty() || end == std::string::npos) return {};
+    vertexGlsl.insert(end, assignments);
+    return matched;
+}
+
 Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const HlslStage& stage,
                                            const SourceLocation& where, const std::string& element) {
     Diagnostics diagnostics;

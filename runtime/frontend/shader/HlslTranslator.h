@@ -76,4 +76,12 @@ Result<FixedFunctionVaryings> hlslFixedFunctionVaryings(const std::vector<Reflec
 // semantics supplied, for a warning; none when nothing is missing.
 std::vector<std::string> supplyUnwrittenVaryings(std::string& vertexGlsl, const std::vector<ReflectedVariable>& pixelInputs);
 
+// For a varying the two HLSL stages declare with different sizes (the vertex shader writes
+// `float Depth : TEXCOORD2`, the pixel shader reads `float4 … : TEXCOORD2`): Direct3D 9 matched
+// them by register, GL's link refuses the types. The vertex shader's value is kept in a private
+// variable and the output, of the pixel shader's type, is set from it at the end of main(): cut
+// to the size read, or filled with 0 (and 1 in w). Returns "SEMANTIC (vertex type → pixel type)"
+// for each, for a warning.
+std::vector<std::string> matchVaryingSizes(std::string& vertexGlsl, const std::vector<ReflectedVariable>& pixelInputs);
+
 }  // namespace rmfx

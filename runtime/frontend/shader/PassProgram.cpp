@@ -142,6 +142,14 @@ Result<PassProgramSource> assemblePassProgram(const Workspace& ws, const Pass& p
                                        (supplied.size() == 1 ? "it" : "them") +
                                        " (COLORn opaque white, others (0, 0, 0, 1))"});
         }
+        std::vector<std::string> matched = matchVaryingSizes(program.stages[0].shader.code, pixelInputs);
+        if (!matched.empty()) {
+            std::string list;
+            for (const std::string& m : matched) list += (list.empty() ? "" : ", ") + m;
+            diagnostics.push_back({Diagnostic::Severity::Warning, fragment->where, passLabel(pass),
+                                   "the stages declare " + list + " with different sizes; Direct3D 9 matched them by "
+                                   "register, so rmfx passes the value on, cut to the size read or filled with 0 (w 1)"});
+        }
     }
     if (!vertex) {
         bool fullscreen = pass.draw.mesh == BuiltinMesh::FullscreenTriangle;
