@@ -104,6 +104,20 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
             }
             if (auto p = readPass(e, effect.api, scopes)) passes.push_back(std::move(*p));
         }
+    // Textures and renderable textures a pass declares itself join the workspace's: rmfx has one
+    // namespace for them, so a second declaration of a name with another file is a warning.
+    for (const ReadPass& p : passes) {
+        for (const Texture& t : p.declared.textures) {
+            const Texture* known = ws.findTexture(t.name);
+            if (!known) ws.textures.push_back(t);
+            else if (known->files != t.files || known->kind != t.kind)
+                diagnostics.push_back({Diagnostic::Severity::Warning, t.where, "<pass \"" + p.pass.name + "\">",
+                                       "texture '" + t.name + "' is declared again with another file; rmfx keeps the one at " +
+                                           known->where.file + ":" + std::to_string(known->where.line)});
+        }
+        for (const RenderTarget& t : p.declared.targets)
+            if (!ws.findTarget(t.name)) ws.targets.push_back(t);
+    }
     std::stable_sort(passes.begin(), passes.end(), [](const ReadPass& a, const ReadPass& b) { return a.index < b.index; });
     const Pass* previous = nullptr;
     // Render states carry over in run order from the last pass that runs (RenderMonkey set them on

@@ -28,7 +28,12 @@ const T* findIn(const std::vector<const Declarations*>& levels, Member member, c
 
 class PassReader {
 public:
-    PassReader(const RfxElement& e, RfxApi api, const VisibleScopes& scopes) : e_(e), api_(api), scopes_(scopes) {}
+    PassReader(const RfxElement& e, RfxApi api, const VisibleScopes& scopes) : e_(e), api_(api) {
+        // What the pass declares itself comes first: RenderMonkey let a pass hold its own
+        // texture variables, renderable textures, models and stream maps.
+        scopes_.levels.push_back(&out_.declared);
+        scopes_.levels.insert(scopes_.levels.end(), scopes.levels.begin(), scopes.levels.end());
+    }
 
     std::optional<ReadPass> read() {
         auto index = e_.integer("PASS_INDEX", -1000000, 1000000);
@@ -37,7 +42,15 @@ public:
         out_.pass.where = e_.where();
         out_.pass.enabled = enabled.value_or(true);
         out_.index = index.value_or(0);
-        for (const XMLElement* c = e_.xml()->FirstChildElement(); c; c = c->NextSiblingElement()) child(c);
+        // Declarations first, wherever they stand: shaders and texture objects before them use them.
+        std::set<const XMLElement*> declarations;
+        for (const XMLElement* c = e_.xml()->FirstChildElement(); c; c = c->NextSiblingElement())
+            if (readDeclaration(at(c), passLevel_)) {
+                takePassDeclarations();
+                declarations.insert(c);
+            }
+        for (const XMLElement* c = e_.xml()->FirstChildElement(); c; c = c->NextSiblingElement())
+            if (!declarations.count(c)) child(c);
         // After the children: an assembly shader reads variables, texture objects and the stream
         // map that RenderMonkey writes after it.
         for (const RfxElement& c : assemblyShaders_) assemblyShader(c);
@@ -56,9 +69,7 @@ private:
     void child(const XMLElement* x) {
         RfxElement c = at(x);
         std::string_view tag = x->Name();
-        if (readDeclaration(c, passLevel_)) {
-            takePassDeclarations(c);
-        } else if (tag == "RmGLShader" || tag == "RmGLESShader" || tag == "RmHLSLShader") {
+        if (tag == "RmGLShader" || tag == "RmGLESShader" || tag == "RmHLSLShader") {
             shader(c, tag);
         } else if (tag == "RmShader" && api_ == RfxApi::Direct3D) {
             assemblyShaders_.push_back(c);
@@ -100,13 +111,17 @@ private:
         }
     }
 
-    void takePassDeclarations(const RfxElement& c) {
+    // Variables become pass constants; the rest is the pass's own, looked up before the effect's.
+    void takePassDeclarations() {
         for (Variable& v : passLevel_.variables) out_.pass.constants.push_back(std::move(v));
-        passLevel_.variables.clear();
-        if (!passLevel_.textures.empty() || !passLevel_.targets.empty() || !passLevel_.models.empty() ||
-            !passLevel_.streamMaps.empty())
-            c.warning("textures, targets, models and stream maps declared inside a pass are not supported; "
-                      "declare them in the effect");
+        auto take = [](auto& from, auto& into) {
+            for (auto& item : from) into.push_back(std::move(item));
+        };
+        take(passLevel_.textures, out_.declared.textures);
+        take(passLevel_.targets, out_.declared.targets);
+        take(passLevel_.models, out_.declared.models);
+        take(passLevel_.streamMaps, out_.declared.streamMaps);
+        take(passLevel_.unsupported, out_.declared.unsupported);
         passLevel_ = {};
     }
 
@@ -339,8 +354,8 @@ private:
 
     const RfxElement& e_;
     RfxApi api_;
-    const VisibleScopes& scopes_;
     ReadPass out_;
+    VisibleScopes scopes_;  // the pass's own declarations (out_.declared), then the levels above
     Declarations passLevel_;
     const StreamMapDeclaration* streamMap_ = nullptr;
     bool targetSeen_ = false;

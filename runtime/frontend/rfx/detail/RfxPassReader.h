@@ -32,6 +32,10 @@ struct ReadPass {
     // Its RmRenderStateBlocks, applied by the importer in run order: states carry over from the
     // pass before (rfx::applyRenderStateBlock).
     std::vector<const tinyxml2::XMLElement*> stateBlocks;
+    // Texture variables, renderable textures, models and stream maps declared inside the pass
+    // (RenderMonkey allowed it): the pass sees them first; the importer adds the textures and
+    // targets to the workspace.
+    Declarations declared;
 };
 
 // Shaders are left empty when the pass has none (the importer gives it the previous pass's).
