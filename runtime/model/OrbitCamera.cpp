@@ -3,9 +3,35 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/trigonometric.hpp>
 
 namespace rmfx {
+
+std::optional<OrbitCameraSettings> orbitLookingAt(glm::vec3 eye, glm::vec3 target, glm::vec3 up,
+                                                  const OrbitCameraSettings& base) {
+    const glm::vec3 offset = eye - target;
+    const float distance = glm::length(offset);
+    if (!(distance > 1e-6f)) return std::nullopt;
+    OrbitCameraSettings s = base;
+    s.target = target;
+    s.distance = distance;
+    s.yawDegrees = glm::degrees(std::atan2(offset.x, offset.z));
+    s.pitchDegrees = std::clamp(glm::degrees(std::asin(std::clamp(offset.y / distance, -1.0f, 1.0f))), -89.0f, 89.0f);
+    // The roll that turns +Y made perpendicular to the view into `up`'s part across it, as view()
+    // applies it.
+    s.rollDegrees = 0.0f;
+    const glm::vec3 forward = -offset / distance;
+    const glm::vec3 plainUp = glm::vec3(0, 1, 0) - forward * forward.y;
+    const glm::vec3 given = up - forward * glm::dot(up, forward);
+    if (glm::length(plainUp) > 1e-4f && glm::length(given) > 1e-4f) {
+        const glm::vec3 u = glm::normalize(plainUp), right = glm::cross(forward, u);
+        s.rollDegrees = glm::degrees(std::atan2(glm::dot(given, right), glm::dot(given, u)));
+        if (std::abs(s.rollDegrees) < 1e-3f) s.rollDegrees = 0.0f;
+    }
+    return s;
+}
 
 glm::vec3 OrbitCamera::position() const {
     float yaw = glm::radians(settings_.yawDegrees), pitch = glm::radians(settings_.pitchDegrees);

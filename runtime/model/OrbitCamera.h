@@ -3,6 +3,8 @@
 // target point at a distance. The editor drives it with the mouse; headless runs use the
 // workspace's <camera> settings.
 
+#include <optional>
+
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -10,6 +12,12 @@
 #include "model/Workspace.h"
 
 namespace rmfx {
+
+// The orbit settings (target, distance, yaw, pitch, roll) of a camera at `eye` looking at `target`
+// with `up` (any vector not along the view: its part across the view sets the roll); the other
+// settings are `base`'s. Nullopt when eye and target coincide. The pitch is kept within ±89°.
+std::optional<OrbitCameraSettings> orbitLookingAt(glm::vec3 eye, glm::vec3 target, glm::vec3 up,
+                                                  const OrbitCameraSettings& base);
 
 class OrbitCamera {
 public:

@@ -4,7 +4,10 @@
 
 #include <cmath>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
+
+#include "model/OrbitCamera.h"
 
 #include "tests/support/TestSupport.h"
 #include "validation/WorkspaceLoader.h"
@@ -57,6 +60,49 @@ TEST(RfxCameraFraming, WithoutAnRmCameraTheDrawnModelFillsTheView) {
     EXPECT_GT(ws.camera.farPlane, distance + radius);
     EXPECT_EQ(ws.camera.yawDegrees, defaults.yawDegrees);  // the direction stays rmfx's default
     EXPECT_EQ(ws.camera.pitchDegrees, defaults.pitchDegrees);
+}
+
+// RenderMonkey kept its viewer's last View (and Projection) matrix in variables it fills by
+// semantic: the camera is recovered from them, here a look-at from (120, 80, 300) toward the
+// cube's centre with a 30° field of view, written as RenderMonkey stored it (row by row,
+// column-vector convention).
+TEST(RfxCameraFraming, TheViewerCameraIsRecoveredFromAStoredViewMatrix) {
+    test::ScratchDir dir;
+    dir.write("big.obj", kBigCube);
+    const glm::dvec3 eye(120, 80, 300), centre(10, 20, 30);
+    const glm::dmat4 view = glm::lookAt(eye, centre, glm::dvec3(0, 1, 0));
+    const glm::dmat4 projection = glm::perspective(glm::radians(30.0), 1.0, 1.0, 1000.0);
+    auto stored = [](const std::string& name, const std::string& semantic, const glm::dmat4& m) {
+        std::string text = "<RmMatrixVariable NAME=\"" + name + "\" VARIABLE_SEMANTIC=\"" + semantic + "\"";
+        for (int i = 0; i < 16; ++i) text += " VALUE_" + std::to_string(i) + "=\"" + std::to_string(m[i % 4][i / 4]) + "\"";
+        return text + "/>\n";
+    };
+    Workspace ws = load(dir, effectDrawing("big.obj", stored("view_matrix", "View", view) + stored("proj", "Projection", projection)));
+    const OrbitCamera camera(ws.camera);
+    const glm::dvec3 position = camera.position();
+    EXPECT_NEAR(glm::length(position - eye), 0.0, 1e-2) << position.x << " " << position.y << " " << position.z;
+    EXPECT_NEAR(glm::length(glm::dvec3(ws.camera.target) - centre), 0.0, 1e-2);
+    EXPECT_NEAR(ws.camera.fovYDegrees, 30.0, 1e-3);
+    EXPECT_NEAR(ws.camera.rollDegrees, 0.0, 1e-3);
+    EXPECT_GT(ws.camera.farPlane, glm::length(eye - centre) + 50.0 * std::sqrt(3.0));
+}
+
+// A dome around the scene (an octahedron reaching 5000 from the origin) is not framed: the
+// camera fits the cube inside it, not the dome.
+TEST(RfxCameraFraming, ADomeAroundTheSceneIsLeftOutOfTheFraming) {
+    test::ScratchDir dir;
+    dir.write("big.obj", kBigCube);
+    dir.write("dome.obj", "v 5000 0 0\nv -5000 0 0\nv 0 5000 0\nv 0 -5000 0\nv 0 0 5000\nv 0 0 -5000\nf 1 3 5\nf 2 4 6\n");
+    std::string text = effectDrawing("big.obj");
+    const std::string domePass =
+        "<RmModelData NAME=\"D\" FILE_NAME=\"dome.obj\"/>\n<RmGLPass NAME=\"Sky\" PASS_INDEX=\"1\" ENABLED=\"TRUE\">\n"
+        "<RmModelReference NAME=\"D\"/>\n</RmGLPass>\n";
+    text.insert(text.find("</RmOpenGLEffect>"), domePass);
+    Workspace ws = load(dir, text);
+    const double radius = 50.0 * std::sqrt(3.0);
+    const double distance = radius / std::sin(OrbitCameraSettings{}.fovYDegrees * 0.5 * M_PI / 180.0) * 1.05;
+    EXPECT_NEAR(ws.camera.distance, distance, 1e-3 * distance);
+    EXPECT_FLOAT_EQ(ws.camera.target.x, 10.0f);
 }
 
 TEST(RfxCameraFraming, AnRmCameraOrOnlyAScreenAlignedQuadLeavesTheCameraAlone) {

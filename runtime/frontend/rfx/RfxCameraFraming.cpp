@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -10,12 +11,64 @@
 
 #include "io/mesh/BuiltinMeshes.h"
 #include "io/mesh/ModelLoader.h"
+#include "model/OrbitCamera.h"
 
 namespace rmfx {
 
+namespace {
+
+struct Sphere {
+    glm::dvec3 centre{0.0};
+    double radius = 0.0;
+};
+
+Sphere boundsOf(const std::vector<const Mesh*>& meshes) {
+    glm::dvec3 low(std::numeric_limits<double>::infinity()), high(-std::numeric_limits<double>::infinity());
+    for (const Mesh* mesh : meshes)
+        for (const glm::vec3& p : mesh->positions) {
+            low = glm::min(low, glm::dvec3(p));
+            high = glm::max(high, glm::dvec3(p));
+        }
+    Sphere s;
+    if (!(low.x <= high.x)) return s;
+    s.centre = (low + high) * 0.5;
+    for (const Mesh* mesh : meshes)
+        for (const glm::vec3& p : mesh->positions) s.radius = std::max(s.radius, glm::length(glm::dvec3(p) - s.centre));
+    return s;
+}
+
+// The value RenderMonkey saved last in a variable it fills by this semantic.
+const Variable* stored(const Workspace& ws, const std::string& semantic, ValueType type) {
+    for (const Variable& v : ws.variables)
+        if (v.semantic == semantic && v.value.type == type) return &v;
+    return nullptr;
+}
+
+// RenderMonkey's viewer camera as it saved it in a View matrix (VARIABLE_SEMANTIC="View"): stored
+// row by row in the column-vector convention, which rmfx reads with VALUE_0…3 as the first column,
+// so element (row i, column j) is data[4i + j]. The eye is -Rᵀt; the view axis is the third row,
+// looked along toward the models (OpenGL's view looks down -z, Direct3D's down +z).
+std::optional<OrbitCameraSettings> fromStoredView(const Variable& view, const Sphere& models, bool haveModels,
+                                                  const OrbitCameraSettings& base) {
+    const auto& m = view.value.data;
+    auto r = [&](int row, int column) { return static_cast<double>(m[static_cast<size_t>(4 * row + column)]); };
+    glm::dvec3 eye(0.0);
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) eye[j] -= r(i, j) * r(i, 3);
+    const glm::dvec3 up(r(1, 0), r(1, 1), r(1, 2));
+    glm::dvec3 forward = -glm::dvec3(r(2, 0), r(2, 1), r(2, 2));
+    if (!(glm::length(forward) > 1e-6) || !std::isfinite(eye.x + eye.y + eye.z)) return std::nullopt;
+    forward = glm::normalize(forward);
+    const glm::dvec3 toModels = models.centre - eye;
+    if (haveModels && glm::dot(toModels, forward) < 0.0) forward = -forward;
+    const double along = haveModels ? std::max(glm::dot(toModels, forward), models.radius * 0.1) : glm::length(eye);
+    return orbitLookingAt(glm::vec3(eye), glm::vec3(eye + forward * std::max(along, 1e-3)), glm::vec3(up), base);
+}
+
+}  // namespace
+
 void frameDrawnModels(Workspace& ws) {
     if (!ws.camera.where.file.empty()) return;  // an RmCamera placed it
-    glm::dvec3 low(std::numeric_limits<double>::infinity()), high(-std::numeric_limits<double>::infinity());
     std::vector<Mesh> meshes;
     for (const Pass& pass : ws.passes) {
         if (pass.draw.mesh) {
@@ -25,23 +78,46 @@ void frameDrawnModels(Workspace& ws) {
             if (auto loaded = loadModel(ws.folder / pass.draw.file)) meshes.push_back(std::move(*loaded));
         }
     }
-    for (const Mesh& mesh : meshes)
-        for (const glm::vec3& p : mesh.positions) {
-            low = glm::min(low, glm::dvec3(p));
-            high = glm::max(high, glm::dvec3(p));
+    // A sky dome or box around the scene is no object to frame: a mesh whose bounds hold every
+    // other's and are five times larger than all of them together is left out.
+    std::vector<const Mesh*> framed;
+    for (const Mesh& mesh : meshes) framed.push_back(&mesh);
+    if (framed.size() > 1) {
+        std::vector<Sphere> each;
+        for (const Mesh& mesh : meshes) each.push_back(boundsOf({&mesh}));
+        for (size_t i = 0; i < meshes.size(); ++i) {
+            std::vector<const Mesh*> others;
+            for (size_t j = 0; j < meshes.size(); ++j)
+                if (j != i) others.push_back(&meshes[j]);
+            const Sphere rest = boundsOf(others);
+            if (each[i].radius > 5.0 * rest.radius && glm::length(rest.centre - each[i].centre) + rest.radius <= each[i].radius)
+                std::erase(framed, &meshes[i]);
         }
-    if (meshes.empty() || !(low.x <= high.x)) return;
-    const glm::dvec3 centre = (low + high) * 0.5;
-    double radius = 0.0;
-    for (const Mesh& mesh : meshes)
-        for (const glm::vec3& p : mesh.positions) radius = std::max(radius, glm::length(glm::dvec3(p) - centre));
-    if (!(radius > 0.0) || !std::isfinite(radius)) return;
+    }
+    const Sphere models = boundsOf(framed);
+    const bool haveModels = !framed.empty() && models.radius > 0.0 && std::isfinite(models.radius);
+
+    // The camera RenderMonkey's viewer last showed, where the file kept its matrices.
+    if (const Variable* view = stored(ws, "View", ValueType::Mat4)) {
+        if (auto camera = fromStoredView(*view, models, haveModels, ws.camera)) {
+            ws.camera = *camera;
+            if (const Variable* projection = stored(ws, "Projection", ValueType::Mat4)) {
+                const double p11 = projection->value.data[5];
+                if (p11 > 1e-6 && std::isfinite(p11)) ws.camera.fovYDegrees = static_cast<float>(2.0 * std::atan(1.0 / p11) * 180.0 / 3.14159265358979323846);
+            }
+            const double reach = haveModels ? glm::length(models.centre - glm::dvec3(camera->target)) + models.radius : 0.0;
+            ws.camera.farPlane = static_cast<float>(std::max<double>(ws.camera.farPlane, (ws.camera.distance + reach) * 2.0));
+            ws.camera.nearPlane = static_cast<float>(std::max(ws.camera.distance * 1e-3, 1e-3));
+            return;
+        }
+    }
+    if (!haveModels) return;
     const double halfFov = ws.camera.fovYDegrees * 0.5 * 3.14159265358979323846 / 180.0;
-    const double distance = radius / std::sin(halfFov) * 1.05;
-    ws.camera.target = glm::vec3(centre);
+    const double distance = models.radius / std::sin(halfFov) * 1.05;
+    ws.camera.target = glm::vec3(models.centre);
     ws.camera.distance = static_cast<float>(distance);
-    ws.camera.nearPlane = static_cast<float>(std::max((distance - radius) * 0.5, distance * 1e-3));
-    ws.camera.farPlane = static_cast<float>((distance + radius) * 2.0);
+    ws.camera.nearPlane = static_cast<float>(std::max((distance - models.radius) * 0.5, distance * 1e-3));
+    ws.camera.farPlane = static_cast<float>((distance + models.radius) * 2.0);
 }
 
 }  // namespace rmfx

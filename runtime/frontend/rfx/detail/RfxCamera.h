@@ -7,10 +7,9 @@
 namespace rmfx::rfx {
 
 // The orbit camera that sees what the RmCamera sees: its target is the LOOK_AT point, its distance
-// the camera's distance from it, yaw and pitch the direction from the target to the camera. Two
-// things are approximated: the orbit camera's up is always +Y, so an UP_VECTOR other than +Y
-// (a rolled camera) gives a warning and is not followed, and the pitch is kept within ±89°.
-// FOV is taken as the vertical field of view in degrees.
+// the camera's distance from it, yaw and pitch the direction from the target to the camera, its
+// roll UP_VECTOR's (model/OrbitCamera.h orbitLookingAt); the pitch is kept within ±89°. FOV is
+// taken as the vertical field of view in degrees.
 OrbitCameraSettings orbitFromRmCamera(const RfxElement& camera);
 
 }  // namespace rmfx::rfx
