@@ -852,6 +852,52 @@ TEST(RfxImporter, TextureStageStatesAreNotSamplerStatesAndFeedTexbem) {
 
 namespace rmfx {
 
+// ORIGIN 0 (every public file's) is how rmfx reads images; another value is named in a warning.
+TEST(RfxImporter, TextureOriginOtherThanZeroIsAWarning) {
+    auto effect = [](const std::string& origin) {
+        return glEffect("<Rm2DTextureVariable NAME=\"T\" FILE_NAME=\"t.png\" ORIGIN=\"" + origin + "\"/>\n"
+                        "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n"
+                        "<RmTextureObject NAME=\"t\"><RmTextureReference NAME=\"T\"/></RmTextureObject>\n<RmSampler NAME=\"t\"/>\n" +
+                        std::string(kFragment) + "\n</RmGLPass>\n");
+    };
+    Result<Workspace> zero = importRfxText(effect("0"), "t.rfx", ".", {""});
+    ASSERT_TRUE(zero) << formatAll(zero.diagnostics());
+    EXPECT_EQ(formatAll(zero.diagnostics()).find("ORIGIN"), std::string::npos);
+    Result<Workspace> one = importRfxText(effect("1"), "t.rfx", ".", {""});
+    ASSERT_TRUE(one) << formatAll(one.diagnostics());
+    EXPECT_NE(formatAll(one.diagnostics()).find("t.rfx:4: warning: <Rm2DTextureVariable NAME=\"T\">: ORIGIN 1 is not applied"),
+              std::string::npos)
+        << formatAll(one.diagnostics());
+}
+
+// A pass may declare its own texture, renderable texture and model (RenderMonkey's assembly fur
+// does), after the texture objects and shaders that use them.
+TEST(RfxImporter, TexturesTargetsAndModelsDeclaredInsideAPassAreThePasss) {
+    const std::string text = glEffect(
+        "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n"
+        "<RmTextureObject NAME=\"fur\"><RmTextureReference NAME=\"FurTexture\"/></RmTextureObject>\n"
+        "<RmSampler NAME=\"fur\"/>\n"
+        "<RmModelReference NAME=\"Shell\"/>\n"
+        "<RmRenderTarget NAME=\"Layer\"/>\n" +
+        std::string(kFragment) +
+        "\n<Rm2DTextureVariable NAME=\"FurTexture\" FILE_NAME=\"fur.tga\"/>\n"
+        "<RmModelData NAME=\"Shell\" FILE_NAME=\"shell.3ds\"/>\n"
+        "<RmRenderableTexture NAME=\"Layer\" FORMAT=\"21\" WIDTH=\"64\" HEIGHT=\"32\"/>\n"
+        "</RmGLPass>\n");
+    Result<Workspace> ws = importRfxText(text, "t.rfx", ".", {""});
+    ASSERT_TRUE(ws) << formatAll(ws.diagnostics());
+    const Texture* fur = ws->findTexture("FurTexture");
+    ASSERT_NE(fur, nullptr);
+    EXPECT_EQ(fur->files, std::vector<std::string>{"fur.tga"});
+    EXPECT_NE(ws->findTarget("Layer"), nullptr);
+    ASSERT_EQ(ws->passes.size(), 1u);
+    EXPECT_EQ(ws->passes[0].draw.file, "shell.3ds");
+    EXPECT_EQ(ws->passes[0].target, "Layer");
+    ASSERT_EQ(ws->passes[0].samplers.size(), 1u);
+    EXPECT_EQ(ws->passes[0].samplers[0].texture, "FurTexture");
+    EXPECT_EQ(formatAll(ws.diagnostics()).find("inside a pass"), std::string::npos) << formatAll(ws.diagnostics());
+}
+
 // RmCameraReference: a pass names a camera of the effect; the active one is the camera the viewer
 // moves, any other a fixed camera of its own; one the effect lacks is a warning.
 TEST(RfxImporter, CameraReferencesPickAPassesCamera) {

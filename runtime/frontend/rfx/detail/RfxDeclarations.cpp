@@ -199,6 +199,11 @@ bool readDeclaration(const RfxElement& e, Declarations& into) {
         t.kind = tag == "RmCubemapVariable"     ? TextureKind::Cube
                  : tag == "Rm3DTextureVariable" ? TextureKind::Volume
                                                 : TextureKind::Texture2D;
+        // ORIGIN: the 41 textures of the 12 public files that have it (2026-11) all hold 0, read as
+        // every image file is, its first row at the top; what another value did is not known.
+        if (auto origin = e.integer("ORIGIN", -2147483648LL, 2147483647LL, false); origin && *origin != 0)
+            e.warning("ORIGIN " + std::to_string(*origin) + " is not applied: the image is read with its first row at the "
+                      "top, as for ORIGIN 0, the only value public RenderMonkey files hold");
         // One file: a cube map comes as one DDS holding the six faces, a volume as a DDS volume.
         if (auto file = e.text("FILE_NAME")) {
             t.files.push_back(*file);
