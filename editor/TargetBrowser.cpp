@@ -46,7 +46,56 @@ void TargetBrowser::updateThumbnails(const GlExecutor& executor, const Workspace
         updated.push_back(std::move(t));
     }
     thumbnails_ = std::move(updated);
+    updateVolumes(executor, ws, blit);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void TargetBrowser::updateVolumes(const GlExecutor& executor, const Workspace& ws, TextureBlit& blit) {
+    std::vector<VolumeThumbnail> updated;
+    for (const Texture& t : ws.textures) {
+        if (t.kind != TextureKind::Volume) continue;
+        const unsigned object = executor.textureObject(t.name);
+        if (!object) continue;
+        auto old = std::find_if(volumes_.begin(), volumes_.end(), [&](const VolumeThumbnail& v) { return v.texture == t.name; });
+        VolumeThumbnail v{t.name, old != volumes_.end() ? std::move(old->image) : std::make_unique<DisplayTexture>(),
+                          glm::ivec3(0), old != volumes_.end() ? old->slice : 0.5f};
+        glGetTextureLevelParameteriv(object, 0, GL_TEXTURE_WIDTH, &v.size.x);
+        glGetTextureLevelParameteriv(object, 0, GL_TEXTURE_HEIGHT, &v.size.y);
+        glGetTextureLevelParameteriv(object, 0, GL_TEXTURE_DEPTH, &v.size.z);
+        v.image->resize(thumbnailExtent(glm::ivec2(v.size)));
+        v.image->bindFramebuffer();
+        blit.drawSlice(object, v.slice, DisplayTransform::Srgb);
+        updated.push_back(std::move(v));
+    }
+    volumes_ = std::move(updated);
+}
+
+void TargetBrowser::drawVolumes() {
+    if (volumes_.empty()) return;
+    ImGui::Separator();
+    ImGui::TextDisabled("Volume textures (one slice)");
+    for (VolumeThumbnail& v : volumes_) {
+        ImGui::PushID(v.texture.c_str());
+        ImGui::BeginGroup();
+        const glm::ivec2 size = v.image->size();
+        // GL rows bottom-up, as for targets: flipped in v.
+        ImGui::Image(v.image->imguiTexture(), ImVec2(static_cast<float>(size.x), static_cast<float>(size.y)), ImVec2(0, 1),
+                     ImVec2(1, 0));
+        const int slices = std::max(v.size.z, 1);
+        const int shown = std::clamp(static_cast<int>(v.slice * static_cast<float>(slices)), 0, slices - 1);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("%s: %dx%dx%d volume texture; slice %d of %d", v.texture.c_str(), v.size.x, v.size.y, v.size.z,
+                              shown + 1, slices);
+        ImGui::TextUnformatted(v.texture.c_str());
+        int chosen = shown;
+        ImGui::SetNextItemWidth(static_cast<float>(thumbnailSize));
+        if (ImGui::SliderInt("##slice", &chosen, 0, slices - 1, "slice %d"))
+            v.slice = (static_cast<float>(chosen) + 0.5f) / static_cast<float>(slices);  // its texel centre
+        ImGui::EndGroup();
+        ImGui::PopID();
+        ImGui::SameLine();
+    }
+    ImGui::NewLine();
 }
 
 void TargetBrowser::draw(const GlExecutor& executor) {
@@ -93,6 +142,7 @@ void TargetBrowser::draw(const GlExecutor& executor) {
         float nextRight = ImGui::GetItemRectMax().x + style.ItemSpacing.x + cell;
         if (i + 1 < thumbnails_.size() && nextRight < right) ImGui::SameLine();
     }
+    drawVolumes();
 }
 
 void TargetBrowser::open(const std::string& target) {

@@ -1,6 +1,7 @@
 #pragma once
 // The Render targets section: a thumbnail of every target of the current frame (the target's
-// texture drawn down into a small texture, sRGB), and a large viewer window for each one clicked.
+// texture drawn down into a small texture, sRGB), and a large viewer window for each one clicked;
+// then the workspace's volume textures, a slice each.
 
 #include <map>
 #include <memory>
@@ -40,7 +41,17 @@ private:
         std::string target;
         std::unique_ptr<DisplayTexture> texture;
     };
+    // A volume (3D) texture of the workspace, shown one slice at a time (a slider picks it).
+    struct VolumeThumbnail {
+        std::string texture;
+        std::unique_ptr<DisplayTexture> image;
+        glm::ivec3 size{0};
+        float slice = 0.5f;  // r in [0, 1]
+    };
+    void updateVolumes(const GlExecutor& executor, const Workspace& ws, TextureBlit& blit);
+    void drawVolumes();
     std::vector<Thumbnail> thumbnails_;
+    std::vector<VolumeThumbnail> volumes_;
     std::vector<std::unique_ptr<TargetViewer>> viewers_;
     std::string focus_;
     std::set<std::string> written_;  // by the last frame

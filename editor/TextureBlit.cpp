@@ -23,7 +23,10 @@ void main() {
 const char* fragmentSource = R"(#version 450 core
 in vec2 uv;
 layout(binding = 0) uniform sampler2D source;
+layout(binding = 1) uniform sampler3D volume;
 uniform bool exact;
+uniform bool sliced;   // a slice of `volume` at depth `slice` in [0, 1]
+uniform float slice;
 uniform ivec2 origin;
 uniform float scale;
 uniform bool srgb;
@@ -36,7 +39,9 @@ float display(float v) {
 }
 
 void main() {
-    vec4 t = exact ? texelFetch(source, ivec2(gl_FragCoord.xy) - origin, 0) : texture(source, uv);
+    vec4 t = sliced ? texture(volume, vec3(uv, slice))
+           : exact  ? texelFetch(source, ivec2(gl_FragCoord.xy) - origin, 0)
+                    : texture(source, uv);
     vec3 c = t.rgb * scale;
     color = vec4(display(c.r), display(c.g), display(c.b), 1.0);
 }
@@ -71,6 +76,7 @@ GLuint makeSampler(GLenum minify, GLenum magnify) {
     glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(magnify));
     glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
     return sampler;
 }
 
@@ -99,6 +105,8 @@ Result<std::unique_ptr<TextureBlit>> TextureBlit::create() {
     blit->originLocation_ = glGetUniformLocation(blit->program_, "origin");
     blit->scaleLocation_ = glGetUniformLocation(blit->program_, "scale");
     blit->srgbLocation_ = glGetUniformLocation(blit->program_, "srgb");
+    blit->slicedLocation_ = glGetUniformLocation(blit->program_, "sliced");
+    blit->sliceLocation_ = glGetUniformLocation(blit->program_, "slice");
     glCreateVertexArrays(1, &blit->vertexArray_);
     blit->nearest_ = makeSampler(GL_NEAREST, GL_NEAREST);
     blit->linear_ = makeSampler(GL_LINEAR, GL_NEAREST);  // magnified texels stay sharp
@@ -118,6 +126,17 @@ void TextureBlit::drawExact(unsigned texture, glm::ivec2 origin, DisplayTransfor
 
 void TextureBlit::drawFiltered(unsigned texture, float exposureStops, DisplayTransform transform) {
     draw(texture, linear_, false, glm::ivec2(0), std::exp2(exposureStops), transform);
+}
+
+void TextureBlit::drawSlice(unsigned volume, float depth, DisplayTransform transform) {
+    glProgramUniform1i(program_, slicedLocation_, 1);
+    glProgramUniform1f(program_, sliceLocation_, std::clamp(depth, 0.0f, 1.0f));
+    glBindTextureUnit(1, volume);
+    glBindSampler(1, linear_);
+    draw(0, linear_, false, glm::ivec2(0), 1.0f, transform);
+    glBindSampler(1, 0);
+    glBindTextureUnit(1, 0);
+    glProgramUniform1i(program_, slicedLocation_, 0);
 }
 
 void TextureBlit::draw(unsigned texture, unsigned sampler, bool exact, glm::ivec2 origin, float scale,

@@ -2,7 +2,7 @@
 // Draws a texture into the bound framebuffer's viewport with a display transform: how the editor
 // shows the effect's output in the window (1:1, texel for pixel, with the workspace's output
 // transform, so the window shows what `rmfx render` writes to a PNG) and makes the thumbnails of
-// render targets (filtered down, sRGB). Its own sampler object makes any target texture complete
+// render targets and slices of volume textures (filtered down, sRGB). Its own sampler object makes any target texture complete
 // whatever its filter state. Needs a current GL 4.5 context.
 
 #include <memory>
@@ -28,6 +28,9 @@ public:
     void drawExact(unsigned texture, glm::ivec2 origin, DisplayTransform transform);
     // The whole texture stretched over the viewport (bilinear down, nearest up), × 2^exposureStops.
     void drawFiltered(unsigned texture, float exposureStops, DisplayTransform transform);
+    // One slice of a volume (3D) texture stretched over the viewport, filtered: `depth` in [0, 1]
+    // (r), the texel centres of slice k of n at (k + 0.5) / n.
+    void drawSlice(unsigned volume, float depth, DisplayTransform transform);
 
 private:
     TextureBlit() = default;
@@ -36,6 +39,7 @@ private:
     unsigned vertexArray_ = 0;
     unsigned nearest_ = 0, linear_ = 0;
     int exactLocation_ = -1, originLocation_ = -1, scaleLocation_ = -1, srgbLocation_ = -1;
+    int slicedLocation_ = -1, sliceLocation_ = -1;
 };
 
 }  // namespace rmfx::editor
