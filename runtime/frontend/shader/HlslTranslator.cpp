@@ -204,7 +204,11 @@ std::vector<std::string> matchVaryingSizes(std::string& vertexGlsl, const std::v
             const std::string privateDeclaration = "out " + type + " " + kept + ";";
             const size_t declared = vertexGlsl.find(privateDeclaration);
             if (declared == std::string::npos) break;
-            vertexGlsl.replace(declared, privateDeclaration.size(), type + " " + kept + ";\nout " + input.type + " " + input.name + ";");
+            // Interpolation qualifiers before `out` (flat, noperspective, centroid) stay with the output.
+            const size_t lineStart = vertexGlsl.rfind('\n', declared) == std::string::npos ? 0 : vertexGlsl.rfind('\n', declared) + 1;
+            const std::string qualifiers = vertexGlsl.substr(lineStart, declared - lineStart);
+            vertexGlsl.replace(lineStart, declared + privateDeclaration.size() - lineStart,
+                               type + " " + kept + ";\n" + qualifiers + "out " + input.type + " " + input.name + ";");
             std::string value;
             if (size > wanted->second) {
                 value = kept + swizzles[wanted->second];
