@@ -17,6 +17,12 @@ static size_t findWord(std::string_view text, std::string_view word, size_t from
     return std::string_view::npos;
 }
 
+void replaceIdentifier(std::string& code, std::string_view from, std::string_view to) {
+    if (from.empty()) return;
+    for (size_t at = findWord(code, from); at != std::string_view::npos; at = findWord(code, from, at + to.size()))
+        code.replace(at, from.size(), to);
+}
+
 std::string withoutComments(std::string_view input) {
     std::string out(input);
     size_t i = 0;

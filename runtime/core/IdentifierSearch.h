@@ -12,6 +12,10 @@ bool isIdentifierChar(char c);
 
 bool mentionsIdentifier(std::string_view code, std::string_view name);
 
+// Every whole-word `from` in `code` replaced by `to` (comments and strings included: for
+// generated code, whose words are all code).
+void replaceIdentifier(std::string& code, std::string_view from, std::string_view to);
+
 // The code with its // and /* */ comments and "string literals" turned into spaces, newlines kept
 // (offsets and line numbers still match the input).
 std::string withoutComments(std::string_view code);

@@ -191,16 +191,7 @@ std::vector<std::string> matchVaryingSizes(std::string& vertexGlsl, const std::v
             if (at == std::string::npos || type == input.type) continue;
             const std::string kept = input.name + "_written";
             // Every use of the output now reads and writes the private variable.
-            for (size_t use = vertexGlsl.find(input.name); use != std::string::npos; use = vertexGlsl.find(input.name, use)) {
-                const bool word = (use == 0 || !isIdentifierChar(vertexGlsl[use - 1])) &&
-                                  (use + input.name.size() >= vertexGlsl.size() || !isIdentifierChar(vertexGlsl[use + input.name.size()]));
-                if (word) {
-                    vertexGlsl.replace(use, input.name.size(), kept);
-                    use += kept.size();
-                } else {
-                    use += input.name.size();
-                }
-            }
+            replaceIdentifier(vertexGlsl, input.name, kept);
             const std::string privateDeclaration = "out " + type + " " + kept + ";";
             const size_t declared = vertexGlsl.find(privateDeclaration);
             if (declared == std::string::npos) break;

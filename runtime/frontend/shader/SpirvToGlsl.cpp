@@ -202,20 +202,6 @@ bool usableSamplerName(const std::string& name) {
     return !name.empty() && !taken.count(name) && name.rfind("gl_", 0) != 0;
 }
 
-// Each whole-word `from` in `code` replaced by `to`.
-void renameIdentifier(std::string& code, const std::string& from, const std::string& to) {
-    for (size_t at = code.find(from); at != std::string::npos; at = code.find(from, at)) {
-        const bool starts = at == 0 || !isIdentifierChar(code[at - 1]);
-        const bool ends = at + from.size() >= code.size() || !isIdentifierChar(code[at + from.size()]);
-        if (starts && ends) {
-            code.replace(at, from.size(), to);
-            at += to.size();
-        } else {
-            at += from.size();
-        }
-    }
-}
-
 // Read after compiling: SPIRV-Cross renames identifiers GLSL reserves while it compiles.
 ReflectedBlock reflectBlock(spvc_compiler c, spvc_type_id blockType) {
     ReflectedBlock block;
@@ -264,7 +250,7 @@ Result<SpirvGlsl> spirvToGlsl(const std::vector<unsigned>& spirv, ShaderStage st
     for (const auto& [id, before] : samplerNames(cross))
         if (auto original = samplersBefore.find(id); original != samplersBefore.end() && original->second != before &&
                                                      usableSamplerName(original->second))
-            renameIdentifier(out.code, before, original->second);
+            replaceIdentifier(out.code, before, original->second);
     for (spvc_type_id block : blocks) out.blocks.push_back(reflectBlock(cross.get(), block));
     out.inputs = reflectInputs(cross);
     return out;
