@@ -49,6 +49,14 @@ TEST(HlslWritableGlobals, AssignedGlobalsGetACopySetAtTheEntryPointAndUsedEveryw
     EXPECT_EQ(lineCount(out.code), lineCount(code));
 }
 
+TEST(HlslWritableGlobals, AWriteRightAfterTheEntryPointsBraceKeepsTheCopiesInFront) {
+    // The copies go in at the offset of the first use; the use is renamed after them.
+    const std::string code = "float g;\nfloat4 main() : COLOR0 {g = g * 2; return g; }\n";
+    EXPECT_EQ(giveWrittenGlobalsACopy(code, "main").code,
+              "float g; static float rm_writable_g;\nfloat4 main() : COLOR0 { rm_writable_g = g;rm_writable_g = rm_writable_g * 2; "
+              "return rm_writable_g; }\n");
+}
+
 TEST(HlslWritableGlobals, EveryKindOfAssignmentCountsAndComparisonsDoNot) {
     for (const char* statement : {"g = 1;", "g += 1;", "g -= 1;", "g /= 2;", "g++;", "--g;", "g.x = 1;", "g [0] = 1;",
                                   "g.xy *= 2;", "g <<= 1;"}) {

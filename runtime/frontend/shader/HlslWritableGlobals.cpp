@@ -132,66 +132,114 @@ void scan(const std::string& code, std::vector<Global>& globals, std::vector<Fun
     }
 }
 
-bool isWord(const std::string& code, size_t at, size_t length) {
-    return (at == 0 || !isIdentifierChar(code[at - 1])) && (at + length >= code.size() || !isIdentifierChar(code[at + length]));
-}
-
-size_t skipSpace(const std::string& code, size_t i) {
-    while (i < code.size() && std::isspace(static_cast<unsigned char>(code[i]))) ++i;
+size_t skipSpace(const std::string& code, size_t i, size_t limit) {
+    while (i < limit && std::isspace(static_cast<unsigned char>(code[i]))) ++i;
     return i;
 }
 
-// Whether the use of a name at [at, at + length) is assigned to: followed, after any `.member` or
-// `[index]`, by an assignment operator or ++/--, or preceded by ++/--.
-bool assignedAt(const std::string& code, size_t at, size_t length, size_t limit) {
-    size_t back = at;
-    while (back > 0 && std::isspace(static_cast<unsigned char>(code[back - 1]))) --back;
-    if (back >= 2 && ((code[back - 1] == '+' && code[back - 2] == '+') || (code[back - 1] == '-' && code[back - 2] == '-')))
-        return true;
-    size_t i = skipSpace(code, at + length);
-    while (i < limit) {
-        if (code[i] == '.') {
-            i = skipSpace(code, i + 1);
-            while (i < limit && isIdentifierChar(code[i])) ++i;
-            i = skipSpace(code, i);
-        } else if (code[i] == '[') {
-            int nesting = 0;
-            for (; i < limit; ++i) {
-                if (code[i] == '[') ++nesting;
-                if (code[i] == ']' && --nesting == 0) break;
-            }
-            i = skipSpace(code, i + 1);
-        } else {
-            break;
+// For each '[' the offset of its ']', npos where unmatched: found once, so that following
+// `a[a[a[…` from each of its names does not read the rest again.
+std::vector<size_t> matchingBrackets(const std::string& code) {
+    std::vector<size_t> match(code.size(), std::string::npos), open;
+    for (size_t i = 0; i < code.size(); ++i) {
+        if (code[i] == '[') open.push_back(i);
+        else if (code[i] == ']' && !open.empty()) {
+            match[open.back()] = i;
+            open.pop_back();
         }
     }
-    if (i >= limit) return false;
-    const std::string_view rest(code.data() + i, std::min<size_t>(3, limit - i));
-    if (rest.starts_with("++") || rest.starts_with("--")) return true;
-    if (rest.starts_with("==")) return false;
-    if (rest.starts_with("=")) return true;
-    for (const char* op : {"+=", "-=", "*=", "/=", "%=", "&=", "|=", "^=", "<<=", ">>="})
-        if (rest.starts_with(op)) return true;
-    return false;
+    return match;
 }
 
-// Whether a function declares `name` itself (a parameter or a local), which hides the global there.
-bool declaresItself(const std::string& code, const FunctionBody& body, const std::string& name) {
-    for (const std::string& w : identifiers(body.header.substr(body.header.find('(') == std::string::npos ? 0 : body.header.find('('))))
-        if (w == name) return true;
-    for (size_t at = code.find(name, body.open); at != std::string::npos && at < body.close; at = code.find(name, at + 1)) {
-        if (!isWord(code, at, name.size())) continue;
-        size_t back = at;
-        while (back > body.open && std::isspace(static_cast<unsigned char>(code[back - 1]))) --back;
-        if (back == body.open || !isIdentifierChar(code[back - 1])) continue;
-        size_t word = back;
-        while (word > body.open && isIdentifierChar(code[word - 1])) --word;
-        const std::string previous = code.substr(word, back - word);
-        // `float4 name`, `half name`: a type before it. `return name` and the like are uses.
-        static const std::set<std::string> notTypes = {"return", "else", "case", "do", "in", "out", "inout"};
-        if (!notTypes.count(previous) && !std::isdigit(static_cast<unsigned char>(previous[0]))) return true;
+// One function body's identifiers: each occurrence's offset, and the names the function declares
+// itself (a parameter, or a local: a name right after a word that can be a type), which hide a
+// global of that name there.
+struct BodyWords {
+    std::map<std::string, std::vector<size_t>, std::less<>> uses;
+    std::set<std::string, std::less<>> declared;
+};
+
+BodyWords bodyWords(const std::string& code, const FunctionBody& body) {
+    BodyWords out;
+    const size_t paren = body.header.find('(');
+    for (const std::string& w : identifiers(std::string_view(body.header).substr(paren == std::string::npos ? 0 : paren)))
+        out.declared.insert(w);
+    // `float4 name`, `half name`: a type before it. `return name` and the like are uses.
+    static const std::set<std::string, std::less<>> notTypes = {"return", "else", "case", "do", "in", "out", "inout"};
+    std::string_view previous;
+    size_t previousEnd = std::string::npos;
+    for (size_t i = body.open + 1; i < body.close;) {
+        if (!isIdentifierChar(code[i])) {
+            ++i;
+            continue;
+        }
+        size_t j = i;
+        while (j < body.close && isIdentifierChar(code[j])) ++j;
+        const std::string_view word(code.data() + i, j - i);
+        out.uses[std::string(word)].push_back(i);
+        if (previousEnd != std::string::npos && skipSpace(code, previousEnd, i) == i && !notTypes.count(previous) &&
+            !std::isdigit(static_cast<unsigned char>(previous[0])))
+            out.declared.insert(std::string(word));
+        previous = word;
+        previousEnd = j;
+        i = j;
     }
-    return false;
+    return out;
+}
+
+// Whether the use of a name at [at, at + length) is assigned to: followed, after any `.member` or
+// `[index]`, by an assignment operator or ++/--, or preceded by ++/--. `selectorEnd` remembers
+// where each chain of selectors ends, so `a.a.a.…` is walked once, not once per name.
+class Assignments {
+public:
+    Assignments(const std::string& code, const std::vector<size_t>& brackets) : code_(code), brackets_(brackets) {}
+
+    bool assignedAt(size_t at, size_t length, size_t limit) {
+        size_t back = at;
+        while (back > 0 && std::isspace(static_cast<unsigned char>(code_[back - 1]))) --back;
+        if (back >= 2 && ((code_[back - 1] == '+' && code_[back - 2] == '+') || (code_[back - 1] == '-' && code_[back - 2] == '-')))
+            return true;
+        const size_t i = selectorsEnd(skipSpace(code_, at + length, limit), limit);
+        if (i >= limit) return false;
+        const std::string_view rest(code_.data() + i, std::min<size_t>(3, limit - i));
+        if (rest.starts_with("++") || rest.starts_with("--")) return true;
+        if (rest.starts_with("==")) return false;
+        if (rest.starts_with("=")) return true;
+        for (const char* op : {"+=", "-=", "*=", "/=", "%=", "&=", "|=", "^=", "<<=", ">>="})
+            if (rest.starts_with(op)) return true;
+        return false;
+    }
+
+private:
+    size_t selectorsEnd(size_t i, size_t limit) {
+        std::vector<size_t> visited;
+        while (i < limit && (code_[i] == '.' || code_[i] == '[')) {
+            if (auto known = ends_.find(i); known != ends_.end()) {
+                i = known->second;
+                break;
+            }
+            visited.push_back(i);
+            if (code_[i] == '.') {
+                i = skipSpace(code_, i + 1, limit);
+                while (i < limit && isIdentifierChar(code_[i])) ++i;
+                i = skipSpace(code_, i, limit);
+            } else {
+                const size_t close = brackets_[i];
+                i = close == std::string::npos || close >= limit ? limit : skipSpace(code_, close + 1, limit);
+            }
+        }
+        for (size_t v : visited) ends_[v] = i;
+        return i;
+    }
+
+    const std::string& code_;
+    const std::vector<size_t>& brackets_;
+    std::map<size_t, size_t> ends_;
+};
+
+// Line numbers by offset, by binary search over the newlines.
+int lineOf(const std::vector<size_t>& newlines, size_t offset) {
+    return 1 + static_cast<int>(std::lower_bound(newlines.begin(), newlines.end(), offset) - newlines.begin());
 }
 
 }  // namespace
@@ -208,38 +256,68 @@ HlslWritableGlobals giveWrittenGlobalsACopy(const std::string& source, const std
         if (b.name == entryPoint) entry = &b;
     if (!entry) return out;
 
-    // Per global: the bodies that use it as the global (not declaring their own), and whether one writes it.
+    // Every step is linear in the code (or n log n): a file of thousands of globals and functions
+    // once took the fuzzer's 10 s, one search of the whole code per global and function.
+    std::vector<BodyWords> words;
+    words.reserve(bodies.size());
+    for (const FunctionBody& b : bodies) words.push_back(bodyWords(code, b));
+    const std::vector<size_t> brackets = matchingBrackets(code);
+    Assignments assignments(code, brackets);
+
+    // Per global: whether a body that does not declare its own writes it. The first declaration
+    // of a name stands for any repeats (glslang reports the redefinition).
+    std::set<std::string, std::less<>> seen;
     std::vector<const Global*> written;
-    std::map<std::string, std::vector<const FunctionBody*>> usedIn;
     for (const Global& g : globals) {
+        if (!seen.insert(g.name).second) continue;
         bool writes = false;
-        for (const FunctionBody& b : bodies) {
-            if (declaresItself(code, b, g.name)) continue;
-            usedIn[g.name].push_back(&b);
-            for (size_t at = code.find(g.name, b.open); at != std::string::npos && at < b.close; at = code.find(g.name, at + 1))
-                if (isWord(code, at, g.name.size()) && assignedAt(code, at, g.name.size(), b.close)) writes = true;
+        for (size_t b = 0; b < bodies.size() && !writes; ++b) {
+            if (words[b].declared.count(g.name)) continue;
+            auto uses = words[b].uses.find(g.name);
+            if (uses == words[b].uses.end()) continue;
+            for (size_t at : uses->second)
+                if (assignments.assignedAt(at, g.name.size(), bodies[b].close)) writes = true;
         }
-        if (writes && std::none_of(written.begin(), written.end(), [&](const Global* w) { return w->name == g.name; }))
-            written.push_back(&g);
+        if (writes) written.push_back(&g);
     }
     if (written.empty()) return out;
 
-    // Edits from the end backwards, so that earlier offsets stay valid.
-    std::vector<std::pair<size_t, std::pair<size_t, std::string>>> edits;  // offset → (length replaced, text)
+    std::vector<size_t> newlines;
+    for (size_t i = 0; i < code.size(); ++i)
+        if (code[i] == '\n') newlines.push_back(i);
+    struct Edit {
+        size_t at;
+        size_t replaced;
+        std::string text;
+    };
+    std::vector<Edit> edits;
     std::string copies;
     for (const Global* g : written) {
         const std::string copy = "rm_writable_" + g->name;
-        edits.push_back({g->statementEnd + 1, {0, " static " + g->type + " " + copy + g->arraySuffix + ";"}});
+        edits.push_back({g->statementEnd + 1, 0, " static " + g->type + " " + copy + g->arraySuffix + ";"});
         copies += " " + copy + " = " + g->name + ";";
-        for (const FunctionBody* b : usedIn[g->name])
-            for (size_t at = code.find(g->name, b->open); at != std::string::npos && at < b->close; at = code.find(g->name, at + 1))
-                if (isWord(code, at, g->name.size())) edits.push_back({at, {g->name.size(), copy}});
+        for (size_t b = 0; b < bodies.size(); ++b) {
+            if (words[b].declared.count(g->name)) continue;
+            if (auto uses = words[b].uses.find(g->name); uses != words[b].uses.end())
+                for (size_t at : uses->second) edits.push_back({at, g->name.size(), copy});
+        }
         out.written.push_back(g->name);
-        out.lines.push_back(1 + static_cast<int>(std::count(code.begin(), code.begin() + static_cast<long>(g->statementEnd), '\n')));
+        out.lines.push_back(lineOf(newlines, g->statementEnd));
     }
-    edits.push_back({entry->open + 1, {0, copies}});
-    std::sort(edits.begin(), edits.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-    for (const auto& [at, edit] : edits) out.code.replace(at, edit.first, edit.second);
+    edits.push_back({entry->open + 1, 0, copies});
+    // By offset; at one offset, insertions (in their order) before the name they stand in front of
+    // (`main(){gain = …`: the copies go before `gain`).
+    std::stable_sort(edits.begin(), edits.end(),
+                     [](const Edit& a, const Edit& b) { return a.at < b.at || (a.at == b.at && a.replaced < b.replaced); });
+    std::string result;
+    size_t from = 0;
+    for (const Edit& e : edits) {
+        result.append(source, from, e.at - from);
+        result += e.text;
+        from = e.at + e.replaced;
+    }
+    result.append(source, from, std::string::npos);
+    out.code = std::move(result);
     return out;
 }
 
