@@ -166,8 +166,9 @@ Result<void> bindUniforms(GpuPass& gp, const UniformSources& sources) {
         slot.source = source;
         if (const auto* m = std::get_if<BoundSemantic>(&source)) {
             slot.semantic = m->info;
-            slot.transposed = std::any_of(gp.pass->shaders.begin(), gp.pass->shaders.end(),
-                                          [](const ShaderSource& s) { return s.dialect == ShaderDialect::Hlsl; });
+            slot.transposed = std::any_of(gp.pass->shaders.begin(), gp.pass->shaders.end(), [](const ShaderSource& s) {
+                return s.dialect == ShaderDialect::Hlsl && s.matrixOrder == HlslMatrixOrder::ColumnVector;
+            });
         }
         else if (const auto* c = std::get_if<BoundConstant>(&source)) slot.value = &c->constant->value;
         else if (const auto* v = std::get_if<BoundVariable>(&source)) slot.value = &sources.values.at(v->variable->name);

@@ -25,9 +25,9 @@ struct UniformSlot {
     std::string effectSwitch;  // rmfx_effect_<name>: whether that effect runs this frame
     const Value* value = nullptr;  // a pass constant's, or the variable's current value
     std::optional<SemanticInfo> semantic;  // filled every frame (Variable::semantic)
-    // An HLSL program's matrix fed by a semantic: uploaded transposed. HLSL's m[r] is rmfx's column
-    // r (HlslTranslator.h), and RenderMonkey's HLSL, like its assembly, multiplies its semantic
-    // matrices as M·v: mul(view_proj_matrix, Pos).
+    // A matrix fed by a semantic to an HLSL program that multiplies as mul(M, v)
+    // (HlslMatrixOrder::ColumnVector): uploaded transposed. HLSL's m[r] is rmfx's column r
+    // (HlslTranslator.h), so untransposed, mul(v, M) is M·v; transposed, mul(M, v) is.
     bool transposed = false;
 };
 

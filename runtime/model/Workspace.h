@@ -130,6 +130,14 @@ enum class ShaderDialect {
     Hlsl,        // Direct3D 9 HLSL, compiled through glslang's HLSL front end (entryPoint, profile)
 };
 
+// How an HLSL shader multiplies the matrices rmfx computes for semantics (World, ViewProjection…),
+// which are OpenGL's column-vector matrices. Direct3D code wrote either order, and what worked
+// depended on how the application passed the matrix.
+enum class HlslMatrixOrder {
+    RowVector,     // mul(v, M): D3DX's convention, and RenderMonkey's from version 1.6 on
+    ColumnVector,  // mul(M, v): RenderMonkey 1.5 and before, and every assembly shader (m4x4)
+};
+
 // Shader code kept in the workspace file itself, which `#include "NAME"` finds before any file.
 struct CodeSnippet {
     std::string name;
@@ -143,6 +151,7 @@ struct ShaderSource {
     ShaderDialect dialect = ShaderDialect::Glsl;
     std::string entryPoint;  // Hlsl: the function to compile ("main" when empty)
     std::string profile;     // Hlsl: the D3D target it was written for ("vs_2_0", "ps_2_0"…)
+    HlslMatrixOrder matrixOrder = HlslMatrixOrder::RowVector;  // Hlsl: of its semantic matrices
     std::string file;    // relative to the workspace folder; empty for inline code
     std::string code;    // inline code (CDATA or text)
     int codeLine = 0;    // line of the workspace file where inline code starts
@@ -197,6 +206,9 @@ struct DrawCall {
     glm::vec3 translate{0.0f};
     glm::vec3 rotateDegrees{0.0f};    // applied X, then Y, then Z
     glm::vec3 scale{1.0f};
+    // The built-in mesh stands in for a model file that was not found (io/media's stock models
+    // and placeholders): an imported effect sizes it to its camera (frontend/rfx/RfxCameraFraming).
+    bool standIn = false;
     SourceLocation where;
 };
 

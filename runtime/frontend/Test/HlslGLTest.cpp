@@ -115,16 +115,21 @@ float4 main(float2 uv : TEXCOORD0) : COLOR {
     expectNear(pixel(out, 3, 0), {0.875, 0.5, 0, 1}, 1e-6, "TEXCOORD0 at the pixel centre");
 }
 
-// RenderMonkey's HLSL multiplies its semantic matrices as M·v (`mul(view_proj_matrix, Pos)`), as
-// its assembly does (`m4x4`): a semantic matrix reaches HLSL so that mul(M, v) is M·v, while a
-// stored one keeps the layout above. World here is the pass's translate and scale.
-TEST_F(HlslGLTest, SemanticMatricesMultiplyAsRenderMonkeysMulOfMatrixAndVector) {
+// An HLSL shader multiplies a semantic matrix the way its matrices="…" says: row-vector (the
+// default, D3DX's and RenderMonkey 1.6's mul(v, M)) or column-vector (RenderMonkey 1.5's
+// mul(view_proj_matrix, Pos)); either way that product is World·v, the other one is v·World. A
+// stored matrix keeps the layout above. World here is the pass's translate and scale.
+class HlslMatrixOrderGLTest : public HlslGLTest, public testing::WithParamInterface<const char*> {};
+
+TEST_P(HlslMatrixOrderGLTest, TheProductInTheDeclaredOrderIsWorldTimesV) {
+    const std::string order = GetParam();
+    const std::string attribute = order.empty() ? "" : " matrices=\"" + order + "\"";
     const std::string xml = R"(<workspace version="1" name="hlsl" size="4x1">
   <mat4 name="world" semantic="World"/>
   <target name="out" format="rgba32f" size="4x1"/>
   <pass name="hlsl" target="out">
     <draw mesh="fullscreen" translate="0.5 -0.25 1" scale="2 0.5 1.5"/>
-    <shader stage="fragment"><![CDATA[
+    <shader stage="fragment" dialect="hlsl")" + attribute + R"(><![CDATA[
 float4x4 world;
 float4 main(float2 uv : TEXCOORD0) : COLOR {
     float4 v = float4(1, -2, 3, 1);
@@ -139,9 +144,17 @@ float4 main(float2 uv : TEXCOORD0) : COLOR {
     const glm::dvec4 worldTimesV{2.0 * 1 + 0.5, 0.5 * -2 - 0.25, 1.5 * 3 + 1, 1};
     // v · World: each column of World dotted with v; the translation lands in w.
     const glm::dvec4 vTimesWorld{2.0 * 1, 0.5 * -2, 1.5 * 3, 0.5 * 1 - 0.25 * -2 + 1 * 3 + 1};
-    expectNear(pixel(out, 0, 0), worldTimesV, 1e-5, "mul(world, v)");
-    expectNear(pixel(out, 3, 0), vTimesWorld, 1e-5, "mul(v, world)");
+    const bool columnVector = order == "column-vector";
+    expectNear(pixel(out, 0, 0), columnVector ? worldTimesV : vTimesWorld, 1e-5, "mul(world, v)");
+    expectNear(pixel(out, 3, 0), columnVector ? vTimesWorld : worldTimesV, 1e-5, "mul(v, world)");
 }
+
+INSTANTIATE_TEST_SUITE_P(Orders, HlslMatrixOrderGLTest, testing::Values("", "row-vector", "column-vector"),
+                         [](const testing::TestParamInfo<const char*>& info) {
+                             const std::string p = info.param;
+                             return p.empty() ? std::string("Default") : p == "row-vector" ? std::string("RowVector")
+                                                                                            : std::string("ColumnVector");
+                         });
 
 // A 4x4 float image read with tex2D at the texel centres comes back texel for texel, the same
 // way up as a GLSL texture() read of it (row 0 at the bottom).

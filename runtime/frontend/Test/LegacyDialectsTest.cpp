@@ -64,6 +64,8 @@ TEST(LegacyDialects, ParserRejectsBadStreamsAndDialects) {
     <stream usage="texcoord" index="9"/>
     <shader stage="fragment" dialect="glsl330">void main() {}</shader>
     <shader stage="vertex" entry="main">void main() {}</shader>
+    <shader stage="vertex" matrices="row-vector">void main() {}</shader>
+    <shader stage="fragment" dialect="hlsl" matrices="transposed">float4 main() : COLOR { return 1; }</shader>
   </pass>
 </workspace>)");
     std::string all = formatAll(parsed.diagnostics());
@@ -75,6 +77,9 @@ TEST(LegacyDialects, ParserRejectsBadStreamsAndDialects) {
               std::string::npos) << all;
     EXPECT_NE(all.find("legacy.xml:6: error: <shader>: attribute 'dialect': 'glsl330' is not one of"), std::string::npos) << all;
     EXPECT_NE(all.find("legacy.xml:7: error: <shader>: attributes 'entry' and 'profile' apply to dialect=\"hlsl\""),
+              std::string::npos) << all;
+    EXPECT_NE(all.find("legacy.xml:8: error: <shader>: attribute 'matrices' applies to dialect=\"hlsl\""), std::string::npos) << all;
+    EXPECT_NE(all.find("legacy.xml:9: error: <shader>: attribute 'matrices': 'transposed' is not one of: row-vector, column-vector"),
               std::string::npos) << all;
 }
 

@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include "io/mesh/BuiltinMeshes.h"
 #include "model/OrbitCamera.h"
 
 #include "tests/support/TestSupport.h"
@@ -37,6 +38,13 @@ std::string effectDrawing(const std::string& model, const std::string& camera = 
            "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n<RmModelReference NAME=\"M\"/>\n"
            "<RmGLShader NAME=\"F\" PIXEL_SHADER=\"TRUE\"><RmShaderCode><![CDATA[void main() { gl_FragColor = vec4(1.0); }]]>"
            "</RmShaderCode></RmGLShader>\n</RmGLPass>\n</RmOpenGLEffect>\n</RmEffectWorkspace>\n</RENDER_MONKEY>\n";
+}
+
+// A matrix variable as RenderMonkey stored it: row by row, column-vector convention.
+std::string stored(const std::string& name, const std::string& semantic, const glm::dmat4& m) {
+    std::string text = "<RmMatrixVariable NAME=\"" + name + "\" VARIABLE_SEMANTIC=\"" + semantic + "\"";
+    for (int i = 0; i < 16; ++i) text += " VALUE_" + std::to_string(i) + "=\"" + std::to_string(m[i % 4][i / 4]) + "\"";
+    return text + "/>\n";
 }
 
 Workspace load(const test::ScratchDir& dir, const std::string& text) {
@@ -72,11 +80,6 @@ TEST(RfxCameraFraming, TheViewerCameraIsRecoveredFromAStoredViewMatrix) {
     const glm::dvec3 eye(120, 80, 300), centre(10, 20, 30);
     const glm::dmat4 view = glm::lookAt(eye, centre, glm::dvec3(0, 1, 0));
     const glm::dmat4 projection = glm::perspective(glm::radians(30.0), 1.0, 1.0, 1000.0);
-    auto stored = [](const std::string& name, const std::string& semantic, const glm::dmat4& m) {
-        std::string text = "<RmMatrixVariable NAME=\"" + name + "\" VARIABLE_SEMANTIC=\"" + semantic + "\"";
-        for (int i = 0; i < 16; ++i) text += " VALUE_" + std::to_string(i) + "=\"" + std::to_string(m[i % 4][i / 4]) + "\"";
-        return text + "/>\n";
-    };
     Workspace ws = load(dir, effectDrawing("big.obj", stored("view_matrix", "View", view) + stored("proj", "Projection", projection)));
     const OrbitCamera camera(ws.camera);
     const glm::dvec3 position = camera.position();
@@ -128,6 +131,39 @@ TEST(RfxCameraFraming, AnRmCameraOrOnlyAScreenAlignedQuadLeavesTheCameraAlone) {
     }
     Workspace quad = load(dir, effectDrawing("C:\\Program Files\\RenderMonkey\\Media\\ScreenAlignedQuad.3ds"));
     EXPECT_FLOAT_EQ(quad.camera.distance, OrbitCameraSettings{}.distance);
+}
+
+// RenderMonkey's stock Sphere.3ds, missing, is drawn as rmfx's unit sphere; through the file's
+// camera 300 units away it would be a dot, so it is scaled to half the view's height there. A
+// screen-aligned quad keeps its size, and so does a stand-in the camera is framed to.
+TEST(RfxCameraFraming, AStandInForAMissingModelIsSizedToTheFilesCamera) {
+    test::ScratchDir dir;
+    const glm::dvec3 eye(120, 80, 300);
+    const glm::dmat4 view = glm::lookAt(eye, glm::dvec3(0.0), glm::dvec3(0, 1, 0));
+    const glm::dmat4 projection = glm::perspective(glm::radians(30.0), 1.0, 1.0, 1000.0);
+    std::string text = effectDrawing("C:\\RenderMonkey\\Media\\Models\\Sphere.3ds",
+                                     stored("view", "View", view) + stored("projection", "Projection", projection));
+    const std::string quadPass =
+        "<RmModelData NAME=\"Q\" FILE_NAME=\"C:\\RenderMonkey\\Media\\Models\\ScreenAlignedQuad.3ds\"/>\n"
+        "<RmGLPass NAME=\"Quad\" PASS_INDEX=\"1\" ENABLED=\"TRUE\">\n<RmModelReference NAME=\"Q\"/>\n</RmGLPass>\n";
+    text.insert(text.find("</RmOpenGLEffect>"), quadPass);
+    Workspace ws = load(dir, text);
+    ASSERT_EQ(ws.passes.size(), 2u);
+    double unitRadius = 0.0;
+    for (const glm::vec3& p : makeMesh(BuiltinMesh::Sphere).positions) unitRadius = std::max(unitRadius, glm::length(glm::dvec3(p)));
+    const DrawCall& sphere = ws.passes[0].draw;
+    ASSERT_EQ(sphere.mesh, BuiltinMesh::Sphere);
+    EXPECT_TRUE(sphere.standIn);
+    const double wanted = 0.5 * glm::length(eye) * std::tan(glm::radians(15.0));
+    EXPECT_NEAR(sphere.scale.x * unitRadius, wanted, 1e-3 * wanted);
+    EXPECT_EQ(sphere.scale.x, sphere.scale.y);
+    EXPECT_EQ(sphere.scale.x, sphere.scale.z);
+    EXPECT_EQ(ws.passes[1].draw.mesh, BuiltinMesh::Quad);
+    EXPECT_EQ(ws.passes[1].draw.scale, glm::vec3(1.0f));
+
+    Workspace framed = load(dir, effectDrawing("C:\\RenderMonkey\\Media\\Models\\Sphere.3ds"));
+    EXPECT_EQ(framed.passes[0].draw.scale, glm::vec3(1.0f));
+    EXPECT_LT(framed.camera.distance, 10.0f);
 }
 
 }  // namespace

@@ -587,6 +587,42 @@ TEST(RfxImporter, Direct3dEffectWithHlslStatesAndADisabledAssemblyPass) {
     EXPECT_EQ(warnings.find("D3DRS_FILLMODE"), std::string::npos) << warnings;  // 3, solid: applied
 }
 
+// RenderMonkey 1.5 and before passed matrices in OpenGL's layout (its HLSL wrote
+// mul(view_proj_matrix, Pos)); 1.6 and later as D3DX does (mul(Input.Position, matViewProjection)).
+// The version that saved the file decides; assembly always reads rows (m4x4).
+TEST(RfxImporter, HlslMatrixOrderFollowsTheVersionThatSavedTheFile) {
+    for (const auto& [version, order] : {std::pair{"RenderMonkey 1.5", HlslMatrixOrder::ColumnVector},
+                                         std::pair{"RenderMonkey 1.0", HlslMatrixOrder::ColumnVector},
+                                         std::pair{"RenderMonkey 1.62", HlslMatrixOrder::RowVector},
+                                         std::pair{"RenderMonkey 1.71", HlslMatrixOrder::RowVector},
+                                         std::pair{"RenderMonkey 2.0", HlslMatrixOrder::RowVector}}) {
+        SCOPED_TRACE(version);
+        std::string text = d3dEffect(d3dStatePass(0, ""));
+        text.replace(text.find("ACTIVE_EFFECT"), 0, "XML_VERSION=\"" + std::string(version) + "\" ");
+        Result<Workspace> ws = importRfxText(text, "t.rfx", ".", {""});
+        ASSERT_TRUE(ws) << formatAll(ws.diagnostics());
+        ASSERT_EQ(ws->passes[0].shaders.size(), 1u);
+        EXPECT_EQ(ws->passes[0].shaders[0].matrixOrder, order);
+        EXPECT_EQ(formatAll(ws.diagnostics()).find("XML_VERSION"), std::string::npos) << formatAll(ws.diagnostics());
+    }
+    for (const std::string& attribute : {std::string(), std::string("XML_VERSION=\"RenderMonkey\" ")}) {
+        std::string text = d3dEffect(d3dStatePass(0, ""));
+        text.replace(text.find("ACTIVE_EFFECT"), 0, attribute);
+        Result<Workspace> ws = importRfxText(text, "t.rfx", ".", {""});
+        ASSERT_TRUE(ws) << formatAll(ws.diagnostics());
+        EXPECT_EQ(ws->passes[0].shaders[0].matrixOrder, HlslMatrixOrder::RowVector);
+        const std::string warnings = formatAll(ws.diagnostics());
+        EXPECT_NE(warnings.find("t.rfx:2: warning: <RmEffectWorkspace NAME=\"W\">: XML_VERSION " +
+                                std::string(attribute.empty() ? "missing" : "\"RenderMonkey\"") +
+                                ": HLSL semantic matrices are passed as RenderMonkey 1.6 and later did, for mul(v, M)"),
+                  std::string::npos)
+            << warnings;
+    }
+    Workspace ws = imported("d3d_hlsl.rfx");  // RenderMonkey 1.71, with a disabled assembly pass
+    EXPECT_EQ(ws.passes[0].shaders[0].matrixOrder, HlslMatrixOrder::RowVector);
+    EXPECT_EQ(ws.passes[2].shaders[0].matrixOrder, HlslMatrixOrder::ColumnVector);
+}
+
 TEST(RfxImporter, AssemblyShaderInAnEnabledPassIsAnError) {
     std::string errors = errorsOf(glEffect(
         "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n"

@@ -65,10 +65,33 @@ std::optional<OrbitCameraSettings> fromStoredView(const Variable& view, const Sp
     return orbitLookingAt(glm::vec3(eye), glm::vec3(eye + forward * std::max(along, 1e-3)), glm::vec3(up), base);
 }
 
+// A built-in mesh standing in for a missing model is unit-sized, and RenderMonkey's models and
+// cameras are about a hundred times larger: through the file's own camera it would be a dot. It is
+// scaled to span half the height of the camera's view where it stands (a radius of 41 at
+// RenderMonkey's default 200 units and 45°). Full-screen quads keep their size.
+void sizeStandInsToTheCamera(Workspace& ws) {
+    const OrbitCamera camera(ws.camera);
+    const double halfHeightPerDistance = std::tan(ws.camera.fovYDegrees * 0.5 * 3.14159265358979323846 / 180.0);
+    for (Pass& pass : ws.passes) {
+        DrawCall& draw = pass.draw;
+        if (!draw.standIn || !draw.mesh || *draw.mesh == BuiltinMesh::Quad || *draw.mesh == BuiltinMesh::FullscreenTriangle)
+            continue;
+        const Mesh mesh = makeMesh(*draw.mesh);
+        const Sphere bounds = boundsOf({&mesh});
+        const double distance = glm::length(glm::dvec3(camera.position()) - (glm::dvec3(draw.translate) + bounds.centre));
+        const double wanted = 0.5 * distance * halfHeightPerDistance;
+        if (!(bounds.radius > 0.0) || !(wanted > bounds.radius) || !std::isfinite(wanted)) continue;
+        draw.scale *= static_cast<float>(wanted / bounds.radius);
+    }
+}
+
 }  // namespace
 
 void frameDrawnModels(Workspace& ws) {
-    if (!ws.camera.where.file.empty()) return;  // an RmCamera placed it
+    if (!ws.camera.where.file.empty()) {  // an RmCamera placed it
+        sizeStandInsToTheCamera(ws);
+        return;
+    }
     std::vector<Mesh> meshes;
     for (const Pass& pass : ws.passes) {
         if (pass.draw.mesh) {
@@ -108,6 +131,7 @@ void frameDrawnModels(Workspace& ws) {
             const double reach = haveModels ? glm::length(models.centre - glm::dvec3(camera->target)) + models.radius : 0.0;
             ws.camera.farPlane = static_cast<float>(std::max<double>(ws.camera.farPlane, (ws.camera.distance + reach) * 2.0));
             ws.camera.nearPlane = static_cast<float>(std::max(ws.camera.distance * 1e-3, 1e-3));
+            sizeStandInsToTheCamera(ws);
             return;
         }
     }

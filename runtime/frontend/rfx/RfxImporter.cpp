@@ -6,6 +6,7 @@
 #include "frontend/rfx/detail/RfxCamera.h"
 #include "frontend/rfx/detail/RfxDoctype.h"
 #include "frontend/rfx/detail/RfxEffectCatalogue.h"
+#include "frontend/rfx/detail/RfxMatrixOrder.h"
 #include "frontend/rfx/detail/RfxPassReader.h"
 #include "frontend/rfx/detail/RfxRenderStates.h"
 #include "io/xml/XmlDocumentParser.h"
@@ -93,6 +94,9 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
     }
     readCamera(effect, file, diagnostics, ws);
 
+    // Only Direct3D effects have HLSL (and only they are warned about a missing version).
+    const HlslMatrixOrder hlslMatrices = effect.api == RfxApi::Direct3D ? hlslMatrixOrderOf(RfxElement(effect.workspace, file, diagnostics))
+                                                                        : HlslMatrixOrder::RowVector;
     std::vector<ReadPass> passes;
     for (const XMLElement* x = effect.element->FirstChildElement(); x; x = x->NextSiblingElement())
         if (isPassTag(x->Name())) {
@@ -102,7 +106,7 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
                 e.error("a " + std::string(rfxApiName(effect.api)) + " effect takes <" + std::string(expected) + "> passes");
                 continue;
             }
-            if (auto p = readPass(e, effect.api, scopes)) passes.push_back(std::move(*p));
+            if (auto p = readPass(e, effect.api, scopes, hlslMatrices)) passes.push_back(std::move(*p));
         }
     // Textures and renderable textures a pass declares itself join the workspace's: rmfx has one
     // namespace for them, so a second declaration of a name with another file is a warning.

@@ -320,6 +320,7 @@ Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options, c
                 out.push_back({Diagnostic::Severity::Warning, pass.draw.where, "<draw>",
                                found.error + "; drawing rmfx's built-in '" + builtinMeshName(*standIn) + "' in its place"});
             pass.draw.mesh = standIn;
+            pass.draw.standIn = true;
             pass.draw.file.clear();
         } else if (found.missing && placeholders) {
             const BuiltinMesh standIn = placeholderMeshFor(pass.draw.file);
@@ -328,6 +329,7 @@ Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options, c
                                found.error + "; drawing rmfx's built-in '" + builtinMeshName(standIn) +
                                    "' in its place (--missing-media placeholder)"});
             pass.draw.mesh = standIn;
+            pass.draw.standIn = true;
             pass.draw.file.clear();
         } else {
             out.push_back({Diagnostic::Severity::Error, pass.draw.where, "<draw>", found.error});

@@ -21,6 +21,7 @@ std::optional<ShaderSource> readAssemblyShader(const RfxElement& c, const Assemb
     s.stage = pixel ? ShaderStage::Fragment : ShaderStage::Vertex;
     s.where = c.where();
     s.dialect = ShaderDialect::Hlsl;
+    s.matrixOrder = HlslMatrixOrder::ColumnVector;  // m4x4 reads register base+i as row i
     const tinyxml2::XMLNode* text = codeElement->FirstChild();
     std::string code;
     if (text && text->ToText()) {

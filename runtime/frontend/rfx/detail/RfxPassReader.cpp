@@ -28,7 +28,8 @@ const T* findIn(const std::vector<const Declarations*>& levels, Member member, c
 
 class PassReader {
 public:
-    PassReader(const RfxElement& e, RfxApi api, const VisibleScopes& scopes) : e_(e), api_(api) {
+    PassReader(const RfxElement& e, RfxApi api, const VisibleScopes& scopes, HlslMatrixOrder hlslMatrices)
+        : e_(e), api_(api), hlslMatrices_(hlslMatrices) {
         // What the pass declares itself comes first: RenderMonkey let a pass hold its own
         // texture variables, renderable textures, models and stream maps.
         scopes_.levels.push_back(&out_.declared);
@@ -142,6 +143,7 @@ private:
             s.dialect = ShaderDialect::Hlsl;
             s.entryPoint = c.text("ENTRY_POINT").value_or("main");
             s.profile = c.text("TARGET").value_or("");
+            s.matrixOrder = hlslMatrices_;
             constantsOf(c);
         }
         const XMLElement* code = c.xml()->FirstChildElement("RmShaderCode");
@@ -354,6 +356,7 @@ private:
 
     const RfxElement& e_;
     RfxApi api_;
+    HlslMatrixOrder hlslMatrices_;
     ReadPass out_;
     VisibleScopes scopes_;  // the pass's own declarations (out_.declared), then the levels above
     Declarations passLevel_;
@@ -389,8 +392,8 @@ const ModelDeclaration* VisibleScopes::model(const std::string& name) const {
     return findIn<ModelDeclaration>(levels, &Declarations::models, name);
 }
 
-std::optional<ReadPass> readPass(const RfxElement& e, RfxApi api, const VisibleScopes& scopes) {
-    return PassReader(e, api, scopes).read();
+std::optional<ReadPass> readPass(const RfxElement& e, RfxApi api, const VisibleScopes& scopes, HlslMatrixOrder hlslMatrices) {
+    return PassReader(e, api, scopes, hlslMatrices).read();
 }
 
 }  // namespace rmfx::rfx

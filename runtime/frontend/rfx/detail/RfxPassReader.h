@@ -39,6 +39,7 @@ struct ReadPass {
 };
 
 // Shaders are left empty when the pass has none (the importer gives it the previous pass's).
-std::optional<ReadPass> readPass(const RfxElement& e, RfxApi api, const VisibleScopes& scopes);
+// HLSL shaders get `hlslMatrices` (rfx::hlslMatrixOrderOf); assembly ones are always ColumnVector.
+std::optional<ReadPass> readPass(const RfxElement& e, RfxApi api, const VisibleScopes& scopes, HlslMatrixOrder hlslMatrices);
 
 }  // namespace rmfx::rfx

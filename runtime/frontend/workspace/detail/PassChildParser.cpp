@@ -115,7 +115,7 @@ void PassChildParser::parseCull(const XMLElement* e, RasterState& s) {
 }
 
 std::optional<ShaderSource> PassChildParser::parseShader(const XMLElement* e) {
-    ElementReader r(e, file_, diagnostics_, {"stage", "file", "dialect", "entry", "profile"});
+    ElementReader r(e, file_, diagnostics_, {"stage", "file", "dialect", "entry", "profile", "matrices"});
     ShaderSource s;
     s.where = r.where();
     s.dialect = r.choice<ShaderDialect>("dialect", {{"glsl450", ShaderDialect::Glsl},
@@ -125,8 +125,12 @@ std::optional<ShaderSource> PassChildParser::parseShader(const XMLElement* e) {
                     .value_or(ShaderDialect::Glsl);
     s.entryPoint = r.string("entry").value_or("");
     s.profile = r.string("profile").value_or("");
+    s.matrixOrder = r.choice<HlslMatrixOrder>("matrices", {{"row-vector", HlslMatrixOrder::RowVector},
+                                                           {"column-vector", HlslMatrixOrder::ColumnVector}})
+                        .value_or(HlslMatrixOrder::RowVector);
     if (s.dialect != ShaderDialect::Hlsl && (r.has("entry") || r.has("profile")))
         r.error("attributes 'entry' and 'profile' apply to dialect=\"hlsl\"");
+    if (s.dialect != ShaderDialect::Hlsl && r.has("matrices")) r.error("attribute 'matrices' applies to dialect=\"hlsl\"");
     auto stage = r.choice<ShaderStage>("stage", {{"vertex", ShaderStage::Vertex}, {"fragment", ShaderStage::Fragment}});
     if (!r.has("stage")) r.error("missing attribute 'stage' (vertex or fragment)");
     auto file = r.string("file");
