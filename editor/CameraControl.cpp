@@ -5,7 +5,10 @@
 namespace rmfx::editor {
 
 void orbitByDrag(OrbitCamera& camera, glm::vec2 deltaPixels) {
-    camera.orbit(-deltaPixels.x * orbitDegreesPerPixel, deltaPixels.y * orbitDegreesPerPixel);
+    // A Direct3D camera's picture is mirrored left to right: the yaw turns the other way so that
+    // the model still follows the cursor.
+    const float side = camera.settings().convention == CameraConvention::Direct3D ? 1.0f : -1.0f;
+    camera.orbit(side * deltaPixels.x * orbitDegreesPerPixel, deltaPixels.y * orbitDegreesPerPixel);
 }
 
 void panByDrag(OrbitCamera& camera, glm::vec2 deltaPixels, int viewportHeight) {

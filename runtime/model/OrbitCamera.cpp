@@ -42,18 +42,25 @@ glm::vec3 OrbitCamera::position() const {
 
 glm::mat4 OrbitCamera::view() const {
     const glm::vec3 eye = position();
-    if (settings_.rollDegrees == 0.0f) return glm::lookAt(eye, settings_.target, glm::vec3(0, 1, 0));
-    // +Y made perpendicular to the viewing direction (pitch stays within ±89°), then turned toward
-    // the camera's right by the roll.
-    const glm::vec3 forward = glm::normalize(settings_.target - eye);
-    const glm::vec3 up = glm::normalize(glm::vec3(0, 1, 0) - forward * forward.y);
-    const glm::vec3 right = glm::cross(forward, up);
-    const float roll = glm::radians(settings_.rollDegrees);
-    return glm::lookAt(eye, settings_.target, up * std::cos(roll) + right * std::sin(roll));
+    glm::vec3 up(0, 1, 0);
+    if (settings_.rollDegrees != 0.0f) {
+        // +Y made perpendicular to the viewing direction (pitch stays within ±89°), then turned
+        // toward cross(forward, up) by the roll (OpenGL's right; Direct3D's left).
+        const glm::vec3 forward = glm::normalize(settings_.target - eye);
+        const glm::vec3 plain = glm::normalize(glm::vec3(0, 1, 0) - forward * forward.y);
+        const glm::vec3 right = glm::cross(forward, plain);
+        const float roll = glm::radians(settings_.rollDegrees);
+        up = plain * std::cos(roll) + right * std::sin(roll);
+    }
+    return settings_.convention == CameraConvention::Direct3D ? glm::lookAtLH(eye, settings_.target, up)
+                                                               : glm::lookAtRH(eye, settings_.target, up);
 }
 
 glm::mat4 OrbitCamera::projection(float aspect) const {
-    return glm::perspective(glm::radians(settings_.fovYDegrees), aspect, settings_.nearPlane, settings_.farPlane);
+    const float fov = glm::radians(settings_.fovYDegrees);
+    return settings_.convention == CameraConvention::Direct3D
+               ? glm::perspectiveLH_ZO(fov, aspect, settings_.nearPlane, settings_.farPlane)
+               : glm::perspectiveRH_NO(fov, aspect, settings_.nearPlane, settings_.farPlane);
 }
 
 void OrbitCamera::orbit(float yawDegrees, float pitchDegrees) {

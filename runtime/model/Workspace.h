@@ -273,6 +273,15 @@ struct Output {
     SourceLocation where;
 };
 
+// The matrices a camera gives (View, Projection and every semantic made from them).
+enum class CameraConvention {
+    OpenGL,    // right-handed view looking down -z, clip depth -w…w (gluLookAt, gluPerspective)
+    // Left-handed view looking down +z, clip depth 0…w (D3DXMatrixLookAtLH, PerspectiveFovLH):
+    // what RenderMonkey gave Direct3D effects, whose shaders may rely on view-space z growing away
+    // from the eye. For one eye, target and up the picture is OpenGL's mirrored left to right.
+    Direct3D,
+};
+
 struct OrbitCameraSettings {
     glm::vec3 target{0.0f};
     float distance = 4.0f;
@@ -283,6 +292,7 @@ struct OrbitCameraSettings {
     // About the viewing direction: positive turns the camera's up from +Y's direction toward its
     // right (the picture turns the other way).
     float rollDegrees = 0.0f;
+    CameraConvention convention = CameraConvention::OpenGL;
     SourceLocation where;
 };
 

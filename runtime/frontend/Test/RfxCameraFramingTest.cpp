@@ -47,6 +47,17 @@ std::string stored(const std::string& name, const std::string& semantic, const g
     return text + "/>\n";
 }
 
+// The same as a Direct3D effect, saved by RenderMonkey 1.71.
+std::string direct3dEffectDrawing(const std::string& model, const std::string& camera = "") {
+    return "<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\" ACTIVE_EFFECT=\"W.E\" XML_VERSION=\"RenderMonkey 1.71\">\n"
+           "<RmModelData NAME=\"M\" FILE_NAME=\"" + model + "\"/>\n"
+           "<RmDirectXEffect NAME=\"E\" API=\"D3D\">\n" + camera +
+           "<RmPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n<RmModelReference NAME=\"M\"/>\n"
+           "<RmHLSLShader NAME=\"F\" PIXEL_SHADER=\"TRUE\" TARGET=\"ps_2_0\" ENTRY_POINT=\"main\"><RmShaderCode><![CDATA["
+           "float4 main() : COLOR { return 1; }]]></RmShaderCode></RmHLSLShader>\n</RmPass>\n</RmDirectXEffect>\n"
+           "</RmEffectWorkspace>\n</RENDER_MONKEY>\n";
+}
+
 Workspace load(const test::ScratchDir& dir, const std::string& text) {
     Result<Workspace> loaded = loadWorkspace(dir.write("effect.rfx", text));
     EXPECT_TRUE(loaded.ok()) << formatAll(loaded.diagnostics());
@@ -131,6 +142,62 @@ TEST(RfxCameraFraming, AnRmCameraOrOnlyAScreenAlignedQuadLeavesTheCameraAlone) {
     }
     Workspace quad = load(dir, effectDrawing("C:\\Program Files\\RenderMonkey\\Media\\ScreenAlignedQuad.3ds"));
     EXPECT_FLOAT_EQ(quad.camera.distance, OrbitCameraSettings{}.distance);
+}
+
+// A Direct3D effect's viewer is left-handed and looks down +z (D3DXMatrixLookAtLH): its stored
+// View's third row is the forward direction, and the camera recovered from it is a Direct3D one.
+TEST(RfxCameraFraming, ADirect3DViewerCameraIsRecoveredFromItsLeftHandedView) {
+    test::ScratchDir dir;
+    dir.write("big.obj", kBigCube);
+    const glm::dvec3 eye(120, 80, -300), centre(10, 20, 30);
+    const glm::dmat4 view = glm::lookAtLH(eye, centre, glm::dvec3(0, 1, 0));
+    const glm::dmat4 projection = glm::perspectiveLH_ZO(glm::radians(30.0), 1.0, 1.0, 1000.0);
+    Workspace ws = load(dir, direct3dEffectDrawing("big.obj", stored("view", "View", view) + stored("proj", "Projection", projection)));
+    EXPECT_EQ(ws.camera.convention, CameraConvention::Direct3D);
+    const OrbitCamera camera(ws.camera);
+    EXPECT_NEAR(glm::length(glm::dvec3(camera.position()) - eye), 0.0, 1e-2);
+    EXPECT_NEAR(glm::length(glm::dvec3(ws.camera.target) - centre), 0.0, 1e-2);
+    EXPECT_NEAR(ws.camera.fovYDegrees, 30.0, 1e-3);
+    // The matrices rmfx gives the effect are the ones RenderMonkey stored.
+    const glm::dmat4 rebuilt = glm::dmat4(camera.view());
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) EXPECT_NEAR(rebuilt[c][r], view[c][r], 1e-3) << "view column " << c << " row " << r;
+
+    // Without a stored camera a Direct3D effect looks from -z, as RenderMonkey's viewer did.
+    Workspace plain = load(dir, direct3dEffectDrawing("big.obj"));
+    EXPECT_EQ(plain.camera.convention, CameraConvention::Direct3D);
+    EXPECT_EQ(plain.camera.yawDegrees, 180.0f);
+    EXPECT_EQ(plain.camera.pitchDegrees, 0.0f);
+    EXPECT_LT(OrbitCamera(plain.camera).position().z, 30.0f - 50.0f * std::sqrt(3.0f));
+    EXPECT_EQ(load(dir, effectDrawing("big.obj")).camera.convention, CameraConvention::OpenGL);
+}
+
+// Files that kept only ViewProjection (P·V): the camera comes back from it, in either convention,
+// with the field of view; an orthographic one (no perspective row) is left to the framing.
+TEST(RfxCameraFraming, TheViewerCameraIsRecoveredFromAStoredViewProjectionAlone) {
+    test::ScratchDir dir;
+    dir.write("big.obj", kBigCube);
+    const glm::dvec3 centre(10, 20, 30);
+    for (const bool direct3d : {false, true}) {
+        SCOPED_TRACE(direct3d ? "Direct3D" : "OpenGL");
+        const glm::dvec3 eye(-150, 90, direct3d ? -260 : 260);
+        const glm::dmat4 viewProjection =
+            direct3d ? glm::perspectiveLH_ZO(glm::radians(50.0), 1.0, 1.0, 1000.0) * glm::lookAtLH(eye, centre, glm::dvec3(0, 1, 0))
+                     : glm::perspectiveRH_NO(glm::radians(50.0), 1.0, 1.0, 1000.0) * glm::lookAtRH(eye, centre, glm::dvec3(0, 1, 0));
+        const std::string variable = stored("view_proj_matrix", "ViewProjection", viewProjection);
+        Workspace ws = load(dir, direct3d ? direct3dEffectDrawing("big.obj", variable) : effectDrawing("big.obj", variable));
+        const OrbitCamera camera(ws.camera);
+        EXPECT_NEAR(glm::length(glm::dvec3(camera.position()) - eye), 0.0, 0.05);
+        EXPECT_NEAR(glm::length(glm::dvec3(ws.camera.target) - centre), 0.0, 0.05);
+        EXPECT_NEAR(ws.camera.fovYDegrees, 50.0, 1e-3);
+        EXPECT_NEAR(ws.camera.rollDegrees, 0.0, 1e-3);
+        const glm::dmat4 rebuilt = glm::dmat4(camera.projection(1.0f)) * glm::dmat4(camera.view());
+        const glm::dvec4 corner = rebuilt * glm::dvec4(60, 70, 80, 1), want = viewProjection * glm::dvec4(60, 70, 80, 1);
+        EXPECT_NEAR(corner.x / corner.w, want.x / want.w, 1e-4);
+        EXPECT_NEAR(corner.y / corner.w, want.y / want.w, 1e-4);
+    }
+    Workspace ortho = load(dir, effectDrawing("big.obj", stored("vp", "ViewProjection", glm::orthoRH_NO(-1.0, 1.0, -1.0, 1.0, 1.0, 10.0))));
+    EXPECT_FLOAT_EQ(ortho.camera.target.x, 10.0f);  // framed instead
 }
 
 // RenderMonkey's stock Sphere.3ds, missing, is drawn as rmfx's unit sphere; through the file's

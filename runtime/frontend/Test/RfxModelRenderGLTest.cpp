@@ -239,6 +239,101 @@ TEST_F(RfxModelRenderGLTest, ModelFilesDrawWithTheirOwnCoordinatesTexcoordsAndWi
     }
 }
 
+// A Direct3D effect saved by RenderMonkey `version` drawing FILE_NAME through an RmCamera with
+// World, View and Projection chained in the shader (the tutorial pattern), depth-tested, coloured
+// by its texture coordinates: (u, v, 0.5).
+std::string direct3dTexcoordEffect(const std::string& modelFile, const std::string& version) {
+    const bool columnVector = version == "RenderMonkey 1.5";
+    const std::string transform = columnVector ? "o.Pos = mul(matProjection, mul(matView, mul(matWorld, Pos)));"
+                                               : "o.Pos = mul(mul(mul(Pos, matWorld), matView), matProjection);";
+    auto matrix = [](const std::string& name, const std::string& semantic) {
+        std::string text = R"(   <RmMatrixVariable NAME=")" + name + R"(" API="" ARTIST_EDITABLE="FALSE" VARIABLE_SEMANTIC=")" + semantic + "\"";
+        for (int i = 0; i < 16; ++i) text += " VALUE_" + std::to_string(i) + "=\"" + (i % 5 == 0 ? "1" : "0") + "\"";
+        return text + "/>";
+    };
+    return lines({
+        R"(<?xml version="1.0" encoding="UTF-8" standalone="yes"?>)",
+        "<RENDER_MONKEY>",
+        R"( <RmEffectWorkspace NAME="Tests" API="" ACTIVE_EFFECT="Tests.Model" VALIDATION_STRING="" XML_VERSION=")" + version + "\">",
+        R"(  <RmModelData NAME="Shape" API="" FILE_NAME="C:\Media\Models\)" + modelFile + R"(" ORIENTATION="0"/>)",
+        R"(  <RmDirectXEffect NAME="Model" API="D3D" ACTIVE_CAMERA="Side">)",
+        R"(   <RmCamera NAME="Side" API="" CAMERA_POSITION_X="1.6" CAMERA_POSITION_Y="1.2" CAMERA_POSITION_Z="2.0" LOOK_AT_VECTOR_X="0.3" LOOK_AT_VECTOR_Y="0.2" LOOK_AT_VECTOR_Z="0.1" UP_VECTOR_X="0.0" UP_VECTOR_Y="1.0" UP_VECTOR_Z="0.0" FOV="40.0" NEAR_CLIP_PLANE="0.1" FAR_CLIP_PLANE="20.0"/>)",
+        matrix("matWorld", "World"),
+        matrix("matView", "View"),
+        matrix("matProjection", "Projection"),
+        R"(   <RmPass NAME="Shade" API="D3D" PASS_INDEX="0" ENABLED="TRUE">)",
+        R"(    <RmModelReference NAME="Shape" API=""/>)",
+        R"(    <RmRenderStateBlock NAME="States" API="D3D">)",
+        R"(     <RmState NAME="D3DRS_ZENABLE" API="D3D" STATE="7" VALUE="1" USAGE="0"/>)",
+        R"(     <RmState NAME="D3DRS_ZWRITEENABLE" API="D3D" STATE="14" VALUE="1" USAGE="0"/>)",
+        R"(     <RmState NAME="D3DRS_CULLMODE" API="D3D" STATE="22" VALUE="1" USAGE="0"/>)",
+        R"(    </RmRenderStateBlock>)",
+        R"(    <RmHLSLShader NAME="Vertex Shader" API="D3D" PIXEL_SHADER="FALSE" TARGET="vs_2_0" ENTRY_POINT="vs_main"><RmShaderCode TYPE="TEXT"><![CDATA[)",
+        "float4x4 matWorld; float4x4 matView; float4x4 matProjection;",
+        "struct VS_OUTPUT { float4 Pos : POSITION; float2 Tex : TEXCOORD0; };",
+        "VS_OUTPUT vs_main(float4 Pos : POSITION, float2 Tex : TEXCOORD0) {",
+        "   VS_OUTPUT o; " + transform + " o.Tex = Tex; return o;",
+        "}]]></RmShaderCode></RmHLSLShader>",
+        R"(    <RmHLSLShader NAME="Pixel Shader" API="D3D" PIXEL_SHADER="TRUE" TARGET="ps_2_0" ENTRY_POINT="ps_main"><RmShaderCode TYPE="TEXT"><![CDATA[)",
+        "float4 ps_main(float2 Tex : TEXCOORD0) : COLOR0 { return float4(Tex, 0.5, 1.0); }]]></RmShaderCode></RmHLSLShader>",
+        "   </RmPass>",
+        "  </RmDirectXEffect>",
+        " </RmEffectWorkspace>",
+        "</RENDER_MONKEY>",
+    });
+}
+
+class RfxDirect3DModelGLTest : public GlTest {};
+
+// RenderMonkey gave Direct3D effects D3DX's matrices: a left-handed view looking down +z
+// (D3DXMatrixLookAtLH) and a projection to depth 0…w (D3DXMatrixPerspectiveFovLH), written out
+// here from their definitions in float64. The picture is the mirror image of OpenGL's for the same
+// camera, so the asymmetric boxes, coloured by texture coordinates, show a wrong handedness, a
+// wrong multiplication order (the file's version says which) or a wrong depth range.
+TEST_F(RfxDirect3DModelGLTest, ADirect3DEffectSeesItsModelThroughD3DXsLeftHandedMatrices) {
+    const Mesh boxes = asymmetricBoxes();
+    const int size = 96;
+    const glm::dvec3 eye(1.6, 1.2, 2.0), at(0.3, 0.2, 0.1), up(0, 1, 0);
+    const glm::dvec3 zAxis = glm::normalize(at - eye), xAxis = glm::normalize(glm::cross(up, zAxis)),
+                     yAxis = glm::cross(zAxis, xAxis);
+    glm::dmat4 view(1.0);  // rows: the axes, each with -axis·eye
+    for (int c = 0; c < 3; ++c) {
+        view[c][0] = xAxis[c];
+        view[c][1] = yAxis[c];
+        view[c][2] = zAxis[c];
+    }
+    view[3] = glm::dvec4(-glm::dot(xAxis, eye), -glm::dot(yAxis, eye), -glm::dot(zAxis, eye), 1.0);
+    const double yScale = 1.0 / std::tan(40.0 * std::numbers::pi / 360.0), zn = 0.1, zf = 20.0;
+    glm::dmat4 projection(0.0);
+    projection[0][0] = yScale;  // aspect 1
+    projection[1][1] = yScale;
+    projection[2][2] = zf / (zf - zn);
+    projection[3][2] = -zn * zf / (zf - zn);
+    projection[2][3] = 1.0;
+    const MeshRayCast cast(boxes, glm::dmat4(1.0), view, projection, {size, size});
+    auto shade = [](const SurfaceHit& hit) { return ExpectedRange(glm::dvec4(hit.texcoord, 0.5, 1.0)); };
+    auto oneFace = [&](const SurfaceHit& hit, int i, int j) {
+        for (double dx : {-0.35, 0.35})
+            for (double dy : {-0.35, 0.35}) {
+                const std::optional<SurfaceHit> corner = cast.at(i + 0.5 + dx, j + 0.5 + dy);
+                if (!corner || corner->triangle / 2 != hit.triangle / 2) return false;
+            }
+        return true;
+    };
+    for (const std::string version : {"RenderMonkey 1.71", "RenderMonkey 1.5"}) {
+        SCOPED_TRACE(version);
+        ScratchDir media;
+        write3ds(media / "Shape.3ds", boxes);
+        const std::filesystem::path file = media.write("model.rfx", direct3dTexcoordEffect("Shape.3ds", version));
+        WorkspaceLoadOptions load;
+        load.media.searchPath = {media.path()};
+        Result<Workspace> loaded = loadWorkspace(file, {}, load);
+        ASSERT_TRUE(loaded.ok()) << formatAll(loaded.diagnostics());
+        EXPECT_EQ(loaded->camera.convention, CameraConvention::Direct3D);
+        renderAndCompare(std::make_unique<Workspace>(std::move(*loaded)), {cast, shade, 1000, oneFace});
+    }
+}
+
 // RenderMonkey's ScreenAlignedQuad.3ds lies in its file's xy plane, and the full-screen passes
 // that draw it place its corners with sign(gl_Vertex.xy): rotated to y = 0 it would draw nothing.
 TEST_F(RfxModelRenderGLTest, AScreenAlignedQuadFromA3dsFileCoversTheScreen) {

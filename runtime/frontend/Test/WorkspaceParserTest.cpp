@@ -417,6 +417,19 @@ TEST(WorkspaceParser, CameraRanges) {
               (Lines{at + "2: error: <camera>: attribute 'fov' must lie between 0 and 180 degrees"}));
     EXPECT_EQ(errorsOf(workspace({"  <camera near=\"1\" far=\"0.5\"/>"})),
               (Lines{at + "2: error: <camera>: need 0 < near < far"}));
+    EXPECT_EQ(errorsOf(workspace({"  <camera convention=\"vulkan\"/>"})),
+              (Lines{at + "2: error: <camera>: attribute 'convention': 'vulkan' is not one of: opengl, direct3d"}));
+}
+
+// convention="direct3d" gives D3DX's matrices (left-handed, depth 0…w), as imported Direct3D
+// effects get; OpenGL's is the default.
+TEST(WorkspaceParser, CameraConvention) {
+    Workspace ws = parsedOk(lines({"<workspace version=\"1\">", "  <camera convention=\"direct3d\"/>",
+                                   "  <camera name=\"side\"/>", "  <pass name=\"p\"><shader stage=\"fragment\">void main() {}</shader></pass>",
+                                   "</workspace>"}));
+    EXPECT_EQ(ws.camera.convention, CameraConvention::Direct3D);
+    ASSERT_NE(ws.findCamera("side"), nullptr);
+    EXPECT_EQ(ws.findCamera("side")->settings.convention, CameraConvention::OpenGL);
 }
 
 TEST(WorkspaceParser, NoPassIsAnErrorOnTheWorkspaceElement) {

@@ -47,7 +47,8 @@ const Variable* stored(const Workspace& ws, const std::string& semantic, ValueTy
 // RenderMonkey's viewer camera as it saved it in a View matrix (VARIABLE_SEMANTIC="View"): stored
 // row by row in the column-vector convention, which rmfx reads with VALUE_0…3 as the first column,
 // so element (row i, column j) is data[4i + j]. The eye is -Rᵀt; the view axis is the third row,
-// looked along toward the models (OpenGL's view looks down -z, Direct3D's down +z).
+// looked along toward the models (OpenGL's view looks down -z, Direct3D's down +z: `base`'s
+// convention says which comes first).
 std::optional<OrbitCameraSettings> fromStoredView(const Variable& view, const Sphere& models, bool haveModels,
                                                   const OrbitCameraSettings& base) {
     const auto& m = view.value.data;
@@ -56,7 +57,8 @@ std::optional<OrbitCameraSettings> fromStoredView(const Variable& view, const Sp
     for (int j = 0; j < 3; ++j)
         for (int i = 0; i < 3; ++i) eye[j] -= r(i, j) * r(i, 3);
     const glm::dvec3 up(r(1, 0), r(1, 1), r(1, 2));
-    glm::dvec3 forward = -glm::dvec3(r(2, 0), r(2, 1), r(2, 2));
+    glm::dvec3 forward = glm::dvec3(r(2, 0), r(2, 1), r(2, 2));
+    if (base.convention == CameraConvention::OpenGL) forward = -forward;
     if (!(glm::length(forward) > 1e-6) || !std::isfinite(eye.x + eye.y + eye.z)) return std::nullopt;
     forward = glm::normalize(forward);
     const glm::dvec3 toModels = models.centre - eye;
@@ -83,6 +85,39 @@ void sizeStandInsToTheCamera(Workspace& ws) {
         if (!(bounds.radius > 0.0) || !(wanted > bounds.radius) || !std::isfinite(wanted)) continue;
         draw.scale *= static_cast<float>(wanted / bounds.radius);
     }
+}
+
+// The camera from a stored ViewProjection alone (P·V, a symmetric perspective): in either
+// convention its last row is w = forward·(p - eye), and its first two rows are P00·right·(p - eye)
+// and P11·up·(p - eye), right being the picture's right. So forward, right and up are those rows'
+// directions (right and up kept square to forward), the eye solves the three, and P11 is the
+// field of view. A matrix whose last row is no direction (an orthographic one) gives nothing.
+std::optional<OrbitCameraSettings> fromStoredViewProjection(const Variable& viewProjection, const Sphere& models,
+                                                            bool haveModels, const OrbitCameraSettings& base) {
+    const auto& m = viewProjection.value.data;
+    auto row = [&](int i) {
+        return glm::dvec4(m[static_cast<size_t>(4 * i)], m[static_cast<size_t>(4 * i + 1)], m[static_cast<size_t>(4 * i + 2)],
+                          m[static_cast<size_t>(4 * i + 3)]);
+    };
+    const glm::dvec4 x = row(0), y = row(1), w = row(3);
+    const double wLength = glm::length(glm::dvec3(w));
+    if (!(wLength > 1e-9) || !std::isfinite(wLength)) return std::nullopt;
+    const glm::dvec3 forward = glm::dvec3(w) / wLength;
+    glm::dvec3 right = glm::dvec3(x) - forward * glm::dot(glm::dvec3(x), forward);
+    glm::dvec3 up = glm::dvec3(y) - forward * glm::dot(glm::dvec3(y), forward);
+    const double p00 = glm::length(right), p11 = glm::length(up);
+    if (!(p00 > 1e-9) || !(p11 > 1e-9) || !std::isfinite(p00 + p11)) return std::nullopt;
+    right /= p00;
+    up /= p11;
+    // w = wLength·forward·(p - eye) and x = p00·right·(p - eye): each row's constant gives the eye
+    // along its axis.
+    const glm::dvec3 eye = right * (-x.w / p00) + up * (-y.w / p11) + forward * (-w.w / wLength);
+    if (!std::isfinite(eye.x + eye.y + eye.z)) return std::nullopt;
+    // The orbit's centre: where the view passes the models (the origin's depth without them).
+    const double along = std::max(glm::dot((haveModels ? models.centre : glm::dvec3(0.0)) - eye, forward), 1e-3 * glm::length(eye) + 1e-3);
+    std::optional<OrbitCameraSettings> s = orbitLookingAt(glm::vec3(eye), glm::vec3(eye + forward * along), glm::vec3(up), base);
+    if (s) s->fovYDegrees = static_cast<float>(2.0 * std::atan(1.0 / p11) * 180.0 / 3.14159265358979323846);
+    return s;
 }
 
 }  // namespace
@@ -128,6 +163,16 @@ void frameDrawnModels(Workspace& ws) {
                 const double p11 = projection->value.data[5];
                 if (p11 > 1e-6 && std::isfinite(p11)) ws.camera.fovYDegrees = static_cast<float>(2.0 * std::atan(1.0 / p11) * 180.0 / 3.14159265358979323846);
             }
+            const double reach = haveModels ? glm::length(models.centre - glm::dvec3(camera->target)) + models.radius : 0.0;
+            ws.camera.farPlane = static_cast<float>(std::max<double>(ws.camera.farPlane, (ws.camera.distance + reach) * 2.0));
+            ws.camera.nearPlane = static_cast<float>(std::max(ws.camera.distance * 1e-3, 1e-3));
+            sizeStandInsToTheCamera(ws);
+            return;
+        }
+    }
+    if (const Variable* viewProjection = stored(ws, "ViewProjection", ValueType::Mat4)) {
+        if (auto camera = fromStoredViewProjection(*viewProjection, models, haveModels, ws.camera)) {
+            ws.camera = *camera;
             const double reach = haveModels ? glm::length(models.centre - glm::dvec3(camera->target)) + models.radius : 0.0;
             ws.camera.farPlane = static_cast<float>(std::max<double>(ws.camera.farPlane, (ws.camera.distance + reach) * 2.0));
             ws.camera.nearPlane = static_cast<float>(std::max(ws.camera.distance * 1e-3, 1e-3));

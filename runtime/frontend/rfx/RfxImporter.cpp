@@ -55,7 +55,9 @@ void readCamera(const RfxEffectEntry& effect, const std::string& file, Diagnosti
     if (!active.empty() && chosenName != active)
         e.warning("ACTIVE_CAMERA '" + active + "' names no <RmCamera> of the effect; " +
                   (chosen ? "using the first one, '" + chosenName + "'" : "rmfx's default camera is used"));
+    const CameraConvention convention = ws.camera.convention;
     if (chosen) ws.camera = orbitFromRmCamera(RfxElement(chosen, file, diagnostics));
+    ws.camera.convention = convention;
     // Every other camera, for the passes that look through it (RmCameraReference); a pass that
     // names the active one uses the camera the viewer moves.
     for (const XMLElement* c = effect.element->FirstChildElement("RmCamera"); c; c = c->NextSiblingElement("RmCamera")) {
@@ -63,6 +65,7 @@ void readCamera(const RfxEffectEntry& effect, const std::string& file, Diagnosti
         RfxElement camera(c, file, diagnostics);
         if (ws.findCamera(camera.name())) continue;
         ws.cameras.push_back({camera.name(), orbitFromRmCamera(camera)});
+        ws.cameras.back().settings.convention = convention;
     }
 }
 
@@ -91,6 +94,13 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
         addVisible(ws.variables, level->variables);
         addVisible(ws.textures, level->textures);
         addVisible(ws.targets, level->targets);
+    }
+    if (effect.api == RfxApi::Direct3D) {
+        // RenderMonkey's Direct3D viewer: left-handed, from -z toward the origin (the View that
+        // files saved without moving it holds: identity rotation, the eye 200 units down -z).
+        ws.camera.convention = CameraConvention::Direct3D;
+        ws.camera.yawDegrees = 180.0f;
+        ws.camera.pitchDegrees = 0.0f;
     }
     readCamera(effect, file, diagnostics, ws);
 

@@ -112,7 +112,8 @@ private:
     }
 
     void parseCamera(const XMLElement* e, OrbitCameraSettings& c) {
-        ElementReader r(e, file_, diagnostics_, {"name", "target", "distance", "yaw", "pitch", "roll", "fov", "near", "far"});
+        ElementReader r(e, file_, diagnostics_, {"name", "target", "distance", "yaw", "pitch", "roll", "fov", "near", "far",
+                                                        "convention"});
         c.where = r.where();
         if (e->Attribute("name")) (void)r.identifier("name");
         c.rollDegrees = r.number("roll").value_or(c.rollDegrees);
@@ -123,6 +124,9 @@ private:
         c.fovYDegrees = r.number("fov").value_or(c.fovYDegrees);
         c.nearPlane = r.number("near").value_or(c.nearPlane);
         c.farPlane = r.number("far").value_or(c.farPlane);
+        c.convention = r.choice<CameraConvention>("convention", {{"opengl", CameraConvention::OpenGL},
+                                                                 {"direct3d", CameraConvention::Direct3D}})
+                           .value_or(c.convention);
         if (c.distance <= 0) r.error("attribute 'distance' must be greater than 0");
         if (c.fovYDegrees <= 0 || c.fovYDegrees >= 180) r.error("attribute 'fov' must lie between 0 and 180 degrees");
         if (c.nearPlane <= 0 || c.farPlane <= c.nearPlane) r.error("need 0 < near < far");
