@@ -14,10 +14,12 @@ Diagnostics drawError(const DrawCall& draw, const std::string& message) {
 
 Result<const GlMesh*> GlMeshCache::meshFor(const Workspace& ws, const DrawCall& draw) {
     std::string key = draw.mesh ? std::string("builtin:") + builtinMeshName(*draw.mesh) : "file:" + draw.file;
+    if (draw.mesh && draw.meshScale != 1.0f) key += "@" + std::to_string(draw.meshScale);
     if (auto it = meshes_.find(key); it != meshes_.end()) return static_cast<const GlMesh*>(it->second.get());
     Mesh mesh;
     if (draw.mesh) {
         mesh = makeMesh(*draw.mesh);
+        for (glm::vec3& p : mesh.positions) p *= draw.meshScale;
     } else {
         auto loaded = loadModel(ws.folder / draw.file);
         if (!loaded) return Result<const GlMesh*>::failure(drawError(draw, loaded.error()));

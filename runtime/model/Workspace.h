@@ -207,8 +207,11 @@ struct DrawCall {
     glm::vec3 rotateDegrees{0.0f};    // applied X, then Y, then Z
     glm::vec3 scale{1.0f};
     // The built-in mesh stands in for a model file that was not found (io/media's stock models
-    // and placeholders): an imported effect sizes it to its camera (frontend/rfx/RfxCameraFraming).
+    // and placeholders): an imported effect sizes it to its camera (frontend/rfx/RfxCameraFraming)
+    // by scaling its vertex positions, as the model file's own coordinates would be, since
+    // RenderMonkey's shaders often apply no World matrix.
     bool standIn = false;
+    float meshScale = 1.0f;
     SourceLocation where;
 };
 

@@ -222,14 +222,13 @@ TEST(RfxCameraFraming, AStandInForAMissingModelIsSizedToTheFilesCamera) {
     ASSERT_EQ(sphere.mesh, BuiltinMesh::Sphere);
     EXPECT_TRUE(sphere.standIn);
     const double wanted = 0.5 * glm::length(eye) * std::tan(glm::radians(15.0));
-    EXPECT_NEAR(sphere.scale.x * unitRadius, wanted, 1e-3 * wanted);
-    EXPECT_EQ(sphere.scale.x, sphere.scale.y);
-    EXPECT_EQ(sphere.scale.x, sphere.scale.z);
+    EXPECT_NEAR(sphere.meshScale * unitRadius, wanted, 1e-3 * wanted);
+    EXPECT_EQ(sphere.scale, glm::vec3(1.0f));  // the vertices, not World: shaders may apply none
     EXPECT_EQ(ws.passes[1].draw.mesh, BuiltinMesh::Quad);
-    EXPECT_EQ(ws.passes[1].draw.scale, glm::vec3(1.0f));
+    EXPECT_EQ(ws.passes[1].draw.meshScale, 1.0f);
 
     Workspace framed = load(dir, effectDrawing("C:\\RenderMonkey\\Media\\Models\\Sphere.3ds"));
-    EXPECT_EQ(framed.passes[0].draw.scale, glm::vec3(1.0f));
+    EXPECT_EQ(framed.passes[0].draw.meshScale, 1.0f);
     EXPECT_LT(framed.camera.distance, 10.0f);
 }
 

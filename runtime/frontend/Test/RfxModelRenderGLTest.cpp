@@ -8,6 +8,7 @@
 // holding them (docs/rendermonkey.md says where they come from); without it those tests are skipped.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -332,6 +333,61 @@ TEST_F(RfxDirect3DModelGLTest, ADirect3DEffectSeesItsModelThroughD3DXsLeftHanded
         EXPECT_EQ(loaded->camera.convention, CameraConvention::Direct3D);
         renderAndCompare(std::make_unique<Workspace>(std::move(*loaded)), {cast, shade, 1000, oneFace});
     }
+}
+
+// RenderMonkey's default Direct3D viewer, as a file saved without moving it keeps it: View with an
+// identity rotation and the eye 200 units down -z, a 45° Projection. The stock Sphere.3ds is
+// missing and rmfx's unit sphere stands in, its vertices scaled to half the view's height at the
+// sphere (the shader applies no World matrix, as many of RenderMonkey's do not): radius
+// 0.5 · 200 · tan(22.5°).
+TEST_F(RfxDirect3DModelGLTest, AMissingStockModelIsDrawnAtTheSizeOfTheFilesCamera) {
+    auto matrix = [](const std::string& name, const std::string& semantic, const std::array<double, 16>& rows) {
+        std::string text = R"(   <RmMatrixVariable NAME=")" + name + R"(" API="" ARTIST_EDITABLE="FALSE" VARIABLE_SEMANTIC=")" + semantic + "\"";
+        for (int i = 0; i < 16; ++i) text += " VALUE_" + std::to_string(i) + "=\"" + std::to_string(rows[size_t(i)]) + "\"";
+        return text + "/>";
+    };
+    const double yScale = 1.0 / std::tan(std::numbers::pi / 8.0), zn = 1.0, zf = 1000.0;
+    const std::string effect = lines({
+        "<RENDER_MONKEY>",
+        R"( <RmEffectWorkspace NAME="Tests" API="" ACTIVE_EFFECT="Tests.Model" XML_VERSION="RenderMonkey 1.71">)",
+        R"(  <RmModelData NAME="Shape" API="" FILE_NAME="C:\Program Files (x86)\AMD\RenderMonkey 1.82\Examples\Media\Models\Sphere.3ds"/>)",
+        R"(  <RmDirectXEffect NAME="Model" API="D3D">)",
+        matrix("matView", "View", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 200, 0, 0, 0, 1}),
+        matrix("matProjection", "Projection", {yScale, 0, 0, 0, 0, yScale, 0, 0, 0, 0, zf / (zf - zn), -zn * zf / (zf - zn), 0, 0, 1, 0}),
+        matrix("matViewProjection", "ViewProjection", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}),
+        R"(   <RmPass NAME="Shade" API="D3D" PASS_INDEX="0" ENABLED="TRUE">)",
+        R"(    <RmModelReference NAME="Shape" API=""/>)",
+        R"(    <RmHLSLShader NAME="Vertex Shader" API="D3D" PIXEL_SHADER="FALSE" TARGET="vs_2_0" ENTRY_POINT="vs_main"><RmShaderCode TYPE="TEXT"><![CDATA[)",
+        "float4x4 matViewProjection;",
+        "float4 vs_main(float4 Pos : POSITION) : POSITION { return mul(Pos, matViewProjection); }]]></RmShaderCode></RmHLSLShader>",
+        R"(    <RmHLSLShader NAME="Pixel Shader" API="D3D" PIXEL_SHADER="TRUE" TARGET="ps_2_0" ENTRY_POINT="ps_main"><RmShaderCode TYPE="TEXT"><![CDATA[)",
+        "float4 ps_main() : COLOR0 { return float4(1.0, 0.5, 0.25, 1.0); }]]></RmShaderCode></RmHLSLShader>",
+        "   </RmPass>",
+        "  </RmDirectXEffect>",
+        " </RmEffectWorkspace>",
+        "</RENDER_MONKEY>",
+    });
+    ScratchDir media;
+    Result<Workspace> loaded = loadWorkspace(media.write("sphere.rfx", effect));
+    ASSERT_TRUE(loaded.ok()) << formatAll(loaded.diagnostics());
+    const std::string warnings = formatAll(loaded.diagnostics());
+    EXPECT_NE(warnings.find("drawing rmfx's built-in 'sphere' in its place"), std::string::npos) << warnings;
+
+    Mesh sphere = makeMesh(BuiltinMesh::Sphere);
+    double unitRadius = 0.0;
+    for (const glm::vec3& p : sphere.positions) unitRadius = std::max(unitRadius, glm::length(glm::dvec3(p)));
+    const double scale = 0.5 * 200.0 * std::tan(std::numbers::pi / 8.0) / unitRadius;
+    for (glm::vec3& p : sphere.positions) p = glm::vec3(glm::dvec3(p) * scale);
+    glm::dmat4 view(1.0), projection(0.0);
+    view[3][2] = 200.0;  // the eye at (0, 0, -200), looking down +z
+    projection[0][0] = projection[1][1] = yScale;
+    projection[2][2] = zf / (zf - zn);
+    projection[3][2] = -zn * zf / (zf - zn);
+    projection[2][3] = 1.0;
+    const int size = 64;
+    const MeshRayCast cast(sphere, glm::dmat4(1.0), view, projection, {size, size});
+    auto shade = [](const SurfaceHit&) { return ExpectedRange(glm::dvec4(1.0, 0.5, 0.25, 1.0)); };
+    renderAndCompare(std::make_unique<Workspace>(std::move(*loaded)), {cast, shade, 600});
 }
 
 // RenderMonkey's ScreenAlignedQuad.3ds lies in its file's xy plane, and the full-screen passes

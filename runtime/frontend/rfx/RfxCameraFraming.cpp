@@ -80,10 +80,10 @@ void sizeStandInsToTheCamera(Workspace& ws) {
             continue;
         const Mesh mesh = makeMesh(*draw.mesh);
         const Sphere bounds = boundsOf({&mesh});
-        const double distance = glm::length(glm::dvec3(camera.position()) - (glm::dvec3(draw.translate) + bounds.centre));
+        const double distance = glm::length(glm::dvec3(camera.position()) - (glm::dvec3(draw.translate) + bounds.centre * glm::dvec3(draw.scale)));
         const double wanted = 0.5 * distance * halfHeightPerDistance;
         if (!(bounds.radius > 0.0) || !(wanted > bounds.radius) || !std::isfinite(wanted)) continue;
-        draw.scale *= static_cast<float>(wanted / bounds.radius);
+        draw.meshScale = static_cast<float>(wanted / bounds.radius);
     }
 }
 
