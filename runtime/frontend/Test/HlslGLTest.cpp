@@ -321,6 +321,37 @@ float4 main(float2 uv : TEXCOORD0) : COLOR {
         expectNear(pixel(out, x, 2), {0.125 + 0.375 + 0.625, 0.25 + 0.5 + 0.75, 0.75, 6.0 + 3.0}, 1e-6, "pixel " + std::to_string(x));
 }
 
+// A constant's default may be an expression and an array (tdm1223's Blur.rfx: a Gaussian kernel
+// `float4 gaussFilter[7] = { 0.0, -3.0, 0.0, 1.0/64.0, … }` and `float texScaler = 1.0/2048.0;`):
+// fxc folded them, and they hold while no variable feeds the constant.
+TEST_F(HlslGLTest, ArrayAndExpressionDefaultsOfConstantsHoldAsFxcFoldedThem) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x4">
+  <target name="out" format="rgba32f" size="4x4"/>
+  <pass name="hlsl" target="out">
+    <shader stage="fragment"><![CDATA[
+float4 gaussFilter[3] =
+{
+   0.0, -1.0, 0.0, 1.0/4.0,
+   0.0,  0.0, 0.0, 2.0/4.0,
+   0.0,  1.0, 0.0, 1.0/4.0
+};
+float texScaler = 1.0/2048.0;
+float4 main(float2 uv : TEXCOORD0) : COLOR {
+    return float4(gaussFilter[0].w + 2 * gaussFilter[1].w, gaussFilter[2].y, texScaler * 1024, gaussFilter[0].y);
+}
+]]></shader>
+  </pass>
+</workspace>)";
+    std::unique_ptr<Workspace> ws = hlslWorkspace(xml);
+    ASSERT_TRUE(ws);
+    const std::string warnings = formatAll(validateWorkspace(*ws).diagnostics());
+    EXPECT_EQ(warnings.find("gaussFilter"), std::string::npos) << warnings;
+    EXPECT_EQ(warnings.find("texScaler"), std::string::npos) << warnings;
+    RefImage out = renderOut(xml);
+    ASSERT_EQ(out.width, 4);
+    for (int x = 0; x < 4; ++x) expectNear(pixel(out, x, 1), {0.25 + 2 * 0.5, 1.0, 0.5, -1.0}, 1e-6, "pixel " + std::to_string(x));
+}
+
 // Swizzles of scalars replicate them, as fxc's did: a variable, a component, a call's result, a
 // parenthesised expression and a literal.
 TEST_F(HlslGLTest, SwizzlesOfScalarsReplicateThem) {

@@ -205,24 +205,30 @@ TEST(HlslTranslator, InitialValuesBecomeUniformInitializersAndTheOthersWarnAtThe
         "float3 axis = 0.5;",
         "float2x2 turn = { 0, 1, -1, 0 };",
         "float4 mixed = float4(tint.rgb, 1);",
+        "float weights[3] = { 1.0 / 64.0, 6.0 / 64.0, -(1 + 2) * 0.5 };",
+        "float2 offsets[2] = { {0, -1}, float2(1, 2) * 0.5 };",
         "float4 main(float2 uv : TEXCOORD1) : COLOR {",
-        "    return tint * gain * steps + float4(axis, 0) + float4(mul(uv, turn), 0, 0) + mixed;",
+        "    return tint * gain * steps + float4(axis, 0) + float4(mul(uv, turn), 0, 0) + mixed + weights[1] +",
+        "           offsets[1].y;",
         "}",
     });
     Diagnostics d;
     auto ps = translate(pixel, ShaderStage::Fragment, d);
     ASSERT_TRUE(ps) << formatAll(d);
     for (const char* declaration : {"uniform vec4 tint = vec4(0.25, 0.5, 0.75, 1.0);", "uniform float gain = 2.0;",
-                                    "uniform int steps = 3;", "uniform vec3 axis = vec3(0.5, 0.5, 0.5);"})
+                                    "uniform int steps = 3;", "uniform vec3 axis = vec3(0.5, 0.5, 0.5);",
+                                    "uniform float weights[3] = float[3](0.015625, 0.09375, -1.5);",
+                                    "uniform vec2 offsets[2] = vec2[2](vec2(0.0, -1.0), vec2(0.5, 1.0));"})
         EXPECT_NE(ps->code.find(declaration), std::string::npos) << declaration << "\n" << ps->code;
     ASSERT_EQ(d.size(), 2u) << formatAll(d);
     EXPECT_EQ(d[0].severity, Diagnostic::Severity::Warning);
     EXPECT_EQ(d[0].where.line, 5);
-    EXPECT_NE(d[0].message.find("'turn' is not carried over (rmfx carries over the initial values of scalars and vectors only)"),
+    EXPECT_NE(d[0].message.find("'turn' is not carried over (rmfx carries over the initial values of scalars, vectors and "
+                                "arrays of them only)"),
               std::string::npos)
         << d[0].message;
     EXPECT_EQ(d[1].where.line, 6);
-    EXPECT_NE(d[1].message.find("'mixed' is not carried over (it is not a list of numbers)"), std::string::npos)
+    EXPECT_NE(d[1].message.find("'mixed' is not carried over (it is not made of numbers)"), std::string::npos)
         << d[1].message;
     // The GLSL with its initializers compiles and links.
     EXPECT_FALSE(linkPair(vertexShader, pixel).empty());

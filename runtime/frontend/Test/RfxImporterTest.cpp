@@ -659,9 +659,11 @@ TEST(RfxImporter, BadInputsAreErrorsWithFileAndLine) {
     // In a Direct3D pass the same is a warning: Direct3D ran with the register unset (zero), and a
     // shader const keeps the value its declaration gives.
     const std::string d3dShader = "<RmHLSLShader NAME=\"PS\" PIXEL_SHADER=\"TRUE\" TARGET=\"ps_2_0\" ENTRY_POINT=\"main\">"
-                                  "<RmShaderConstant NAME=\"Nope\"/><RmShaderConstant NAME=\"offsets\"/><RmShaderCode><![CDATA["
+                                  "<RmShaderConstant NAME=\"Nope\"/><RmShaderConstant NAME=\"offsets\"/>"
+                                  "<RmShaderConstant NAME=\"scale\"/><RmShaderCode><![CDATA["
                                   "static const float2 offsets[2] = { float2(1, 0), float2(0, 1) };\nfloat4 Nope;\n"
-                                  "float4 main() : COLOR { return Nope + offsets[1].y; }]]></RmShaderCode></RmHLSLShader>";
+                                  "float scale = 1.0 / 2048.0;\n"
+                                  "float4 main() : COLOR { return Nope + offsets[1].y * scale; }]]></RmShaderCode></RmHLSLShader>";
     Result<Workspace> lenient = importRfxText(d3dEffect(d3dStatePass(1, "") + "<RmPass NAME=\"Q\" PASS_INDEX=\"0\">" +
                                                         d3dShader + "</RmPass>\n"),
                                               "t.rfx", ".", {""});
@@ -673,6 +675,11 @@ TEST(RfxImporter, BadInputsAreErrorsWithFileAndLine) {
         << formatAll(lenient.diagnostics());
     EXPECT_NE(formatAll(lenient.diagnostics()).find("<RmShaderConstant NAME=\"offsets\">: no variable 'offsets' is visible from "
                                                     "the pass (pass, effect, group or workspace); the shader declares it const"),
+              std::string::npos)
+        << formatAll(lenient.diagnostics());
+    EXPECT_NE(formatAll(lenient.diagnostics()).find("<RmShaderConstant NAME=\"scale\">: no variable 'scale' is visible from "
+                                                    "the pass (pass, effect, group or workspace); the shader declares it with an "
+                                                    "initial value, which Direct3D kept and so does rmfx"),
               std::string::npos)
         << formatAll(lenient.diagnostics());
     Result<Workspace> unused = importRfxText(pass("<RmShaderConstant NAME=\"light0\"/>\n"), "t.rfx", ".");

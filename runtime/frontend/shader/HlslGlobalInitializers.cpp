@@ -14,11 +14,6 @@
 namespace rmfx {
 namespace {
 
-std::string trimmed(std::string_view s) {
-    size_t a = s.find_first_not_of(" \t\r\n"), b = s.find_last_not_of(" \t\r\n");
-    return a == std::string_view::npos ? std::string() : std::string(s.substr(a, b - a + 1));
-}
-
 std::vector<std::string> words(std::string_view s) {
     std::vector<std::string> out;
     for (size_t i = 0; i < s.size();) {
@@ -36,59 +31,170 @@ std::vector<std::string> words(std::string_view s) {
     return out;
 }
 
-// "1", "-0.5", "2.f", "1e-3h", ".25": a number with an optional sign and HLSL suffix.
-std::optional<double> number(std::string s) {
-    s = trimmed(s);
-    if (s == "true") return 1.0;
-    if (s == "false") return 0.0;
-    bool negative = false;
-    while (!s.empty() && (s[0] == '-' || s[0] == '+')) {
-        negative ^= s[0] == '-';
-        s = trimmed(s.substr(1));
-    }
-    while (!s.empty() && std::string("fFhHlLuU").find(s.back()) != std::string::npos &&
-           !(s.size() >= 2 && (s[s.size() - 2] == 'e' || s[s.size() - 2] == 'E')))
-        s.pop_back();
-    if (s.empty()) return std::nullopt;
-    double value = 0.0;
-    auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
-    if (error != std::errc() || end != s.data() + s.size() || !std::isfinite(value)) return std::nullopt;  // "inf", "nan"
-    return negative ? -value : value;
-}
+// The values of a constant initializer, flattened: numbers and true/false, arithmetic on them
+// (+ - * / and parentheses; fxc folded `1.0 / 64.0` into the constant's default), constructors
+// (`float4(1, 2, 3, 4)`, nested) and brace lists (`{1, 2, 3, 4}`, `{ {1, 2}, {3, 4} }`), an
+// operation between a vector and a scalar or two vectors of one size applying per component.
+// Nothing else (another variable, a function) is constant: nullopt.
+class ConstantReader {
+public:
+    explicit ConstantReader(std::string_view text) : text_(text) {}
 
-// A comma-separated list of numbers.
-std::optional<std::vector<double>> numbers(const std::string& list) {
-    std::vector<double> out;
-    size_t from = 0;
-    while (from <= list.size()) {
-        size_t comma = list.find(',', from);
-        if (comma == std::string::npos) comma = list.size();
-        std::string item = trimmed(list.substr(from, comma - from));
-        if (item.empty() && comma == list.size() && !out.empty()) break;  // {1, 2, 3,}
-        auto n = number(item);
-        if (!n) return std::nullopt;
-        out.push_back(*n);
-        from = comma + 1;
+    std::optional<std::vector<double>> read() {
+        std::optional<std::vector<double>> values = item();
+        skipSpace();
+        if (!values || at_ != text_.size()) return std::nullopt;
+        return values;
     }
-    return out;
-}
 
-// `2.0`, `float4(1, 2, 3, 4)`, `{1, 2, 3, 4}`, `true`; nullopt for anything else (an expression,
-// a nested constructor, another variable's name).
+private:
+    using Values = std::optional<std::vector<double>>;
+
+    // Initializers nest a few levels; this bounds the recursion on hostile input.
+    static constexpr int kMaxDepth = 64;
+
+    void skipSpace() {
+        while (at_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[at_]))) ++at_;
+    }
+    bool take(char c) {
+        skipSpace();
+        if (at_ < text_.size() && text_[at_] == c) {
+            ++at_;
+            return true;
+        }
+        return false;
+    }
+
+    Values item() {
+        if (++depth_ > kMaxDepth) return std::nullopt;
+        Values out = take('{') ? list('}') : expression();
+        --depth_;
+        return out;
+    }
+
+    // Items up to `close`, flattened; a trailing comma is allowed before it.
+    Values list(char close) {
+        std::vector<double> out;
+        if (take(close)) return out;
+        while (true) {
+            Values v = item();
+            if (!v) return std::nullopt;
+            out.insert(out.end(), v->begin(), v->end());
+            if (take(close)) return out;
+            if (!take(',')) return std::nullopt;
+            if (take(close)) return out;
+        }
+    }
+
+    static Values combine(const Values& a, const Values& b, char op) {
+        if (!a || !b || a->empty() || b->empty()) return std::nullopt;
+        if (a->size() != b->size() && a->size() != 1 && b->size() != 1) return std::nullopt;
+        std::vector<double> out(std::max(a->size(), b->size()));
+        for (size_t i = 0; i < out.size(); ++i) {
+            const double x = (*a)[a->size() == 1 ? 0 : i], y = (*b)[b->size() == 1 ? 0 : i];
+            out[i] = op == '+' ? x + y : op == '-' ? x - y : op == '*' ? x * y : x / y;
+            if (!std::isfinite(out[i])) return std::nullopt;
+        }
+        return out;
+    }
+
+    Values expression() {
+        Values left = term();
+        while (left) {
+            skipSpace();
+            if (at_ >= text_.size() || (text_[at_] != '+' && text_[at_] != '-')) break;
+            const char op = text_[at_++];
+            left = combine(left, term(), op);
+        }
+        return left;
+    }
+
+    Values term() {
+        Values left = unary();
+        while (left) {
+            skipSpace();
+            if (at_ >= text_.size() || (text_[at_] != '*' && text_[at_] != '/')) break;
+            const char op = text_[at_++];
+            left = combine(left, unary(), op);
+        }
+        return left;
+    }
+
+    Values unary() {
+        if (++depth_ > kMaxDepth) return std::nullopt;
+        Values out;
+        if (take('-')) out = combine(std::vector<double>{0.0}, unary(), '-');
+        else if (take('+')) out = unary();
+        else out = primary();
+        --depth_;
+        return out;
+    }
+
+    Values primary() {
+        skipSpace();
+        if (at_ >= text_.size()) return std::nullopt;
+        const char c = text_[at_];
+        if (c == '(') {
+            ++at_;
+            Values inside = expression();
+            return take(')') ? inside : std::nullopt;
+        }
+        if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') return numberHere();
+        if (!isIdentifierChar(c)) return std::nullopt;
+        size_t end = at_;
+        while (end < text_.size() && isIdentifierChar(text_[end])) ++end;
+        const std::string_view word = text_.substr(at_, end - at_);
+        at_ = end;
+        if (word == "true") return std::vector<double>{1.0};
+        if (word == "false") return std::vector<double>{0.0};
+        // A constructor: float4(…), half3(…), float(…); a function (sqrt(2)) is not folded.
+        if (!isNumericType(word) || !take('(')) return std::nullopt;
+        return list(')');
+    }
+
+    // float, half3, int2x2…: a scalar type, then nothing, N or NxM (1 to 4).
+    static bool isNumericType(std::string_view word) {
+        for (std::string_view base : {"float", "half", "double", "int", "uint", "bool", "dword", "min16float", "min10float",
+                                      "min16int", "min12int", "min16uint"}) {
+            if (!word.starts_with(base)) continue;
+            const std::string_view rest = word.substr(base.size());
+            auto dimension = [](char c) { return c >= '1' && c <= '4'; };
+            if (rest.empty() || (rest.size() == 1 && dimension(rest[0])) ||
+                (rest.size() == 3 && dimension(rest[0]) && rest[1] == 'x' && dimension(rest[2])))
+                return true;
+        }
+        return false;
+    }
+
+    // 1, 2.5, .25, 1e-3, 2.f, 3h: digits, a point, an exponent, then HLSL's suffixes.
+    Values numberHere() {
+        size_t end = at_;
+        while (end < text_.size() && (std::isdigit(static_cast<unsigned char>(text_[end])) || text_[end] == '.')) ++end;
+        if (end < text_.size() && (text_[end] == 'e' || text_[end] == 'E')) {
+            size_t exponent = end + 1;
+            if (exponent < text_.size() && (text_[exponent] == '+' || text_[exponent] == '-')) ++exponent;
+            if (exponent < text_.size() && std::isdigit(static_cast<unsigned char>(text_[exponent]))) {
+                end = exponent;
+                while (end < text_.size() && std::isdigit(static_cast<unsigned char>(text_[end]))) ++end;
+            }
+        }
+        double value = 0.0;
+        auto [parsed, error] = std::from_chars(text_.data() + at_, text_.data() + end, value);
+        if (error != std::errc() || parsed != text_.data() + end || !std::isfinite(value)) return std::nullopt;
+        while (end < text_.size() && std::string_view("fFhHlLuU").find(text_[end]) != std::string_view::npos) ++end;
+        at_ = end;
+        return std::vector<double>{value};
+    }
+
+    std::string_view text_;
+    size_t at_ = 0;
+    int depth_ = 0;
+};
+
 std::optional<std::vector<double>> constantValues(std::string_view initializer) {
-    std::string s = trimmed(initializer);
-    if (s.empty()) return std::nullopt;
-    if (s.front() == '{' && s.back() == '}') return numbers(s.substr(1, s.size() - 2));
-    size_t open = s.find('(');
-    if (open != std::string::npos && s.back() == ')') {
-        std::string type = trimmed(s.substr(0, open));
-        if (type.empty() || !std::all_of(type.begin(), type.end(), isIdentifierChar)) return std::nullopt;
-        std::string inside = s.substr(open + 1, s.size() - open - 2);
-        if (inside.find_first_of("()") != std::string::npos) return std::nullopt;
-        return numbers(inside);
-    }
-    if (auto n = number(s)) return std::vector<double>{*n};
-    return std::nullopt;
+    std::optional<std::vector<double>> values = ConstantReader(initializer).read();
+    if (values && values->empty()) return std::nullopt;
+    return values;
 }
 
 const std::set<std::string>& modifiers() {

@@ -1,6 +1,7 @@
 #include "frontend/shader/HlslTranslator.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cctype>
 #include <cstdio>
 #include <functional>
@@ -66,26 +67,47 @@ std::string literal(const std::string& type, double value) {
     return text;
 }
 
-// The GLSL initializer ` = …` of a uniform of `type` from the HLSL initial value, or nullopt with
-// `why` when it cannot be one.
-std::optional<std::string> glslInitializer(const std::string& type, const HlslGlobalInitializer& init, std::string& why) {
+// The GLSL initializer ` = …` of a uniform of `type` (an array when `arraySuffix` is "[N]") from
+// the HLSL initial value, or nullopt with `why` when it cannot be one.
+std::optional<std::string> glslInitializer(const std::string& type, const std::string& arraySuffix,
+                                           const HlslGlobalInitializer& init, std::string& why) {
     const int n = components(type);
-    if (n == 0 || init.array) {
-        why = "rmfx carries over the initial values of scalars and vectors only";
+    if (n == 0) {
+        why = "rmfx carries over the initial values of scalars, vectors and arrays of them only";
         return std::nullopt;
     }
     if (!init.constant) {
-        why = "it is not a list of numbers";
+        why = "it is not made of numbers";
         return std::nullopt;
+    }
+    int elements = 1;
+    if (!arraySuffix.empty()) {
+        // One dimension: "[7]".
+        if (arraySuffix.front() != '[' || arraySuffix.back() != ']' || arraySuffix.find('[', 1) != std::string::npos) {
+            why = "an array of arrays";
+            return std::nullopt;
+        }
+        elements = std::atoi(arraySuffix.c_str() + 1);
+        if (elements < 1) {
+            why = "an array of unknown size";
+            return std::nullopt;
+        }
     }
     const size_t count = init.values.size();
-    if (count != 1 && count != static_cast<size_t>(n)) {
-        why = std::to_string(count) + " values for a " + init.declaredType;
+    const size_t wanted = static_cast<size_t>(n) * static_cast<size_t>(elements);
+    if (count != wanted && !(count == 1 && arraySuffix.empty())) {
+        why = std::to_string(count) + " values for a " + init.declaredType + arraySuffix;
         return std::nullopt;
     }
-    if (n == 1) return " = " + literal(type, init.values[0]);
-    std::string out = " = " + type + "(";
-    for (int i = 0; i < n; ++i) out += (i ? ", " : "") + literal(type, init.values[count == 1 ? 0 : i]);
+    auto element = [&](size_t first) {
+        if (n == 1) return literal(type, init.values[first]);
+        std::string out = type + "(";
+        for (int i = 0; i < n; ++i) out += (i ? ", " : "") + literal(type, init.values[count == 1 ? 0 : first + static_cast<size_t>(i)]);
+        return out + ")";
+    };
+    if (arraySuffix.empty()) return " = " + element(0);
+    std::string out = " = " + type + arraySuffix + "(";
+    for (int e = 0; e < elements; ++e) out += (e ? ", " : "") + element(static_cast<size_t>(e) * static_cast<size_t>(n));
     return out + ")";
 }
 
@@ -111,7 +133,7 @@ std::string flattenBlocks(SpirvGlsl spirv, const std::map<std::string, HlslGloba
             std::string value;
             if (auto it = initial.find(member.name); it != initial.end()) {
                 std::string why;
-                if (auto v = glslInitializer(member.type, it->second, why)) value = *v;
+                if (auto v = glslInitializer(member.type, member.arraySuffix, it->second, why)) value = *v;
                 else unsupported(it->second, why);
             }
             uniforms += "uniform " + member.type + " " + member.name + member.arraySuffix + value + ";\n";

@@ -11,6 +11,7 @@
 #include "frontend/rfx/detail/RfxRenderStates.h"
 #include "frontend/rfx/detail/RfxSamplerStates.h"
 #include "frontend/rfx/detail/RfxTextureStageStates.h"
+#include "frontend/shader/HlslGlobalInitializers.h"
 #include "frontend/shader/HlslSemantics.h"
 
 namespace rmfx::rfx {
@@ -243,9 +244,21 @@ private:
             // value its declaration gives, a constant register nothing set held zero.
             else if (declaresConstant(name))
                 c.warning(message + "; the shader declares it const, with its own value, which it keeps");
+            else if (declaresInitialValue(name))
+                c.warning(message + "; the shader declares it with an initial value, which Direct3D kept and so does rmfx");
             else
                 c.warning(message + "; Direct3D ran with its constant register unset, so it is fed zero");
         }
+    }
+
+    // Whether an HLSL shader of the pass gives global `name` a constant initial value (`float k = 1.0 / 64.0;`).
+    bool declaresInitialValue(const std::string& name) const {
+        for (const ShaderSource& s : out_.pass.shaders) {
+            if (s.dialect != ShaderDialect::Hlsl || !mentionsIdentifier(s.code, name)) continue;
+            for (const HlslGlobalInitializer& init : findHlslGlobalInitializers(s.code))
+                if (init.name == name && init.constant) return true;
+        }
+        return false;
     }
 
     // Whether a shader of the pass declares `name` const (`static const float2 o[12] = …`).
