@@ -28,14 +28,15 @@ inline void put16(Bytes& b, uint16_t v) {
     b.push_back(static_cast<uint8_t>(v >> 8));
 }
 
-// "DDS " and the 124-byte DDS_HEADER of a 4x4 texture compressed as `fourCC`, one mip level.
-inline Bytes header(const char* fourCC, uint32_t caps2 = 0, uint32_t depth = 0) {
+// "DDS " and the 124-byte DDS_HEADER of a texture (4x4 unless told) compressed as `fourCC`, one
+// mip level.
+inline Bytes header(const char* fourCC, uint32_t caps2 = 0, uint32_t depth = 0, uint32_t width = 4, uint32_t height = 4) {
     Bytes b{'D', 'D', 'S', ' '};
     put32(b, 124);
     put32(b, 0x1 | 0x2 | 0x4 | 0x1000 | 0x80000 | (depth ? 0x800000 : 0));  // caps height width pixelformat linearsize (depth)
-    put32(b, 4);  // height
-    put32(b, 4);  // width
-    put32(b, std::string(fourCC) == "DXT1" ? 8 : 16);  // bytes of the top level
+    put32(b, height);
+    put32(b, width);
+    put32(b, ((width + 3) / 4) * ((height + 3) / 4) * (std::string(fourCC) == "DXT1" ? 8 : 16));  // bytes of the top level
     put32(b, depth);
     put32(b, 1);  // mip levels
     for (int i = 0; i < 11; ++i) put32(b, 0);

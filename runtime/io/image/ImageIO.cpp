@@ -8,6 +8,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "io/image/DdsBlockVolume.h"
 #include "io/image/ImageFileError.h"
 
 namespace rmfx {
@@ -66,12 +67,12 @@ Result<Image> readImageFile(const fs::path& file, Dimensions dimensions) {
     if (dimensions == Dimensions::Volume && depth == 1)
         return imageFileError(file, "a 2D image, not a volume: a volume texture needs a file with depth, such as a DDS volume texture");
     // OpenImageIO 2.4 decodes only the first slice of a block-compressed DDS volume (the others
-    // come back zero): refused rather than drawn wrong.
+    // come back zero): rmfx decodes those itself.
     const std::string compression = spec.get_string_attribute("compression");
-    if (depth > 1 && compression.rfind("DXT", 0) == 0)
-        return imageFileError(file, "a " + compression +
-                                   "-compressed volume: only uncompressed DDS volumes can be read (re-save it uncompressed, "
-                                   "for example A8R8G8B8 or L8)");
+    if (depth > 1 && compression.rfind("DXT", 0) == 0) {
+        in->close();
+        return readBlockCompressedDdsVolume(file);
+    }
     if (spec.nchannels < 1)
         return imageFileError(file, "unsupported channel count " + std::to_string(spec.nchannels));
 
