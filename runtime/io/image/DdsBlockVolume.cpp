@@ -101,12 +101,18 @@ Result<Image> readBlockCompressedDdsVolume(const std::filesystem::path& file) {
     const size_t blocksAcross = (width + 3) / 4, blocksDown = (height + 3) / 4;
     const size_t blockBytes = dxt1 ? 8 : 16;
     const size_t sliceBytes = blocksAcross * blocksDown * blockBytes;
-    std::vector<uint8_t> data(sliceBytes * depth);
-    in.read(reinterpret_cast<char*>(data.data()), std::streamsize(data.size()));
-    if (size_t(in.gcount()) != data.size())
+    // The size is checked before anything is allocated: a header can claim gigabytes.
+    const size_t needed = sliceBytes * depth;
+    std::error_code ec;
+    const uintmax_t fileBytes = std::filesystem::file_size(file, ec);
+    const size_t present = ec || fileBytes < kHeaderBytes ? 0 : size_t(fileBytes - kHeaderBytes);
+    if (present < needed)
         return imageFileError(file, "truncated: " + std::to_string(depth) + " slices of " + std::to_string(width) + "x" +
-                                        std::to_string(height) + " " + fourCC + " need " + std::to_string(data.size()) +
-                                        " bytes after the header, the file has " + std::to_string(in.gcount()));
+                                        std::to_string(height) + " " + fourCC + " need " + std::to_string(needed) +
+                                        " bytes after the header, the file has " + std::to_string(present));
+    std::vector<uint8_t> data(needed);
+    if (!in.read(reinterpret_cast<char*>(data.data()), std::streamsize(data.size())))
+        return imageFileError(file, "cannot read its blocks");
 
     Image image;
     image.width = int(width);
