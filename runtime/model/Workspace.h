@@ -229,6 +229,22 @@ struct VertexStream {
     SourceLocation where;
 };
 
+// Direct3D 9's fixed-function pixel fog (D3DRS_FOGTABLEMODE), which blends a ps_1_x or ps_2_x
+// pixel shader's colour toward the fog colour by the pixel's depth d (its eye-space w):
+// factor f = (end − d) / (end − start), exp(−density·d) or exp(−(density·d)²), clamped to [0, 1];
+// colour = f·shader + (1 − f)·fog. Imported Direct3D passes only; ps_3_0 shaders fog themselves.
+enum class FogMode { Linear, Exp, Exp2 };
+
+struct FixedFunctionFog {
+    bool enabled = false;                 // D3DRS_FOGENABLE
+    std::optional<FogMode> mode;          // D3DRS_FOGTABLEMODE; none: no pixel fog
+    bool vertexFog = false;               // D3DRS_FOGVERTEXMODE set (not applied: see the importer)
+    float start = 0.0f, end = 1.0f, density = 1.0f;  // Direct3D's defaults
+    glm::vec3 color{0.0f};
+    SourceLocation where;  // the D3DRS_FOGENABLE state
+    bool applies() const { return enabled && mode.has_value(); }
+};
+
 struct Pass {
     std::string name;
     std::string target;  // empty: the output
@@ -237,6 +253,7 @@ struct Pass {
     BlendState blend;
     DepthState depth;
     RasterState raster;
+    FixedFunctionFog fog;
     std::vector<ShaderSource> shaders;  // at most one per stage; no vertex shader: the built-in one
     std::vector<Sampler> samplers;
     std::vector<Variable> constants;    // pass-local values, shadowing workspace variables

@@ -3,6 +3,7 @@
 // matrix convention of runtime/HlslTranslator.h (mul(v, M) is rmfx's M * v), and Direct3D's
 // clip-space depth.
 
+#include <cmath>
 #include <gtest/gtest.h>
 #include <glm/mat4x4.hpp>
 
@@ -350,6 +351,52 @@ float4 main(float2 uv : TEXCOORD0) : COLOR {
     RefImage out = renderOut(xml);
     ASSERT_EQ(out.width, 4);
     for (int x = 0; x < 4; ++x) expectNear(pixel(out, x, 1), {0.25 + 2 * 0.5, 1.0, 0.5, -1.0}, 1e-6, "pixel " + std::to_string(x));
+}
+
+// Direct3D 9's table fog after a ps_2_0 shader: the colour blends toward the fog colour by the
+// pixel's eye-space depth, here the clip w the vertex shader writes (4): linear from 1 to 7 gives
+// f = (7 − 4) / 6 = 0.5, exp with density 0.25 exp(−1), exp2 with density 0.25 exp(−1). A ps_3_0
+// shader is not fogged, as in Direct3D.
+TEST_F(HlslGLTest, TableFogBlendsTowardTheFogColourByEyeDepth) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x4">
+  <float name="depth" value="0.5"/>
+  <float name="w" value="4"/>
+  <target name="out" format="rgba32f" size="4x4"/>
+  <pass name="hlsl" target="out">
+    )" + vertexShaderXml(passThroughVertexShader) +
+                            R"(    <shader stage="fragment"><![CDATA[
+float4 main(float2 uv : TEXCOORD0) : COLOR { return float4(0.2, 0.4, 0.6, 0.8); }
+]]></shader>
+  </pass>
+</workspace>)";
+    const glm::dvec3 colour(0.2, 0.4, 0.6), fog(1.0, 0.5, 0.0);
+    struct Case {
+        FogMode mode;
+        float start, end, density;
+        const char* profile;
+        double factor;
+    };
+    for (const Case& c : {Case{FogMode::Linear, 1.0f, 7.0f, 1.0f, "ps_2_0", 0.5}, Case{FogMode::Exp, 0.0f, 1.0f, 0.25f, "ps_2_0", std::exp(-1.0)},
+                          Case{FogMode::Exp2, 0.0f, 1.0f, 0.25f, "ps_1_4", std::exp(-1.0)},
+                          Case{FogMode::Linear, 1.0f, 7.0f, 1.0f, "ps_3_0", 1.0}}) {
+        SCOPED_TRACE(std::string(c.profile) + " mode " + std::to_string(int(c.mode)));
+        std::unique_ptr<Workspace> ws = hlslWorkspace(xml);
+        ASSERT_TRUE(ws);
+        Pass& pass = ws->passes[0];
+        pass.fog.enabled = true;
+        pass.fog.mode = c.mode;
+        pass.fog.start = c.start;
+        pass.fog.end = c.end;
+        pass.fog.density = c.density;
+        pass.fog.color = glm::vec3(fog);
+        for (ShaderSource& s : pass.shaders)
+            if (s.stage == ShaderStage::Fragment) s.profile = c.profile;
+        GlRun run = runWorkspace(std::move(ws), RunSettings());
+        ASSERT_TRUE(run.exec);
+        RefImage out = readRef(run, "out");
+        const glm::dvec3 want = c.factor * colour + (1.0 - c.factor) * fog;
+        expectNear(pixel(out, 1, 1), glm::dvec4(want, 0.8), 1e-5, "fogged colour");
+    }
 }
 
 // Swizzles of scalars replicate them, as fxc's did: a variable, a component, a call's result, a

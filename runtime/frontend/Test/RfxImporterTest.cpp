@@ -587,6 +587,35 @@ TEST(RfxImporter, Direct3dEffectWithHlslStatesAndADisabledAssemblyPass) {
     EXPECT_EQ(warnings.find("D3DRS_FILLMODE"), std::string::npos) << warnings;  // 3, solid: applied
 }
 
+// Fixed-function fog states (terrain_fog.rfx: linear table fog from 1 to 1000 in white) become the
+// pass's fog and carry over to the passes after it; vertex fog is warned about (with a vertex
+// shader it is the shader's FOG output).
+TEST(RfxImporter, FogStatesBecomeThePasssFixedFunctionFog) {
+    const std::string fog = d3dState(28, "1") + d3dState(36, "1.000000") + d3dState(37, "1000.000000") +
+                            d3dState(34, "16777215") + d3dState(38, "2.000000") + d3dState(35, "3");
+    Result<Workspace> ws = importRfxText(d3dEffect(d3dStatePass(0, fog) + d3dStatePass(1, "")), "t.rfx", ".", {""});
+    ASSERT_TRUE(ws) << formatAll(ws.diagnostics());
+    for (const Pass& pass : ws->passes) {
+        SCOPED_TRACE(pass.name);
+        EXPECT_TRUE(pass.fog.applies());
+        EXPECT_EQ(pass.fog.mode, FogMode::Linear);
+        EXPECT_EQ(pass.fog.start, 1.0f);
+        EXPECT_EQ(pass.fog.end, 1000.0f);
+        EXPECT_EQ(pass.fog.density, 2.0f);
+        EXPECT_EQ(pass.fog.color, glm::vec3(1.0f));
+    }
+    EXPECT_EQ(formatAll(ws.diagnostics()).find("FOG"), std::string::npos) << formatAll(ws.diagnostics());
+
+    Result<Workspace> vertex = importRfxText(d3dEffect(d3dStatePass(0, d3dState(28, "1") + d3dState(140, "3"))), "t.rfx", ".", {""});
+    ASSERT_TRUE(vertex) << formatAll(vertex.diagnostics());
+    EXPECT_FALSE(vertex->passes[0].fog.applies());
+    EXPECT_NE(formatAll(vertex.diagnostics()).find("vertex fog (D3DRS_FOGVERTEXMODE) takes the vertex shader's FOG output"),
+              std::string::npos)
+        << formatAll(vertex.diagnostics());
+    EXPECT_NE(errorsOf(d3dEffect(d3dStatePass(0, d3dState(35, "4")))).find("VALUE 4 is not a D3DFOGMODE (it takes 0, 1, 2, 3)"),
+              std::string::npos);
+}
+
 // RenderMonkey 1.5 and before passed matrices in OpenGL's layout (its HLSL wrote
 // mul(view_proj_matrix, Pos)); 1.6 and later as D3DX does (mul(Input.Position, matViewProjection)).
 // The version that saved the file decides; assembly always reads rows (m4x4).

@@ -144,6 +144,7 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
         p.pass.blend = carried.blend;
         p.pass.depth = carried.depth;
         p.pass.raster = carried.raster;
+        p.pass.fog = carried.fog;
         bool separateAlpha = carriedSeparateAlpha;
         for (const XMLElement* block : p.stateBlocks)
             rfx::applyRenderStateBlock(RfxElement(block, file, diagnostics), effect.api, p.pass, separateAlpha);
@@ -151,9 +152,15 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
             carried.blend = p.pass.blend;
             carried.depth = p.pass.depth;
             carried.raster = p.pass.raster;
+            carried.fog = p.pass.fog;
             carriedSeparateAlpha = separateAlpha;
         }
         if (effect.api == RfxApi::Direct3D) rfx::finishD3dRenderStates(p.pass, separateAlpha);
+        // With a vertex shader, Direct3D's vertex fog is the shader's FOG output, not depth.
+        if (effect.api == RfxApi::Direct3D && p.pass.enabled && p.pass.fog.enabled && !p.pass.fog.mode && p.pass.fog.vertexFog)
+            diagnostics.push_back({Diagnostic::Severity::Warning, p.pass.fog.where, "<RmPass NAME=\"" + p.pass.name + "\">",
+                                   "vertex fog (D3DRS_FOGVERTEXMODE) takes the vertex shader's FOG output, which rmfx does "
+                                   "not blend: drawn without fog (table fog, D3DRS_FOGTABLEMODE, is applied)"});
         if (!p.pass.camera.empty() && !ws.findCamera(p.pass.camera)) {
             // Not among the named ones: the effect's chosen (active) camera, or none at all.
             bool declared = false;

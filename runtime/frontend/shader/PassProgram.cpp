@@ -1,11 +1,18 @@
 #include "frontend/shader/PassProgram.h"
 
+#include "frontend/shader/HlslFixedFunctionFog.h"
 #include "frontend/shader/HlslTranslationCache.h"
 #include "frontend/shader/LegacyGlslVersion.h"
 
 namespace rmfx {
 
 namespace {
+
+// ps_3_0 (any case): Direct3D 9 applies no fixed-function fog after it.
+bool isShaderModel3(const std::string& profile) {
+    return profile.size() >= 4 && (profile[0] == 'p' || profile[0] == 'P') && (profile[1] == 's' || profile[1] == 'S') &&
+           profile[2] == '_' && profile[3] == '3';
+}
 
 // The text before main() of a built-in vertex shader: #version, the attributes and the varyings.
 std::string builtinVertexHeader(ShaderDialect dialect, bool normal) {
@@ -121,6 +128,11 @@ Result<PassProgramSource> assemblePassProgram(const Workspace& ws, const Pass& p
             if (translated) {
                 stage.shader = std::move(translated->glsl);
                 if (s.stage == ShaderStage::Fragment) pixelInputs = std::move(translated->inputs);
+                // Direct3D 9 fogs after ps_1_x and ps_2_x shaders; ps_3_0 ones fog themselves.
+                if (s.stage == ShaderStage::Fragment && pass.fog.applies() && !isShaderModel3(s.profile) &&
+                    !appendFixedFunctionFog(stage.shader.code, pass.fog))
+                    diagnostics.push_back({Diagnostic::Severity::Warning, pass.fog.where, passLabel(pass),
+                                           "the pixel shader writes no COLOR0 for Direct3D's fog to blend: drawn without fog"});
             }
             stage.dialect = ShaderDialect::Glsl;
         }

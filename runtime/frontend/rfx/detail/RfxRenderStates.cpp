@@ -30,6 +30,10 @@ std::optional<E> pick(const RfxElement& state, const char* what, long long value
     return std::nullopt;
 }
 
+// D3DFOGMODE: NONE, EXP, EXP2, LINEAR.
+constexpr Choice<std::optional<FogMode>> d3dFogModes[] = {
+    {0, std::nullopt}, {1, FogMode::Exp}, {2, FogMode::Exp2}, {3, FogMode::Linear}};
+
 // Compare functions: RenderMonkey's OpenGL enumeration numbers them as D3DCMPFUNC does.
 constexpr Choice<CompareFunc> compareFuncs[] = {
     {1, CompareFunc::Never},   {2, CompareFunc::Less},     {3, CompareFunc::Equal},        {4, CompareFunc::LessEqual},
@@ -245,9 +249,27 @@ void applyD3dRenderState(const RfxElement& state, Pass& pass, bool& separateAlph
         case 206:  // D3DRS_SEPARATEALPHABLENDENABLE
             if (auto separate = pick(state, "boolean", v, boolean)) separateAlpha = *separate;
             break;
-        case 24: case 36: case 37: case 38: case 154: case 155: case 156: case 159: case 195: case 196:
-            // D3DRS_ALPHAREF, FOGSTART, FOGEND, FOGDENSITY, POINTSIZE, POINTSIZE_MIN, POINTSCALE_A,
-            // POINTSIZE_MAX, DEPTHBIAS, SLOPESCALEDEPTHBIAS: floats
+        case 28:  // D3DRS_FOGENABLE
+            set(pass.fog.enabled, boolean, "boolean");
+            pass.fog.where = state.where();
+            break;
+        case 34: {  // D3DRS_FOGCOLOR (its alpha is unused)
+            const glm::vec4 c = unpackArgb(v);
+            pass.fog.color = glm::vec3(c);
+            break;
+        }
+        case 35: case 140:  // D3DRS_FOGTABLEMODE, FOGVERTEXMODE: D3DFOGMODE
+            if (auto m = pick(state, "D3DFOGMODE", v, d3dFogModes)) {
+                if (*number == 35) pass.fog.mode = *m;
+                else pass.fog.vertexFog = m->has_value();
+            }
+            break;
+        case 36: pass.fog.start = floatFromBits(v); break;    // D3DRS_FOGSTART
+        case 37: pass.fog.end = floatFromBits(v); break;      // D3DRS_FOGEND
+        case 38: pass.fog.density = floatFromBits(v); break;  // D3DRS_FOGDENSITY
+        case 24: case 154: case 155: case 156: case 159: case 195: case 196:
+            // D3DRS_ALPHAREF, POINTSIZE, POINTSIZE_MIN, POINTSCALE_A, POINTSIZE_MAX, DEPTHBIAS,
+            // SLOPESCALEDEPTHBIAS: floats
             warnUnmodelled(state, name, v, true);
             break;
         default: warnUnmodelled(state, name, v, false); break;

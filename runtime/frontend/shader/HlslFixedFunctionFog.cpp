@@ -1,0 +1,55 @@
+#include "frontend/shader/HlslFixedFunctionFog.h"
+
+#include <cstdio>
+
+#include "core/IdentifierSearch.h"
+
+namespace rmfx {
+namespace {
+
+std::string number(float v) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.9g", static_cast<double>(v));
+    std::string s = text;
+    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+    return s;
+}
+
+// The fog factor of depth `rm_fog_d`, before clamping.
+std::string factor(const FixedFunctionFog& fog) {
+    switch (fog.mode.value_or(FogMode::Linear)) {
+        case FogMode::Exp: return "exp(-" + number(fog.density) + " * rm_fog_d)";
+        case FogMode::Exp2: return "exp(-pow(" + number(fog.density) + " * rm_fog_d, 2.0))";
+        case FogMode::Linear: break;
+    }
+    // Direct3D divides by end − start; equal ones leave no range, and everything is fog or not.
+    if (fog.end == fog.start) return "(rm_fog_d < " + number(fog.end) + " ? 1.0 : 0.0)";
+    return "(" + number(fog.end) + " - rm_fog_d) / " + number(fog.end - fog.start);
+}
+
+}  // namespace
+
+bool appendFixedFunctionFog(std::string& glsl, const FixedFunctionFog& fog) {
+    const std::string output = "rm_hlsl_out_COLOR0";
+    if (!mentionsIdentifier(glsl, output)) return false;
+    const size_t main = glsl.find("void main()");
+    if (main == std::string::npos) return false;
+    const size_t open = glsl.find('{', main);
+    if (open == std::string::npos) return false;
+    int depth = 0;
+    size_t close = std::string::npos;
+    for (size_t i = open; i < glsl.size(); ++i) {
+        if (glsl[i] == '{') ++depth;
+        if (glsl[i] == '}' && --depth == 0) {
+            close = i;
+            break;
+        }
+    }
+    if (close == std::string::npos) return false;
+    const std::string colour = "vec3(" + number(fog.color.r) + ", " + number(fog.color.g) + ", " + number(fog.color.b) + ")";
+    glsl.insert(close, " { float rm_fog_d = 1.0 / gl_FragCoord.w; float rm_fog = clamp(" + factor(fog) + ", 0.0, 1.0); " +
+                           output + ".rgb = mix(" + colour + ", " + output + ".rgb, rm_fog); } ");
+    return true;
+}
+
+}  // namespace rmfx
