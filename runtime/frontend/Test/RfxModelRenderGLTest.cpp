@@ -149,6 +149,19 @@ void renderAndCompare(std::unique_ptr<Workspace> ws, const ModelCheck& check) {
     if (d.worst > tolerance) ADD_FAILURE() << d.describe(image, reference);
 }
 
+// Texture coordinates jump where two faces meet (each face of a box spans its box's range): only
+// pixels whose centre and corners see one face (two triangles in a row) are compared.
+SurfaceFilter onOneFace(const MeshRayCast& cast) {
+    return [&cast](const SurfaceHit& hit, int i, int j) {
+        for (double dx : {-0.35, 0.35})
+            for (double dy : {-0.35, 0.35}) {
+                const std::optional<SurfaceHit> corner = cast.at(i + 0.5 + dx, j + 0.5 + dy);
+                if (!corner || corner->triangle / 2 != hit.triangle / 2) return false;
+            }
+        return true;
+    };
+}
+
 class RfxModelRenderGLTest : public CompatibilityGlTest {};
 
 TEST_F(RfxModelRenderGLTest, LitTeapotMatchesAFloat64RayCastOfTheModel) {
@@ -219,16 +232,7 @@ TEST_F(RfxModelRenderGLTest, ModelFilesDrawWithTheirOwnCoordinatesTexcoordsAndWi
     const glm::dmat4 projection = glm::perspective(40.0 * std::numbers::pi / 180.0, 1.0, 0.1, 20.0);
     const MeshRayCast cast(boxes, glm::dmat4(1.0), view, projection, {size, size});
     auto shade = [](const SurfaceHit& hit) { return ExpectedRange(glm::dvec4(hit.texcoord, 0.5, 1.0)); };
-    // Texture coordinates jump where two faces meet (each face of a box spans its box's range):
-    // only pixels whose centre and corners see one face (two triangles in a row) are compared.
-    auto oneFace = [&](const SurfaceHit& hit, int i, int j) {
-        for (double dx : {-0.35, 0.35})
-            for (double dy : {-0.35, 0.35}) {
-                const std::optional<SurfaceHit> corner = cast.at(i + 0.5 + dx, j + 0.5 + dy);
-                if (!corner || corner->triangle / 2 != hit.triangle / 2) return false;
-            }
-        return true;
-    };
+    const SurfaceFilter oneFace = onOneFace(cast);
     for (const std::string model : {"Shape.3ds", "Shape.x", "Shape.obj"}) {
         SCOPED_TRACE(model);
         ScratchDir media;
@@ -313,14 +317,7 @@ TEST_F(RfxDirect3DModelGLTest, ADirect3DEffectSeesItsModelThroughD3DXsLeftHanded
     projection[2][3] = 1.0;
     const MeshRayCast cast(boxes, glm::dmat4(1.0), view, projection, {size, size});
     auto shade = [](const SurfaceHit& hit) { return ExpectedRange(glm::dvec4(hit.texcoord, 0.5, 1.0)); };
-    auto oneFace = [&](const SurfaceHit& hit, int i, int j) {
-        for (double dx : {-0.35, 0.35})
-            for (double dy : {-0.35, 0.35}) {
-                const std::optional<SurfaceHit> corner = cast.at(i + 0.5 + dx, j + 0.5 + dy);
-                if (!corner || corner->triangle / 2 != hit.triangle / 2) return false;
-            }
-        return true;
-    };
+    const SurfaceFilter oneFace = onOneFace(cast);
     for (const std::string version : {"RenderMonkey 1.71", "RenderMonkey 1.5"}) {
         SCOPED_TRACE(version);
         ScratchDir media;

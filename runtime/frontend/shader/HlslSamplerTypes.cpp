@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/IdentifierSearch.h"
+#include "core/TextEdits.h"
 
 namespace rmfx {
 namespace {
@@ -87,11 +88,7 @@ std::string typeGenericSamplers(const std::string& original) {
         else
             otherTex1D.insert(name);
     }
-    struct Edit {
-        size_t at, length;
-        std::string text;
-    };
-    std::vector<Edit> edits;
+    std::vector<TextEdit> edits;
     for (const auto& [name, types] : reads) {
         if (types.size() != 1 || *types.begin() == "sampler2D") continue;
         if (*types.begin() == "sampler1D" && !otherTex1D.count(name)) {
@@ -107,15 +104,7 @@ std::string typeGenericSamplers(const std::string& original) {
         edits.push_back({declared.at(name), std::string_view("sampler").size(), std::string(*types.begin())});
     }
     if (edits.empty()) return original;
-    std::sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.at < b.at; });
-    std::string out;
-    size_t copied = 0;
-    for (const Edit& edit : edits) {
-        out.append(original, copied, edit.at - copied);
-        out += edit.text;
-        copied = edit.at + edit.length;
-    }
-    out.append(original, copied);
+    std::string out = applyTextEdits(original, std::move(edits));
     return out;
 }
 

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "core/IdentifierSearch.h"
+#include "core/TextEdits.h"
 #include "frontend/shader/HlslBlankedCode.h"
 
 namespace rmfx {
@@ -285,12 +286,7 @@ HlslWritableGlobals giveWrittenGlobalsACopy(const std::string& source, const std
     std::vector<size_t> newlines;
     for (size_t i = 0; i < code.size(); ++i)
         if (code[i] == '\n') newlines.push_back(i);
-    struct Edit {
-        size_t at;
-        size_t replaced;
-        std::string text;
-    };
-    std::vector<Edit> edits;
+    std::vector<TextEdit> edits;
     std::string copies;
     for (const Global* g : written) {
         const std::string copy = "rm_writable_" + g->name;
@@ -304,20 +300,9 @@ HlslWritableGlobals giveWrittenGlobalsACopy(const std::string& source, const std
         out.written.push_back(g->name);
         out.lines.push_back(lineOf(newlines, g->statementEnd));
     }
+    // At one offset insertions go first: `main(){gain = …` gets the copies before `gain`.
     edits.push_back({entry->open + 1, 0, copies});
-    // By offset; at one offset, insertions (in their order) before the name they stand in front of
-    // (`main(){gain = …`: the copies go before `gain`).
-    std::stable_sort(edits.begin(), edits.end(),
-                     [](const Edit& a, const Edit& b) { return a.at < b.at || (a.at == b.at && a.replaced < b.replaced); });
-    std::string result;
-    size_t from = 0;
-    for (const Edit& e : edits) {
-        result.append(source, from, e.at - from);
-        result += e.text;
-        from = e.at + e.replaced;
-    }
-    result.append(source, from, std::string::npos);
-    out.code = std::move(result);
+    out.code = applyTextEdits(source, std::move(edits));
     return out;
 }
 
