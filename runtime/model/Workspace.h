@@ -245,6 +245,14 @@ struct FixedFunctionFog {
     bool applies() const { return enabled && mode.has_value(); }
 };
 
+// Direct3D 9's alpha test (D3DRS_ALPHATESTENABLE, ALPHAFUNC, ALPHAREF): a pixel whose colour-0
+// alpha fails `alpha FUNC ref` is discarded. Imported Direct3D passes only.
+struct AlphaTest {
+    bool enabled = false;
+    CompareFunc func = CompareFunc::Always;  // Direct3D's default
+    float ref = 0.0f;                        // ALPHAREF / 255
+};
+
 struct Pass {
     std::string name;
     std::string target;  // empty: the output
@@ -254,6 +262,7 @@ struct Pass {
     DepthState depth;
     RasterState raster;
     FixedFunctionFog fog;
+    AlphaTest alphaTest;
     std::vector<ShaderSource> shaders;  // at most one per stage; no vertex shader: the built-in one
     std::vector<Sampler> samplers;
     std::vector<Variable> constants;    // pass-local values, shadowing workspace variables

@@ -399,6 +399,40 @@ float4 main(float2 uv : TEXCOORD0) : COLOR { return float4(0.2, 0.4, 0.6, 0.8); 
     }
 }
 
+// Direct3D 9's alpha test after the pixel shader: alpha = u (0.125, 0.375, 0.625, 0.875 across
+// the four pixel columns) against ALPHAREF 128 (128/255): a failing pixel is discarded and keeps
+// the clear colour.
+TEST_F(HlslGLTest, AlphaTestDiscardsThePixelsWhoseAlphaFails) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x1">
+  <target name="out" format="rgba32f" size="4x1"/>
+  <pass name="hlsl" target="out">
+    <clear color="0 0 1 1"/>
+    <shader stage="fragment"><![CDATA[
+float4 main(float2 uv : TEXCOORD0) : COLOR { return float4(1, 0, 0, uv.x); }
+]]></shader>
+  </pass>
+</workspace>)";
+    const double ref = 128.0 / 255.0;
+    for (const auto& [func, name] : {std::pair{CompareFunc::Greater, "greater"}, std::pair{CompareFunc::LessEqual, "less-equal"},
+                                     std::pair{CompareFunc::Never, "never"}, std::pair{CompareFunc::Always, "always"}}) {
+        SCOPED_TRACE(name);
+        std::unique_ptr<Workspace> ws = hlslWorkspace(xml);
+        ASSERT_TRUE(ws);
+        ws->passes[0].alphaTest = {true, func, static_cast<float>(ref)};
+        GlRun run = runWorkspace(std::move(ws), RunSettings());
+        ASSERT_TRUE(run.exec);
+        RefImage out = readRef(run, "out");
+        ASSERT_EQ(out.width, 4);
+        for (int x = 0; x < 4; ++x) {
+            const double alpha = (x + 0.5) / 4.0;
+            const bool passes = func == CompareFunc::Greater ? alpha > ref : func == CompareFunc::LessEqual ? alpha <= ref
+                                                                          : func == CompareFunc::Always;
+            expectNear(pixel(out, x, 0), passes ? glm::dvec4(1, 0, 0, alpha) : glm::dvec4(0, 0, 1, 1), 1e-6,
+                       "pixel " + std::to_string(x));
+        }
+    }
+}
+
 // Swizzles of scalars replicate them, as fxc's did: a variable, a component, a call's result, a
 // parenthesised expression and a literal.
 TEST_F(HlslGLTest, SwizzlesOfScalarsReplicateThem) {

@@ -616,6 +616,23 @@ TEST(RfxImporter, FogStatesBecomeThePasssFixedFunctionFog) {
               std::string::npos);
 }
 
+// D3DRS_ALPHATESTENABLE, ALPHAFUNC and ALPHAREF (a byte) make the pass's alpha test, carried
+// over like the other states.
+TEST(RfxImporter, AlphaTestStatesBecomeThePasssAlphaTest) {
+    Result<Workspace> ws = importRfxText(
+        d3dEffect(d3dStatePass(0, d3dState(15, "1") + d3dState(25, "7") + d3dState(24, "128")) + d3dStatePass(1, "")), "t.rfx",
+        ".", {""});
+    ASSERT_TRUE(ws) << formatAll(ws.diagnostics());
+    for (const Pass& pass : ws->passes) {
+        EXPECT_TRUE(pass.alphaTest.enabled);
+        EXPECT_EQ(pass.alphaTest.func, CompareFunc::GreaterEqual);
+        EXPECT_EQ(pass.alphaTest.ref, 128.0f / 255.0f);
+    }
+    EXPECT_EQ(formatAll(ws.diagnostics()).find("ALPHA"), std::string::npos) << formatAll(ws.diagnostics());
+    EXPECT_NE(errorsOf(d3dEffect(d3dStatePass(0, d3dState(24, "300")))).find("VALUE 300 is not an alpha reference (0 to 255)"),
+              std::string::npos);
+}
+
 // RenderMonkey 1.5 and before passed matrices in OpenGL's layout (its HLSL wrote
 // mul(view_proj_matrix, Pos)); 1.6 and later as D3DX does (mul(Input.Position, matViewProjection)).
 // The version that saved the file decides; assembly always reads rows (m4x4).

@@ -145,6 +145,7 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
         p.pass.depth = carried.depth;
         p.pass.raster = carried.raster;
         p.pass.fog = carried.fog;
+        p.pass.alphaTest = carried.alphaTest;
         bool separateAlpha = carriedSeparateAlpha;
         for (const XMLElement* block : p.stateBlocks)
             rfx::applyRenderStateBlock(RfxElement(block, file, diagnostics), effect.api, p.pass, separateAlpha);
@@ -153,6 +154,7 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
             carried.depth = p.pass.depth;
             carried.raster = p.pass.raster;
             carried.fog = p.pass.fog;
+            carried.alphaTest = p.pass.alphaTest;
             carriedSeparateAlpha = separateAlpha;
         }
         if (effect.api == RfxApi::Direct3D) rfx::finishD3dRenderStates(p.pass, separateAlpha);

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "core/IdentifierSearch.h"
+#include "frontend/shader/GlslMainEnd.h"
 
 namespace rmfx {
 namespace {
@@ -32,22 +33,10 @@ std::string factor(const FixedFunctionFog& fog) {
 bool appendFixedFunctionFog(std::string& glsl, const FixedFunctionFog& fog) {
     const std::string output = "rm_hlsl_out_COLOR0";
     if (!mentionsIdentifier(glsl, output)) return false;
-    const size_t main = glsl.find("void main()");
-    if (main == std::string::npos) return false;
-    const size_t open = glsl.find('{', main);
-    if (open == std::string::npos) return false;
-    int depth = 0;
-    size_t close = std::string::npos;
-    for (size_t i = open; i < glsl.size(); ++i) {
-        if (glsl[i] == '{') ++depth;
-        if (glsl[i] == '}' && --depth == 0) {
-            close = i;
-            break;
-        }
-    }
-    if (close == std::string::npos) return false;
+    const std::optional<size_t> close = endOfMain(glsl);
+    if (!close) return false;
     const std::string colour = "vec3(" + number(fog.color.r) + ", " + number(fog.color.g) + ", " + number(fog.color.b) + ")";
-    glsl.insert(close, " { float rm_fog_d = 1.0 / gl_FragCoord.w; float rm_fog = clamp(" + factor(fog) + ", 0.0, 1.0); " +
+    glsl.insert(*close, " { float rm_fog_d = 1.0 / gl_FragCoord.w; float rm_fog = clamp(" + factor(fog) + ", 0.0, 1.0); " +
                            output + ".rgb = mix(" + colour + ", " + output + ".rgb, rm_fog); } ");
     return true;
 }

@@ -1,5 +1,6 @@
 #include "frontend/shader/PassProgram.h"
 
+#include "frontend/shader/HlslAlphaTest.h"
 #include "frontend/shader/HlslFixedFunctionFog.h"
 #include "frontend/shader/HlslTranslationCache.h"
 #include "frontend/shader/LegacyGlslVersion.h"
@@ -128,7 +129,11 @@ Result<PassProgramSource> assemblePassProgram(const Workspace& ws, const Pass& p
             if (translated) {
                 stage.shader = std::move(translated->glsl);
                 if (s.stage == ShaderStage::Fragment) pixelInputs = std::move(translated->inputs);
-                // Direct3D 9 fogs after ps_1_x and ps_2_x shaders; ps_3_0 ones fog themselves.
+                // Direct3D 9 tests alpha after every pixel shader, and fogs after ps_1_x and ps_2_x
+                // ones (ps_3_0 ones fog themselves).
+                if (s.stage == ShaderStage::Fragment && pass.alphaTest.enabled && !appendAlphaTest(stage.shader.code, pass.alphaTest))
+                    diagnostics.push_back({Diagnostic::Severity::Warning, s.where, passLabel(pass),
+                                           "the pixel shader writes no COLOR0 for Direct3D's alpha test: drawn untested"});
                 if (s.stage == ShaderStage::Fragment && pass.fog.applies() && !isShaderModel3(s.profile) &&
                     !appendFixedFunctionFog(stage.shader.code, pass.fog))
                     diagnostics.push_back({Diagnostic::Severity::Warning, pass.fog.where, passLabel(pass),

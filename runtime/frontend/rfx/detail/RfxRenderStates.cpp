@@ -95,10 +95,10 @@ void warnUnmodelled(const RfxElement& state, const std::string& name, long long 
     state.warning("render state " + name + " = " + shown + " has no equivalent in rmfx's pass model; ignored");
 }
 
-// D3DRS_ALPHAREF, FOGSTART, FOGEND, FOGDENSITY, POINTSIZE, POINTSIZE_MIN, POINTSCALE_A,
-// POINTSIZE_MAX, DEPTHBIAS, SLOPESCALEDEPTHBIAS.
+// D3DRS_FOGSTART, FOGEND, FOGDENSITY, POINTSIZE, POINTSIZE_MIN, POINTSCALE_A, POINTSIZE_MAX,
+// DEPTHBIAS, SLOPESCALEDEPTHBIAS. (ALPHAREF is a byte, 0 to 255.)
 bool isFloatD3dRenderState(long long number) {
-    for (long long f : {24, 36, 37, 38, 154, 155, 156, 159, 195, 196})
+    for (long long f : {36, 37, 38, 154, 155, 156, 159, 195, 196})
         if (number == f) return true;
     return false;
 }
@@ -267,8 +267,14 @@ void applyD3dRenderState(const RfxElement& state, Pass& pass, bool& separateAlph
         case 36: pass.fog.start = floatFromBits(v); break;    // D3DRS_FOGSTART
         case 37: pass.fog.end = floatFromBits(v); break;      // D3DRS_FOGEND
         case 38: pass.fog.density = floatFromBits(v); break;  // D3DRS_FOGDENSITY
-        case 24: case 154: case 155: case 156: case 159: case 195: case 196:
-            // D3DRS_ALPHAREF, POINTSIZE, POINTSIZE_MIN, POINTSCALE_A, POINTSIZE_MAX, DEPTHBIAS,
+        case 15: set(pass.alphaTest.enabled, boolean, "boolean"); break;  // D3DRS_ALPHATESTENABLE
+        case 25: set(pass.alphaTest.func, compareFuncs, "D3DCMPFUNC"); break;  // D3DRS_ALPHAFUNC
+        case 24:  // D3DRS_ALPHAREF: the low byte
+            if (v < 0 || v > 255) state.error("VALUE " + std::to_string(v) + " is not an alpha reference (0 to 255)");
+            else pass.alphaTest.ref = static_cast<float>(v) / 255.0f;
+            break;
+        case 154: case 155: case 156: case 159: case 195: case 196:
+            // D3DRS_POINTSIZE, POINTSIZE_MIN, POINTSCALE_A, POINTSIZE_MAX, DEPTHBIAS,
             // SLOPESCALEDEPTHBIAS: floats
             warnUnmodelled(state, name, v, true);
             break;
