@@ -155,28 +155,28 @@ void frameDrawnModels(Workspace& ws) {
     const Sphere models = boundsOf(framed);
     const bool haveModels = !framed.empty() && models.radius > 0.0 && std::isfinite(models.radius);
 
-    // The camera RenderMonkey's viewer last showed, where the file kept its matrices.
+    // The camera RenderMonkey's viewer last showed, where the file kept its matrices: its clip
+    // planes are not kept, so they are set to hold the models.
+    auto adopt = [&](const OrbitCameraSettings& camera) {
+        ws.camera = camera;
+        const double reach = haveModels ? glm::length(models.centre - glm::dvec3(camera.target)) + models.radius : 0.0;
+        ws.camera.farPlane = static_cast<float>(std::max<double>(ws.camera.farPlane, (ws.camera.distance + reach) * 2.0));
+        ws.camera.nearPlane = static_cast<float>(std::max(ws.camera.distance * 1e-3, 1e-3));
+        sizeStandInsToTheCamera(ws);
+    };
     if (const Variable* view = stored(ws, "View", ValueType::Mat4)) {
         if (auto camera = fromStoredView(*view, models, haveModels, ws.camera)) {
-            ws.camera = *camera;
             if (const Variable* projection = stored(ws, "Projection", ValueType::Mat4)) {
                 const double p11 = projection->value.data[5];
-                if (p11 > 1e-6 && std::isfinite(p11)) ws.camera.fovYDegrees = static_cast<float>(2.0 * std::atan(1.0 / p11) * 180.0 / 3.14159265358979323846);
+                if (p11 > 1e-6 && std::isfinite(p11)) camera->fovYDegrees = static_cast<float>(2.0 * std::atan(1.0 / p11) * 180.0 / 3.14159265358979323846);
             }
-            const double reach = haveModels ? glm::length(models.centre - glm::dvec3(camera->target)) + models.radius : 0.0;
-            ws.camera.farPlane = static_cast<float>(std::max<double>(ws.camera.farPlane, (ws.camera.distance + reach) * 2.0));
-            ws.camera.nearPlane = static_cast<float>(std::max(ws.camera.distance * 1e-3, 1e-3));
-            sizeStandInsToTheCamera(ws);
+            adopt(*camera);
             return;
         }
     }
     if (const Variable* viewProjection = stored(ws, "ViewProjection", ValueType::Mat4)) {
         if (auto camera = fromStoredViewProjection(*viewProjection, models, haveModels, ws.camera)) {
-            ws.camera = *camera;
-            const double reach = haveModels ? glm::length(models.centre - glm::dvec3(camera->target)) + models.radius : 0.0;
-            ws.camera.farPlane = static_cast<float>(std::max<double>(ws.camera.farPlane, (ws.camera.distance + reach) * 2.0));
-            ws.camera.nearPlane = static_cast<float>(std::max(ws.camera.distance * 1e-3, 1e-3));
-            sizeStandInsToTheCamera(ws);
+            adopt(*camera);
             return;
         }
     }
