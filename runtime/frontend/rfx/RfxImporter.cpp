@@ -1,6 +1,7 @@
 #include "frontend/rfx/RfxImporter.h"
 
 #include <algorithm>
+#include <set>
 #include <string_view>
 
 #include "frontend/rfx/detail/RfxCamera.h"
@@ -140,6 +141,7 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
     Pass carried;
     rfx::setRenderMonkeyDefaults(carried);
     bool carriedSeparateAlpha = false;
+    std::set<int> vertexFogWarned;  // lines of the FOGENABLE states warned about
     for (ReadPass& p : passes) {
         p.pass.blend = carried.blend;
         p.pass.depth = carried.depth;
@@ -158,8 +160,10 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
             carriedSeparateAlpha = separateAlpha;
         }
         if (effect.api == RfxApi::Direct3D) rfx::finishD3dRenderStates(p.pass, separateAlpha);
-        // With a vertex shader, Direct3D's vertex fog is the shader's FOG output, not depth.
-        if (effect.api == RfxApi::Direct3D && p.pass.enabled && p.pass.fog.enabled && !p.pass.fog.mode && p.pass.fog.vertexFog)
+        // With a vertex shader, Direct3D's vertex fog is the shader's FOG output, not depth. Said
+        // once for the state, though the passes after it carry it.
+        if (effect.api == RfxApi::Direct3D && p.pass.enabled && p.pass.fog.enabled && !p.pass.fog.mode && p.pass.fog.vertexFog &&
+            vertexFogWarned.insert(p.pass.fog.where.line).second)
             diagnostics.push_back({Diagnostic::Severity::Warning, p.pass.fog.where, "<RmPass NAME=\"" + p.pass.name + "\">",
                                    "vertex fog (D3DRS_FOGVERTEXMODE) takes the vertex shader's FOG output, which rmfx does "
                                    "not blend: drawn without fog (table fog, D3DRS_FOGTABLEMODE, is applied)"});
