@@ -8,8 +8,9 @@
 namespace rmfx::editor {
 namespace {
 
-OrbitCamera camera() {
+OrbitCamera camera(CameraConvention convention = CameraConvention::OpenGL) {
     OrbitCameraSettings s;
+    s.convention = convention;
     s.yawDegrees = 30.0f;
     s.pitchDegrees = 15.0f;
     s.distance = 4.0f;
@@ -27,28 +28,37 @@ glm::vec2 windowPixel(const OrbitCamera& c, glm::vec3 point, glm::ivec2 size) {
 
 }  // namespace
 
+// In either convention (a Direct3D camera's picture is OpenGL's mirrored, so its yaw turns the
+// other way), the drag turns the scene with the cursor and the pan keeps the point under it.
 TEST(EditorCameraControl, DraggingRightTurnsTheSceneRightAndDownRaisesTheCamera) {
-    OrbitCamera c = camera();
-    orbitByDrag(c, {100.0f, 20.0f});
-    EXPECT_NEAR(c.settings().yawDegrees, 30.0f - 100.0f * orbitDegreesPerPixel, 1e-4f);
-    EXPECT_NEAR(c.settings().pitchDegrees, 15.0f + 20.0f * orbitDegreesPerPixel, 1e-4f);
-    // The scene turned with the drag: the side of it that faced the camera moved right of centre.
-    OrbitCamera before = camera();
-    glm::vec2 old = windowPixel(c, before.position() * 0.5f + before.settings().target * 0.5f, {400, 300});
-    EXPECT_GT(old.x, 200.0f);
+    for (const CameraConvention convention : {CameraConvention::OpenGL, CameraConvention::Direct3D}) {
+        SCOPED_TRACE(convention == CameraConvention::OpenGL ? "OpenGL" : "Direct3D");
+        OrbitCamera c = camera(convention);
+        orbitByDrag(c, {100.0f, 20.0f});
+        const float turn = (convention == CameraConvention::OpenGL ? -100.0f : 100.0f) * orbitDegreesPerPixel;
+        EXPECT_NEAR(c.settings().yawDegrees, 30.0f + turn, 1e-4f);
+        EXPECT_NEAR(c.settings().pitchDegrees, 15.0f + 20.0f * orbitDegreesPerPixel, 1e-4f);
+        // The scene turned with the drag: the side of it that faced the camera moved right of centre.
+        OrbitCamera before = camera(convention);
+        glm::vec2 old = windowPixel(c, before.position() * 0.5f + before.settings().target * 0.5f, {400, 300});
+        EXPECT_GT(old.x, 200.0f);
+    }
 }
 
 TEST(EditorCameraControl, PanKeepsThePointUnderTheCursor) {
-    const glm::ivec2 size(400, 300);
-    OrbitCamera c = camera();
-    const glm::vec3 target = c.settings().target;
-    EXPECT_NEAR(windowPixel(c, target, size).x, 200.0f, 1e-3f);
-    const glm::vec2 drag(37.0f, -22.0f);
-    panByDrag(c, drag, size.y);
-    glm::vec2 now = windowPixel(c, target, size);
-    EXPECT_NEAR(now.x, 200.0f + drag.x, 1e-2f);
-    EXPECT_NEAR(now.y, 150.0f + drag.y, 1e-2f);
-    EXPECT_EQ(c.settings().distance, 4.0f);
+    for (const CameraConvention convention : {CameraConvention::OpenGL, CameraConvention::Direct3D}) {
+        SCOPED_TRACE(convention == CameraConvention::OpenGL ? "OpenGL" : "Direct3D");
+        const glm::ivec2 size(400, 300);
+        OrbitCamera c = camera(convention);
+        const glm::vec3 target = c.settings().target;
+        EXPECT_NEAR(windowPixel(c, target, size).x, 200.0f, 1e-3f);
+        const glm::vec2 drag(37.0f, -22.0f);
+        panByDrag(c, drag, size.y);
+        glm::vec2 now = windowPixel(c, target, size);
+        EXPECT_NEAR(now.x, 200.0f + drag.x, 1e-2f);
+        EXPECT_NEAR(now.y, 150.0f + drag.y, 1e-2f);
+        EXPECT_EQ(c.settings().distance, 4.0f);
+    }
 }
 
 TEST(EditorCameraControl, WheelForwardComesCloser) {
