@@ -573,7 +573,7 @@ TEST(RfxImporter, Direct3dEffectWithHlslStatesAndADisabledAssemblyPass) {
     ASSERT_EQ(legacy.shaders.size(), 1u);
     EXPECT_EQ(legacy.shaders[0].dialect, ShaderDialect::Hlsl);
     EXPECT_EQ(legacy.shaders[0].entryPoint, "rm_asm_main");
-    EXPECT_EQ(legacy.shaders[0].profile, "ps_3_0");
+    EXPECT_EQ(legacy.shaders[0].profile, "ps_1_1");  // what it was written for
     int line = lineOf(rfxDir() / "d3d_hlsl.rfx", "<RmShader NAME=");
     EXPECT_NE(warnings.find("d3d_hlsl.rfx:" + std::to_string(line) +
                             ": warning: <RmShader NAME=\"Pixel Shader\">: Direct3D assembly (ps_1_1) translated to HLSL"),
@@ -886,7 +886,7 @@ TEST(RfxImporter, AssemblyShadersBecomeHlslAndTheirErrorsNameTheRfxLine) {
     const ShaderSource& v = ok->passes[0].shaders[0];
     EXPECT_EQ(v.dialect, ShaderDialect::Hlsl);
     EXPECT_EQ(v.entryPoint, "rm_asm_main");
-    EXPECT_EQ(v.profile, "vs_3_0");
+    EXPECT_EQ(v.profile, "vs_1_1");  // what it was written for
     EXPECT_EQ(v.codeLine, 6);  // the CDATA's first line: generated line N is the code's line N
     EXPECT_NE(v.code.find("float4x4 M;"), std::string::npos) << v.code;
     const std::string warnings = formatAll(ok.diagnostics());

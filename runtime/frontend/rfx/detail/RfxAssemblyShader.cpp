@@ -97,7 +97,9 @@ std::optional<ShaderSource> readAssemblyShader(const RfxElement& c, const Assemb
     c.warning("Direct3D assembly (" + version + ") translated to HLSL for rmfx's HLSL path");
     s.code = std::move(hlsl.hlsl);
     s.entryPoint = hlsl.entryPoint;
-    s.profile = hlsl.profile;
+    // The version it was written for, not the ps_3_0 the generated HLSL is compiled as: Direct3D's
+    // fixed-function fog follows a ps_1_x or ps_2_x shader.
+    s.profile = version;
     return s;
 }
 
