@@ -13,8 +13,8 @@ struct HlslGlobalInitializer {
     std::string name;
     std::string declaredType;    // as written: "float4", "half", "float4x4"…
     bool array = false;          // declared with [N]
-    bool constant = false;       // the initializer is a list of numbers (or true/false)
-    std::vector<double> values;  // those numbers, flattened: float4(1, 2, 3, 4) and {1, 2, 3, 4} alike
+    bool constant = false;       // the initializer is made of numbers: arithmetic fxc folded, constructors, brace lists
+    std::vector<double> values;  // its values, flattened: float4(1, 2, 3, 4), {1, 2, 3, 4} and {2 * 0.5, …} alike
     int line = 0;                // 1-based line of the name in the scanned code
 };
 
