@@ -353,6 +353,33 @@ float4 main(float2 uv : TEXCOORD0) : COLOR {
     for (int x = 0; x < 4; ++x) expectNear(pixel(out, x, 1), {0.25 + 2 * 0.5, 1.0, 0.5, -1.0}, 1e-6, "pixel " + std::to_string(x));
 }
 
+// A matrix constant's default, listed row by row as HLSL does (popekim's EdgeDetection.rfx: Sobel
+// kernels `float3x3 Kx = { -1, 0, 1, -2, 0, 2, -1, 0, 1 };`): row 0 is (-1, 0, 1), so
+// mul(float3(1, 0, 0), Kx) = (-1, 0, 1), Kx[1][0] = -2 and mul(Kx, float3(0, 0, 1)) is column 2,
+// (1, 2, 1).
+TEST_F(HlslGLTest, AMatrixDefaultListedRowByRowHoldsAsInDirect3D) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x1">
+  <target name="out" format="rgba32f" size="4x1"/>
+  <pass name="hlsl" target="out">
+    <shader stage="fragment"><![CDATA[
+float3x3 Kx = { -1, 0, 1, -2, 0, 2, -1, 0, 1 };
+float4 main(float2 uv : TEXCOORD0) : COLOR {
+    if (uv.x < 0.5) return float4(mul(float3(1, 0, 0), Kx), Kx[1][0]);
+    return float4(mul(Kx, float3(0, 0, 1)), 0);
+}
+]]></shader>
+  </pass>
+</workspace>)";
+    std::unique_ptr<Workspace> ws = hlslWorkspace(xml);
+    ASSERT_TRUE(ws);
+    const std::string warnings = formatAll(validateWorkspace(*ws).diagnostics());
+    EXPECT_EQ(warnings.find("Kx"), std::string::npos) << warnings;
+    RefImage out = renderOut(xml);
+    ASSERT_EQ(out.width, 4);
+    expectNear(pixel(out, 0, 0), {-1, 0, 1, -2}, 1e-6, "row 0 and Kx[1][0]");
+    expectNear(pixel(out, 3, 0), {1, 2, 1, 0}, 1e-6, "column 2");
+}
+
 // Direct3D 9's table fog after a ps_2_0 shader: the colour blends toward the fog colour by the
 // pixel's eye-space depth, here the clip w the vertex shader writes (4): linear from 1 to 7 gives
 // f = (7 − 4) / 6 = 0.5, exp with density 0.25 exp(−1), exp2 with density 0.25 exp(−1). A ps_3_0

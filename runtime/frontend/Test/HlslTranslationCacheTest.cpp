@@ -76,10 +76,10 @@ TEST(HlslTranslationCache, ChangedTextStageEntryOrProfileTranslatesAnew) {
 
 TEST(HlslTranslationCache, WarningsAndErrorsComeBackFromTheCache) {
     HlslTranslationCache cache;
-    // `turn` keeps no initial value (a matrix): a warning at its line, 10 + 0.
+    // `turn` keeps no initial value (it names a function): a warning at its line, 10 + 0.
     PreprocessedShader warned = preprocessed(lines({
-        "float2x2 turn = { 0, 1, -1, 0 };",
-        "float4 main(float2 uv : TEXCOORD0) : COLOR { return float4(mul(uv, turn), 0, 1); }",
+        "float turn = sqrt(2.0);",
+        "float4 main(float2 uv : TEXCOORD0) : COLOR { return float4(uv * turn, 0, 1); }",
     }));
     PreprocessedShader broken = preprocessed(lines({"float4 main() : COLOR {", "    return missing;", "}"}));
     for (int round = 0; round < 2; ++round) {

@@ -739,9 +739,21 @@ TEST(RfxImporter, BadInputsAreErrorsWithFileAndLine) {
     EXPECT_NE(errorsOf(pass("<RmTextureObject NAME=\"s\"><RmTextureReference NAME=\"missing\"/></RmTextureObject>\n"))
                   .find("t.rfx:6: error: <RmTextureReference NAME=\"missing\">: no texture variable or renderable texture"),
               std::string::npos);
-    EXPECT_NE(errorsOf(pass("<RmSampler NAME=\"s\"/>\n"))
+    // A sampler the shader reads needs its texture object; one left behind that nothing reads is
+    // ignored with a warning (Ant0nin's cubemap.rfx keeps such a displacementTexture).
+    const std::string sampling = "<RmGLShader NAME=\"F\" PIXEL_SHADER=\"TRUE\"><RmShaderCode><![CDATA[uniform sampler2D s; "
+                                 "void main() { gl_FragColor = texture2D(s, vec2(0.5)); }]]></RmShaderCode></RmGLShader>";
+    EXPECT_NE(errorsOf(glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n" + sampling + "\n<RmSampler NAME=\"s\"/>\n"
+                                "</RmGLPass>\n"))
                   .find("t.rfx:6: error: <RmSampler NAME=\"s\">: sampler 's' has no <RmTextureObject NAME=\"s\">"),
               std::string::npos);
+    Result<Workspace> leftover = importRfxText(pass("<RmSampler NAME=\"s\"/>\n"), "t.rfx", ".");
+    EXPECT_TRUE(leftover.ok()) << formatAll(leftover.diagnostics());
+    EXPECT_NE(formatAll(leftover.diagnostics())
+                  .find("t.rfx:6: warning: <RmSampler NAME=\"s\">: sampler 's' has no <RmTextureObject NAME=\"s\"> in the pass to "
+                        "say which texture it reads; its shaders do not use it, so it is ignored"),
+              std::string::npos)
+        << formatAll(leftover.diagnostics());
     // The texture object is there; only its texture is missing: one error, on the reference,
     // whichever comes first.
     for (const char* order : {"<RmSampler NAME=\"s\"/>\n<RmTextureObject NAME=\"s\"><RmTextureReference NAME=\"Noise\"/></RmTextureObject>\n",

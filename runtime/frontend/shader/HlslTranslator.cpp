@@ -40,12 +40,15 @@ bool checkProfile(const HlslStage& stage, const SourceLocation& where, const std
     return false;
 }
 
-// Components of a GLSL scalar or vector type ("float" 1, "ivec3" 3…), 0 for anything else.
+// Components of a GLSL scalar, vector or float matrix type ("float" 1, "ivec3" 3, "mat3" 9,
+// "mat2x3" 6…), 0 for anything else.
 int components(const std::string& type) {
     static const std::map<std::string, int> sizes = {
         {"float", 1}, {"vec2", 2},  {"vec3", 3},  {"vec4", 4},  {"int", 1},   {"ivec2", 2}, {"ivec3", 3},
         {"ivec4", 4}, {"uint", 1},  {"uvec2", 2}, {"uvec3", 3}, {"uvec4", 4}, {"bool", 1},  {"bvec2", 2},
-        {"bvec3", 3}, {"bvec4", 4}, {"double", 1}};
+        {"bvec3", 3}, {"bvec4", 4}, {"double", 1}, {"mat2", 4}, {"mat3", 9}, {"mat4", 16}, {"mat2x2", 4},
+        {"mat2x3", 6}, {"mat2x4", 8}, {"mat3x2", 6}, {"mat3x3", 9}, {"mat3x4", 12}, {"mat4x2", 8}, {"mat4x3", 12},
+        {"mat4x4", 16}};
     auto it = sizes.find(type);
     return it == sizes.end() ? 0 : it->second;
 }
@@ -68,12 +71,14 @@ std::string literal(const std::string& type, double value) {
 }
 
 // The GLSL initializer ` = …` of a uniform of `type` (an array when `arraySuffix` is "[N]") from
-// the HLSL initial value, or nullopt with `why` when it cannot be one.
+// the HLSL initial value, or nullopt with `why` when it cannot be one. An HLSL matrix's row i is
+// its GLSL matrix's column i (the layout above), so the values, listed row by row in HLSL, fill
+// GLSL's constructor column by column in the same order.
 std::optional<std::string> glslInitializer(const std::string& type, const std::string& arraySuffix,
                                            const HlslGlobalInitializer& init, std::string& why) {
     const int n = components(type);
     if (n == 0) {
-        why = "rmfx carries over the initial values of scalars, vectors and arrays of them only";
+        why = "rmfx carries over the initial values of scalars, vectors, float matrices and arrays of them only";
         return std::nullopt;
     }
     if (!init.constant) {

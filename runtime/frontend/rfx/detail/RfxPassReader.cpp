@@ -58,9 +58,16 @@ public:
         for (const RfxElement& c : assemblyShaders_) assemblyShader(c);
         bindStreams();
         checkConstants();
-        for (const auto& [sampler, where] : samplersWithoutObject_)
-            where.error("sampler '" + sampler + "' has no <RmTextureObject NAME=\"" + sampler +
-                        "\"> in the pass to say which texture it reads");
+        // A sampler left behind in the file, which no shader reads, is ignored as RenderMonkey
+        // did (like an RmShaderConstant naming nothing).
+        for (const auto& [sampler, where] : samplersWithoutObject_) {
+            const std::string message = "sampler '" + sampler + "' has no <RmTextureObject NAME=\"" + sampler +
+                                        "\"> in the pass to say which texture it reads";
+            const bool used = std::any_of(out_.pass.shaders.begin(), out_.pass.shaders.end(),
+                                          [&](const ShaderSource& s) { return mentionsIdentifier(s.code, sampler); });
+            if (used) where.error(message);
+            else where.warning(message + "; its shaders do not use it, so it is ignored");
+        }
         if (!index) return std::nullopt;
         return out_;
     }
