@@ -60,7 +60,8 @@ public:
         checkConstants();
         // A sampler left behind in the file, which no shader reads, is ignored as RenderMonkey
         // did (like an RmShaderConstant naming nothing).
-        for (const auto& [sampler, where] : samplersWithoutObject_) {
+        for (const auto& [name, where] : samplersWithoutObject_) {
+            const std::string& sampler = name;  // clang before 16 cannot capture a structured binding
             const std::string message = "sampler '" + sampler + "' has no <RmTextureObject NAME=\"" + sampler +
                                         "\"> in the pass to say which texture it reads";
             const bool used = std::any_of(out_.pass.shaders.begin(), out_.pass.shaders.end(),
