@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <vector>
 
@@ -44,6 +45,9 @@ const Variable* stored(const Workspace& ws, const std::string& semantic, ValueTy
     return nullptr;
 }
 
+// The vertical field of view, in degrees, of a perspective projection whose y scale is p11.
+float fovFromYScale(double p11) { return static_cast<float>(2.0 * std::atan(1.0 / p11) * 180.0 / std::numbers::pi); }
+
 // RenderMonkey's viewer camera as it saved it in a View matrix (VARIABLE_SEMANTIC="View"): stored
 // row by row in the column-vector convention, which rmfx reads with VALUE_0…3 as the first column,
 // so element (row i, column j) is data[4i + j]. The eye is -Rᵀt; the view axis is the third row,
@@ -73,7 +77,7 @@ std::optional<OrbitCameraSettings> fromStoredView(const Variable& view, const Sp
 // RenderMonkey's default 200 units and 45°). Full-screen quads keep their size.
 void sizeStandInsToTheCamera(Workspace& ws) {
     const OrbitCamera camera(ws.camera);
-    const double halfHeightPerDistance = std::tan(ws.camera.fovYDegrees * 0.5 * 3.14159265358979323846 / 180.0);
+    const double halfHeightPerDistance = std::tan(ws.camera.fovYDegrees * 0.5 * std::numbers::pi / 180.0);
     for (Pass& pass : ws.passes) {
         DrawCall& draw = pass.draw;
         if (!draw.standIn || !draw.mesh || *draw.mesh == BuiltinMesh::Quad || *draw.mesh == BuiltinMesh::FullscreenTriangle)
@@ -116,7 +120,7 @@ std::optional<OrbitCameraSettings> fromStoredViewProjection(const Variable& view
     // The orbit's centre: where the view passes the models (the origin's depth without them).
     const double along = std::max(glm::dot((haveModels ? models.centre : glm::dvec3(0.0)) - eye, forward), 1e-3 * glm::length(eye) + 1e-3);
     std::optional<OrbitCameraSettings> s = orbitLookingAt(glm::vec3(eye), glm::vec3(eye + forward * along), glm::vec3(up), base);
-    if (s) s->fovYDegrees = static_cast<float>(2.0 * std::atan(1.0 / p11) * 180.0 / 3.14159265358979323846);
+    if (s) s->fovYDegrees = fovFromYScale(p11);
     return s;
 }
 
@@ -168,7 +172,7 @@ void frameDrawnModels(Workspace& ws) {
         if (auto camera = fromStoredView(*view, models, haveModels, ws.camera)) {
             if (const Variable* projection = stored(ws, "Projection", ValueType::Mat4)) {
                 const double p11 = projection->value.data[5];
-                if (p11 > 1e-6 && std::isfinite(p11)) camera->fovYDegrees = static_cast<float>(2.0 * std::atan(1.0 / p11) * 180.0 / 3.14159265358979323846);
+                if (p11 > 1e-6 && std::isfinite(p11)) camera->fovYDegrees = fovFromYScale(p11);
             }
             adopt(*camera);
             return;
@@ -181,7 +185,7 @@ void frameDrawnModels(Workspace& ws) {
         }
     }
     if (!haveModels) return;
-    const double halfFov = ws.camera.fovYDegrees * 0.5 * 3.14159265358979323846 / 180.0;
+    const double halfFov = ws.camera.fovYDegrees * 0.5 * std::numbers::pi / 180.0;
     const double distance = models.radius / std::sin(halfFov) * 1.05;
     ws.camera.target = glm::vec3(models.centre);
     ws.camera.distance = static_cast<float>(distance);

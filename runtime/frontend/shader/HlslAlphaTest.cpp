@@ -1,8 +1,7 @@
 #include "frontend/shader/HlslAlphaTest.h"
 
-#include <cstdio>
-
 #include "core/IdentifierSearch.h"
+#include "frontend/shader/GlslFloatLiteral.h"
 #include "frontend/shader/GlslMainEnd.h"
 
 namespace rmfx {
@@ -12,8 +11,7 @@ bool appendAlphaTest(std::string& glsl, const AlphaTest& test) {
     if (!mentionsIdentifier(glsl, output)) return false;
     const std::optional<size_t> close = endOfMain(glsl);
     if (!close) return false;
-    char ref[40];
-    std::snprintf(ref, sizeof ref, "%.9g", static_cast<double>(test.ref));
+    const std::string ref = glslFloatLiteral(static_cast<double>(test.ref));
     const std::string alpha = output + ".a";
     std::string passes;
     switch (test.func) {

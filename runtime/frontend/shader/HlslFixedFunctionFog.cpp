@@ -1,20 +1,13 @@
 #include "frontend/shader/HlslFixedFunctionFog.h"
 
-#include <cstdio>
-
 #include "core/IdentifierSearch.h"
+#include "frontend/shader/GlslFloatLiteral.h"
 #include "frontend/shader/GlslMainEnd.h"
 
 namespace rmfx {
 namespace {
 
-std::string number(float v) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.9g", static_cast<double>(v));
-    std::string s = text;
-    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
-    return s;
-}
+std::string number(float v) { return glslFloatLiteral(static_cast<double>(v)); }
 
 // The fog factor of depth `rm_fog_d`, before clamping.
 std::string factor(const FixedFunctionFog& fog) {

@@ -14,6 +14,7 @@
 #include "frontend/shader/HlslBraceElision.h"
 #include "frontend/shader/HlslSamplerTypes.h"
 #include "frontend/shader/HlslWritableGlobals.h"
+#include "frontend/shader/GlslFloatLiteral.h"
 #include "frontend/shader/HlslGlobalInitializers.h"
 #include "frontend/shader/HlslWorker.h"
 
@@ -62,10 +63,7 @@ std::string literal(const std::string& type, double value) {
     } else if (type[0] == 'u') {
         std::snprintf(text, sizeof text, "%lluu", static_cast<unsigned long long>(std::clamp(value, 0.0, 4294967295.0)));
     } else {
-        std::snprintf(text, sizeof text, "%.9g", value);
-        std::string s = text;
-        if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
-        return s;
+        return glslFloatLiteral(value);
     }
     return text;
 }
