@@ -85,7 +85,9 @@ TEST_F(CliSequenceGLTest, AGapIsAnErrorNamingTheMissingFrameBeforeAnythingIsWrit
     writeFrames(dir, {1, 2, 4});
     CommandResult cli = runRmfx("render acc.xml --input frame=shot/f.%04d.exr -o out.%04d.exr", dir.path());
     EXPECT_NE(cli.status, 0);
-    EXPECT_NE(cli.err.find("f.0003.exr"), std::string::npos) << cli.err;
+    EXPECT_NE(cli.err.find("acc.xml: error: --input frame=shot/f.%04d.exr: shot/f.%04d.exr: frames 1 to 4 have gaps: shot/f.0003.exr is missing"),
+              std::string::npos)
+        << cli.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "out.0001.exr"));
 }
 
@@ -96,7 +98,8 @@ TEST_F(CliSequenceGLTest, ABadFrameStopsTheRunNamingItAndKeepsTheFramesBefore) {
     dir.write("shot/f.0003.exr", "not an EXR");
     CommandResult cli = runRmfx("render acc.xml --input frame=shot/f.%04d.exr -o out.%04d.exr", dir.path());
     EXPECT_EQ(cli.status, 2);
-    EXPECT_NE(cli.err.find("f.0003.exr"), std::string::npos) << cli.err;
+    EXPECT_NE(cli.err.find("acc.xml: error: --input frame=shot/f.%04d.exr: shot/f.0003.exr: cannot read image"), std::string::npos)
+        << cli.err;
     EXPECT_TRUE(std::filesystem::exists(dir / "out.0001.exr"));
     EXPECT_TRUE(std::filesystem::exists(dir / "out.0002.exr"));
     EXPECT_FALSE(std::filesystem::exists(dir / "out.0003.exr"));

@@ -58,19 +58,23 @@ Result<SequenceTimes> renderSequence(const Workspace& source, const SequenceSett
                                      const std::function<void(const SequenceProgress&)>& progress) {
     using Run = Result<SequenceTimes>;
     const Clock::time_point started = Clock::now();
+    const std::string argument = (settings.input.empty() ? "" : settings.input + "=") + settings.inputPattern;
+    // Errors of the run as a whole name the workspace and the argument, as supplyInputs' do.
+    auto runError = [&](std::string element, std::string message) {
+        return Run::failure(Diagnostics{{Diagnostic::Severity::Error, {source.path.string(), 0}, std::move(element), std::move(message)}});
+    };
     Result<std::vector<SequenceFrame>> frames = findSequenceFrames(settings.inputPattern);
-    if (!frames) return Run::failure(std::move(frames).diagnostics());
+    if (!frames) return runError("--input " + argument, frames.error());
     Result<FramePattern> output = parseFramePattern(settings.outputPattern);
     if (!output)
-        return Error{"-o " + settings.outputPattern + ": a sequence is written to a pattern such as out/frame.%04d.png (" +
-                     output.error() + ")"};
-    if (!(settings.fps > 0.0)) return Error{"--fps must be above 0"};
+        return runError("-o " + settings.outputPattern,
+                        "a sequence is written to a pattern such as out/frame.%04d.png (" + output.error() + ")");
+    if (!(settings.fps > 0.0)) return runError("--fps", "must be above 0");
 
     // The first frame goes through supplyInputs with the static images: it picks the input, sets
     // the viewport and says how each file was decoded.
     Workspace ws = source;
-    std::vector<InputArgument> given{{settings.input, frames->front().path, settings.layer,
-                                      (settings.input.empty() ? "" : settings.input + "=") + settings.inputPattern}};
+    std::vector<InputArgument> given{{settings.input, frames->front().path, settings.layer, argument}};
     given.insert(given.end(), settings.staticInputs.begin(), settings.staticInputs.end());
     const Clock::time_point firstRead = Clock::now();
     Result<SuppliedInputs> supplied = supplyInputs(ws, given, settings.size);
@@ -85,7 +89,7 @@ Result<SequenceTimes> renderSequence(const Workspace& source, const SequenceSett
     const glm::ivec2 frameSize(firstImage.width, firstImage.height);
     options.givenInputs = supplied->given;
     const std::string target = settings.target.empty() ? ws.outputTargetName() : settings.target;
-    if (!ws.canReadTarget(target)) return Error{"the workspace has no target '" + target + "' (" + ws.describeTargets() + ")"};
+    if (!ws.canReadTarget(target)) return runError("--target " + target, "the workspace has no such target (" + ws.describeTargets() + ")");
     if (options.outputs.empty()) options.outputs = {target};
     auto created = GlExecutor::create(std::make_shared<const Workspace>(ws), viewport, options);
     if (!created) return Run::failure(created.takeDiagnostics());
@@ -112,7 +116,7 @@ Result<SequenceTimes> renderSequence(const Workspace& source, const SequenceSett
         std::string all = message;
         if (!pending) all = pending.error() + "\n" + all;
         Diagnostics d = warnings;
-        d.push_back({Diagnostic::Severity::Error, {}, "", all});
+        d.push_back({Diagnostic::Severity::Error, {source.path.string(), 0}, "--input " + argument, all});
         return Run::failure(std::move(d));
     };
     std::optional<FrameWatchdog> watchdog;
