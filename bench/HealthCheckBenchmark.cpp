@@ -2,8 +2,10 @@
 // (or --workspace W) at 512x512 with the check off and on, side by side. Each round renders
 // --frames frames with each executor, the two in alternating order, a frame being renderFrame +
 // glFinish on the wall clock; the check's frame includes reading its buffer back at the end.
-// Printed: each round's medians and ratio, then the median ratio over the rounds and its spread,
-// and the GPU time of a frame (timer queries) with and without the check. The issue's target: the
+// Three executors: the check off, the check inspecting each target after its pass (after-pass),
+// and the passes counting what they write (while-drawing, gl/HealthInstrumentation.h).
+// Printed: each round's medians and ratios against off, then the median ratios over the rounds and
+// their spread, the GPU time of a frame and of each pass (timer queries). The issue's target: the
 // check costs under 10 % of the frame at 512x512.
 //
 //   rmfx_bench_health_check [--size WxH] [--rounds N] [--frames N] [--workspace FILE]
@@ -53,37 +55,41 @@ int main(int argc, char** argv) {
         return 1;
     }
     auto ws = std::make_shared<const Workspace>(std::move(*loaded));
-    std::unique_ptr<GlExecutor> executors[2];  // check off, on
-    for (int on = 0; on < 2; ++on) {
+    // Check off; the check inspecting each target after its pass; the passes counting what they
+    // write (where they can: the others are inspected after them).
+    constexpr int kExecutors = 3;
+    std::unique_ptr<GlExecutor> executors[kExecutors];
+    for (int e = 0; e < kExecutors; ++e) {
         ExecutorOptions options;
         options.outputs = {ws->outputTargetName()};  // as rmfx render asks for its one image
-        options.checkHealth = on == 1;
+        options.checkHealth = e > 0;
+        options.healthCheckMethod = e == 1 ? HealthCheckMethod::AfterPass : HealthCheckMethod::WhileDrawing;
         auto created = GlExecutor::create(ws, a.size, options);
         if (!created) {
             std::fprintf(stderr, "rmfx_bench_health_check: %s", formatAll(created.diagnostics()).c_str());
             return 1;
         }
-        executors[on] = std::move(*created);
+        executors[e] = std::move(*created);
     }
     std::string frameError;
     int frameIndex = 0;
     // This thread's CPU time to issue a frame (renderFrame without the check's read-back wait is
     // not separable: the read-back is inside it), per executor over all rounds.
-    std::vector<double> issueCpu[2];
+    std::vector<double> issueCpu[kExecutors];
     auto threadCpuMilliseconds = [] {
         timespec t{};
         clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
         return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
     };
-    auto run = [&](int on, int frames) {
+    auto run = [&](int e, int frames) {
         std::vector<double> times;
         for (int k = 0; k < frames; ++k) {
             const float time = static_cast<float>(frameIndex++) / 60.0f;
             glFinish();
             auto start = Clock::now();
             const double cpuStart = threadCpuMilliseconds();
-            Diagnostics d = executors[on]->renderFrame({time, 1.0f / 60.0f}).takeDiagnostics();
-            issueCpu[on].push_back(threadCpuMilliseconds() - cpuStart);
+            Diagnostics d = executors[e]->renderFrame({time, 1.0f / 60.0f}).takeDiagnostics();
+            issueCpu[e].push_back(threadCpuMilliseconds() - cpuStart);
             glFinish();
             times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
             if (hasErrors(d) && frameError.empty()) frameError = formatAll(d);
@@ -96,47 +102,75 @@ int main(int argc, char** argv) {
                 reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
     std::printf("rmfx_bench_health_check: %s at %dx%d, %d rounds of %d frames per executor\n",
                 a.workspace.filename().string().c_str(), a.size.x, a.size.y, a.rounds, a.frames);
-    run(0, 3), run(1, 3);  // warm-up: llvmpipe compiles at first draws
+    for (int e = 0; e < kExecutors; ++e) run(e, 3);  // warm-up: llvmpipe compiles at first draws
     if (!frameError.empty()) {
         std::fprintf(stderr, "rmfx_bench_health_check: a frame failed: %s", frameError.c_str());
         return 1;
     }
-    std::vector<double> off, on, ratios;
-    std::printf("round  off (ms)  on (ms)  on / off\n");
+    std::vector<double> ms[kExecutors], ratios[kExecutors];  // ratios against off, per round
+    std::printf("round  off (ms)  after-pass (ms)  while-drawing (ms)  after-pass / off  while-drawing / off\n");
     for (int round = 0; round < a.rounds; ++round) {
-        const int first = round % 2;
-        double ms[2];
-        ms[first] = run(first, a.frames);
-        ms[1 - first] = run(1 - first, a.frames);
-        off.push_back(ms[0]);
-        on.push_back(ms[1]);
-        ratios.push_back(ms[1] / ms[0]);
-        std::printf("%5d  %8.2f  %7.2f  %8.3f\n", round + 1, ms[0], ms[1], ratios.back());
+        double t[kExecutors];
+        for (int k = 0; k < kExecutors; ++k) {  // the order rotates each round
+            const int e = (round + k) % kExecutors;
+            t[e] = run(e, a.frames);
+        }
+        for (int e = 0; e < kExecutors; ++e) {
+            ms[e].push_back(t[e]);
+            ratios[e].push_back(t[e] / t[0]);
+        }
+        std::printf("%5d  %8.2f  %15.2f  %18.2f  %16.3f  %19.3f\n", round + 1, t[0], t[1], t[2], t[1] / t[0], t[2] / t[0]);
     }
-    // The GPU's own time of a frame (timer queries around every pass, the check's dispatches
-    // counted in the pass they follow).
-    double gpu[2];
-    for (int k = 0; k < 2; ++k) {
-        executors[k]->setTimingEnabled(true);
+    // The GPU's own time of a frame and of each pass (timer queries around every pass, the
+    // check's draws after a pass counted in the pass they follow).
+    double gpu[kExecutors];
+    std::vector<std::vector<double>> passGpu[kExecutors];  // per pass, its samples
+    std::vector<std::string> passNames;
+    for (int e = 0; e < kExecutors; ++e) {
+        executors[e]->setTimingEnabled(true);
         std::vector<double> samples;
         for (int f = 0; f < 7; ++f) {
-            (void)executors[k]->renderFrame({static_cast<float>(frameIndex++) / 60.0f, 1.0f / 60.0f});
+            (void)executors[e]->renderFrame({static_cast<float>(frameIndex++) / 60.0f, 1.0f / 60.0f});
             glFinish();
-            if (f >= 2) samples.push_back(executors[k]->frameGpuMilliseconds());
+            if (f < 2) continue;
+            samples.push_back(executors[e]->frameGpuMilliseconds());
+            const std::vector<PassTiming>& timings = executors[e]->passTimings();
+            passGpu[e].resize(timings.size());
+            for (size_t p = 0; p < timings.size(); ++p) passGpu[e][p].push_back(timings[p].milliseconds);
+            if (e == 0 && passNames.empty())
+                for (const PassTiming& t : timings) passNames.push_back(t.pass);
         }
-        executors[k]->setTimingEnabled(false);
-        gpu[k] = median(samples);
+        executors[e]->setTimingEnabled(false);
+        gpu[e] = median(samples);
     }
-    const FrameHealth* health = executors[1]->frameHealth();
-    std::printf("\n| frame | check off (ms) | check on (ms) | on / off | target |\n|---|---|---|---|---|\n");
-    std::printf("| wall clock, median of rounds | %.2f | %.2f | %.3f (%.3f to %.3f) | ≤ 1.10 |\n", median(off), median(on),
-                median(ratios), *std::min_element(ratios.begin(), ratios.end()),
-                *std::max_element(ratios.begin(), ratios.end()));
-    std::printf("| GPU time (timer queries) | %.2f | %.2f | %.3f | |\n", gpu[0], gpu[1], gpu[1] / gpu[0]);
-    std::printf("| CPU time of renderFrame, this thread | %.2f | %.2f | %.3f | |\n", median(issueCpu[0]), median(issueCpu[1]),
-                median(issueCpu[1]) / median(issueCpu[0]));
-    std::printf("%zu passes inspected a frame; the benchmark took %.0f s\n", health ? health->passes.size() : 0,
-                std::chrono::duration<double>(Clock::now() - began).count());
+    auto spread = [](const std::vector<double>& v) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%.3f (%.3f to %.3f)", median(v), *std::min_element(v.begin(), v.end()),
+                      *std::max_element(v.begin(), v.end()));
+        return std::string(text);
+    };
+    std::printf("\n| frame | check off | after-pass | while-drawing | after-pass / off | while-drawing / off | target |\n"
+                "|---|---|---|---|---|---|---|\n");
+    std::printf("| wall clock (ms), median of rounds | %.2f | %.2f | %.2f | %s | %s | ≤ 1.10 |\n", median(ms[0]), median(ms[1]),
+                median(ms[2]), spread(ratios[1]).c_str(), spread(ratios[2]).c_str());
+    std::printf("| GPU time (ms, timer queries) | %.2f | %.2f | %.2f | %.3f | %.3f | |\n", gpu[0], gpu[1], gpu[2], gpu[1] / gpu[0],
+                gpu[2] / gpu[0]);
+    std::printf("| CPU time of renderFrame (ms), this thread | %.2f | %.2f | %.2f | %.3f | %.3f | |\n", median(issueCpu[0]),
+                median(issueCpu[1]), median(issueCpu[2]), median(issueCpu[1]) / median(issueCpu[0]),
+                median(issueCpu[2]) / median(issueCpu[0]));
+    if (passGpu[0].size() == passGpu[1].size() && passGpu[0].size() == passGpu[2].size()) {
+        std::printf("\n| pass | GPU off (ms) | after-pass (ms) | while-drawing (ms) |\n|---|---|---|---|\n");
+        for (size_t p = 0; p < passGpu[0].size() && p < passNames.size(); ++p)
+            std::printf("| %s | %.3f | %.3f | %.3f |\n", passNames[p].c_str(), median(passGpu[0][p]), median(passGpu[1][p]),
+                        median(passGpu[2][p]));
+    }
+    const FrameHealth* health = executors[2]->frameHealth();
+    size_t counting = 0;
+    if (health)
+        for (const PassHealth& p : health->passes) counting += p.countedWhileDrawing ? 1 : 0;
+    std::printf("%zu passes a frame; while drawing, %zu of them count what they write (the others are inspected after "
+                "they ran)\n", health ? health->passes.size() : 0, counting);
+    std::printf("the benchmark took %.0f s\n", std::chrono::duration<double>(Clock::now() - began).count());
     if (!frameError.empty()) {
         std::fprintf(stderr, "rmfx_bench_health_check: a frame failed: %s", frameError.c_str());
         return 1;

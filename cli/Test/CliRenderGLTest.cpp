@@ -98,10 +98,10 @@ void main() { fragColor = texelFetch(ratio, ivec2(gl_FragCoord.xy), 0); }
     EXPECT_EQ(bad.status, 4) << bad.err;
     // The ramp is x - 2.5 at pixel centres x + 0.5: 0 in column 2, negative left of it.
     EXPECT_TRUE(has(bad.err, "rmfx: check: error: frame 0: pass 'ratio' wrote +Inf into target 'ratio' (4 pixels; first at "
-                             "x=2 y=0: (inf, 0.5, 0.5, 1); there the inputs held: ramp → target 'ramp' (0, 1, 0, 1))\n"))
+                             "x=2 y=3: (inf, 0.5, 0.5, 1); there the inputs held: ramp → target 'ramp' (0, 1, 0, 1))\n"))
         << bad.err;
     EXPECT_TRUE(has(bad.err, "rmfx: check: warning: frame 0: pass 'ramp' wrote negative values into target 'ramp' (8 pixels; "
-                             "first at x=0 y=0: (-2, 1, 0, 1); the pass reads no 2D input)\n"))
+                             "first at x=0 y=3: (-2, 1, 0, 1); the pass reads no 2D input)\n"))
         << bad.err;
     EXPECT_TRUE(has(bad.err, "rmfx: check: 3 passes a frame, 1 frame: no NaN, -Inf, values at the format's largest\n"))
         << bad.err;

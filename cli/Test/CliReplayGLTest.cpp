@@ -454,7 +454,7 @@ TEST_F(CliReplayGLTest, ACheckedCaseFailsOnAnInfinityItsCompareAccepts) {
     EXPECT_EQ(checked.status, 1) << checked.out;
     EXPECT_TRUE(has(checked.out, "[1/1] inf ... FAILED")) << checked.out;
     EXPECT_TRUE(has(checked.out, "manifest.xml:2: error: <case name=\"inf\" check=\"true\">: frame 0: pass 'gradient' wrote "
-                                 "+Inf into target 'base' (2 pixels; first at x=3 y=0: (0.4375, 0.75, inf, 1)"))
+                                 "+Inf into target 'base' (2 pixels; first at x=3 y=1: (0.4375, 0.25, inf, 1)"))
         << checked.out;
     tinyxml2::XMLDocument doc;
     ASSERT_TRUE(junitSuite(doc, p / "junit.xml", "1", "0", "1"));

@@ -135,10 +135,51 @@ struct GlExecutor::Impl {
                          "target '" + ws.passTargetName(pass) + "' is not declared"});
         if (!program || !mesh || targetMissing) return nullptr;
         gp->mesh = *mesh;
-        gp->program = std::move(program->program);
-        gp->initializedUniforms = std::move(program->initializedUniforms);
-        if (!bindProgram(*gp, d)) return nullptr;
+        if (!useProgram(*gp, std::move(*program), d)) return nullptr;
         return gp;
+    }
+
+    // Gives the pass its program, with --check made to count what the pass writes where it can.
+    bool useProgram(GpuPass& gp, PassGlProgram built, Diagnostics& d) {
+        gp.program = std::move(built.program);
+        gp.initializedUniforms = built.initializedUniforms;
+        if (!bindProgram(gp, d)) return false;
+        if (healthCheck && healthCheck->countsWhileDrawing()) countOwnWrites(gp, built);
+        return true;
+    }
+
+    // The pass's program made to count what it writes (gl/HealthInstrumentation.h); where it
+    // cannot, it stays as built and the check inspects its target after it ran.
+    void countOwnWrites(GpuPass& gp, const PassGlProgram& built) {
+        std::vector<std::string> inputs;
+        for (const SamplerSlot& slot : gp.samplers)
+            if (healthInputLabel(slot)) inputs.push_back(slot.sampler->uniform);
+        auto code = instrumentForHealth(*gp.pass, built.fragmentCode, gp.program.get(), inputs, healthCheck->bufferBinding());
+        if (!code) return;
+        auto relinked = relinkWithFragment(built, *code);
+        if (!relinked) return;
+        GpuPass counting;
+        counting.pass = gp.pass;
+        counting.index = gp.index;
+        counting.target = gp.target;
+        counting.mesh = gp.mesh;
+        counting.model = gp.model;
+        counting.program = std::move(*relinked);
+        counting.initializedUniforms = gp.initializedUniforms;
+        Diagnostics again;  // what binding the pass's own program said already
+        if (!bindProgram(counting, again) || hasErrors(again)) return;
+        counting.health = findHealthUniforms(counting.program.get());
+        if (!counting.health.found) return;
+        counting.healthInputs = std::move(inputs);
+        gp = std::move(counting);
+    }
+
+    // What the health check calls a 2D input of a pass (targets and 2D textures); none for others.
+    std::optional<std::string> healthInputLabel(const SamplerSlot& slot) const {
+        if (slot.target) return slot.sampler->uniform + " → target '" + slot.target->name + "'";
+        const Texture* file = ws.findTexture(slot.sampler->texture);
+        if (file && file->kind == TextureKind::Texture2D) return slot.sampler->uniform + " → texture '" + file->name + "'";
+        return std::nullopt;
     }
 
     bool bindProgram(GpuPass& gp, Diagnostics& d) {
@@ -181,6 +222,11 @@ struct GlExecutor::Build {
         auto allocated = impl->allocateTargets(viewport);
         append(d, allocated.diagnostics());
         append(d, impl->textures.load(ws, impl->plan.sampledTextures(ws), reuse).diagnostics());
+        if (options.checkHealth) {  // before the passes: their programs may count for it
+            auto check = GlHealthCheck::create(options.healthCheckMethod);
+            if (!check) return Failure::failure({workspaceError(ws, "", check.error())});
+            impl->healthCheck = std::move(*check);
+        }
         for (int index : impl->plan.runnablePasses())
             if (auto gp = impl->buildPass(index, allocated.ok(), d)) impl->passes.push_back(std::move(gp));
         if (hasErrors(d)) return Failure::failure(std::move(d));
@@ -190,11 +236,6 @@ struct GlExecutor::Build {
             if (!skip) return Failure::failure({workspaceError(ws, "", skip.error())});
             impl->contentSkip = std::move(*skip);
             impl->contentSkip->setSpanning(!options.checkHealth);  // the check's draws must not be skipped
-        }
-        if (options.checkHealth) {
-            auto check = GlHealthCheck::create();
-            if (!check) return Failure::failure({workspaceError(ws, "", check.error())});
-            impl->healthCheck = std::move(*check);
         }
         impl->selectVariant();
         glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
@@ -274,13 +315,18 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
             }
             glBindTextureUnit(static_cast<GLuint>(slot.unit), texture);
             glBindSampler(static_cast<GLuint>(slot.unit), slot.samplerObject.get());
-            if (s.healthCheck) {
-                const Texture* file = slot.target ? nullptr : s.ws.findTexture(slot.sampler->texture);
-                if (slot.target)
-                    healthInputs.push_back({slot.sampler->uniform + " → target '" + slot.target->name + "'", texture, slot.unit});
-                else if (file && file->kind == TextureKind::Texture2D)
-                    healthInputs.push_back({slot.sampler->uniform + " → texture '" + file->name + "'", texture, slot.unit});
-            }
+            if (s.healthCheck)
+                if (std::optional<std::string> label = s.healthInputLabel(slot))
+                    healthInputs.push_back({slot.sampler->uniform, std::move(*label), texture, slot.unit});
+        }
+        if (s.healthCheck && gp.health.found) {
+            // In the order its shader records them.
+            std::vector<GlHealthCheck::Input> recorded;
+            for (const std::string& sampler : gp.healthInputs)
+                for (const GlHealthCheck::Input& input : healthInputs)
+                    if (input.sampler == sampler) recorded.push_back(input);
+            s.healthCheck->beforeCountingPass(position, pass.name, target.name, memory.spec.size, memory.spec.format, recorded,
+                                              gp.health);
         }
         gp.mesh->draw(gp.streams);
         restoreFilledPolygons(pass, s.compatibility);  // what draws next (the checks, the editor) fills
@@ -288,7 +334,7 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
         s.lastFramePasses.push_back(pass.name);
         if (s.contentSkip) s.contentSkip->afterPass(position);
         if (memory.spec.mipmaps) glGenerateTextureMipmap(memory.textures[memory.writeBuffer()].get());
-        if (s.healthCheck)
+        if (s.healthCheck && !gp.health.found)
             s.healthCheck->afterPass(position, pass.name, target.name, memory.textures[memory.writeBuffer()].get(),
                                      memory.spec.size, memory.spec.format, healthInputs);
         s.timers.passDone(pass.name);
@@ -462,9 +508,7 @@ Result<void> GlExecutor::recompilePasses(const std::vector<std::string>& passNam
         auto program = buildPassProgram(s.ws, *fresh->pass, s.plan.prelude);
         append(d, program.diagnostics());
         if (!program) continue;
-        fresh->program = std::move(program->program);
-        fresh->initializedUniforms = std::move(program->initializedUniforms);
-        s.bindProgram(*fresh, d);
+        s.useProgram(*fresh, std::move(*program), d);
         rebuilt.emplace_back(old, std::move(fresh));
     }
     if (hasErrors(d)) return Result<void>::failure(std::move(d));  // the fresh programs go with `rebuilt`

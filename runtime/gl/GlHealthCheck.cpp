@@ -8,39 +8,22 @@
 #include <epoxy/gl.h>
 
 #include "gl/GlFullScreenTriangle.h"
+#include "gl/HealthBuffer.h"
 
 namespace rmfx {
 namespace {
 
-constexpr int kMaxInputs = 8;
 // The unit the inspected target is bound to: above those a pass's samplers use.
 constexpr GLuint kTargetUnit = 31;
 
-// Two storage buffers: per pass and kind, its count and first pixel (binding 0), and what the pixel
-// draw found there (binding 1). Mirror the std430 blocks of the shaders below.
-struct PassEntry {
-    std::int32_t count;
-    std::int32_t first;
-};
-struct PixelRecord {
-    std::int32_t pixel;
-    std::int32_t padding[3];
-    float value[4];
-    float inputs[kMaxInputs][4];
-};
-static_assert(sizeof(PixelRecord) == 160);
-
-#define RMFX_HEALTH_BLOCK                                                         \
-    "struct Entry { int count; int first; };\n"                                  \
-    "struct Record { int pixel; int pad0; int pad1; int pad2; vec4 value; vec4 inputs[8]; };\n" \
-    "layout(std430, binding = 0) buffer Entries { Entry entries[]; };\n"         \
-    "layout(std430, binding = 1) buffer Records { Record records[]; };\n"
+// The buffer's words (gl/HealthBuffer.h), at the binding point BINDING.
+#define RMFX_HEALTH_BLOCK "layout(std430, binding = BINDING) buffer RmfxHealth { int words[]; };\n"
 
 // Fragment shaders drawn over an attachment-less framebuffer: a compute dispatch costs about a
 // millisecond on llvmpipe whatever it does, a draw a fraction of that.
 
 // One fragment per pixel of the target: which kinds its channels hold. The first pixel is the
-// smallest index in reading order (row 0 at the top: GL's rows counted from the bottom are flipped).
+// smallest index in GL's order (row 0 at the bottom: HealthBuffer.h says why).
 const char* const reduceSource = "#version 450 core\n" RMFX_HEALTH_BLOCK R"(
 uniform sampler2D Target;
 uniform int Position;
@@ -48,8 +31,9 @@ uniform int Channels;
 uniform bool Negatives;
 uniform vec4 Largest;
 void record(int kind, int pixel) {
-    atomicAdd(entries[Position * 5 + kind].count, 1);
-    atomicMin(entries[Position * 5 + kind].first, pixel);
+    int entry = (Position * 5 + kind) * 4;
+    atomicAdd(words[entry], 1);
+    atomicMin(words[entry + 1], pixel);
 }
 void main() {
     ivec2 size = textureSize(Target, 0);
@@ -65,7 +49,7 @@ void main() {
             if (Largest[c] > 0.0 && abs(x) >= Largest[c]) atLargest = true;
         }
     }
-    int pixel = (size.y - 1 - p.y) * size.x + p.x;
+    int pixel = p.y * size.x + p.x;
     if (nan) record(0, pixel);
     if (positiveInf) record(1, pixel);
     if (negativeInf) record(2, pixel);
@@ -75,31 +59,47 @@ void main() {
 )";
 
 // One fragment per kind (a 5x1 viewport): where a pass holds the kind, the first pixel's value and
-// its inputs' texels there, in the pass's own record (the frame's first pass is chosen on reading).
+// its inputs' texels there, in the first record slot of the pass's own (the frame's first pass is
+// chosen on reading).
 const char* const fetchSource = "#version 450 core\n" RMFX_HEALTH_BLOCK R"(
 uniform sampler2D Target;
 uniform sampler2D Inputs[8];
 uniform int InputCount;
 uniform int Position;
+uniform int Records;  // the first word of the records
+void storeVec4(int at, vec4 v) { for (int c = 0; c < 4; ++c) words[at + c] = floatBitsToInt(v[c]); }
 void main() {
     int kind = int(gl_FragCoord.x);
-    int slot = Position * 5 + kind;
-    Entry e = entries[slot];
-    if (e.count == 0) return;
+    int entry = (Position * 5 + kind) * 4;
+    int first = words[entry + 1];
+    if (words[entry] == 0) return;
     ivec2 size = textureSize(Target, 0);
-    ivec2 p = ivec2(e.first % size.x, size.y - 1 - e.first / size.x);
-    records[slot].pixel = e.first;
-    records[slot].value = texelFetch(Target, p, 0);
+    ivec2 p = ivec2(first % size.x, first / size.x);
+    int record = Records + (Position * 5 + kind) * SLOTS * RECORD_WORDS;
+    words[record] = first;
+    storeVec4(record + 4, texelFetch(Target, p, 0));
     vec2 centre = (vec2(p) + 0.5) / vec2(size);
     for (int i = 0; i < InputCount; ++i) {
         ivec2 s = textureSize(Inputs[i], 0);
-        records[slot].inputs[i] = texelFetch(Inputs[i], clamp(ivec2(centre * vec2(s)), ivec2(0), s - 1), 0);
+        storeVec4(record + 8 + 4 * i, texelFetch(Inputs[i], clamp(ivec2(centre * vec2(s)), ivec2(0), s - 1), 0));
     }
+    words[entry + 2] = 1;
 }
 )";
 
-Result<ProgramHandle> fullScreenProgram(const char* fragment, const char* what) {
+// The shader's text with BINDING, SLOTS and RECORD_WORDS given their values.
+std::string withLayout(std::string source, int binding) {
+    for (const auto& [name, value] : {std::pair<std::string, int>{"BINDING", binding},
+                                      {"SLOTS", kHealthRecordSlots},
+                                      {"RECORD_WORDS", kHealthRecordWords}})
+        for (size_t at = source.find(name); at != std::string::npos; at = source.find(name, at))
+            source.replace(at, name.size(), std::to_string(value));
+    return source;
+}
+
+Result<ProgramHandle> fullScreenProgram(const std::string& fragmentSource, const char* what) {
     ProgramHandle program = createProgram();
+    const char* fragment = fragmentSource.c_str();
     for (const auto& [type, source] : {std::pair{GL_VERTEX_SHADER, fullScreenTriangleVertexSource()}, {GL_FRAGMENT_SHADER, fragment}}) {
         ShaderHandle shader = createShader(type);
         glShaderSource(shader.get(), 1, &source, nullptr);
@@ -122,11 +122,20 @@ Result<ProgramHandle> fullScreenProgram(const char* fragment, const char* what) 
 
 }  // namespace
 
-Result<std::unique_ptr<GlHealthCheck>> GlHealthCheck::create() {
+Result<std::unique_ptr<GlHealthCheck>> GlHealthCheck::create(HealthCheckMethod method) {
     std::unique_ptr<GlHealthCheck> check(new GlHealthCheck);
-    auto reduce = fullScreenProgram(reduceSource, "health-count");
+    if (method == HealthCheckMethod::Automatic) {
+        const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+        const std::string name = renderer ? renderer : "";
+        const bool software = name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos ||
+                              name.find("SwiftShader") != std::string::npos;
+        method = software ? HealthCheckMethod::AfterPass : HealthCheckMethod::WhileDrawing;
+    }
+    check->whileDrawing_ = method == HealthCheckMethod::WhileDrawing;
+    check->binding_ = healthBufferBinding();
+    auto reduce = fullScreenProgram(withLayout(reduceSource, check->binding_), "health-count");
     if (!reduce) return Error{reduce.error()};
-    auto fetch = fullScreenProgram(fetchSource, "health-pixel");
+    auto fetch = fullScreenProgram(withLayout(fetchSource, check->binding_), "health-pixel");
     if (!fetch) return Error{fetch.error()};
     check->reduce_ = std::move(*reduce);
     check->fetch_ = std::move(*fetch);
@@ -140,6 +149,7 @@ Result<std::unique_ptr<GlHealthCheck>> GlHealthCheck::create() {
     check->fetchPosition_ = glGetUniformLocation(f, "Position");
     check->fetchInputCount_ = glGetUniformLocation(f, "InputCount");
     check->fetchInputs_ = glGetUniformLocation(f, "Inputs");
+    check->fetchRecords_ = glGetUniformLocation(f, "Records");
     check->empty_ = createFramebuffer();
     glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &check->maxSize_.x);
     glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &check->maxSize_.y);
@@ -148,13 +158,12 @@ Result<std::unique_ptr<GlHealthCheck>> GlHealthCheck::create() {
 }
 
 void GlHealthCheck::growBuffer(size_t passes) {
-    if (entries_.get() && passes <= capacity_) return;
+    if (buffer_.get() && passes <= capacity_) return;
     capacity_ = std::max<size_t>(passes, 16);
-    entries_ = createBuffer();
-    glNamedBufferStorage(entries_.get(), static_cast<GLsizeiptr>(capacity_ * healthKindCount * sizeof(PassEntry)), nullptr,
-                         GL_DYNAMIC_STORAGE_BIT);
-    records_ = createBuffer();
-    glNamedBufferStorage(records_.get(), static_cast<GLsizeiptr>(capacity_ * healthKindCount * sizeof(PixelRecord)), nullptr, 0);
+    const size_t words = healthRecordsBase(capacity_) +
+                         capacity_ * healthKindCount * kHealthRecordSlots * static_cast<size_t>(kHealthRecordWords);
+    buffer_ = createBuffer();
+    glNamedBufferStorage(buffer_.get(), static_cast<GLsizeiptr>(words * sizeof(std::int32_t)), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
 void GlHealthCheck::beginFrame(int frame, size_t passes) {
@@ -162,17 +171,17 @@ void GlHealthCheck::beginFrame(int frame, size_t passes) {
     growBuffer(passes);
     passes_.assign(passes, PassHealth{});
     inputLabels_.assign(passes, {});
-    widths_.assign(passes, 0);
+    sizes_.assign(passes, glm::ivec2(1));
     pending_.clear();
-    std::vector<PassEntry> initial(passes * healthKindCount, PassEntry{0, INT_MAX});
+    std::vector<std::int32_t> entries(healthRecordsBase(passes), 0);  // count, first, records taken, 0
+    for (size_t e = 1; e < entries.size(); e += kHealthEntryWords) entries[e] = INT_MAX;
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    if (!initial.empty())
-        glNamedBufferSubData(entries_.get(), 0, static_cast<GLsizeiptr>(initial.size() * sizeof(PassEntry)), initial.data());
+    if (!entries.empty())
+        glNamedBufferSubData(buffer_.get(), 0, static_cast<GLsizeiptr>(entries.size() * sizeof(std::int32_t)), entries.data());
 }
 
 void GlHealthCheck::bindCommonState() {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, entries_.get());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, records_.get());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding_), buffer_.get());
     glBindFramebuffer(GL_FRAMEBUFFER, empty_.get());
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
@@ -205,9 +214,9 @@ void GlHealthCheck::drawCount(const Inspection& i) {
 void GlHealthCheck::drawPixel(const Inspection& i) {
     glBindTextureUnit(kTargetUnit, i.texture);
     glUseProgram(fetch_.get());
-    GLint units[kMaxInputs] = {};
-    const int count = std::min(static_cast<int>(i.inputs.size()), kMaxInputs);
-    for (int k = 0; k < kMaxInputs; ++k) {
+    GLint units[kHealthMaxInputs] = {};
+    const int count = std::min(static_cast<int>(i.inputs.size()), kHealthMaxInputs);
+    for (int k = 0; k < kHealthMaxInputs; ++k) {
         units[k] = static_cast<GLint>(kTargetUnit);
         if (k >= count) continue;
         const Input& input = i.inputs[static_cast<size_t>(k)];
@@ -215,30 +224,44 @@ void GlHealthCheck::drawPixel(const Inspection& i) {
         glBindTextureUnit(static_cast<GLuint>(k), input.texture);
         glBindSampler(static_cast<GLuint>(k), 0);
     }
-    glUniform1iv(fetchInputs_, kMaxInputs, units);
+    glUniform1iv(fetchInputs_, kHealthMaxInputs, units);
+    glUniform1i(fetchRecords_, static_cast<GLint>(healthRecordsBase(capacity_)));
     glUniform1i(fetchInputCount_, count);
     glUniform1i(fetchPosition_, static_cast<GLint>(i.position));
     glViewport(0, 0, healthKindCount, 1);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void GlHealthCheck::afterPass(size_t position, const std::string& pass, const std::string& target, unsigned texture,
-                              glm::ivec2 size, TargetFormat format, const std::vector<Input>& inputs) {
-    if (position >= passes_.size()) return;
+bool GlHealthCheck::notePass(size_t position, const std::string& pass, const std::string& target, glm::ivec2 size,
+                             TargetFormat format, const std::vector<Input>& inputs) {
+    if (position >= passes_.size()) return false;
     PassHealth& health = passes_[position];
     health.pass = pass;
     health.target = target;
-    const FormatHealthLimits limits = formatHealthLimits(format);
-    health.inspected = limits.inspected;
-    if (!limits.inspected || texture == 0 || size.x <= 0 || size.y <= 0 || size.x > maxSize_.x || size.y > maxSize_.y)
-        return;
-    widths_[position] = size.x;
-    Inspection inspection{position, texture, size, limits, {}};
-    for (size_t k = 0; k < inputs.size() && k < static_cast<size_t>(kMaxInputs); ++k) {
+    health.inspected = formatHealthLimits(format).inspected;
+    if (!health.inspected || size.x <= 0 || size.y <= 0) return false;
+    sizes_[position] = size;
+    inputLabels_[position].clear();
+    for (size_t k = 0; k < inputs.size() && k < static_cast<size_t>(kHealthMaxInputs); ++k)
         inputLabels_[position].push_back(inputs[k].label);
-        inspection.inputs.push_back(inputs[k]);
-    }
+    return true;
+}
+
+void GlHealthCheck::afterPass(size_t position, const std::string& pass, const std::string& target, unsigned texture,
+                              glm::ivec2 size, TargetFormat format, const std::vector<Input>& inputs) {
+    if (!notePass(position, pass, target, size, format, inputs)) return;
+    if (texture == 0 || size.x > maxSize_.x || size.y > maxSize_.y) return;
+    Inspection inspection{position, texture, size, formatHealthLimits(format), {}};
+    for (size_t k = 0; k < inputs.size() && k < static_cast<size_t>(kHealthMaxInputs); ++k) inspection.inputs.push_back(inputs[k]);
     pending_.push_back(std::move(inspection));
+}
+
+void GlHealthCheck::beforeCountingPass(size_t position, const std::string& pass, const std::string& target, glm::ivec2 size,
+                                       TargetFormat format, const std::vector<Input>& inputs, const HealthUniforms& uniforms) {
+    notePass(position, pass, target, size, format, inputs);
+    if (position < passes_.size()) passes_[position].countedWhileDrawing = true;
+    setHealthUniforms(uniforms, position, capacity_, size, format);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding_), buffer_.get());
 }
 
 void GlHealthCheck::beforeWriting(unsigned texture) {
@@ -268,21 +291,26 @@ FrameHealth GlHealthCheck::endFrame() {
     inspectPending();
     FrameHealth frame;
     const size_t passes = passes_.size();
-    std::vector<PassEntry> entries(passes * healthKindCount);
+    std::vector<std::int32_t> entries(healthRecordsBase(passes));
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     if (!entries.empty())
-        glGetNamedBufferSubData(entries_.get(), 0, static_cast<GLsizeiptr>(entries.size() * sizeof(PassEntry)), entries.data());
+        glGetNamedBufferSubData(buffer_.get(), 0, static_cast<GLsizeiptr>(entries.size() * sizeof(std::int32_t)), entries.data());
+    auto entry = [&](size_t pass, int kind) { return &entries[(pass * healthKindCount + static_cast<size_t>(kind)) * kHealthEntryWords]; };
     for (size_t p = 0; p < passes; ++p)
-        for (int k = 0; k < healthKindCount; ++k)
-            passes_[p].counts[static_cast<size_t>(k)] = entries[p * healthKindCount + static_cast<size_t>(k)].count;
+        for (int k = 0; k < healthKindCount; ++k) passes_[p].counts[static_cast<size_t>(k)] = entry(p, k)[0];
     for (int k = 0; k < healthKindCount; ++k) {
         size_t first = passes;
         for (size_t p = 0; p < passes && first == passes; ++p)
             if (passes_[p].counts[static_cast<size_t>(k)] > 0) first = p;
         if (first == passes) continue;
-        PixelRecord record{};
-        glGetNamedBufferSubData(records_.get(), static_cast<GLintptr>((first * healthKindCount + static_cast<size_t>(k)) * sizeof record),
-                                sizeof record, &record);
+        const std::int32_t firstPixel = entry(first, k)[1];
+        const int taken = std::clamp(entry(first, k)[2], 0, kHealthRecordSlots);
+        std::vector<std::int32_t> records(static_cast<size_t>(taken * kHealthRecordWords));
+        const size_t at = healthRecordsBase(capacity_) +
+                          (first * healthKindCount + static_cast<size_t>(k)) * kHealthRecordSlots * static_cast<size_t>(kHealthRecordWords);
+        if (taken > 0)
+            glGetNamedBufferSubData(buffer_.get(), static_cast<GLintptr>(at * sizeof(std::int32_t)),
+                                    static_cast<GLsizeiptr>(records.size() * sizeof(std::int32_t)), records.data());
         const PassHealth& p = passes_[first];
         HealthFinding finding;
         finding.kind = allHealthKinds[static_cast<size_t>(k)];
@@ -290,13 +318,23 @@ FrameHealth GlHealthCheck::endFrame() {
         finding.pass = p.pass;
         finding.target = p.target;
         finding.count = p.counts[static_cast<size_t>(k)];
-        const int width = std::max(1, widths_[first]);
-        finding.pixel = glm::ivec2(record.pixel % width, record.pixel / width);
-        finding.value = glm::vec4(record.value[0], record.value[1], record.value[2], record.value[3]);
-        const auto& labels = inputLabels_[first];
-        for (size_t i = 0; i < labels.size(); ++i)
-            finding.inputs.push_back({labels[i], glm::vec4(record.inputs[i][0], record.inputs[i][1], record.inputs[i][2],
-                                                           record.inputs[i][3])});
+        // Counted from GL's bottom row; reported from the top, as images are shown.
+        const glm::ivec2 size(std::max(1, sizes_[first].x), std::max(1, sizes_[first].y));
+        finding.pixel = glm::ivec2(firstPixel % size.x, size.y - 1 - firstPixel / size.x);
+        finding.recorded = false;
+        auto vec4At = [&](const std::int32_t* words) {
+            glm::vec4 v;
+            std::memcpy(&v[0], words, sizeof v);
+            return v;
+        };
+        for (int slot = 0; slot < taken && !finding.recorded; ++slot) {
+            const std::int32_t* record = &records[static_cast<size_t>(slot * kHealthRecordWords)];
+            if (record[0] != firstPixel) continue;
+            finding.recorded = true;
+            finding.value = vec4At(record + 4);
+            const auto& labels = inputLabels_[first];
+            for (size_t i = 0; i < labels.size(); ++i) finding.inputs.push_back({labels[i], vec4At(record + 8 + 4 * i)});
+        }
         frame.findings.push_back(std::move(finding));
     }
     frame.passes = passes_;

@@ -1,6 +1,7 @@
 #pragma once
-// The numeric health check of rmfx render --check (model/TargetHealth.h), done on the GPU: after
-// each pass a full-screen draw over the target's size (into a framebuffer without attachments)
+// The numeric health check of rmfx render --check (model/TargetHealth.h), done on the GPU. A pass
+// whose fragment shader was made to count what it writes (HealthInstrumentation.h) counts during
+// its own draw (beforeCountingPass). After any other pass a full-screen draw over the target's size (into a framebuffer without attachments)
 // reads the target it wrote, counts the pixels holding each kind (NaN, ±Inf, negative, at the
 // format's largest) with atomics in a storage buffer and keeps the first such pixel in reading
 // order; a second draw of five fragments records, for each kind the pass holds, that pixel's value
@@ -8,7 +9,8 @@
 // them reads, or the frame ends, and then run together: the count draws do not wait for each
 // other, and one barrier orders them before the pixel draws (a barrier and a wait after every
 // pass cost an NVIDIA H200 about 29 µs each). Nothing is read back until
-// the frame ends, and then only the buffer (a few hundred bytes per pass): no stall between passes.
+// the frame ends, and then only the buffer's counts (a few hundred bytes per pass) and the records
+// of each kind's first pass: no stall between passes.
 // Needs a current GL 4.5 context.
 
 #include <memory>
@@ -19,17 +21,22 @@
 
 #include "core/Result.h"
 #include "gl/GlHandles.h"
+#include "gl/HealthInstrumentation.h"
 #include "model/TargetHealth.h"
 
 namespace rmfx {
 
 class GlHealthCheck {
 public:
-    static Result<std::unique_ptr<GlHealthCheck>> create();
+    // Automatic resolves from the context's renderer (model/TargetHealth.h).
+    static Result<std::unique_ptr<GlHealthCheck>> create(HealthCheckMethod method);
+    // Whether passes' programs should be made to count what they write.
+    bool countsWhileDrawing() const { return whileDrawing_; }
 
     // A 2D texture a pass sampled: what the report calls it, its GL object and the texture unit the
     // pass bound it to.
     struct Input {
+        std::string sampler;  // the uniform
         std::string label;
         unsigned texture = 0;
         int unit = 0;
@@ -41,6 +48,12 @@ public:
     // about to be written again (beforeWriting) or the frame ends.
     void afterPass(size_t position, const std::string& pass, const std::string& target, unsigned texture,
                    glm::ivec2 size, TargetFormat format, const std::vector<Input>& inputs);
+    // Before pass `position`, whose program counts what it writes (`uniforms`, its program current),
+    // draws into a target of `size` and `format`, reading `inputs` in the order its shader records.
+    void beforeCountingPass(size_t position, const std::string& pass, const std::string& target, glm::ivec2 size,
+                            TargetFormat format, const std::vector<Input>& inputs, const HealthUniforms& uniforms);
+    // The binding point of the check's buffer in the shaders that write it.
+    int bufferBinding() const { return binding_; }
     // Before a pass writes `texture`: inspects, together, what waits on it.
     void beforeWriting(unsigned texture);
     // Inspects what still waits, then reads the buffers (waits for the frame's GPU work).
@@ -56,6 +69,9 @@ private:
     };
 
     GlHealthCheck() = default;
+    // What the report says of the pass; false when its target is not inspected.
+    bool notePass(size_t position, const std::string& pass, const std::string& target, glm::ivec2 size, TargetFormat format,
+                  const std::vector<Input>& inputs);
     void growBuffer(size_t passes);
     void bindCommonState();
     void inspectPending();
@@ -64,8 +80,10 @@ private:
 
     ProgramHandle reduce_, fetch_;
     int reducePosition_ = -1, reduceChannels_ = -1, reduceNegatives_ = -1, reduceLargest_ = -1;
-    int fetchPosition_ = -1, fetchInputCount_ = -1, fetchInputs_ = -1;
-    BufferHandle entries_, records_;
+    int fetchPosition_ = -1, fetchInputCount_ = -1, fetchInputs_ = -1, fetchRecords_ = -1;
+    BufferHandle buffer_;  // HealthBuffer.h
+    int binding_ = 0;
+    bool whileDrawing_ = true;
     FramebufferHandle empty_;     // no attachment: the shaders only write the buffers
     glm::ivec2 maxSize_{0, 0};    // the largest framebuffer
     glm::ivec2 emptySize_{0, 0};  // empty_'s default size
@@ -74,7 +92,7 @@ private:
     int frame_ = 0;
     std::vector<PassHealth> passes_;
     std::vector<std::vector<std::string>> inputLabels_;
-    std::vector<int> widths_;  // of each pass's target
+    std::vector<glm::ivec2> sizes_;  // of each pass's target
     std::vector<Inspection> pending_;
 };
 

@@ -125,6 +125,7 @@ Result<void> bindUniforms(GpuPass& gp, const UniformSources& sources) {
     for (const ProgramUniform& active : programUniforms(gp.program.get())) {
         const std::string& name = active.name;
         UniformType type = uniformTypeFromGl(active.glType);
+        if (name.rfind("rmfx_health_", 0) == 0) continue;  // the health check's (gl/HealthInstrumentation.h)
         if (name.rfind("rmfx_effect_", 0) == 0) {  // declared by the effect prelude
             UniformSlot slot;
             slot.location = active.location;

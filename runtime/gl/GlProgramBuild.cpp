@@ -35,6 +35,7 @@ Result<PassGlProgram> buildPassProgram(const Workspace& ws, const Pass& pass, co
     bool ok = true;
     for (const PassStage& stage : source->stages) {
         ShaderHandle shader = createShader(stage.stage == ShaderStage::Vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER);
+        (stage.stage == ShaderStage::Vertex ? built.vertexCode : built.fragmentCode) = stage.shader.code;
         const char* text = stage.shader.code.c_str();
         glShaderSource(shader.get(), 1, &text, nullptr);
         glCompileShader(shader.get());
@@ -63,6 +64,30 @@ Result<PassGlProgram> buildPassProgram(const Workspace& ws, const Pass& pass, co
         return Result<PassGlProgram>::failure(std::move(d));
     }
     return Result<PassGlProgram>(std::move(built), std::move(d));
+}
+
+Result<ProgramHandle> relinkWithFragment(const PassGlProgram& built, const std::string& fragmentCode) {
+    ProgramHandle program = createProgram();
+    for (const auto& [type, code] : {std::pair{GL_VERTEX_SHADER, &built.vertexCode}, {GL_FRAGMENT_SHADER, &fragmentCode}}) {
+        ShaderHandle shader = createShader(type);
+        const char* text = code->c_str();
+        glShaderSource(shader.get(), 1, &text, nullptr);
+        glCompileShader(shader.get());
+        GLint compiled = 0;
+        glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &compiled);
+        if (!compiled)
+            return Error{infoLog([&](GLint* n) { glGetShaderiv(shader.get(), GL_INFO_LOG_LENGTH, n); },
+                                 [&](GLint n, char* log) { glGetShaderInfoLog(shader.get(), n, nullptr, log); })};
+        glAttachShader(program.get(), shader.get());
+    }
+    for (GLuint a = 0; a < 3; ++a) glBindAttribLocation(program.get(), a, builtinAttributeLocations[a]);
+    glLinkProgram(program.get());
+    GLint linked = 0;
+    glGetProgramiv(program.get(), GL_LINK_STATUS, &linked);
+    if (!linked)
+        return Error{infoLog([&](GLint* n) { glGetProgramiv(program.get(), GL_INFO_LOG_LENGTH, n); },
+                             [&](GLint n, char* log) { glGetProgramInfoLog(program.get(), n, nullptr, log); })};
+    return program;
 }
 
 std::vector<ProgramUniform> programUniforms(unsigned program) {

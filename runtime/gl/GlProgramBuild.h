@@ -16,11 +16,16 @@ namespace rmfx {
 struct PassGlProgram {
     ProgramHandle program;
     std::set<std::string> initializedUniforms;  // declared with a value: unbound, they keep it
+    std::string vertexCode, fragmentCode;       // as compiled
 };
 
 // Assembles the pass's program source with the prelude of the effects asked for, compiles and
 // links it. Compiler errors are mapped to the shader files' lines; warnings of assembly come along.
 Result<PassGlProgram> buildPassProgram(const Workspace& ws, const Pass& pass, const ShaderPrelude& prelude);
+
+// The program linked again with `fragmentCode` in place of its fragment shader's (the health
+// check's counting version of it); on failure the compiler's or linker's log.
+Result<ProgramHandle> relinkWithFragment(const PassGlProgram& built, const std::string& fragmentCode);
 
 // A uniform outside any block, as reflection gives it ("name[0]" as "name").
 struct ProgramUniform {

@@ -12,6 +12,7 @@
 #include "gl/GlHandles.h"
 #include "gl/GlMesh.h"
 #include "gl/GlRenderTargets.h"
+#include "gl/HealthInstrumentation.h"
 #include "graph/UniformBinding.h"
 #include "model/Workspace.h"
 
@@ -50,6 +51,10 @@ struct GpuPass {
     std::vector<UniformSlot> uniforms;
     std::vector<SamplerSlot> samplers;
     std::set<std::string> initializedUniforms;  // declared with a value: unbound, they keep it
+    // With --check, where the program counts what the pass writes (gl/HealthInstrumentation.h):
+    // the uniforms it added, and the samplers whose texels it records, in its order.
+    HealthUniforms health;
+    std::vector<std::string> healthInputs;
 };
 
 }  // namespace rmfx

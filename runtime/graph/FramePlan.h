@@ -19,6 +19,7 @@
 #include "graph/ResourceLimits.h"
 #include "graph/TargetPlan.h"
 #include "model/EffectSelection.h"
+#include "model/TargetHealth.h"
 #include "model/Workspace.h"
 
 namespace rmfx {
@@ -39,6 +40,7 @@ struct FramePlanOptions {
     // rmfx render --check: after each pass, inspect on the GPU the target it wrote for NaN, ±Inf,
     // negatives and values at its format's largest (gl/GlHealthCheck.h, model/TargetHealth.h).
     bool checkHealth = false;
+    HealthCheckMethod healthCheckMethod = HealthCheckMethod::Automatic;
     // The most render-target memory a frame may hold (--memory-budget); a workspace that needs
     // more fails before anything is allocated.
     std::size_t memoryBudget = kDefaultMemoryBudget;

@@ -21,6 +21,21 @@ bool healthKindIsError(HealthKind kind) {
     return kind == HealthKind::NaN || kind == HealthKind::PositiveInfinity || kind == HealthKind::NegativeInfinity;
 }
 
+const char* healthCheckMethodName(HealthCheckMethod method) {
+    switch (method) {
+        case HealthCheckMethod::Automatic: return "auto";
+        case HealthCheckMethod::WhileDrawing: return "while-drawing";
+        case HealthCheckMethod::AfterPass: return "after-pass";
+    }
+    return "auto";
+}
+
+std::optional<HealthCheckMethod> parseHealthCheckMethod(const std::string& name) {
+    for (HealthCheckMethod m : {HealthCheckMethod::Automatic, HealthCheckMethod::WhileDrawing, HealthCheckMethod::AfterPass})
+        if (name == healthCheckMethodName(m)) return m;
+    return std::nullopt;
+}
+
 FormatHealthLimits formatHealthLimits(TargetFormat format) {
     const float half = 65504.0f;
     switch (format) {
@@ -54,7 +69,9 @@ std::string vector(glm::vec4 v) {
 std::string describeFinding(const HealthFinding& f) {
     std::string out = "pass '" + f.pass + "' wrote " + healthKindName(f.kind) + " into target '" + f.target + "' (" +
                       std::to_string(f.count) + (f.count == 1 ? " pixel" : " pixels") + "; first at x=" +
-                      std::to_string(f.pixel.x) + " y=" + std::to_string(f.pixel.y) + ": " + vector(f.value);
+                      std::to_string(f.pixel.x) + " y=" + std::to_string(f.pixel.y);
+    if (!f.recorded) return out + "; its value was not kept: more fragments lowered the first pixel than the check keeps)";
+    out += ": " + vector(f.value);
     if (f.inputs.empty()) return out + "; the pass reads no 2D input)";
     out += "; there the inputs held:";
     for (size_t i = 0; i < f.inputs.size(); ++i)

@@ -41,17 +41,32 @@ struct FormatHealthLimits {
 };
 FormatHealthLimits formatHealthLimits(TargetFormat format);
 
+// How the check looks at a pass (rmfx render --check-method). WhileDrawing: the pass's own
+// fragment shader counts what it writes (gl/HealthInstrumentation.h), where the pass allows it;
+// AfterPass: a draw over the target after the pass. Automatic: WhileDrawing on a GPU, AfterPass
+// on a software rasteriser, where a fragment shader that can write memory runs at about half
+// speed (llvmpipe, docs/performance.md).
+enum class HealthCheckMethod { Automatic, WhileDrawing, AfterPass };
+// "auto", "while-drawing", "after-pass".
+const char* healthCheckMethodName(HealthCheckMethod method);
+std::optional<HealthCheckMethod> parseHealthCheckMethod(const std::string& name);
+
 // One pass's count of each kind in the target it wrote.
 struct PassHealth {
     std::string pass;
     std::string target;
     bool inspected = true;  // false: the target's format cannot show any of the kinds
+    // True: the pass's own shader counted what it wrote (gl/HealthInstrumentation.h); false: the
+    // check inspected the whole target after the pass.
+    bool countedWhileDrawing = false;
     std::array<long long, healthKindCount> counts{};
 };
 
-// The first pass of a frame whose target held a kind: the first such pixel in reading order
-// (row 0 at the top), its value, and what the pass's 2D inputs held at the same place (each
-// input's texel under the pixel's centre; "sampler → target 'x'" or "… → texture 'y'").
+// The first pass of a frame whose target held a kind: the first such pixel counting from the
+// bottom row, left to right (GL's order, which rasterisers follow: gl/HealthBuffer.h), given in
+// reading coordinates (row 0 at the top), its value, and what the pass's 2D inputs held at the
+// same place (each input's texel under the pixel's centre; "sampler → target 'x'" or "… →
+// texture 'y'").
 struct HealthFinding {
     HealthKind kind = HealthKind::NaN;
     int frame = 0;  // counted from 0
@@ -59,6 +74,9 @@ struct HealthFinding {
     std::string target;
     long long count = 0;  // pixels of that pass holding the kind
     glm::ivec2 pixel{0};
+    // False when the pixel's value and inputs were not kept: a pass counting its own writes keeps
+    // them for the first few fragments that lowered the first pixel (gl/HealthBuffer.h).
+    bool recorded = true;
     glm::vec4 value{0.0f};
     std::vector<std::pair<std::string, glm::vec4>> inputs;
 };

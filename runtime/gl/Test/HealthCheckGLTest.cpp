@@ -1,8 +1,11 @@
-// rmfx render --check (gl/GlHealthCheck.h): a workspace written to produce each kind (NaN, ±Inf,
-// negatives, half's largest value) is inspected on the GPU, and every pass's count of each kind,
-// the first pass of each kind, its first pixel, value and inputs equal a float64 evaluation of
-// the same shader maths. A NaN alone in the last pixel of odd-sized targets is found there;
-// normalised targets are reported as not inspected; HDRLighting as shipped has no NaN or Inf.
+// rmfx render --check (gl/GlHealthCheck.h), by both methods: each target inspected after its
+// pass, and the passes counting what they write (gl/HealthInstrumentation.h). A workspace written
+// to produce each kind (NaN, ±Inf, negatives, half's largest value) is checked on the GPU, and
+// every pass's count of each kind, the first pass of each kind, its first pixel, value and inputs
+// equal a float64 evaluation of the same shader maths. A NaN alone in the last pixel of odd-sized
+// targets is found there; normalised targets are reported as not inspected; passes that blend or
+// discard behind a depth test are inspected after they ran; HDRLighting as shipped has no NaN or
+// Inf.
 
 #include <cmath>
 #include <limits>
@@ -17,7 +20,13 @@
 namespace rmfx::test {
 namespace {
 
-class HealthCheckGLTest : public GlTest {};
+class HealthCheckGLTest : public GlTest, public ::testing::WithParamInterface<HealthCheckMethod> {};
+
+INSTANTIATE_TEST_SUITE_P(Methods, HealthCheckGLTest,
+                         ::testing::Values(HealthCheckMethod::AfterPass, HealthCheckMethod::WhileDrawing),
+                         [](const ::testing::TestParamInfo<HealthCheckMethod>& info) {
+                             return info.param == HealthCheckMethod::AfterPass ? "AfterPass" : "WhileDrawing";
+                         });
 
 constexpr int kWidth = 17, kHeight = 9;
 
@@ -70,9 +79,11 @@ void main() { fragColor = texelFetch(b, ivec2(gl_FragCoord.xy), 0); }
 </workspace>
 )";
 
-GlRun runChecked(std::unique_ptr<Workspace> ws, glm::ivec2 size, int frames = 1) {
+GlRun runChecked(std::unique_ptr<Workspace> ws, glm::ivec2 size, int frames = 1,
+                 HealthCheckMethod method = HealthCheckMethod::AfterPass) {
     ExecutorOptions options;
     options.checkHealth = true;
+    options.healthCheckMethod = method;
     return runWorkspace(std::move(ws), {size, frames, 1.0f / 60.0f}, options);
 }
 
@@ -117,8 +128,8 @@ Written divide(const Written& base) {
     return w;
 }
 
-TEST_F(HealthCheckGLTest, EveryPassesCountsAndTheFirstOfEachKindMatchAFloat64Evaluation) {
-    GlRun run = runChecked(workspaceFromText(kProblemWorkspace), {kWidth, kHeight});
+TEST_P(HealthCheckGLTest, EveryPassesCountsAndTheFirstOfEachKindMatchAFloat64Evaluation) {
+    GlRun run = runChecked(workspaceFromText(kProblemWorkspace), {kWidth, kHeight}, 1, GetParam());
     ASSERT_TRUE(run.exec);
     const FrameHealth* health = run.exec->frameHealth();
     ASSERT_TRUE(health);
@@ -131,7 +142,7 @@ TEST_F(HealthCheckGLTest, EveryPassesCountsAndTheFirstOfEachKindMatchAFloat64Eva
     for (size_t p = 0; p < expected.size(); ++p) {
         const auto& [written, format] = expected[p];
         std::array<long long, healthKindCount> counts{};
-        for (int y = 0; y < kHeight; ++y)
+        for (int y = kHeight - 1; y >= 0; --y)  // the check's order: the bottom row first
             for (int x = 0; x < kWidth; ++x) {
                 auto kinds = kindsOf(written->at(x, y), formatHealthLimits(format));
                 for (int k = 0; k < healthKindCount; ++k) {
@@ -141,6 +152,7 @@ TEST_F(HealthCheckGLTest, EveryPassesCountsAndTheFirstOfEachKindMatchAFloat64Eva
                 }
             }
         EXPECT_TRUE(health->passes[p].inspected);
+        EXPECT_EQ(health->passes[p].countedWhileDrawing, GetParam() == HealthCheckMethod::WhileDrawing);
         EXPECT_EQ(health->passes[p].counts, counts) << health->passes[p].pass;
     }
     // The maths gives every kind somewhere (3 columns of NaN, one of each infinity, …).
@@ -175,14 +187,14 @@ TEST_F(HealthCheckGLTest, EveryPassesCountsAndTheFirstOfEachKindMatchAFloat64Eva
         for (int c = 0; c < 4; ++c) EXPECT_EQ(f.inputs[0].second[c], base.at(pixel.x, pixel.y)[c]) << c;
     }
     EXPECT_EQ(describeFinding(health->findings[0]),
-              "pass 'divide' wrote NaN into target 'dark' (27 pixels; first at x=0 y=0: (nan, -0.2, -0.5, 1); there the "
-              "inputs held: src → target 'base' (0.5, 65504, 0.5, 1))");
+              "pass 'divide' wrote NaN into target 'dark' (27 pixels; first at x=0 y=8: (nan, -0.2, -0.5, 1); there the "
+              "inputs held: src → target 'base' (0.5, 1, 0.5, 1))");
     EXPECT_EQ(run.exec->firstHealthFindings().size(), static_cast<size_t>(healthKindCount));
 }
 
 // A single NaN in the last pixel of the last row (reading order) of targets whose sizes leave
 // partial 8x8 groups, and in 1x1.
-TEST_F(HealthCheckGLTest, ANanInTheLastPixelOfOddSizesIsFoundThere) {
+TEST_P(HealthCheckGLTest, ANanInTheLastPixelOfOddSizesIsFoundThere) {
     for (glm::ivec2 size : {glm::ivec2(17, 9), glm::ivec2(1, 1), glm::ivec2(33, 2), glm::ivec2(3, 41)}) {
         SCOPED_TRACE(std::to_string(size.x) + "x" + std::to_string(size.y));
         const std::string xml = R"(<workspace version="1" name="corner">
@@ -207,7 +219,7 @@ void main() { fragColor = vec4(texelFetch(s, ivec2(gl_FragCoord.xy), 0).rrr * 0.
 ]]></shader></pass>
 </workspace>
 )";
-        GlRun run = runChecked(workspaceFromText(xml), size);
+        GlRun run = runChecked(workspaceFromText(xml), size, 1, GetParam());
         ASSERT_TRUE(run.exec);
         const FrameHealth* health = run.exec->frameHealth();
         ASSERT_TRUE(health);
@@ -224,7 +236,7 @@ void main() { fragColor = vec4(texelFetch(s, ivec2(gl_FragCoord.xy), 0).rrr * 0.
 // The inspections wait for memory to be written again: a target that holds NaN after its first
 // pass and is overwritten clean later in the frame is reported for that first pass, with the
 // value it held then, and the pass that read it sees its NaN input.
-TEST_F(HealthCheckGLTest, ATargetOverwrittenLaterInTheFrameIsReportedAsItsFirstPassLeftIt) {
+TEST_P(HealthCheckGLTest, ATargetOverwrittenLaterInTheFrameIsReportedAsItsFirstPassLeftIt) {
     const std::string xml = R"(<workspace version="1" name="overwrite">
   <target name="t" format="rgba32f" scale="1"/>
   <target name="u" format="rgba32f" scale="1"/>
@@ -256,7 +268,7 @@ void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0); }
 </workspace>
 )";
     const glm::ivec2 size{7, 5};
-    GlRun run = runChecked(workspaceFromText(xml), size);
+    GlRun run = runChecked(workspaceFromText(xml), size, 1, GetParam());
     ASSERT_TRUE(run.exec);
     const FrameHealth* health = run.exec->frameHealth();
     ASSERT_TRUE(health);
@@ -267,20 +279,154 @@ void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0); }
     const HealthFinding& f = health->findings.front();
     EXPECT_EQ(f.kind, HealthKind::NaN);
     EXPECT_EQ(f.pass, "poison");
-    EXPECT_EQ(f.pixel, glm::ivec2(0, 0));
+    EXPECT_EQ(f.pixel, glm::ivec2(0, size.y - 1));  // the bottom row's first
     EXPECT_TRUE(std::isnan(f.value.x));
     EXPECT_EQ(f.value.y, 2.0f);
     EXPECT_EQ(f.value.w, 4.0f);
     EXPECT_TRUE(f.inputs.empty());
 }
 
+// What a pass that blends leaves is not what its shader wrote, and a shader that discards behind a
+// depth test cannot let the test run first: both are inspected after they ran, by either method.
+// base holds -3; blend adds 1 (the target then holds -2: negative); cut writes 0.25 where it does
+// not discard, behind a depth test that always passes.
+TEST_P(HealthCheckGLTest, PassesThatBlendOrDiscardBehindADepthTestAreInspectedAfterTheyRan) {
+    const std::string xml = R"(<workspace version="1" name="blend">
+  <target name="t" format="rgba32f" scale="1"/>
+  <target name="u" format="rgba32f" scale="1"/>
+  <pass name="base" target="t"><shader stage="fragment"><![CDATA[
+#version 450 core
+out vec4 fragColor;
+void main() { fragColor = vec4(-3.0, 0.0, 0.0, 1.0); }
+]]></shader></pass>
+  <pass name="blend" target="t"><blend mode="add"/><shader stage="fragment"><![CDATA[
+#version 450 core
+out vec4 fragColor;
+void main() { fragColor = vec4(1.0, 0.0, 0.0, 0.0); }
+]]></shader></pass>
+  <pass name="cut" target="u"><clear color="0 0 0 1" depth="1"/><depth test="always"/><sampler name="s" target="t"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D s;
+out vec4 fragColor;
+void main() {
+    if (gl_FragCoord.x < 2.0) discard;
+    fragColor = vec4(texelFetch(s, ivec2(gl_FragCoord.xy), 0).x, 0.25, 0.0, 1.0);
+}
+]]></shader></pass>
+  <pass name="final"><sampler name="s" target="u"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D s;
+out vec4 fragColor;
+void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0); }
+]]></shader></pass>
+</workspace>
+)";
+    const glm::ivec2 size{5, 3};
+    GlRun run = runChecked(workspaceFromText(xml), size, 1, GetParam());
+    ASSERT_TRUE(run.exec) ;
+    const FrameHealth* health = run.exec->frameHealth();
+    ASSERT_TRUE(health);
+    ASSERT_EQ(health->passes.size(), 4u);
+    const bool whileDrawing = GetParam() == HealthCheckMethod::WhileDrawing;
+    EXPECT_EQ(health->passes[0].countedWhileDrawing, whileDrawing);
+    EXPECT_FALSE(health->passes[1].countedWhileDrawing);
+    EXPECT_FALSE(health->passes[2].countedWhileDrawing);
+    EXPECT_EQ(health->passes[3].countedWhileDrawing, whileDrawing);
+    const int negative = static_cast<int>(HealthKind::Negative);
+    EXPECT_EQ(health->passes[0].counts[negative], size.x * size.y);
+    EXPECT_EQ(health->passes[1].counts[negative], size.x * size.y) << "-3 + 1: still negative";
+    // cut left its two discarded columns cleared (0) and wrote -2 in the other three.
+    EXPECT_EQ(health->passes[2].counts[negative], 3 * size.y);
+    ASSERT_EQ(health->findings.size(), 1u);
+    EXPECT_EQ(health->findings[0].pass, "base");
+    EXPECT_EQ(health->findings[0].value, glm::vec4(-3.0f, 0.0f, 0.0f, 1.0f));
+}
+
+// Counting while drawing sees the value the shader wrote, before the format rounds it: a half
+// target given 70000 (stored as 65504 or as +Inf, by the GPU) and 65490 (rounds to 65504) is at
+// its largest there; 65480 rounds to 65472 and is not; -1e-8 rounds to -0 and is not negative.
+TEST_P(HealthCheckGLTest, AHalfTargetIsJudgedByWhatItsFormatMakesOfTheWrittenValue) {
+    if (GetParam() != HealthCheckMethod::WhileDrawing) GTEST_SKIP() << "the stored value is what after-pass sees";
+    const std::string xml = R"(<workspace version="1" name="half">
+  <target name="h" format="rgba16f" scale="1"/>
+  <pass name="big" target="h"><shader stage="fragment"><![CDATA[
+#version 450 core
+out vec4 fragColor;
+void main() {
+    float x = gl_FragCoord.x < 1.0 ? 70000.0 : gl_FragCoord.x < 2.0 ? 65490.0 : 65480.0;
+    fragColor = vec4(x, -1e-8, 0.0, 1.0);
+}
+]]></shader></pass>
+  <pass name="final"><sampler name="s" target="h"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D s;
+out vec4 fragColor;
+void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0) * 0.0; }
+]]></shader></pass>
+</workspace>
+)";
+    GlRun run = runChecked(workspaceFromText(xml), {3, 2}, 1, GetParam());
+    ASSERT_TRUE(run.exec) ;
+    const FrameHealth* health = run.exec->frameHealth();
+    ASSERT_TRUE(health);
+    EXPECT_TRUE(health->passes[0].countedWhileDrawing);
+    EXPECT_EQ(health->passes[0].counts, (std::array<long long, healthKindCount>{0, 0, 0, 0, 4}));
+    ASSERT_EQ(health->findings.size(), 1u);
+    EXPECT_EQ(health->findings[0].pixel, glm::ivec2(0, 1));
+    EXPECT_EQ(health->findings[0].value.x, 70000.0f);
+}
+
+// Every pixel of a 256x256 target NaN: the first pixel's value and inputs are kept although
+// thousands of fragments race to lower it (counted from the top, llvmpipe used up every record
+// slot: gl/HealthBuffer.h).
+TEST_P(HealthCheckGLTest, TheFirstPixelOfAWholeTargetOfNanIsRecorded) {
+    const std::string xml = R"(<workspace version="1" name="all">
+  <target name="a" format="rgba16f" scale="1"/>
+  <target name="t" format="rgba32f" scale="1"/>
+  <pass name="ramp" target="a"><shader stage="fragment"><![CDATA[
+#version 450 core
+out vec4 fragColor;
+void main() { fragColor = vec4(gl_FragCoord.xy, 0.0, 1.0); }
+]]></shader></pass>
+  <pass name="poison" target="t"><sampler name="s" target="a"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D s;
+out vec4 fragColor;
+void main() { fragColor = vec4(uintBitsToFloat(0x7fc00000u), texelFetch(s, ivec2(gl_FragCoord.xy), 0).xy, 1.0); }
+]]></shader></pass>
+  <pass name="final"><sampler name="s" target="t"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D s;
+out vec4 fragColor;
+void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0) * 0.0 + 0.5; }
+]]></shader></pass>
+</workspace>
+)";
+    GlRun run = runChecked(workspaceFromText(xml), {256, 256}, 1, GetParam());
+    ASSERT_TRUE(run.exec) ;
+    const FrameHealth* health = run.exec->frameHealth();
+    ASSERT_TRUE(health);
+    ASSERT_FALSE(health->findings.empty());
+    const HealthFinding& f = health->findings.front();
+    EXPECT_EQ(f.kind, HealthKind::NaN);
+    EXPECT_EQ(f.count, 256 * 256);
+    EXPECT_EQ(f.pixel, glm::ivec2(0, 255));  // the bottom row's first, GL's (0.5, 0.5)
+    ASSERT_TRUE(f.recorded) << describeFinding(f);
+    EXPECT_EQ(f.value.y, 0.5f);
+    EXPECT_EQ(f.value.z, 0.5f);
+    ASSERT_EQ(f.inputs.size(), 1u);
+    EXPECT_EQ(f.inputs[0].second, glm::vec4(0.5f, 0.5f, 0.0f, 1.0f));
+}
+
 // The effects as shipped: HDRLighting over 3 frames keeps every inspected target finite.
-TEST_F(HealthCheckGLTest, HdrLightingAsShippedHasNoNanOrInfinity) {
-    GlRun run = runChecked(effectWorkspace("hdr_lighting.xml"), {96, 64}, 3);
+TEST_P(HealthCheckGLTest, HdrLightingAsShippedHasNoNanOrInfinity) {
+    GlRun run = runChecked(effectWorkspace("hdr_lighting.xml"), {96, 64}, 3, GetParam());
     ASSERT_TRUE(run.exec);
     const FrameHealth* health = run.exec->frameHealth();
     ASSERT_TRUE(health);
     EXPECT_GT(health->passes.size(), 20u);
+    if (GetParam() == HealthCheckMethod::WhileDrawing)  // every pass of it can count its own writes
+        for (const PassHealth& p : health->passes) EXPECT_TRUE(p.countedWhileDrawing) << p.pass;
     for (const HealthFinding& f : run.exec->firstHealthFindings())
         EXPECT_FALSE(healthKindIsError(f.kind)) << describeFinding(f);
 }

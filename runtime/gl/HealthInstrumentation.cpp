@@ -1,0 +1,246 @@
+#include "gl/HealthInstrumentation.h"
+
+#include <cmath>
+#include <cstdlib>
+
+#include <epoxy/gl.h>
+
+#include "gl/HealthBuffer.h"
+
+namespace rmfx {
+namespace {
+
+constexpr const char* kRenamedMain = "rmfx_health_pass_main";
+
+// Where the #version line ends in `code` and the version and profile it names; npos when the
+// code has none before its first other line.
+struct VersionLine {
+    size_t end = std::string::npos;
+    int number = 110;
+    bool es = false;
+};
+
+VersionLine findVersionLine(const std::string& code) {
+    VersionLine found;
+    size_t at = 0;
+    while (at < code.size()) {
+        size_t end = code.find('\n', at);
+        if (end == std::string::npos) end = code.size();
+        const std::string line = code.substr(at, end - at);
+        const size_t text = line.find_first_not_of(" \t\r");
+        if (text != std::string::npos) {
+            if (line.compare(text, 8, "#version") != 0) {
+                // A comment or a #line before #version is allowed; anything else means there is none.
+                if (line.compare(text, 2, "//") != 0 && line.compare(text, 5, "#line") != 0) return found;
+            } else {
+                const char* rest = line.c_str() + text + 8;
+                char* after = nullptr;
+                found.number = static_cast<int>(std::strtol(rest, &after, 10));
+                found.es = std::string(after).find("es") != std::string::npos;
+                found.end = end < code.size() ? end + 1 : end;
+                return found;
+            }
+        }
+        at = end + 1;
+    }
+    return found;
+}
+
+// The fragment output at location 0: its name and how many float components it has.
+struct ColourOutput {
+    std::string name;
+    int components = 0;
+};
+
+Result<ColourOutput> colourOutput(GLuint program) {
+    GLint count = 0;
+    glGetProgramInterfaceiv(program, GL_PROGRAM_OUTPUT, GL_ACTIVE_RESOURCES, &count);
+    for (GLint i = 0; i < count; ++i) {
+        const GLenum props[3] = {GL_LOCATION, GL_TYPE, GL_ARRAY_SIZE};
+        GLint values[3] = {};
+        glGetProgramResourceiv(program, GL_PROGRAM_OUTPUT, static_cast<GLuint>(i), 3, props, 3, nullptr, values);
+        if (values[0] != 0) continue;
+        char name[256] = {};
+        glGetProgramResourceName(program, GL_PROGRAM_OUTPUT, static_cast<GLuint>(i), sizeof name, nullptr, name);
+        const std::string output = name;
+        if (output.rfind("gl_", 0) == 0 || output.find('[') != std::string::npos || values[2] != 1)
+            return Error{"its colour output '" + output + "' is a built-in or an array"};
+        switch (values[1]) {
+            case GL_FLOAT: return ColourOutput{output, 1};
+            case GL_FLOAT_VEC2: return ColourOutput{output, 2};
+            case GL_FLOAT_VEC3: return ColourOutput{output, 3};
+            case GL_FLOAT_VEC4: return ColourOutput{output, 4};
+            default: return Error{"its colour output '" + output + "' is not a float vector"};
+        }
+    }
+    return Error{"it has no colour output at location 0"};
+}
+
+// Whether `sampler` is a plain sampler2D the fragment shader reads.
+bool fragmentSampler2D(GLuint program, const std::string& sampler) {
+    const GLuint index = glGetProgramResourceIndex(program, GL_UNIFORM, sampler.c_str());
+    if (index == GL_INVALID_INDEX) return false;
+    const GLenum props[3] = {GL_TYPE, GL_ARRAY_SIZE, GL_REFERENCED_BY_FRAGMENT_SHADER};
+    GLint values[3] = {};
+    glGetProgramResourceiv(program, GL_UNIFORM, index, 3, props, 3, nullptr, values);
+    return values[0] == GL_SAMPLER_2D && values[1] == 1 && values[2] != 0;
+}
+
+bool mentions(const std::string& code, const char* word) { return code.find(word) != std::string::npos; }
+
+std::string widened(const ColourOutput& output) {
+    switch (output.components) {
+        case 1: return "vec4(" + output.name + ", 0.0, 0.0, 0.0)";
+        case 2: return "vec4(" + output.name + ", 0.0, 0.0)";
+        case 3: return "vec4(" + output.name + ", 0.0)";
+        default: return output.name;
+    }
+}
+
+// What the added main() does after the pass's own: the health buffer's words as HealthBuffer.h
+// lays them out, and the format's limits as uniforms (setHealthUniforms).
+std::string appendix(const ColourOutput& output, const std::vector<std::string>& inputs, int binding, bool earlyTests) {
+    std::string s = "\n#undef main\n";
+    s += "layout(std430, binding = " + std::to_string(binding) + ") buffer rmfx_health_Buffer { int rmfx_health_words[]; };\n";
+    if (earlyTests) s += "layout(early_fragment_tests) in;\n";
+    s += R"(uniform int rmfx_health_Slot;       // the pass's first entry: position * 5
+uniform int rmfx_health_Records;    // the first word of the records
+uniform ivec2 rmfx_health_Size;     // of the target
+uniform int rmfx_health_Channels;   // the target's; 0: it is not inspected
+uniform bool rmfx_health_Negatives;
+uniform float rmfx_health_Smallest; // a negative value of no larger magnitude is stored as -0
+uniform vec4 rmfx_health_Largest;   // at or above: stored at the format's largest or beyond; 0: none
+void rmfx_health_storeVec4(int at, vec4 v) {
+    for (int c = 0; c < 4; ++c) rmfx_health_words[at + c] = floatBitsToInt(v[c]);
+}
+// Counts the kinds in `kinds` (bit k: kind k) at `pixel`; a fragment that lowers a kind's first
+// pixel takes a record slot for it, and writes its value and inputs there.
+void rmfx_health_count(int kinds, int pixel, vec4 value) {
+    int slots[5];
+    bool improved = false;
+    for (int kind = 0; kind < 5; ++kind) {
+        slots[kind] = -1;
+        if ((kinds & (1 << kind)) == 0) continue;
+        int entry = (rmfx_health_Slot + kind) * )" + std::to_string(kHealthEntryWords) + R"(;
+        atomicAdd(rmfx_health_words[entry], 1);
+        if (atomicMin(rmfx_health_words[entry + 1], pixel) <= pixel) continue;
+        int slot = atomicAdd(rmfx_health_words[entry + 2], 1);
+        if (slot >= )" + std::to_string(kHealthRecordSlots) + R"() continue;
+        slots[kind] = rmfx_health_Records + ((rmfx_health_Slot + kind) * )" +
+         std::to_string(kHealthRecordSlots) + " + slot) * " + std::to_string(kHealthRecordWords) + R"(;
+        improved = true;
+    }
+    // A loop, not an if: a SIMD rasteriser (llvmpipe) runs both sides of an if for every
+    // fragment of a group, but leaves a loop as soon as none of them takes it.
+    for (int once = improved ? 0 : 1; once < 1; ++once) {
+        vec4 inputs[)" + std::to_string(std::max<size_t>(inputs.size(), 1)) + R"(];
+        vec2 centre = (floor(gl_FragCoord.xy) + 0.5) / vec2(rmfx_health_Size);
+        ivec2 size;
+)";
+    for (size_t i = 0; i < inputs.size(); ++i)
+        s += "        size = textureSize(" + inputs[i] + ", 0);\n        inputs[" + std::to_string(i) + "] = texelFetch(" +
+             inputs[i] + ", clamp(ivec2(centre * vec2(size)), ivec2(0), size - 1), 0);\n";
+    s += R"(        for (int kind = 0; kind < 5; ++kind) {
+            int record = slots[kind];
+            if (record < 0) continue;
+            rmfx_health_words[record] = pixel;
+            rmfx_health_storeVec4(record + 4, value);
+)";
+    for (size_t i = 0; i < inputs.size(); ++i)
+        s += "            rmfx_health_storeVec4(record + " + std::to_string(8 + 4 * i) + ", inputs[" + std::to_string(i) + "]);\n";
+    s += "        }\n    }\n}\nvoid main() {\n    " + std::string(kRenamedMain) + "();\n    vec4 written = " + widened(output) + ";\n";
+    s += "    int channels = min(rmfx_health_Channels, " + std::to_string(output.components) + ");\n";
+    s += R"(    int kinds = 0;
+    for (int c = 0; c < channels; ++c) {
+        float x = written[c];
+        if (isnan(x)) kinds |= 1;
+        else if (isinf(x)) kinds |= x > 0.0 ? 2 : 4;
+        else {
+            if (rmfx_health_Negatives && x < -rmfx_health_Smallest) kinds |= 8;
+            if (rmfx_health_Largest[c] > 0.0 && abs(x) >= rmfx_health_Largest[c]) kinds |= 16;
+        }
+    }
+    for (int once = kinds != 0 ? 0 : 1; once < 1; ++once) {
+        int pixel = int(gl_FragCoord.y) * rmfx_health_Size.x + int(gl_FragCoord.x);
+        rmfx_health_count(kinds, pixel, written);
+    }
+}
+)";
+    return s;
+}
+
+// The smallest written magnitude a format stores at its largest finite value or beyond, rounding
+// to nearest (ties to even, which goes down from each midpoint here): half 65488, unsigned
+// 11-bit 64768, 10-bit 64000, each just above.
+glm::vec4 largestWritten(TargetFormat format) {
+    const FormatHealthLimits limits = formatHealthLimits(format);
+    glm::vec4 at(0.0f);
+    for (int c = 0; c < 4; ++c) {
+        const float largest = limits.largest[c];
+        if (largest <= 0.0f) continue;
+        // The largest finite value's mantissa step: 32 for half and 11-bit, 64 for 10-bit at 2^15.
+        const float step = largest == 64512.0f ? 1024.0f : largest == 65024.0f ? 512.0f : 32.0f;
+        at[c] = std::nextafter(largest - step / 2.0f, largest);
+    }
+    return at;
+}
+
+}  // namespace
+
+Result<std::string> instrumentForHealth(const Pass& pass, const std::string& fragmentCode, unsigned program,
+                                        const std::vector<std::string>& inputSamplers, int bufferBinding) {
+    if (pass.blend.enabled) return Error{"it blends onto its target"};
+    if (pass.alphaTest.enabled) return Error{"it has an alpha test"};
+    const VersionLine version = findVersionLine(fragmentCode);
+    if (version.end == std::string::npos || version.number < 330 || version.es)
+        return Error{"its fragment shader is older than GLSL 3.30 or GLSL ES"};
+    const bool earlyTests = pass.depth.test;
+    if (earlyTests && (mentions(fragmentCode, "discard") || mentions(fragmentCode, "gl_FragDepth")))
+        return Error{"it tests depth and its fragment shader discards or writes gl_FragDepth"};
+    Result<ColourOutput> output = colourOutput(program);
+    if (!output) return Error{output.error()};
+    std::vector<std::string> inputs;
+    for (const std::string& sampler : inputSamplers) {
+        if (!fragmentSampler2D(program, sampler))
+            return Error{"its input '" + sampler + "' is not a sampler2D of its fragment shader"};
+        if (inputs.size() < static_cast<size_t>(kHealthMaxInputs)) inputs.push_back(sampler);
+    }
+    std::string head;
+    if (version.number < 430) head += "#extension GL_ARB_shader_storage_buffer_object : require\n";
+    if (earlyTests && version.number < 420) head += "#extension GL_ARB_shader_image_load_store : require\n";
+    head += "#define main " + std::string(kRenamedMain) + "\n";
+    std::string code = fragmentCode;
+    code.insert(version.end, head);
+    if (!code.empty() && code.back() != '\n') code += '\n';
+    return code + appendix(*output, inputs, bufferBinding, earlyTests);
+}
+
+HealthUniforms findHealthUniforms(unsigned program) {
+    HealthUniforms u;
+    u.slot = glGetUniformLocation(program, "rmfx_health_Slot");
+    u.records = glGetUniformLocation(program, "rmfx_health_Records");
+    u.size = glGetUniformLocation(program, "rmfx_health_Size");
+    u.channels = glGetUniformLocation(program, "rmfx_health_Channels");
+    u.negatives = glGetUniformLocation(program, "rmfx_health_Negatives");
+    u.smallest = glGetUniformLocation(program, "rmfx_health_Smallest");
+    u.largest = glGetUniformLocation(program, "rmfx_health_Largest");
+    // The compiler drops what the added main() does not use: a target's channels always are.
+    u.found = u.slot >= 0 && u.size >= 0 && u.channels >= 0;
+    return u;
+}
+
+void setHealthUniforms(const HealthUniforms& u, size_t position, size_t capacity, glm::ivec2 size, TargetFormat format) {
+    const FormatHealthLimits limits = formatHealthLimits(format);
+    const bool half = format == TargetFormat::RGBA16F || format == TargetFormat::RG16F || format == TargetFormat::R16F;
+    const glm::vec4 largest = largestWritten(format);
+    glUniform1i(u.slot, static_cast<GLint>(position * healthKindCount));
+    glUniform1i(u.records, static_cast<GLint>(healthRecordsBase(capacity)));
+    glUniform2i(u.size, size.x, size.y);
+    glUniform1i(u.channels, limits.inspected ? limits.channels : 0);
+    glUniform1i(u.negatives, limits.holdsNegatives ? 1 : 0);
+    // Half floats round a magnitude up to 2^-25 (half their smallest subnormal) to zero.
+    glUniform1f(u.smallest, half ? std::ldexp(1.0f, -25) : 0.0f);
+    glUniform4f(u.largest, largest.x, largest.y, largest.z, largest.w);
+}
+
+}  // namespace rmfx
