@@ -100,6 +100,13 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
         .flag({"-q", "--quiet"}, [&] { a.quiet = true; })
         .flag({"--explain"}, [&] { a.explain = true; })
         .flag({"--check"}, [&] { a.executor.checkHealth = true; })
+        .option({"--check-method"}, [&](const std::string& value) -> std::string {
+            std::optional<HealthCheckMethod> method = parseHealthCheckMethod(value);
+            if (!method) return "--check-method: expected auto, while-drawing or after-pass, got '" + value + "'";
+            a.executor.healthCheckMethod = *method;
+            a.executor.checkHealth = true;
+            return "";
+        })
         .flag({"--no-pool"}, [&] { a.executor.poolTargets = false; })
         .option({"--content-skip"}, [&](const std::string& value) -> std::string {
             if (value != "on" && value != "off") return "--content-skip: expected on or off, got '" + value + "'";
@@ -166,6 +173,13 @@ bool reportHealth(const GlExecutor& executor, int frames, bool quiet) {
     if (!uninspected.empty())
         std::cerr << "; not inspected, their formats clamp what is written: " << uninspected;
     std::cerr << "\n";
+    if (last) {
+        long counting = std::count_if(last->passes.begin(), last->passes.end(), [](const PassHealth& p) { return p.countedWhileDrawing; });
+        long after = std::count_if(last->passes.begin(), last->passes.end(),
+                                   [](const PassHealth& p) { return p.inspected && !p.countedWhileDrawing; });
+        std::cerr << "rmfx: check: " << counting << (counting == 1 ? " pass" : " passes")
+                  << " counted what they wrote while drawing, " << after << " inspected after they ran\n";
+    }
     return errors;
 }
 

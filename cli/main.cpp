@@ -64,6 +64,10 @@ render options:
                          negative values and values at its format's largest; report the first
                          pass that wrote each, with a pixel, its value and the pass's inputs there
                          (exit status 4 when NaN or an infinity was found; the image is written)
+  --check-method auto|while-drawing|after-pass
+                         how --check looks: the passes' own shaders count what they write, or a
+                         draw over each target after its pass (default auto: while-drawing on a
+                         GPU, after-pass on a software rasteriser such as llvmpipe); implies --check
   --content-skip on|off  skip on the GPU the effects whose source holds nothing this frame
                          (<effect source>; default on; the image is the same either way)
   --memory-budget MiB    the most render-target memory a frame may hold (default 4096); a

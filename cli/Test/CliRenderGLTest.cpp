@@ -106,6 +106,18 @@ void main() { fragColor = texelFetch(ratio, ivec2(gl_FragCoord.xy), 0); }
     EXPECT_TRUE(has(bad.err, "rmfx: check: 3 passes a frame, 1 frame: no NaN, -Inf, values at the format's largest\n"))
         << bad.err;
     EXPECT_TRUE(std::filesystem::exists(dir / "bad.exr"));
+    // The passes' own shaders counting what they write find the same, and say they did.
+    CommandResult drawing = runRmfx("render bad.xml --check-method while-drawing -o bad.exr", dir.path());
+    EXPECT_EQ(drawing.status, 4) << drawing.err;
+    EXPECT_TRUE(has(drawing.err, "pass 'ratio' wrote +Inf into target 'ratio' (4 pixels; first at x=2 y=3: (inf, 0.5, 0.5, 1); "
+                                 "there the inputs held: ramp → target 'ramp' (0, 1, 0, 1))\n"))
+        << drawing.err;
+    EXPECT_TRUE(has(drawing.err, "rmfx: check: 3 passes counted what they wrote while drawing, 0 inspected after they ran\n"))
+        << drawing.err;
+    CommandResult after = runRmfx("render bad.xml --check-method after-pass -o bad.exr", dir.path());
+    EXPECT_TRUE(has(after.err, "rmfx: check: 0 passes counted what they wrote while drawing, 3 inspected after they ran\n"))
+        << after.err;
+    EXPECT_NE(runRmfx("render bad.xml --check-method sometimes -o bad.exr", dir.path()).status, 0);
     CommandResult quiet = runRmfx("render bad.xml --check -q -o bad.exr", dir.path());
     EXPECT_EQ(quiet.status, 4);
     EXPECT_TRUE(has(quiet.err, "rmfx: check: error: frame 0: pass 'ratio' wrote +Inf")) << quiet.err;
