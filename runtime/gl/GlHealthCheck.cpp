@@ -178,6 +178,8 @@ void GlHealthCheck::beginFrame(int frame, size_t passes) {
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     if (!entries.empty())
         glNamedBufferSubData(buffer_.get(), 0, static_cast<GLsizeiptr>(entries.size() * sizeof(std::int32_t)), entries.data());
+    // For the frame: nothing else in rmfx binds a storage buffer there.
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding_), buffer_.get());
 }
 
 void GlHealthCheck::bindCommonState() {
@@ -261,7 +263,6 @@ void GlHealthCheck::beforeCountingPass(size_t position, const std::string& pass,
     notePass(position, pass, target, size, format, inputs);
     if (position < passes_.size()) passes_[position].countedWhileDrawing = true;
     setHealthUniforms(uniforms, position, capacity_, size, format);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding_), buffer_.get());
 }
 
 void GlHealthCheck::beforeWriting(unsigned texture) {

@@ -230,6 +230,9 @@ HealthUniforms findHealthUniforms(unsigned program) {
 }
 
 void setHealthUniforms(const HealthUniforms& u, size_t position, size_t capacity, glm::ivec2 size, TargetFormat format) {
+    const HealthUniforms::Values values{position, capacity, size, format};
+    if (u.set == values) return;
+    u.set = values;
     const FormatHealthLimits limits = formatHealthLimits(format);
     const bool half = format == TargetFormat::RGBA16F || format == TargetFormat::RG16F || format == TargetFormat::R16F;
     const glm::vec4 largest = largestWritten(format);

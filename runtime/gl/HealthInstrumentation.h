@@ -36,11 +36,21 @@ Result<std::string> instrumentForHealth(const Pass& pass, const std::string& fra
 struct HealthUniforms {
     bool found = false;
     int slot = -1, records = -1, size = -1, channels = -1, negatives = -1, smallest = -1, largest = -1;
+    // What they were last set to: a pass draws the same way frame after frame, and each uniform
+    // call is CPU time in a frame that a GPU may finish sooner.
+    struct Values {
+        size_t position = static_cast<size_t>(-1), capacity = 0;
+        glm::ivec2 size{0};
+        TargetFormat format = TargetFormat::RGBA8;
+        bool operator==(const Values&) const = default;
+    };
+    mutable Values set;
 };
 HealthUniforms findHealthUniforms(unsigned program);
 
-// Sets them for a draw of the pass at schedule position `position` into a target of `format` and
-// `size`, whose buffer holds `capacity` positions. Needs the program current.
+// Sets them, where they changed, for a draw of the pass at schedule position `position` into a
+// target of `format` and `size`, whose buffer holds `capacity` positions. Needs the program
+// current.
 void setHealthUniforms(const HealthUniforms& uniforms, size_t position, size_t capacity, glm::ivec2 size, TargetFormat format);
 
 }  // namespace rmfx
