@@ -116,6 +116,47 @@ void GlContentSkip::plan(const Workspace& ws, const std::vector<GpuPass*>& sched
         active.probe = static_cast<size_t>(probe - probes_.begin());
         effects_.push_back(std::move(active));
     }
+    planConsumers(schedule);
+}
+
+void GlContentSkip::planConsumers(const std::vector<GpuPass*>& schedule) {
+    consumers_.clear();
+    consumerProbes_.clear();
+    for (size_t i = 0; i < schedule.size(); ++i) {
+        if (effectOfPass_[i] >= 0) continue;
+        Consumer consumer{i, {}};
+        std::set<size_t> probes;
+        for (const ActiveEffect& e : effects_) {
+            if (i <= e.last) continue;
+            bool reads = false;
+            for (const Sampler& s : schedule[i]->pass->samplers)
+                for (const GpuTarget* t : e.handedOn) reads = reads || (s.target == t->name && !s.previousFrame);
+            if (!reads) continue;
+            consumer.effects.insert(e.effect->name);
+            probes.insert(e.probe);
+        }
+        // One condition decides one draw: effects on different probes could be skipped apart.
+        if (consumer.effects.empty() || probes.size() != 1) continue;
+        consumers_.push_back(std::move(consumer));
+        consumerProbes_.push_back(*probes.begin());
+    }
+}
+
+bool GlContentSkip::beginConsumerDraw(size_t position, bool withoutEffects) {
+    for (size_t c = 0; c < consumers_.size(); ++c) {
+        if (consumers_[c].position != position) continue;
+        const Probe& probe = probes_[consumerProbes_[c]];
+        if (!probe.issued) return !withoutEffects;
+        glBeginConditionalRender(probe.queries[slot_].get(), withoutEffects ? GL_QUERY_WAIT_INVERTED : GL_QUERY_WAIT);
+        consumerCondition_ = true;
+        return true;
+    }
+    return !withoutEffects;
+}
+
+void GlContentSkip::endConsumerDraw() {
+    if (consumerCondition_) glEndConditionalRender();
+    consumerCondition_ = false;
 }
 
 void GlContentSkip::beginFrame() {

@@ -46,6 +46,22 @@ public:
     void afterPass(size_t index);
     void endFrame();
 
+    // A pass outside the effects that reads what effects sharing one probe hand on (hdr_lighting's
+    // final, after bloom and star): where the probe finds nothing it can be drawn compiled with
+    // those effects left out (their RMFX_EFFECT_* false), reading none of the cleared targets,
+    // and as compiled where it finds something. Set by plan().
+    struct Consumer {
+        size_t position = 0;            // in the schedule
+        std::set<std::string> effects;  // left out of the second program
+    };
+    const std::vector<Consumer>& consumers() const { return consumers_; }
+    // Around a consumer's draws: `withoutEffects` false for the program as compiled (drawn where
+    // the source holds something), true for the one without the effects (where it holds nothing).
+    // Without an issued probe, the program as compiled is drawn unconditionally and the other not
+    // at all: false when the draw is to be left out.
+    bool beginConsumerDraw(size_t position, bool withoutEffects);
+    void endConsumerDraw();
+
     // The effects the last frame skipped, each with why; waits for the GPU's answer when `wait`,
     // else reports only what has arrived (and what arrived for an earlier frame is kept).
     const std::map<std::string, std::string>& skipped(bool wait);
@@ -66,6 +82,7 @@ private:
 
     GlContentSkip() = default;
     void issueProbe(Probe& probe);
+    void planConsumers(const std::vector<GpuPass*>& schedule);
 
     ProgramHandle program_;
     FramebufferHandle empty_;
@@ -78,6 +95,9 @@ private:
     std::vector<Probe> probes_;
     std::vector<ActiveEffect> effects_;
     std::vector<int> effectOfPass_;  // schedule position → index into effects_, or -1
+    std::vector<Consumer> consumers_;
+    std::vector<size_t> consumerProbes_;  // of each consumer
+    bool consumerCondition_ = false;
     int slot_ = 0;                   // the query of this frame in each probe's ring
     int lastFrameSlot_ = -1;         // the last finished frame's, -1 before the first
     bool spanning_ = true;

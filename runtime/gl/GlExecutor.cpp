@@ -67,6 +67,10 @@ struct GlExecutor::Impl {
     std::vector<std::string> lastFramePasses;
     GlPassTimers timers;
     std::unique_ptr<GlContentSkip> contentSkip;  // null without an effect with a source, or when off
+    // Content skip's consumers compiled without the effects they read (GlContentSkip::Consumer),
+    // by pass index with the effects left out; and for each schedule position, the one it draws.
+    std::map<int, std::pair<std::set<std::string>, std::unique_ptr<GpuPass>>> withoutEffects;
+    std::vector<const GpuPass*> withoutEffectsAt;
     std::unique_ptr<GlHealthCheck> healthCheck;  // with FramePlanOptions::checkHealth
     std::optional<FrameHealth> lastHealth;
     std::vector<HealthFinding> firstFindings;  // of each kind, since the first frame
@@ -106,6 +110,49 @@ struct GlExecutor::Impl {
         for (int index : current.graph->schedule)
             if (GpuPass* p = compiledPass(index)) schedule.push_back(p);
         if (contentSkip) contentSkip->plan(ws, schedule, targets, plan.options.outputs);
+        planWithoutEffects();
+    }
+
+    // Which scheduled passes content skip draws a second way (GlContentSkip::Consumer).
+    void planWithoutEffects() {
+        withoutEffectsAt.assign(schedule.size(), nullptr);
+        if (!contentSkip || healthCheck) return;  // the check looks at every pass as compiled
+        for (const GlContentSkip::Consumer& c : contentSkip->consumers())
+            withoutEffectsAt[c.position] = passWithout(*schedule[c.position], c.effects);
+    }
+
+    // The pass compiled with `effects` left out, when that changes its code; null otherwise, or
+    // when it does not build (it is then drawn as compiled, reading the cleared targets).
+    const GpuPass* passWithout(const GpuPass& gp, const std::set<std::string>& effects) {
+        auto& [builtWithout, built] = withoutEffects[gp.index];
+        if (builtWithout == effects) return built.get();  // null: tried, and it reads none of them
+        builtWithout = effects;
+        built.reset();
+        std::set<std::string> asked;
+        for (const std::string& e : plan.askedEffects)
+            if (!effects.count(e)) asked.insert(e);
+        auto program = buildPassProgram(ws, *gp.pass, effectPrelude(ws, asked));
+        if (!program) return nullptr;
+        // The prelude defines every macro once; a shader that reads none of them is the same.
+        bool reads = false;
+        for (const std::string& e : effects) {
+            const std::string macro = effectMacro(e);
+            const size_t first = program->fragmentCode.find(macro);
+            reads = reads || (first != std::string::npos && program->fragmentCode.find(macro, first + 1) != std::string::npos);
+        }
+        if (!reads) return nullptr;
+        auto without = std::make_unique<GpuPass>();
+        without->pass = gp.pass;
+        without->index = gp.index;
+        without->target = gp.target;
+        without->mesh = gp.mesh;
+        without->model = gp.model;
+        without->program = std::move(program->program);
+        without->initializedUniforms = std::move(program->initializedUniforms);
+        Diagnostics again;  // what binding the pass's own program said already
+        if (!bindProgram(*without, again) || hasErrors(again)) return nullptr;
+        built = std::move(without);
+        return built.get();
     }
 
     // Plans the targets for the current values and allocates them; errors leave the old ones.
@@ -294,41 +341,55 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
             glClearNamedFramebufferfv(framebuffer, GL_DEPTH, 0, &*pass.clear.depth);
             glDepthMask(pass.depth.write ? GL_TRUE : GL_FALSE);
         }
-        glUseProgram(gp.program.get());
         const auto named = pass.camera.empty() ? namedCameras.end() : namedCameras.find(pass.camera);
         const FrameCamera& passCamera = named == namedCameras.end() ? camera : named->second;
         FrameInputs passInputs = inputs;
         passInputs.camera = &passCamera;
-        uploadUniforms(gp, passInputs);
-        if (s.compatibility) loadFixedFunctionState(passCamera.projection, passCamera.view * gp.model);
-        healthInputs.clear();
-        for (const SamplerSlot& slot : gp.samplers) {
-            GLuint texture = slot.texture;
-            if (slot.target) {
-                // frame="previous": what the last frame left. The current frame: the buffer a pass
-                // wrote this frame, or, before any pass has, still what the last frame left (the
-                // write buffer of a double-buffered target then holds the frame before that).
-                const GpuTarget& t = *slot.target;
-                const GpuResource& r = *t.resource;
-                bool current = !slot.sampler->previousFrame && t.writtenThisFrame;
-                texture = r.textures[current ? r.writeBuffer() : r.front].get();
+        // The pass's draw with `program`: the pass as compiled, or content skip's version of it
+        // without the effects it reads.
+        auto drawWith = [&](const GpuPass& program) {
+            glUseProgram(program.program.get());
+            uploadUniforms(program, passInputs);
+            if (s.compatibility) loadFixedFunctionState(passCamera.projection, passCamera.view * program.model);
+            healthInputs.clear();
+            for (const SamplerSlot& slot : program.samplers) {
+                GLuint texture = slot.texture;
+                if (slot.target) {
+                    // frame="previous": what the last frame left. The current frame: the buffer a pass
+                    // wrote this frame, or, before any pass has, still what the last frame left (the
+                    // write buffer of a double-buffered target then holds the frame before that).
+                    const GpuTarget& t = *slot.target;
+                    const GpuResource& r = *t.resource;
+                    bool current = !slot.sampler->previousFrame && t.writtenThisFrame;
+                    texture = r.textures[current ? r.writeBuffer() : r.front].get();
+                }
+                glBindTextureUnit(static_cast<GLuint>(slot.unit), texture);
+                glBindSampler(static_cast<GLuint>(slot.unit), slot.samplerObject.get());
+                if (s.healthCheck)
+                    if (std::optional<std::string> label = s.healthInputLabel(slot))
+                        healthInputs.push_back({slot.sampler->uniform, std::move(*label), texture, slot.unit});
             }
-            glBindTextureUnit(static_cast<GLuint>(slot.unit), texture);
-            glBindSampler(static_cast<GLuint>(slot.unit), slot.samplerObject.get());
-            if (s.healthCheck)
-                if (std::optional<std::string> label = s.healthInputLabel(slot))
-                    healthInputs.push_back({slot.sampler->uniform, std::move(*label), texture, slot.unit});
+            if (s.healthCheck && program.health.found) {
+                // In the order its shader records them.
+                std::vector<GlHealthCheck::Input> recorded;
+                for (const std::string& sampler : program.healthInputs)
+                    for (const GlHealthCheck::Input& input : healthInputs)
+                        if (input.sampler == sampler) recorded.push_back(input);
+                s.healthCheck->beforeCountingPass(position, pass.name, target.name, memory.spec.size, memory.spec.format, recorded,
+                                                  program.health);
+            }
+            program.mesh->draw(program.streams);
+        };
+        const GpuPass* without = position < s.withoutEffectsAt.size() ? s.withoutEffectsAt[position] : nullptr;
+        if (without) {
+            for (bool leftOut : {false, true})
+                if (s.contentSkip->beginConsumerDraw(position, leftOut)) {
+                    drawWith(leftOut ? *without : gp);
+                    s.contentSkip->endConsumerDraw();
+                }
+        } else {
+            drawWith(gp);
         }
-        if (s.healthCheck && gp.health.found) {
-            // In the order its shader records them.
-            std::vector<GlHealthCheck::Input> recorded;
-            for (const std::string& sampler : gp.healthInputs)
-                for (const GlHealthCheck::Input& input : healthInputs)
-                    if (input.sampler == sampler) recorded.push_back(input);
-            s.healthCheck->beforeCountingPass(position, pass.name, target.name, memory.spec.size, memory.spec.format, recorded,
-                                              gp.health);
-        }
-        gp.mesh->draw(gp.streams);
         restoreFilledPolygons(pass, s.compatibility);  // what draws next (the checks, the editor) fills
         target.writtenThisFrame = true;
         s.lastFramePasses.push_back(pass.name);
@@ -512,7 +573,11 @@ Result<void> GlExecutor::recompilePasses(const std::vector<std::string>& passNam
         rebuilt.emplace_back(old, std::move(fresh));
     }
     if (hasErrors(d)) return Result<void>::failure(std::move(d));  // the fresh programs go with `rebuilt`
-    for (auto& [old, fresh] : rebuilt) *old = std::move(*fresh);
+    for (auto& [old, fresh] : rebuilt) {
+        s.withoutEffects.erase(old->index);  // built from the old source
+        *old = std::move(*fresh);
+    }
+    if (!rebuilt.empty()) s.planWithoutEffects();
     return d;
 }
 

@@ -1,7 +1,9 @@
 // <effect source>: an effect whose source holds nothing is skipped on the GPU, and the image is
 // bit for bit what running it gives. Each test runs the same workspace twice, content skip on and
 // off, frame by frame, and compares every byte of the output; it also checks which effects the
-// frame skipped, so that a skip that never happens (or always happens) cannot pass.
+// frame skipped, so that a skip that never happens (or always happens) cannot pass. A pass that
+// reads a skipped effect's output is drawn compiled without the effect; one test tells the two
+// versions apart.
 
 #include <cmath>
 #include <cstring>
@@ -201,6 +203,43 @@ TEST_F(GlowContentSkipGLTest, NanAndInfinityCountAsTheShadersTreatThem) {
     // it; whatever the bright pass writes, the output is what running everything gives.
     EXPECT_TRUE(frameWith({18, 11}, 0.0f, 2).empty());
     frameWith({18, 11}, 0.0f, 1);
+}
+
+// A pass after the effect that reads what it hands on is drawn, where the effect is skipped,
+// compiled without it (RMFX_EFFECT_glow false), so it reads nothing of the cleared target. This
+// final pass is written to tell the two apart (it adds 0.25 to alpha when the effect is compiled
+// in, which the workspaces in effects/ never do): dim frames give the version without the
+// effect, bright ones and --content-skip off the version as compiled.
+TEST_F(GlowContentSkipGLTest, APassReadingASkippedEffectIsDrawnCompiledWithoutIt) {
+    std::string xml = kGlow;
+    const std::string final = "c = texelFetch(Scene, p, 0) + texelFetch(Glow, p, 0); }";
+    const size_t at = xml.find(final);
+    ASSERT_NE(at, std::string::npos);
+    xml.replace(at, final.size(),
+                "c = texelFetch(Scene, p, 0); if (RMFX_EFFECT_glow) c += texelFetch(Glow, p, 0) + vec4(0.0, 0.0, 0.0, 0.25); }");
+    std::unique_ptr<Workspace> ws = workspaceFromText(xml);
+    ASSERT_TRUE(ws);
+    auto on = executorFor(*ws, {37, 23}, {}, true);
+    auto off = executorFor(*ws, {37, 23}, {}, false);
+    ASSERT_TRUE(on && off);
+    auto alphaOf = [&](GlExecutor& e, float value) {
+        EXPECT_TRUE(e.setVariable("Pixel_X", Value::ofInt(5)));
+        EXPECT_TRUE(e.setVariable("Pixel_Y", Value::ofInt(7)));
+        EXPECT_TRUE(e.setVariable("Value", Value::ofFloat(value)));
+        Diagnostics frame = e.renderFrame({0.0f, 1.0f / 24.0f}).takeDiagnostics();
+        EXPECT_FALSE(hasErrors(frame)) << formatAll(frame);
+        Image out = readBack(e, "output");
+        std::set<float> alphas;
+        for (int y = 0; y < out.height; ++y)
+            for (int x = 0; x < out.width; ++x) alphas.insert(out.at(x, y, 3));
+        return alphas;
+    };
+    EXPECT_EQ(alphaOf(*on, 0.5f), (std::set<float>{1.0f})) << "dim: drawn without the effect";
+    EXPECT_EQ(on->contentSkippedEffects().count("glow"), 1u);
+    EXPECT_EQ(alphaOf(*on, 3.0f), (std::set<float>{1.25f})) << "bright: drawn as compiled";
+    EXPECT_TRUE(on->contentSkippedEffects().empty());
+    EXPECT_EQ(alphaOf(*on, 0.5f), (std::set<float>{1.0f})) << "dim again";
+    EXPECT_EQ(alphaOf(*off, 0.5f), (std::set<float>{1.25f})) << "--content-skip off: as compiled";
 }
 
 }  // namespace
