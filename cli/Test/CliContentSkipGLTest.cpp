@@ -24,6 +24,8 @@ TEST(CliContentSkipGLTest, ADimImageSkipsBloomAndStarAndTheImageIsTheSameBitForB
     EXPECT_TRUE(has(on.out, "  bloom: skipped by content: 'star_source' holds no pixel with a non-zero red, green or blue value"))
         << on.out;
     EXPECT_TRUE(has(on.out, "  star: skipped by content:")) << on.out;
+    EXPECT_TRUE(has(on.out, "  final: drawn compiled without bloom, star where they are skipped (it reads what they hand on)\n"))
+        << on.out;
     CommandResult off = runRmfx("render " + workspace + " --input dim.exr --frames 3 --content-skip off --explain -o off.exr",
                                 dir.path());
     ASSERT_EQ(off.status, 0) << off.err;

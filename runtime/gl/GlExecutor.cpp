@@ -538,6 +538,16 @@ const std::vector<std::string>& GlExecutor::passesRun() const { return impl_->la
 const FrameHealth* GlExecutor::frameHealth() const { return impl_->lastHealth ? &*impl_->lastHealth : nullptr; }
 const std::vector<HealthFinding>& GlExecutor::firstHealthFindings() const { return impl_->firstFindings; }
 
+std::map<std::string, std::set<std::string>> GlExecutor::passesDrawnWithoutSkippedEffects() const {
+    const Impl& s = *impl_;
+    std::map<std::string, std::set<std::string>> out;
+    if (!s.contentSkip) return out;
+    for (const GlContentSkip::Consumer& c : s.contentSkip->consumers())
+        if (c.position < s.withoutEffectsAt.size() && s.withoutEffectsAt[c.position])
+            out[s.schedule[c.position]->pass->name] = c.effects;
+    return out;
+}
+
 const std::map<std::string, std::string>& GlExecutor::contentSkippedEffects(bool wait) {
     static const std::map<std::string, std::string> none;
     return impl_->contentSkip ? impl_->contentSkip->skipped(wait) : none;

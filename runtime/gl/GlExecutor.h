@@ -98,6 +98,9 @@ public:
     // nothing (<effect source>, docs/workspace-format.md), each with why. `wait`: for the GPU's
     // answer (after a headless frame); else what has arrived, as the editor asks each frame.
     const std::map<std::string, std::string>& contentSkippedEffects(bool wait = true);
+    // The passes content skip draws compiled without the effects they read, where those are
+    // skipped (gl/GlContentSkip.h's consumers), each with the effects, for the current switches.
+    std::map<std::string, std::set<std::string>> passesDrawnWithoutSkippedEffects() const;
     // With FramePlanOptions::checkHealth, what the last frame's passes left in their targets
     // (model/TargetHealth.h); null otherwise or before the first frame.
     const FrameHealth* frameHealth() const;

@@ -147,6 +147,10 @@ std::string explainFrame(const FrameExplanationInput& in) {
             else
                 out << "  " << name << ": run: '" << e.source << "' holds a pixel it works on\n";
         }
+        for (const auto& [pass, effects] : in.drawnWithoutSkipped)
+            if (in.contentSkip)
+                out << "  " << pass << ": drawn compiled without " << joinNames(effects)
+                    << " where they are skipped (it reads what they hand on)\n";
     }
     return out.str();
 }

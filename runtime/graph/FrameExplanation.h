@@ -26,6 +26,8 @@ struct FrameExplanationInput {
     // Whether effects with a source may be skipped by content, and those the frame skipped, with why.
     bool contentSkip = true;
     std::map<std::string, std::string> contentSkipped;
+    // Passes drawn compiled without the effects they read where those are skipped, by pass.
+    std::map<std::string, std::set<std::string>> drawnWithoutSkipped;
 };
 
 std::string explainFrame(const FrameExplanationInput& input);
