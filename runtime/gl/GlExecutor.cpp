@@ -110,13 +110,19 @@ struct GlExecutor::Impl {
         for (int index : current.graph->schedule)
             if (GpuPass* p = compiledPass(index)) schedule.push_back(p);
         if (contentSkip) contentSkip->plan(ws, schedule, targets, plan.options.outputs);
-        planWithoutEffects();
+        planSkippedDraws();
     }
 
-    // Which scheduled passes content skip draws a second way (GlContentSkip::Consumer).
-    void planWithoutEffects() {
+    // How content skip draws the schedule: whether one condition may span an effect's passes, and
+    // which passes it draws a second way (GlContentSkip::Consumer).
+    void planSkippedDraws() {
         withoutEffectsAt.assign(schedule.size(), nullptr);
-        if (!contentSkip || healthCheck) return;  // the check looks at every pass as compiled
+        if (!contentSkip) return;
+        // The check's own draws after a pass must not fall under an effect's condition; passes
+        // that count what they write are skipped together with what they count.
+        contentSkip->setSpanning(!healthCheck || std::all_of(schedule.begin(), schedule.end(),
+                                                             [](const GpuPass* p) { return p->health.found; }));
+        if (healthCheck) return;  // the check looks at every pass as compiled
         for (const GlContentSkip::Consumer& c : contentSkip->consumers())
             withoutEffectsAt[c.position] = passWithout(*schedule[c.position], c.effects);
     }
@@ -282,7 +288,6 @@ struct GlExecutor::Build {
             auto skip = GlContentSkip::create();
             if (!skip) return Failure::failure({workspaceError(ws, "", skip.error())});
             impl->contentSkip = std::move(*skip);
-            impl->contentSkip->setSpanning(!options.checkHealth);  // the check's draws must not be skipped
         }
         impl->selectVariant();
         glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
@@ -587,7 +592,7 @@ Result<void> GlExecutor::recompilePasses(const std::vector<std::string>& passNam
         s.withoutEffects.erase(old->index);  // built from the old source
         *old = std::move(*fresh);
     }
-    if (!rebuilt.empty()) s.planWithoutEffects();
+    if (!rebuilt.empty()) s.planSkippedDraws();
     return d;
 }
 
