@@ -147,17 +147,7 @@ struct GlExecutor::Impl {
             reads = reads || (first != std::string::npos && program->fragmentCode.find(macro, first + 1) != std::string::npos);
         }
         if (!reads) return nullptr;
-        auto without = std::make_unique<GpuPass>();
-        without->pass = gp.pass;
-        without->index = gp.index;
-        without->target = gp.target;
-        without->mesh = gp.mesh;
-        without->model = gp.model;
-        without->program = std::move(program->program);
-        without->initializedUniforms = std::move(program->initializedUniforms);
-        Diagnostics again;  // what binding the pass's own program said already
-        if (!bindProgram(*without, again) || hasErrors(again)) return nullptr;
-        built = std::move(without);
+        built = withProgram(gp, std::move(program->program), std::move(program->initializedUniforms));
         return built.get();
     }
 
@@ -211,20 +201,28 @@ struct GlExecutor::Impl {
         if (!code) return;
         auto relinked = relinkWithFragment(built, *code);
         if (!relinked) return;
-        GpuPass counting;
-        counting.pass = gp.pass;
-        counting.index = gp.index;
-        counting.target = gp.target;
-        counting.mesh = gp.mesh;
-        counting.model = gp.model;
-        counting.program = std::move(*relinked);
-        counting.initializedUniforms = gp.initializedUniforms;
-        Diagnostics again;  // what binding the pass's own program said already
-        if (!bindProgram(counting, again) || hasErrors(again)) return;
-        counting.health = findHealthUniforms(counting.program.get());
-        if (!counting.health.found) return;
-        counting.healthInputs = std::move(inputs);
-        gp = std::move(counting);
+        std::unique_ptr<GpuPass> counting = withProgram(gp, std::move(*relinked), gp.initializedUniforms);
+        if (!counting) return;
+        counting->health = findHealthUniforms(counting->program.get());
+        if (!counting->health.found) return;
+        counting->healthInputs = std::move(inputs);
+        gp = std::move(*counting);
+    }
+
+    // What `gp` draws, with another program, bound; null when binding fails (what binding the
+    // pass's own program said is not said again).
+    std::unique_ptr<GpuPass> withProgram(const GpuPass& gp, ProgramHandle program, std::set<std::string> initialized) {
+        auto other = std::make_unique<GpuPass>();
+        other->pass = gp.pass;
+        other->index = gp.index;
+        other->target = gp.target;
+        other->mesh = gp.mesh;
+        other->model = gp.model;
+        other->program = std::move(program);
+        other->initializedUniforms = std::move(initialized);
+        Diagnostics again;
+        if (!bindProgram(*other, again) || hasErrors(again)) return nullptr;
+        return other;
     }
 
     // What the health check calls a 2D input of a pass (targets and 2D textures); none for others.
