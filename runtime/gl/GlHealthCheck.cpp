@@ -31,7 +31,7 @@ uniform int Channels;
 uniform bool Negatives;
 uniform vec4 Largest;
 void record(int kind, int pixel) {
-    int entry = (Position * 5 + kind) * 4;
+    int entry = (Position * KINDS + kind) * ENTRY_WORDS;
     atomicAdd(words[entry], 1);
     atomicMin(words[entry + 1], pixel);
 }
@@ -70,12 +70,12 @@ uniform int Records;  // the first word of the records
 void storeVec4(int at, vec4 v) { for (int c = 0; c < 4; ++c) words[at + c] = floatBitsToInt(v[c]); }
 void main() {
     int kind = int(gl_FragCoord.x);
-    int entry = (Position * 5 + kind) * 4;
+    int entry = (Position * KINDS + kind) * ENTRY_WORDS;
     int first = words[entry + 1];
     if (words[entry] == 0) return;
     ivec2 size = textureSize(Target, 0);
     ivec2 p = ivec2(first % size.x, first / size.x);
-    int record = Records + (Position * 5 + kind) * SLOTS * RECORD_WORDS;
+    int record = Records + (Position * KINDS + kind) * SLOTS * RECORD_WORDS;
     words[record] = first;
     storeVec4(record + 4, texelFetch(Target, p, 0));
     vec2 centre = (vec2(p) + 0.5) / vec2(size);
@@ -87,9 +87,12 @@ void main() {
 }
 )";
 
-// The shader's text with BINDING, SLOTS and RECORD_WORDS given their values.
+// The shader's text with BINDING and the buffer's layout (KINDS, ENTRY_WORDS, SLOTS,
+// RECORD_WORDS) given their values.
 std::string withLayout(std::string source, int binding) {
     for (const auto& [name, value] : {std::pair<std::string, int>{"BINDING", binding},
+                                      {"KINDS", healthKindCount},
+                                      {"ENTRY_WORDS", kHealthEntryWords},
                                       {"SLOTS", kHealthRecordSlots},
                                       {"RECORD_WORDS", kHealthRecordWords}})
         for (size_t at = source.find(name); at != std::string::npos; at = source.find(name, at))

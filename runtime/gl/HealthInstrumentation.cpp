@@ -103,7 +103,7 @@ std::string appendix(const ColourOutput& output, const std::vector<std::string>&
     std::string s = "\n#undef main\n";
     s += "layout(std430, binding = " + std::to_string(binding) + ") buffer rmfx_health_Buffer { int rmfx_health_words[]; };\n";
     if (earlyTests) s += "layout(early_fragment_tests) in;\n";
-    s += R"(uniform int rmfx_health_Slot;       // the pass's first entry: position * 5
+    s += R"(uniform int rmfx_health_Slot;       // the pass's first entry: position times the kinds
 uniform int rmfx_health_Records;    // the first word of the records
 uniform ivec2 rmfx_health_Size;     // of the target
 uniform int rmfx_health_Channels;   // the target's; 0: it is not inspected
@@ -115,54 +115,52 @@ void rmfx_health_storeVec4(int at, vec4 v) {
 }
 // Counts the kinds in `kinds` (bit k: kind k) at `pixel`; a fragment that lowers a kind's first
 // pixel takes a record slot for it, and writes its value and inputs there.
-void rmfx_health_count(int kinds, int pixel, vec4 value) {
-    int slots[5];
-    bool improved = false;
-    for (int kind = 0; kind < 5; ++kind) {
-        slots[kind] = -1;
-        if ((kinds & (1 << kind)) == 0) continue;
-        int entry = (rmfx_health_Slot + kind) * )" + std::to_string(kHealthEntryWords) + R"(;
-        atomicAdd(rmfx_health_words[entry], 1);
-        if (atomicMin(rmfx_health_words[entry + 1], pixel) <= pixel) continue;
-        int slot = atomicAdd(rmfx_health_words[entry + 2], 1);
-        if (slot >= )" + std::to_string(kHealthRecordSlots) + R"() continue;
-        slots[kind] = rmfx_health_Records + ((rmfx_health_Slot + kind) * )" +
-         std::to_string(kHealthRecordSlots) + " + slot) * " + std::to_string(kHealthRecordWords) + R"(;
-        improved = true;
+void rmfx_health_count(int rmfx_health_kinds, int rmfx_health_pixel, vec4 rmfx_health_value) {
+    int rmfx_health_slots[)" + std::to_string(healthKindCount) + R"(];
+    bool rmfx_health_improved = false;
+    for (int rmfx_health_kind = 0; rmfx_health_kind < )" + std::to_string(healthKindCount) + R"(; ++rmfx_health_kind) {
+        rmfx_health_slots[rmfx_health_kind] = -1;
+        if ((rmfx_health_kinds & (1 << rmfx_health_kind)) == 0) continue;
+        int rmfx_health_entry = (rmfx_health_Slot + rmfx_health_kind) * )" + std::to_string(kHealthEntryWords) + R"(;
+        atomicAdd(rmfx_health_words[rmfx_health_entry], 1);
+        if (atomicMin(rmfx_health_words[rmfx_health_entry + 1], rmfx_health_pixel) <= rmfx_health_pixel) continue;
+        int rmfx_health_slot = atomicAdd(rmfx_health_words[rmfx_health_entry + 2], 1);
+        if (rmfx_health_slot >= )" + std::to_string(kHealthRecordSlots) + R"() continue;
+        rmfx_health_slots[rmfx_health_kind] = rmfx_health_Records + ((rmfx_health_Slot + rmfx_health_kind) * )" +
+         std::to_string(kHealthRecordSlots) + " + rmfx_health_slot) * " + std::to_string(kHealthRecordWords) + R"(;
+        rmfx_health_improved = true;
     }
-    // A loop, not an if: a SIMD rasteriser (llvmpipe) runs both sides of an if for every
-    // fragment of a group, but leaves a loop as soon as none of them takes it.
-    for (int once = improved ? 0 : 1; once < 1; ++once) {
-        vec4 inputs[)" + std::to_string(std::max<size_t>(inputs.size(), 1)) + R"(];
-        vec2 centre = (floor(gl_FragCoord.xy) + 0.5) / vec2(rmfx_health_Size);
-        ivec2 size;
+    if (rmfx_health_improved) {
+        vec4 rmfx_health_inputs[)" + std::to_string(std::max<size_t>(inputs.size(), 1)) + R"(];
+        vec2 rmfx_health_centre = (floor(gl_FragCoord.xy) + 0.5) / vec2(rmfx_health_Size);
+        ivec2 rmfx_health_size;
 )";
     for (size_t i = 0; i < inputs.size(); ++i)
-        s += "        size = textureSize(" + inputs[i] + ", 0);\n        inputs[" + std::to_string(i) + "] = texelFetch(" +
-             inputs[i] + ", clamp(ivec2(centre * vec2(size)), ivec2(0), size - 1), 0);\n";
-    s += R"(        for (int kind = 0; kind < 5; ++kind) {
-            int record = slots[kind];
-            if (record < 0) continue;
-            rmfx_health_words[record] = pixel;
-            rmfx_health_storeVec4(record + 4, value);
+        s += "        rmfx_health_size = textureSize(" + inputs[i] + ", 0);\n        rmfx_health_inputs[" + std::to_string(i) + "] = texelFetch(" +
+             inputs[i] + ", clamp(ivec2(rmfx_health_centre * vec2(rmfx_health_size)), ivec2(0), rmfx_health_size - 1), 0);\n";
+    s += "        for (int rmfx_health_kind = 0; rmfx_health_kind < " + std::to_string(healthKindCount) + R"(; ++rmfx_health_kind) {
+            int rmfx_health_record = rmfx_health_slots[rmfx_health_kind];
+            if (rmfx_health_record < 0) continue;
+            rmfx_health_words[rmfx_health_record] = rmfx_health_pixel;
+            rmfx_health_storeVec4(rmfx_health_record + 4, rmfx_health_value);
 )";
     for (size_t i = 0; i < inputs.size(); ++i)
-        s += "            rmfx_health_storeVec4(record + " + std::to_string(8 + 4 * i) + ", inputs[" + std::to_string(i) + "]);\n";
-    s += "        }\n    }\n}\nvoid main() {\n    " + std::string(kRenamedMain) + "();\n    vec4 written = " + widened(output) + ";\n";
-    s += "    int channels = min(rmfx_health_Channels, " + std::to_string(output.components) + ");\n";
-    s += R"(    int kinds = 0;
-    for (int c = 0; c < channels; ++c) {
-        float x = written[c];
-        if (isnan(x)) kinds |= 1;
-        else if (isinf(x)) kinds |= x > 0.0 ? 2 : 4;
+        s += "            rmfx_health_storeVec4(rmfx_health_record + " + std::to_string(8 + 4 * i) + ", rmfx_health_inputs[" + std::to_string(i) + "]);\n";
+    s += "        }\n    }\n}\nvoid main() {\n    " + std::string(kRenamedMain) + "();\n    vec4 rmfx_health_written = " + widened(output) + ";\n";
+    s += "    int rmfx_health_channels = min(rmfx_health_Channels, " + std::to_string(output.components) + ");\n";
+    s += R"(    int rmfx_health_kinds = 0;
+    for (int rmfx_health_c = 0; rmfx_health_c < rmfx_health_channels; ++rmfx_health_c) {
+        float rmfx_health_x = rmfx_health_written[rmfx_health_c];
+        if (isnan(rmfx_health_x)) rmfx_health_kinds |= 1;
+        else if (isinf(rmfx_health_x)) rmfx_health_kinds |= rmfx_health_x > 0.0 ? 2 : 4;
         else {
-            if (rmfx_health_Negatives && x < -rmfx_health_Smallest) kinds |= 8;
-            if (rmfx_health_Largest[c] > 0.0 && abs(x) >= rmfx_health_Largest[c]) kinds |= 16;
+            if (rmfx_health_Negatives && rmfx_health_x < -rmfx_health_Smallest) rmfx_health_kinds |= 8;
+            if (rmfx_health_Largest[rmfx_health_c] > 0.0 && abs(rmfx_health_x) >= rmfx_health_Largest[rmfx_health_c]) rmfx_health_kinds |= 16;
         }
     }
-    for (int once = kinds != 0 ? 0 : 1; once < 1; ++once) {
-        int pixel = int(gl_FragCoord.y) * rmfx_health_Size.x + int(gl_FragCoord.x);
-        rmfx_health_count(kinds, pixel, written);
+    if (rmfx_health_kinds != 0) {
+        int rmfx_health_pixel = int(gl_FragCoord.y) * rmfx_health_Size.x + int(gl_FragCoord.x);
+        rmfx_health_count(rmfx_health_kinds, rmfx_health_pixel, rmfx_health_written);
     }
 }
 )";
@@ -178,7 +176,8 @@ glm::vec4 largestWritten(TargetFormat format) {
     for (int c = 0; c < 4; ++c) {
         const float largest = limits.largest[c];
         if (largest <= 0.0f) continue;
-        // The largest finite value's mantissa step: 32 for half and 11-bit, 64 for 10-bit at 2^15.
+        // The step below the largest finite value: 32 for half, 512 for unsigned 11-bit and 1024 for
+        // 10-bit floats (6 and 5 mantissa bits at 2^15).
         const float step = largest == 64512.0f ? 1024.0f : largest == 65024.0f ? 512.0f : 32.0f;
         at[c] = std::nextafter(largest - step / 2.0f, largest);
     }

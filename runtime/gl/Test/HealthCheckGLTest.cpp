@@ -418,6 +418,49 @@ void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0) * 0.0 + 0.5; 
     EXPECT_EQ(f.inputs[0].second, glm::vec4(0.5f, 0.5f, 0.0f, 1.0f));
 }
 
+// The code added to a pass names nothing a shader could: a sampler called `size` and an output
+// called `written` (names the added code once used for its own) still count while drawing, and
+// the input is recorded.
+TEST_P(HealthCheckGLTest, NamesInThePassDoNotClashWithTheCountingCode) {
+    const std::string xml = R"(<workspace version="1" name="names">
+  <target name="a" format="rgba32f" scale="1"/>
+  <target name="t" format="rgba32f" scale="1"/>
+  <pass name="ramp" target="a"><shader stage="fragment"><![CDATA[
+#version 450 core
+out vec4 fragColor;
+void main() { fragColor = vec4(gl_FragCoord.xy, 0.0, 1.0); }
+]]></shader></pass>
+  <pass name="poison" target="t"><sampler name="size" target="a" filter="nearest"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D size;
+out vec4 written;
+void main() {
+    vec4 record = texelFetch(size, ivec2(gl_FragCoord.xy), 0);
+    written = vec4(record.x > 2.0 ? uintBitsToFloat(0x7fc00000u) : 0.0, record.yzw);
+}
+]]></shader></pass>
+  <pass name="final"><sampler name="s" target="t"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D s;
+out vec4 fragColor;
+void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0) * 0.0 + 0.5; }
+]]></shader></pass>
+</workspace>
+)";
+    GlRun run = runChecked(workspaceFromText(xml), {5, 3}, 1, GetParam());
+    ASSERT_TRUE(run.exec);
+    const FrameHealth* health = run.exec->frameHealth();
+    ASSERT_TRUE(health);
+    EXPECT_EQ(health->passes[1].countedWhileDrawing, GetParam() == HealthCheckMethod::WhileDrawing);
+    ASSERT_EQ(health->findings.size(), 1u);
+    const HealthFinding& f = health->findings.front();
+    EXPECT_EQ(f.count, 3 * 3);  // columns 2 to 4 (centres 2.5 to 4.5 are above 2)
+    EXPECT_EQ(f.pixel, glm::ivec2(2, 2));  // the bottom row's first
+    ASSERT_EQ(f.inputs.size(), 1u);
+    EXPECT_EQ(f.inputs[0].first, "size → target 'a'");
+    EXPECT_EQ(f.inputs[0].second, glm::vec4(2.5f, 0.5f, 0.0f, 1.0f));
+}
+
 // The effects as shipped: HDRLighting over 3 frames keeps every inspected target finite.
 TEST_P(HealthCheckGLTest, HdrLightingAsShippedHasNoNanOrInfinity) {
     GlRun run = runChecked(effectWorkspace("hdr_lighting.xml"), {96, 64}, 3, GetParam());
