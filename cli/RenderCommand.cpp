@@ -179,6 +179,9 @@ bool reportHealth(const GlExecutor& executor, int frames, bool quiet) {
                                    [](const PassHealth& p) { return p.inspected && !p.countedWhileDrawing; });
         std::cerr << "rmfx: check: " << counting << (counting == 1 ? " pass" : " passes")
                   << " counted what they wrote while drawing, " << after << " inspected after they ran\n";
+        for (const PassHealth& p : last->passes)
+            if (!p.whyNotWhileDrawing.empty())
+                std::cerr << "rmfx: check: pass '" << p.pass << "' inspected after it ran: " << p.whyNotWhileDrawing << "\n";
     }
     return errors;
 }

@@ -198,13 +198,22 @@ struct GlExecutor::Impl {
         for (const SamplerSlot& slot : gp.samplers)
             if (healthInputLabel(slot)) inputs.push_back(slot.sampler->uniform);
         auto code = instrumentForHealth(*gp.pass, built.fragmentCode, gp.program.get(), inputs, healthCheck->bufferBinding());
-        if (!code) return;
+        if (!code) {
+            gp.whyNotCounting = code.error();
+            return;
+        }
         auto relinked = relinkWithFragment(built, *code);
-        if (!relinked) return;
+        if (!relinked) {
+            const std::string log = relinked.error();
+            gp.whyNotCounting = "its counting version does not compile here: " + log.substr(0, log.find('\n'));
+            return;
+        }
         std::unique_ptr<GpuPass> counting = withProgram(gp, std::move(*relinked), gp.initializedUniforms);
-        if (!counting) return;
-        counting->health = findHealthUniforms(counting->program.get());
-        if (!counting->health.found) return;
+        if (counting) counting->health = findHealthUniforms(counting->program.get());
+        if (!counting || !counting->health.found) {
+            gp.whyNotCounting = "its counting version does not bind";
+            return;
+        }
         counting->healthInputs = std::move(inputs);
         gp = std::move(*counting);
     }
@@ -400,7 +409,7 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
         if (memory.spec.mipmaps) glGenerateTextureMipmap(memory.textures[memory.writeBuffer()].get());
         if (s.healthCheck && !gp.health.found)
             s.healthCheck->afterPass(position, pass.name, target.name, memory.textures[memory.writeBuffer()].get(),
-                                     memory.spec.size, memory.spec.format, healthInputs);
+                                     memory.spec.size, memory.spec.format, healthInputs, gp.whyNotCounting);
         s.timers.passDone(pass.name);
         for (const std::string& e : drainGlErrors())
             d.push_back({Diagnostic::Severity::Error, pass.where, passLabel(pass), e + " while drawing into '" + target.name + "'"});

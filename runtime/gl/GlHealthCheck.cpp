@@ -253,7 +253,9 @@ bool GlHealthCheck::notePass(size_t position, const std::string& pass, const std
 }
 
 void GlHealthCheck::afterPass(size_t position, const std::string& pass, const std::string& target, unsigned texture,
-                              glm::ivec2 size, TargetFormat format, const std::vector<Input>& inputs) {
+                              glm::ivec2 size, TargetFormat format, const std::vector<Input>& inputs,
+                              const std::string& whyNotWhileDrawing) {
+    if (position < passes_.size()) passes_[position].whyNotWhileDrawing = whyNotWhileDrawing;
     if (!notePass(position, pass, target, size, format, inputs)) return;
     if (texture == 0 || size.x > maxSize_.x || size.y > maxSize_.y) return;
     Inspection inspection{position, texture, size, formatHealthLimits(format), {}};

@@ -46,8 +46,10 @@ public:
     // After scheduled pass `position` drew into `texture` (level 0 of `size`, of `format`,
     // `target`'s memory), reading its 2D `inputs`: the inspection waits until that memory is
     // about to be written again (beforeWriting) or the frame ends.
+    // `whyNotWhileDrawing`: why the pass did not count what it wrote, where that was asked for.
     void afterPass(size_t position, const std::string& pass, const std::string& target, unsigned texture,
-                   glm::ivec2 size, TargetFormat format, const std::vector<Input>& inputs);
+                   glm::ivec2 size, TargetFormat format, const std::vector<Input>& inputs,
+                   const std::string& whyNotWhileDrawing = "");
     // Before pass `position`, whose program counts what it writes (`uniforms`, its program current),
     // draws into a target of `size` and `format`, reading `inputs` in the order its shader records.
     void beforeCountingPass(size_t position, const std::string& pass, const std::string& target, glm::ivec2 size,

@@ -55,6 +55,7 @@ struct GpuPass {
     // the uniforms it added, and the samplers whose texels it records, in its order.
     HealthUniforms health;
     std::vector<std::string> healthInputs;
+    std::string whyNotCounting;  // where the check asked for counting and the pass cannot
 };
 
 }  // namespace rmfx

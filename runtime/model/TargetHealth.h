@@ -59,6 +59,9 @@ struct PassHealth {
     // True: the pass's own shader counted what it wrote (gl/HealthInstrumentation.h); false: the
     // check inspected the whole target after the pass.
     bool countedWhileDrawing = false;
+    // With the while-drawing method, why this pass was inspected after it ran instead ("it blends
+    // onto its target"); empty otherwise.
+    std::string whyNotWhileDrawing;
     std::array<long long, healthKindCount> counts{};
 };
 

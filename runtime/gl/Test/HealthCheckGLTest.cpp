@@ -331,6 +331,9 @@ void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0); }
     EXPECT_EQ(health->passes[0].countedWhileDrawing, whileDrawing);
     EXPECT_FALSE(health->passes[1].countedWhileDrawing);
     EXPECT_FALSE(health->passes[2].countedWhileDrawing);
+    EXPECT_EQ(health->passes[1].whyNotWhileDrawing, whileDrawing ? "it blends onto its target" : "");
+    EXPECT_EQ(health->passes[2].whyNotWhileDrawing,
+              whileDrawing ? "it tests depth and its fragment shader discards or writes gl_FragDepth" : "");
     EXPECT_EQ(health->passes[3].countedWhileDrawing, whileDrawing);
     const int negative = static_cast<int>(HealthKind::Negative);
     EXPECT_EQ(health->passes[0].counts[negative], size.x * size.y);
