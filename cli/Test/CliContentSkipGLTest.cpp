@@ -40,5 +40,15 @@ TEST(CliContentSkipGLTest, ADimImageSkipsBloomAndStarAndTheImageIsTheSameBitForB
     EXPECT_TRUE(has(bad.err, "--content-skip: expected on or off, got 'maybe'")) << bad.err;
 }
 
+// The article's pipeline: its tone map reads the one skippable effect, bloom.
+TEST(CliContentSkipGLTest, ExplainNamesThePassDrawnWithoutASkippedEffect) {
+    ScratchDir dir;
+    CommandResult run = runRmfx("render " + shellQuoted(sourceDir() / "effects/article_pipeline.xml") + " --size 64x64 --explain",
+                                dir.path());
+    ASSERT_EQ(run.status, 0) << run.err;
+    EXPECT_TRUE(has(run.out, "  tonemap: drawn compiled without bloom where it is skipped (it reads what it hands on)\n"))
+        << run.out;
+}
+
 }  // namespace
 }  // namespace rmfx::test

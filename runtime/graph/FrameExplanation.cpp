@@ -150,7 +150,8 @@ std::string explainFrame(const FrameExplanationInput& in) {
         for (const auto& [pass, effects] : in.drawnWithoutSkipped)
             if (in.contentSkip)
                 out << "  " << pass << ": drawn compiled without " << joinNames(effects)
-                    << " where they are skipped (it reads what they hand on)\n";
+                    << (effects.size() == 1 ? " where it is skipped (it reads what it hands on)\n"
+                                            : " where they are skipped (it reads what they hand on)\n");
     }
     return out.str();
 }
