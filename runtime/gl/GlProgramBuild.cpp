@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 
 #include <epoxy/gl.h>
 
@@ -21,6 +22,33 @@ std::string infoLog(GetLength getLength, GetLog getLog) {
     return log;
 }
 
+// Compiles `code` as a stage of `type` and attaches it to `program`; the compiler's log when it
+// fails, nullopt when it compiles.
+std::optional<std::string> compileInto(GLuint program, GLenum type, const std::string& code) {
+    ShaderHandle shader = createShader(type);
+    const char* text = code.c_str();
+    glShaderSource(shader.get(), 1, &text, nullptr);
+    glCompileShader(shader.get());
+    GLint compiled = 0;
+    glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &compiled);
+    glAttachShader(program, shader.get());
+    if (compiled) return std::nullopt;
+    return infoLog([&](GLint* n) { glGetShaderiv(shader.get(), GL_INFO_LOG_LENGTH, n); },
+                   [&](GLint n, char* log) { glGetShaderInfoLog(shader.get(), n, nullptr, log); });
+}
+
+// Links `program` with the built-in vertex shaders' attributes at rmfx's locations (for dialects
+// without layout qualifiers); the linker's log when it fails.
+std::optional<std::string> linkWithBuiltinAttributes(GLuint program) {
+    for (GLuint a = 0; a < 3; ++a) glBindAttribLocation(program, a, builtinAttributeLocations[a]);
+    glLinkProgram(program);
+    GLint linked = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &linked);
+    if (linked) return std::nullopt;
+    return infoLog([&](GLint* n) { glGetProgramiv(program, GL_INFO_LOG_LENGTH, n); },
+                   [&](GLint n, char* log) { glGetProgramInfoLog(program, n, nullptr, log); });
+}
+
 }  // namespace
 
 Result<PassGlProgram> buildPassProgram(const Workspace& ws, const Pass& pass, const ShaderPrelude& prelude) {
@@ -34,33 +62,18 @@ Result<PassGlProgram> buildPassProgram(const Workspace& ws, const Pass& pass, co
     const GLuint program = built.program.get();
     bool ok = true;
     for (const PassStage& stage : source->stages) {
-        ShaderHandle shader = createShader(stage.stage == ShaderStage::Vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER);
-        (stage.stage == ShaderStage::Vertex ? built.vertexCode : built.fragmentCode) = stage.shader.code;
-        const char* text = stage.shader.code.c_str();
-        glShaderSource(shader.get(), 1, &text, nullptr);
-        glCompileShader(shader.get());
-        GLint compiled = 0;
-        glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &compiled);
-        if (!compiled) {
-            std::string log = infoLog([&](GLint* n) { glGetShaderiv(shader.get(), GL_INFO_LOG_LENGTH, n); },
-                                      [&](GLint n, char* text) { glGetShaderInfoLog(shader.get(), n, nullptr, text); });
-            auto mapped = mapCompilerLog(log, stage.shader, stage.where, label);
+        const bool vertex = stage.stage == ShaderStage::Vertex;
+        (vertex ? built.vertexCode : built.fragmentCode) = stage.shader.code;
+        if (std::optional<std::string> log = compileInto(program, vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER, stage.shader.code)) {
+            auto mapped = mapCompilerLog(*log, stage.shader, stage.where, label);
             if (mapped.empty()) mapped.push_back({Diagnostic::Severity::Error, stage.where, label, "shader failed to compile"});
             d.insert(d.end(), mapped.begin(), mapped.end());
             ok = false;
         }
-        glAttachShader(program, shader.get());
     }
     if (!ok) return Result<PassGlProgram>::failure(std::move(d));
-    // The built-in vertex shaders' attributes, for dialects without layout qualifiers.
-    for (GLuint a = 0; a < 3; ++a) glBindAttribLocation(program, a, builtinAttributeLocations[a]);
-    glLinkProgram(program);
-    GLint linked = 0;
-    glGetProgramiv(program, GL_LINK_STATUS, &linked);
-    if (!linked) {
-        std::string log = infoLog([&](GLint* n) { glGetProgramiv(program, GL_INFO_LOG_LENGTH, n); },
-                                  [&](GLint n, char* text) { glGetProgramInfoLog(program, n, nullptr, text); });
-        d.push_back({Diagnostic::Severity::Error, pass.where, label, "shaders failed to link: " + log});
+    if (std::optional<std::string> log = linkWithBuiltinAttributes(program)) {
+        d.push_back({Diagnostic::Severity::Error, pass.where, label, "shaders failed to link: " + *log});
         return Result<PassGlProgram>::failure(std::move(d));
     }
     return Result<PassGlProgram>(std::move(built), std::move(d));
@@ -68,25 +81,9 @@ Result<PassGlProgram> buildPassProgram(const Workspace& ws, const Pass& pass, co
 
 Result<ProgramHandle> relinkWithFragment(const PassGlProgram& built, const std::string& fragmentCode) {
     ProgramHandle program = createProgram();
-    for (const auto& [type, code] : {std::pair{GL_VERTEX_SHADER, &built.vertexCode}, {GL_FRAGMENT_SHADER, &fragmentCode}}) {
-        ShaderHandle shader = createShader(type);
-        const char* text = code->c_str();
-        glShaderSource(shader.get(), 1, &text, nullptr);
-        glCompileShader(shader.get());
-        GLint compiled = 0;
-        glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &compiled);
-        if (!compiled)
-            return Error{infoLog([&](GLint* n) { glGetShaderiv(shader.get(), GL_INFO_LOG_LENGTH, n); },
-                                 [&](GLint n, char* log) { glGetShaderInfoLog(shader.get(), n, nullptr, log); })};
-        glAttachShader(program.get(), shader.get());
-    }
-    for (GLuint a = 0; a < 3; ++a) glBindAttribLocation(program.get(), a, builtinAttributeLocations[a]);
-    glLinkProgram(program.get());
-    GLint linked = 0;
-    glGetProgramiv(program.get(), GL_LINK_STATUS, &linked);
-    if (!linked)
-        return Error{infoLog([&](GLint* n) { glGetProgramiv(program.get(), GL_INFO_LOG_LENGTH, n); },
-                             [&](GLint n, char* log) { glGetProgramInfoLog(program.get(), n, nullptr, log); })};
+    for (const auto& [type, code] : {std::pair{GL_VERTEX_SHADER, &built.vertexCode}, {GL_FRAGMENT_SHADER, &fragmentCode}})
+        if (std::optional<std::string> log = compileInto(program.get(), type, *code)) return Error{*log};
+    if (std::optional<std::string> log = linkWithBuiltinAttributes(program.get())) return Error{*log};
     return program;
 }
 
