@@ -1,50 +1,17 @@
 #include "gl/HealthInstrumentation.h"
 
 #include <cmath>
-#include <cstdlib>
+#include <optional>
 
 #include <epoxy/gl.h>
 
+#include "frontend/shader/ShaderPreprocessor.h"
 #include "gl/HealthBuffer.h"
 
 namespace rmfx {
 namespace {
 
 constexpr const char* kRenamedMain = "rmfx_health_pass_main";
-
-// Where the #version line ends in `code` and the version and profile it names; npos when the
-// code has none before its first other line.
-struct VersionLine {
-    size_t end = std::string::npos;
-    int number = 110;
-    bool es = false;
-};
-
-VersionLine findVersionLine(const std::string& code) {
-    VersionLine found;
-    size_t at = 0;
-    while (at < code.size()) {
-        size_t end = code.find('\n', at);
-        if (end == std::string::npos) end = code.size();
-        const std::string line = code.substr(at, end - at);
-        const size_t text = line.find_first_not_of(" \t\r");
-        if (text != std::string::npos) {
-            if (line.compare(text, 8, "#version") != 0) {
-                // A comment or a #line before #version is allowed; anything else means there is none.
-                if (line.compare(text, 2, "//") != 0 && line.compare(text, 5, "#line") != 0) return found;
-            } else {
-                const char* rest = line.c_str() + text + 8;
-                char* after = nullptr;
-                found.number = static_cast<int>(std::strtol(rest, &after, 10));
-                found.es = std::string(after).find("es") != std::string::npos;
-                found.end = end < code.size() ? end + 1 : end;
-                return found;
-            }
-        }
-        at = end + 1;
-    }
-    return found;
-}
 
 // The fragment output at location 0: its name and how many float components it has.
 struct ColourOutput {
@@ -190,9 +157,8 @@ Result<std::string> instrumentForHealth(const Pass& pass, const std::string& fra
                                         const std::vector<std::string>& inputSamplers, int bufferBinding) {
     if (pass.blend.enabled) return Error{"it blends onto its target"};
     if (pass.alphaTest.enabled) return Error{"it has an alpha test"};
-    const VersionLine version = findVersionLine(fragmentCode);
-    if (version.end == std::string::npos || version.number < 330 || version.es)
-        return Error{"its fragment shader is older than GLSL 3.30 or GLSL ES"};
+    const std::optional<OpeningVersion> version = openingVersion(fragmentCode);
+    if (!version || version->number < 330 || version->es) return Error{"its fragment shader is older than GLSL 3.30 or GLSL ES"};
     const bool earlyTests = pass.depth.test;
     if (earlyTests && (mentions(fragmentCode, "discard") || mentions(fragmentCode, "gl_FragDepth")))
         return Error{"it tests depth and its fragment shader discards or writes gl_FragDepth"};
@@ -205,11 +171,11 @@ Result<std::string> instrumentForHealth(const Pass& pass, const std::string& fra
         if (inputs.size() < static_cast<size_t>(kHealthMaxInputs)) inputs.push_back(sampler);
     }
     std::string head;
-    if (version.number < 430) head += "#extension GL_ARB_shader_storage_buffer_object : require\n";
-    if (earlyTests && version.number < 420) head += "#extension GL_ARB_shader_image_load_store : require\n";
+    if (version->number < 430) head += "#extension GL_ARB_shader_storage_buffer_object : require\n";
+    if (earlyTests && version->number < 420) head += "#extension GL_ARB_shader_image_load_store : require\n";
     head += "#define main " + std::string(kRenamedMain) + "\n";
     std::string code = fragmentCode;
-    code.insert(version.end, head);
+    code.insert(version->end, head);
     if (!code.empty() && code.back() != '\n') code += '\n';
     return code + appendix(*output, inputs, bufferBinding, earlyTests);
 }

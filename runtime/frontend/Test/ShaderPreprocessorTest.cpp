@@ -323,4 +323,20 @@ TEST(ShaderPreprocessor, CompilerLogLinesPastIntOrVeryLongMapWithoutThrowing) {
     EXPECT_EQ(d[1].message.size(), 4096 - std::string("ERROR: 0:2: ").size() + std::string("…").size());
 }
 
+TEST(ShaderPreprocessor, OpeningVersionReadsTheFirstLineOnly) {
+    const std::string code = "#version 330 core\nout vec4 c;\n";
+    std::optional<OpeningVersion> v = openingVersion(code);
+    ASSERT_TRUE(v);
+    EXPECT_EQ(v->number, 330);
+    EXPECT_FALSE(v->es);
+    EXPECT_EQ(code.substr(v->end), "out vec4 c;\n");
+    v = openingVersion("  # version 300 es");
+    ASSERT_TRUE(v);
+    EXPECT_EQ(v->number, 300);
+    EXPECT_TRUE(v->es);
+    EXPECT_EQ(v->end, 18u);
+    EXPECT_FALSE(openingVersion("void main() {}\n#version 450\n"));
+    EXPECT_FALSE(openingVersion(""));
+}
+
 }  // namespace rmfx

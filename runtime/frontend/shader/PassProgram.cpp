@@ -59,14 +59,6 @@ void main() {
 )" + legacyTexCoord(dialect) + "}\n";
 }
 
-// Whether preprocessed code opens with its #version line (the preprocessor moves it first).
-static bool startsWithVersion(const std::string& code) {
-    size_t at = code.find_first_not_of(" \t");
-    if (at == std::string::npos || code[at] != '#') return false;
-    at = code.find_first_not_of(" \t", at + 1);
-    return at != std::string::npos && code.compare(at, 7, "version") == 0;
-}
-
 std::string passLabel(const Pass& pass) { return "<pass name=\"" + pass.name + "\">"; }
 
 Result<PassProgramSource> assemblePassProgram(const Workspace& ws, const Pass& pass,
@@ -110,7 +102,7 @@ Result<PassProgramSource> assemblePassProgram(const Workspace& ws, const Pass& p
         size_t before = diagnostics.size();
         auto failed = [&] { return hasErrors(Diagnostics(diagnostics.begin() + static_cast<long>(before), diagnostics.end())); };
         PassStage stage{s.stage, preprocessShader(input, diagnostics), s.where, false, s.dialect};
-        if (s.dialect == ShaderDialect::GlslLegacy && !failed() && !startsWithVersion(stage.shader.code)) {
+        if (s.dialect == ShaderDialect::GlslLegacy && !failed() && !openingVersion(stage.shader.code)) {
             if (std::optional<std::string> why = rejectedOnlyByGlsl110(stage.shader.code, s.stage)) {
                 stage.shader.code.insert(0, "#version 120\n");
                 stage.shader.lineOrigins.insert(stage.shader.lineOrigins.begin(), stage.shader.origin(1));

@@ -239,6 +239,22 @@ std::optional<std::string> readShaderFile(const std::filesystem::path& file) {
     return buffer.str();
 }
 
+std::optional<OpeningVersion> openingVersion(const std::string& code) {
+    size_t at = code.find_first_not_of(" \t");
+    if (at == std::string::npos || code[at] != '#') return std::nullopt;
+    at = code.find_first_not_of(" \t", at + 1);
+    if (at == std::string::npos || code.compare(at, 7, "version") != 0) return std::nullopt;
+    const size_t newline = code.find('\n', at);
+    const std::string rest = code.substr(at + 7, newline == std::string::npos ? std::string::npos : newline - at - 7);
+    OpeningVersion version;
+    version.end = newline == std::string::npos ? code.size() : newline + 1;
+    std::istringstream words(rest);
+    std::string profile;
+    words >> version.number >> profile;
+    version.es = profile == "es";
+    return version;
+}
+
 const char* defaultVersionLine(ShaderDialect dialect) {
     switch (dialect) {
         case ShaderDialect::Glsl: return "#version 450 core";

@@ -40,6 +40,15 @@ std::optional<std::string> readShaderFile(const std::filesystem::path& file);
 // "#version 100"; empty for GlslLegacy (no #version means GLSL 1.10) and Hlsl.
 const char* defaultVersionLine(ShaderDialect dialect);
 
+// The #version line preprocessed code opens with (preprocessShader moves it first): where the
+// line ends (past its newline), the version and whether it is GLSL ES. nullopt: the code has none.
+struct OpeningVersion {
+    size_t end = 0;
+    int number = 0;
+    bool es = false;
+};
+std::optional<OpeningVersion> openingVersion(const std::string& code);
+
 // Includes resolve to a snippet of that name, then relative to the including file, then to `root`. `#pragma once` is honoured.
 // Without a #version line, the dialect's defaultVersionLine is put first. The defines and
 // declarations follow the #version (or open the text when there is none): plain `#define` and
