@@ -121,10 +121,9 @@ void GlContentSkip::plan(const Workspace& ws, const std::vector<GpuPass*>& sched
 
 void GlContentSkip::planConsumers(const std::vector<GpuPass*>& schedule) {
     consumers_.clear();
-    consumerProbes_.clear();
     for (size_t i = 0; i < schedule.size(); ++i) {
         if (effectOfPass_[i] >= 0) continue;
-        Consumer consumer{i, {}};
+        Consumer consumer{i, {}, 0};
         std::set<size_t> probes;
         for (const ActiveEffect& e : effects_) {
             if (i <= e.last) continue;
@@ -137,15 +136,15 @@ void GlContentSkip::planConsumers(const std::vector<GpuPass*>& schedule) {
         }
         // One condition decides one draw: effects on different probes could be skipped apart.
         if (consumer.effects.empty() || probes.size() != 1) continue;
+        consumer.probe = *probes.begin();
         consumers_.push_back(std::move(consumer));
-        consumerProbes_.push_back(*probes.begin());
     }
 }
 
 bool GlContentSkip::beginConsumerDraw(size_t position, bool withoutEffects) {
-    for (size_t c = 0; c < consumers_.size(); ++c) {
-        if (consumers_[c].position != position) continue;
-        const Probe& probe = probes_[consumerProbes_[c]];
+    for (const Consumer& consumer : consumers_) {
+        if (consumer.position != position) continue;
+        const Probe& probe = probes_[consumer.probe];
         if (!probe.issued) return !withoutEffects;
         glBeginConditionalRender(probe.queries[slot_].get(), withoutEffects ? GL_QUERY_WAIT_INVERTED : GL_QUERY_WAIT);
         consumerCondition_ = true;

@@ -53,6 +53,7 @@ public:
     struct Consumer {
         size_t position = 0;            // in the schedule
         std::set<std::string> effects;  // left out of the second program
+        size_t probe = 0;               // the one their sources share
     };
     const std::vector<Consumer>& consumers() const { return consumers_; }
     // Around a consumer's draws: `withoutEffects` false for the program as compiled (drawn where
@@ -96,7 +97,6 @@ private:
     std::vector<ActiveEffect> effects_;
     std::vector<int> effectOfPass_;  // schedule position → index into effects_, or -1
     std::vector<Consumer> consumers_;
-    std::vector<size_t> consumerProbes_;  // of each consumer
     bool consumerCondition_ = false;
     int slot_ = 0;                   // the query of this frame in each probe's ring
     int lastFrameSlot_ = -1;         // the last finished frame's, -1 before the first
