@@ -116,13 +116,73 @@ void GlContentSkip::plan(const Workspace& ws, const std::vector<GpuPass*>& sched
         active.probe = static_cast<size_t>(probe - probes_.begin());
         effects_.push_back(std::move(active));
     }
+    planFeeders(schedule, outputs);
     planConsumers(schedule);
+}
+
+void GlContentSkip::planFeeders(const std::vector<GpuPass*>& schedule, const std::vector<std::string>& outputs) {
+    feeders_.clear();
+    feederProbe_.assign(schedule.size(), -1);
+    if (effects_.empty() || outputs.empty()) return;  // every target is read back after the frame
+    // Each probe reads its source before the first pass drawn under it: feeders come after the
+    // source's last write.
+    std::vector<size_t> sourceComplete(probes_.size(), 0);
+    for (size_t p = 0; p < probes_.size(); ++p)
+        for (size_t i = 0; i < schedule.size(); ++i)
+            if (schedule[i]->target == probes_[p].source) sourceComplete[p] = i + 1;
+    std::set<std::string> previousFrame, sources;
+    for (const GpuPass* gp : schedule)
+        for (const Sampler& s : gp->pass->samplers)
+            if (s.previousFrame) previousFrame.insert(s.target);
+    for (const Probe& p : probes_) sources.insert(p.source->name);
+    // From the last pass back, so that a feeder's readers are decided before it.
+    for (size_t i = schedule.size(); i-- > 0;) {
+        if (effectOfPass_[i] >= 0) continue;
+        const std::string& written = schedule[i]->target->name;
+        if (std::find(outputs.begin(), outputs.end(), written) != outputs.end() || previousFrame.count(written) ||
+            sources.count(written))
+            continue;
+        int probe = -1;
+        bool feeds = true, read = false;
+        std::set<std::string> effects;
+        for (size_t j = 0; j < schedule.size() && feeds; ++j) {
+            if (j == i) continue;
+            if (schedule[j]->target->name == written) {  // another pass writes it too
+                feeds = false;
+                continue;
+            }
+            bool reads = false;
+            for (const Sampler& s : schedule[j]->pass->samplers) reads = reads || s.target == written;
+            if (!reads) continue;
+            read = true;
+            const int readerProbe = probeAt(j);
+            feeds = j > i && readerProbe >= 0 && (probe < 0 || probe == readerProbe);
+            probe = readerProbe;
+            if (effectOfPass_[j] >= 0) effects.insert(effects_[static_cast<size_t>(effectOfPass_[j])].effect->name);
+            for (const Feeder& f : feeders_)
+                if (f.position == j) effects.insert(f.effects.begin(), f.effects.end());
+        }
+        if (!feeds || !read || i < sourceComplete[static_cast<size_t>(probe)]) continue;
+        feederProbe_[i] = probe;
+        feeders_.push_back({i, std::move(effects), static_cast<size_t>(probe)});
+    }
+    std::reverse(feeders_.begin(), feeders_.end());
+}
+
+int GlContentSkip::probeAt(size_t index) const {
+    if (index < effectOfPass_.size() && effectOfPass_[index] >= 0)
+        return static_cast<int>(effects_[static_cast<size_t>(effectOfPass_[index])].probe);
+    return index < feederProbe_.size() ? feederProbe_[index] : -1;
+}
+
+bool GlContentSkip::endsAnEffect(size_t index) const {
+    return std::any_of(effects_.begin(), effects_.end(), [&](const ActiveEffect& e) { return e.last == index; });
 }
 
 void GlContentSkip::planConsumers(const std::vector<GpuPass*>& schedule) {
     consumers_.clear();
     for (size_t i = 0; i < schedule.size(); ++i) {
-        if (effectOfPass_[i] >= 0) continue;
+        if (probeAt(i) >= 0) continue;
         Consumer consumer{i, {}, 0};
         std::set<size_t> probes;
         for (const ActiveEffect& e : effects_) {
@@ -196,38 +256,50 @@ void GlContentSkip::issueProbe(Probe& probe) {
 }
 
 void GlContentSkip::beforePass(size_t index) {
-    if (index >= effectOfPass_.size() || effectOfPass_[index] < 0) return;
-    if (conditionOf_ == effectOfPass_[index]) return;
-    const ActiveEffect& e = effects_[static_cast<size_t>(effectOfPass_[index])];
-    Probe& probe = probes_[e.probe];
+    const int p = probeAt(index);
+    if (p < 0 || conditionOf_ == p) return;
+    Probe& probe = probes_[static_cast<size_t>(p)];
     if (!probe.issued) issueProbe(probe);
     if (!probe.issued) return;
     glBeginConditionalRender(probe.queries[slot_].get(), GL_QUERY_WAIT);
-    conditionOf_ = effectOfPass_[index];
+    conditionOf_ = p;
+}
+
+unsigned GlContentSkip::conditionOf(size_t index) const {
+    const int p = probeAt(index);
+    if (p < 0 || !probes_[static_cast<size_t>(p)].issued) return 0;
+    return probes_[static_cast<size_t>(p)].queries[slot_].get();
 }
 
 void GlContentSkip::afterPass(size_t index) {
-    if (index >= effectOfPass_.size() || effectOfPass_[index] < 0) return;
-    const ActiveEffect& e = effects_[static_cast<size_t>(effectOfPass_[index])];
-    const Probe& probe = probes_[e.probe];
+    const int p = probeAt(index);
+    if (p < 0) return;
+    const Probe& probe = probes_[static_cast<size_t>(p)];
     if (!probe.issued) return;
-    const bool nextInTheSameEffect = index + 1 < effectOfPass_.size() && effectOfPass_[index + 1] == effectOfPass_[index];
-    if (spanning_ && nextInTheSameEffect && index != e.last) return;
+    // An effect's last pass ends the condition: what it hands on is cleared under the inverse.
+    const bool ends = endsAnEffect(index);
+    if (spanning_ && !ends && probeAt(index + 1) == p) return;
     if (conditionOf_ >= 0) glEndConditionalRender();
     conditionOf_ = -1;
-    if (index != e.last) return;
+    if (!ends) return;
     const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glBeginConditionalRender(probe.queries[slot_].get(), GL_QUERY_WAIT_INVERTED);
-    for (const GpuTarget* t : e.handedOn)
-        if (t->resource) {
-            glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-            glDisable(GL_SCISSOR_TEST);
-            glClearNamedFramebufferfv(t->resource->framebuffers[t->resource->writeBuffer()].get(), GL_COLOR, 0, zero);
-        }
+    for (const ActiveEffect& e : effects_) {
+        if (e.last != index) continue;
+        for (const GpuTarget* t : e.handedOn)
+            if (t->resource) {
+                glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+                glDisable(GL_SCISSOR_TEST);
+                glClearNamedFramebufferfv(t->resource->framebuffers[t->resource->writeBuffer()].get(), GL_COLOR, 0, zero);
+            }
+    }
     glEndConditionalRender();
-    for (const GpuTarget* t : e.handedOn)
-        if (t->resource && t->resource->spec.mipmaps)
-            glGenerateTextureMipmap(t->resource->textures[t->resource->writeBuffer()].get());
+    for (const ActiveEffect& e : effects_) {
+        if (e.last != index) continue;
+        for (const GpuTarget* t : e.handedOn)
+            if (t->resource && t->resource->spec.mipmaps)
+                glGenerateTextureMipmap(t->resource->textures[t->resource->writeBuffer()].get());
+    }
 }
 
 void GlContentSkip::endFrame() {

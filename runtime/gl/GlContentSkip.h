@@ -8,6 +8,9 @@
 // source, with no frame of lag); after its last pass, under the inverted condition, the targets it
 // hands to later passes (and those read back after the frame) are cleared to zero, which is what
 // running it would have left there. A NaN or an infinity is not zero: the effect runs on it.
+// Passes outside the effects that only they read, between the source and the effects (hdr_lighting's
+// star_source, the blur of the bright pass that bloom and star start from), are feeders: drawn
+// under the same condition, since where it fails nothing reads what they write.
 // Needs a current GL 4.5 context.
 
 #include <map>
@@ -44,6 +47,9 @@ public:
     // Around scheduled pass `index` (its position in the schedule given to plan()).
     void beforePass(size_t index);
     void afterPass(size_t index);
+    // The query whose answer decides whether scheduled pass `index` is drawn this frame (between
+    // beforePass and the end of the frame), for draws that look at what it wrote; 0: it is drawn.
+    unsigned conditionOf(size_t index) const;
     void endFrame();
 
     // A pass outside the effects that reads what effects sharing one probe hand on (hdr_lighting's
@@ -56,6 +62,16 @@ public:
         size_t probe = 0;               // the one their sources share
     };
     const std::vector<Consumer>& consumers() const { return consumers_; }
+
+    // A pass outside the effects whose target only passes drawn under one probe's condition read
+    // (effect passes, or other feeders), written after the source is complete and read back by
+    // nothing after the frame: it is drawn under that condition too. Set by plan().
+    struct Feeder {
+        size_t position = 0;            // in the schedule
+        std::set<std::string> effects;  // the effects that read it, directly or through other feeders
+        size_t probe = 0;
+    };
+    const std::vector<Feeder>& feeders() const { return feeders_; }
     // Around a consumer's draws: `withoutEffects` false for the program as compiled (drawn where
     // the source holds something), true for the one without the effects (where it holds nothing).
     // Without an issued probe, the program as compiled is drawn unconditionally and the other not
@@ -83,7 +99,10 @@ private:
 
     GlContentSkip() = default;
     void issueProbe(Probe& probe);
+    void planFeeders(const std::vector<GpuPass*>& schedule, const std::vector<std::string>& outputs);
     void planConsumers(const std::vector<GpuPass*>& schedule);
+    int probeAt(size_t index) const;  // the probe whose condition scheduled pass `index` is drawn under, or -1
+    bool endsAnEffect(size_t index) const;
 
     ProgramHandle program_;
     FramebufferHandle empty_;
@@ -96,12 +115,14 @@ private:
     std::vector<Probe> probes_;
     std::vector<ActiveEffect> effects_;
     std::vector<int> effectOfPass_;  // schedule position → index into effects_, or -1
+    std::vector<int> feederProbe_;   // schedule position → probe of a feeder, or -1
+    std::vector<Feeder> feeders_;
     std::vector<Consumer> consumers_;
     bool consumerCondition_ = false;
     int slot_ = 0;                   // the query of this frame in each probe's ring
     int lastFrameSlot_ = -1;         // the last finished frame's, -1 before the first
     bool spanning_ = true;
-    int conditionOf_ = -1;           // the effect whose condition is active, or -1
+    int conditionOf_ = -1;           // the probe whose condition is active, or -1
     std::map<std::string, std::string> skipped_;
 };
 

@@ -337,13 +337,14 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
     std::map<std::string, FrameCamera> namedCameras;
     for (const NamedCamera& c : s.ws.cameras) namedCameras.emplace(c.name, FrameCamera(OrbitCamera(c.settings), viewport_));
     for (size_t position = 0; position < s.schedule.size(); ++position) {
-        if (s.contentSkip) s.contentSkip->beforePass(position);
         const GpuPass& gp = *s.schedule[position];
         const Pass& pass = *gp.pass;
         GpuTarget& target = *gp.target;
         GpuResource& memory = *target.resource;
         GLuint framebuffer = memory.framebuffers[memory.writeBuffer()].get();
+        // Before the pass's condition: the inspections it flushes are of earlier passes.
         if (s.healthCheck) s.healthCheck->beforeWriting(memory.textures[memory.writeBuffer()].get());
+        if (s.contentSkip) s.contentSkip->beforePass(position);
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
         glViewport(0, 0, memory.spec.size.x, memory.spec.size.y);
         applyRenderState(pass, s.compatibility);
@@ -409,7 +410,8 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
         if (memory.spec.mipmaps) glGenerateTextureMipmap(memory.textures[memory.writeBuffer()].get());
         if (s.healthCheck && !gp.health.found)
             s.healthCheck->afterPass(position, pass.name, target.name, memory.textures[memory.writeBuffer()].get(),
-                                     memory.spec.size, memory.spec.format, healthInputs, gp.whyNotCounting);
+                                     memory.spec.size, memory.spec.format, healthInputs, gp.whyNotCounting,
+                                     s.contentSkip ? s.contentSkip->conditionOf(position) : 0);
         s.timers.passDone(pass.name);
         for (const std::string& e : drainGlErrors())
             d.push_back({Diagnostic::Severity::Error, pass.where, passLabel(pass), e + " while drawing into '" + target.name + "'"});
@@ -557,6 +559,14 @@ std::map<std::string, std::set<std::string>> GlExecutor::passesDrawnWithoutSkipp
     for (const GlContentSkip::Consumer& c : s.contentSkip->consumers())
         if (c.position < s.withoutEffectsAt.size() && s.withoutEffectsAt[c.position])
             out[s.schedule[c.position]->pass->name] = c.effects;
+    return out;
+}
+
+std::map<std::string, std::set<std::string>> GlExecutor::passesDrawnOnlyForEffects() const {
+    const Impl& s = *impl_;
+    std::map<std::string, std::set<std::string>> out;
+    if (!s.contentSkip) return out;
+    for (const GlContentSkip::Feeder& f : s.contentSkip->feeders()) out[s.schedule[f.position]->pass->name] = f.effects;
     return out;
 }
 

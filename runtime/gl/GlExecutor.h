@@ -101,6 +101,9 @@ public:
     // The passes content skip draws compiled without the effects they read, where those are
     // skipped (gl/GlContentSkip.h's consumers), each with the effects, for the current switches.
     std::map<std::string, std::set<std::string>> passesDrawnWithoutSkippedEffects() const;
+    // The passes outside the effects drawn only where effects with a source run, since only they
+    // read what those passes write (gl/GlContentSkip.h's feeders), each with the effects.
+    std::map<std::string, std::set<std::string>> passesDrawnOnlyForEffects() const;
     // With FramePlanOptions::checkHealth, what the last frame's passes left in their targets
     // (model/TargetHealth.h); null otherwise or before the first frame.
     const FrameHealth* frameHealth() const;

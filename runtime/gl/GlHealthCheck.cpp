@@ -254,11 +254,11 @@ bool GlHealthCheck::notePass(size_t position, const std::string& pass, const std
 
 void GlHealthCheck::afterPass(size_t position, const std::string& pass, const std::string& target, unsigned texture,
                               glm::ivec2 size, TargetFormat format, const std::vector<Input>& inputs,
-                              const std::string& whyNotWhileDrawing) {
+                              const std::string& whyNotWhileDrawing, unsigned condition) {
     if (position < passes_.size()) passes_[position].whyNotWhileDrawing = whyNotWhileDrawing;
     if (!notePass(position, pass, target, size, format, inputs)) return;
     if (texture == 0 || size.x > maxSize_.x || size.y > maxSize_.y) return;
-    Inspection inspection{position, texture, size, formatHealthLimits(format), {}};
+    Inspection inspection{position, texture, size, formatHealthLimits(format), {}, condition};
     for (size_t k = 0; k < inputs.size() && k < static_cast<size_t>(kHealthMaxInputs); ++k) inspection.inputs.push_back(inputs[k]);
     pending_.push_back(std::move(inspection));
 }
@@ -285,9 +285,14 @@ void GlHealthCheck::inspectPending() {
     if (pending_.empty()) return;
     // None of the count draws waits for another; one barrier orders them all before the pixel draws.
     bindCommonState();
-    for (const Inspection& i : pending_) drawCount(i);
+    auto underItsCondition = [](const Inspection& i, auto draw) {
+        if (i.condition) glBeginConditionalRender(i.condition, GL_QUERY_WAIT);
+        draw(i);
+        if (i.condition) glEndConditionalRender();
+    };
+    for (const Inspection& i : pending_) underItsCondition(i, [&](const Inspection& k) { drawCount(k); });
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    for (const Inspection& i : pending_) drawPixel(i);
+    for (const Inspection& i : pending_) underItsCondition(i, [&](const Inspection& k) { drawPixel(k); });
     glBindVertexArray(0);
     glBindTextureUnit(kTargetUnit, 0);
     pending_.clear();

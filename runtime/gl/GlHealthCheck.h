@@ -49,7 +49,7 @@ public:
     // `whyNotWhileDrawing`: why the pass did not count what it wrote, where that was asked for.
     void afterPass(size_t position, const std::string& pass, const std::string& target, unsigned texture,
                    glm::ivec2 size, TargetFormat format, const std::vector<Input>& inputs,
-                   const std::string& whyNotWhileDrawing = "");
+                   const std::string& whyNotWhileDrawing = "", unsigned condition = 0);
     // Before pass `position`, whose program counts what it writes (`uniforms`, its program current),
     // draws into a target of `size` and `format`, reading `inputs` in the order its shader records.
     void beforeCountingPass(size_t position, const std::string& pass, const std::string& target, glm::ivec2 size,
@@ -68,6 +68,10 @@ private:
         glm::ivec2 size{0};
         FormatHealthLimits limits;
         std::vector<Input> inputs;
+        // The query deciding whether the pass was drawn (content skip, gl/GlContentSkip.h): the
+        // inspection is drawn under it, so that a pass left out is not judged by what its target
+        // held before. 0: drawn.
+        unsigned condition = 0;
     };
 
     GlHealthCheck() = default;

@@ -147,6 +147,10 @@ std::string explainFrame(const FrameExplanationInput& in) {
             else
                 out << "  " << name << ": run: '" << e.source << "' holds a pixel it works on\n";
         }
+        for (const auto& [pass, effects] : in.drawnOnlyForEffects)
+            if (in.contentSkip)
+                out << "  " << pass << ": drawn only where " << joinNames(effects) << (effects.size() == 1 ? " runs" : " run") << " (only "
+                    << (effects.size() == 1 ? "it reads" : "they read") << " what it writes)\n";
         for (const auto& [pass, effects] : in.drawnWithoutSkipped)
             if (in.contentSkip)
                 out << "  " << pass << ": drawn compiled without " << joinNames(effects)

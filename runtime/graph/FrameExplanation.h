@@ -28,6 +28,8 @@ struct FrameExplanationInput {
     std::map<std::string, std::string> contentSkipped;
     // Passes drawn compiled without the effects they read where those are skipped, by pass.
     std::map<std::string, std::set<std::string>> drawnWithoutSkipped;
+    // Passes outside the effects drawn only where those effects run (only they read them), by pass.
+    std::map<std::string, std::set<std::string>> drawnOnlyForEffects;
 };
 
 std::string explainFrame(const FrameExplanationInput& input);

@@ -184,6 +184,14 @@ private:
         for (const Pass& p : ws_.passes)
             for (const Sampler& s : p.samplers)
                 if (s.previousFrame) previousFrame.insert(s.target);
+        // What the effect may read the source through: targets written before it from the source
+        // (hdr_lighting's star_source, a blur of its source 'bright').
+        std::set<std::string> fromSource{e.source};
+        for (const Pass& p : ws_.passes) {
+            if (!p.enabled || inEffect(p)) continue;
+            for (const Sampler& s : p.samplers)
+                if (!s.previousFrame && fromSource.count(s.target)) fromSource.insert(ws_.passTargetName(p));
+        }
         bool samplesSource = false;
         for (const Pass& p : ws_.passes) {
             if (!p.enabled || !inEffect(p)) continue;
@@ -194,7 +202,7 @@ private:
                                             "written before it by passes outside it");
                 return;
             }
-            for (const Sampler& s : p.samplers) samplesSource = samplesSource || s.target == e.source;
+            for (const Sampler& s : p.samplers) samplesSource = samplesSource || (!s.previousFrame && fromSource.count(s.target));
             if (previousFrame.count(written))
                 error(e.where, element, "pass '" + p.name + "' writes '" + written +
                                             "', which is read with frame=\"previous\": a skipped frame could not "
@@ -214,7 +222,8 @@ private:
                 }
         }
         if (!samplesSource)
-            error(e.where, element, "no pass of the effect samples its source '" + e.source + "'");
+            error(e.where, element, "no pass of the effect reads its source '" + e.source +
+                                        "', directly or through what passes before it make of it");
         // The probe reads the source before the effect's first pass: every write must come before.
         const Pass* first = nullptr;
         for (const Pass& p : ws_.passes) {

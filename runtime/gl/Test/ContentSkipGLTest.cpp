@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 
+#include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
 #include "gl/GlExecutor.h"
@@ -241,6 +242,115 @@ TEST_F(GlowContentSkipGLTest, APassReadingASkippedEffectIsDrawnCompiledWithoutIt
     EXPECT_EQ(alphaOf(*on, 0.5f), (std::set<float>{1.0f})) << "dim again";
     EXPECT_EQ(alphaOf(*off, 0.5f), (std::set<float>{1.25f})) << "--content-skip off: as compiled";
 }
+
+// kGlow with spread_pass between the bright pass and the glow, which reads it instead of
+// 'bright': it copies 'bright' and writes alpha 0.5, which nothing reads.
+std::string glowWithAFeeder() {
+    std::string xml = kGlow;
+    auto replace = [&](const std::string& from, const std::string& to) {
+        const size_t at = xml.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        if (at != std::string::npos) xml.replace(at, from.size(), to);
+    };
+    replace(R"(<target name="glow" format="rgba32f"/>)",
+            R"(<target name="glow" format="rgba32f"/><target name="spread" format="rgba16f"/>)");
+    replace(R"(  <pass name="glow_pass" target="glow"><sampler name="Bright" target="bright" filter="nearest"/>)",
+            R"(  <pass name="spread_pass" target="spread"><sampler name="Bright" target="bright" filter="nearest"/><shader stage="fragment"><![CDATA[
+uniform sampler2D Bright;
+out vec4 c;
+void main() { c = vec4(texelFetch(Bright, ivec2(gl_FragCoord.xy), 0).rgb, 0.5); }
+]]></shader></pass>
+  <pass name="glow_pass" target="glow"><sampler name="Bright" target="spread" filter="nearest"/>)");
+    return xml;
+}
+
+// A pass between the source and the effect that only the effect reads (hdr_lighting's
+// star_source) is drawn under the effect's condition: on a dim frame it is not drawn at all (its
+// target keeps what it held; it writes alpha 0.5 when drawn, and nothing reads alpha), on a
+// bright one it is, and asking for its target as an output makes it run whatever the source.
+TEST_F(GlowContentSkipGLTest, APassOnlyTheEffectReadsIsSkippedWithIt) {
+    std::unique_ptr<Workspace> ws = workspaceFromText(glowWithAFeeder());
+    ASSERT_TRUE(ws);
+    auto on = executorFor(*ws, {37, 23}, {}, true);
+    auto off = executorFor(*ws, {37, 23}, {}, false);
+    ASSERT_TRUE(on && off);
+    EXPECT_EQ(on->passesDrawnOnlyForEffects(), (std::map<std::string, std::set<std::string>>{{"spread_pass", {"glow"}}}));
+    EXPECT_TRUE(off->passesDrawnOnlyForEffects().empty());
+    auto spreadAlphas = [](const GlExecutor& e) {
+        std::vector<float> rgba(37 * 23 * 4);
+        glGetTextureImage(e.targetTexture("spread"), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(rgba.size() * sizeof(float)),
+                          rgba.data());
+        std::set<float> alphas;
+        for (size_t i = 3; i < rgba.size(); i += 4) alphas.insert(rgba[i]);
+        return alphas;
+    };
+    auto frame = [&](float value, const std::string& what) {
+        for (GlExecutor* e : {on.get(), off.get()}) {
+            EXPECT_TRUE(e->setVariable("Pixel_X", Value::ofInt(36)));
+            EXPECT_TRUE(e->setVariable("Pixel_Y", Value::ofInt(22)));
+            EXPECT_TRUE(e->setVariable("Value", Value::ofFloat(value)));
+        }
+        expectSameFrame(*on, *off, 0.0f, what);
+    };
+    frame(0.5f, "dim");
+    EXPECT_EQ(on->contentSkippedEffects().count("glow"), 1u);
+    EXPECT_EQ(spreadAlphas(*on), (std::set<float>{0.0f})) << "dim: spread_pass is not drawn";
+    EXPECT_EQ(spreadAlphas(*off), (std::set<float>{0.5f})) << "--content-skip off draws it";
+    frame(3.0f, "bright");
+    EXPECT_TRUE(on->contentSkippedEffects().empty());
+    EXPECT_EQ(spreadAlphas(*on), (std::set<float>{0.5f})) << "bright: spread_pass is drawn";
+
+    ExecutorOptions options;
+    options.outputs = {"output", "spread"};
+    auto created = GlExecutor::create(std::make_shared<const Workspace>(*ws), {37, 23}, options);
+    ASSERT_TRUE(created) << formatAll(created.diagnostics());
+    EXPECT_TRUE((*created)->passesDrawnOnlyForEffects().empty()) << "a target read back after the frame is always drawn";
+    ASSERT_TRUE((*created)->setVariable("Value", Value::ofFloat(0.5f)));
+    ASSERT_TRUE((*created)->renderFrame({0.0f, 1.0f / 24.0f}));
+    EXPECT_EQ((*created)->contentSkippedEffects().count("glow"), 1u);
+    EXPECT_EQ(spreadAlphas(**created), (std::set<float>{0.5f}));
+}
+
+// The health check reports what the passes of a frame wrote: a pass content skip leaves out
+// wrote nothing, though its target still holds what it wrote before (+Inf here, from a bright
+// frame: spread_pass's target is read by no pass after the effect, so nothing clears it).
+class ContentSkipHealthGLTest : public GlTest, public ::testing::WithParamInterface<HealthCheckMethod> {};
+
+TEST_P(ContentSkipHealthGLTest, APassLeftOutIsReportedClean) {
+    std::unique_ptr<Workspace> ws = workspaceFromText(glowWithAFeeder());
+    ASSERT_TRUE(ws);
+    ExecutorOptions options;
+    options.outputs = {"output"};
+    options.checkHealth = true;
+    options.healthCheckMethod = GetParam();
+    auto created = GlExecutor::create(std::make_shared<const Workspace>(*ws), {37, 23}, options);
+    ASSERT_TRUE(created) << formatAll(created.diagnostics());
+    GlExecutor& e = **created;
+    auto infinitiesOf = [&](const std::string& pass) -> long long {
+        const FrameHealth* health = e.frameHealth();
+        if (!health) return -1;
+        for (const PassHealth& p : health->passes)
+            if (p.pass == pass) return p.counts[static_cast<size_t>(HealthKind::PositiveInfinity)];
+        return -1;
+    };
+    ASSERT_TRUE(e.setVariable("Pixel_X", Value::ofInt(4)));
+    ASSERT_TRUE(e.setVariable("Kind", Value::ofInt(2)));
+    ASSERT_TRUE(e.renderFrame({0.0f, 1.0f / 24.0f}));
+    EXPECT_TRUE(e.contentSkippedEffects().empty());
+    EXPECT_EQ(infinitiesOf("spread_pass"), 1) << "bright: spread_pass copies the +Inf";
+    EXPECT_EQ(infinitiesOf("glow_pass"), 6) << "the 3x2 pixels around it at the bottom edge";
+    ASSERT_TRUE(e.setVariable("Kind", Value::ofInt(0)));
+    ASSERT_TRUE(e.setVariable("Value", Value::ofFloat(0.5f)));
+    ASSERT_TRUE(e.renderFrame({1.0f / 24.0f, 1.0f / 24.0f}));
+    EXPECT_EQ(e.contentSkippedEffects().count("glow"), 1u);
+    EXPECT_EQ(infinitiesOf("spread_pass"), 0) << "dim: spread_pass did not run";
+    EXPECT_EQ(infinitiesOf("glow_pass"), 0);
+    EXPECT_TRUE(e.frameHealth()->findings.empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, ContentSkipHealthGLTest,
+                         ::testing::Values(HealthCheckMethod::AfterPass, HealthCheckMethod::WhileDrawing),
+                         [](const auto& info) { return info.param == HealthCheckMethod::AfterPass ? "AfterPass" : "WhileDrawing"; });
 
 }  // namespace
 }  // namespace rmfx::test

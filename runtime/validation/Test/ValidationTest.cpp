@@ -878,7 +878,8 @@ TEST(Validation, AnEffectsSourceIsATargetItStartsFromAndOnlyItWritesWhatItHandsO
                            "a skipped frame could not leave what running it leaves there, so the effect cannot have a source",
                   l.path + ":9: error: <effect name=\"unread\">: pass 'p5' writes 'd', which pass 'p6' outside the effect writes "
                            "too: a skipped effect's targets are cleared to zero, which would lose what 'p6' wrote",
-                  l.path + ":9: error: <effect name=\"unread\">: no pass of the effect samples its source 'src'",
+                  l.path + ":9: error: <effect name=\"unread\">: no pass of the effect reads its source 'src', directly or "
+                           "through what passes before it make of it",
                   l.path + ":10: error: <effect name=\"history\">: pass 'p6' writes 'd', which is read with "
                            "frame=\"previous\": a skipped frame could not leave what running it leaves there, so the effect "
                            "cannot have a source",
@@ -907,6 +908,32 @@ TEST(Validation, AnEffectsSourceIsCompleteBeforeItsFirstPass) {
     EXPECT_EQ(l.errors, (Lines{l.path + ":4: error: <effect name=\"e\">: pass 'more' writes the source 'src' after pass 'p' "
                                         "of the effect: whether the effect contributes is decided before its first pass, so "
                                         "the source must be complete by then"}));
+}
+
+// hdr_lighting's bloom and star start from 'bright' through star_source, a blur of it outside
+// both: reading through a pass before the effect counts; through last frame's contents it does not.
+TEST(Validation, AnEffectMayReadItsSourceThroughPassesBeforeIt) {
+    test::ScratchDir dir;
+    const std::string sampling = "    <shader stage=\"fragment\">uniform sampler2D S; out vec4 c; void main() { c = texture(S, vec2(0.5)); }</shader>";
+    auto l = load(dir, lines({
+                           "<workspace version=\"1\">",
+                           "  <target name=\"src\" format=\"rgba8\"/>",
+                           "  <target name=\"blurred\" format=\"rgba8\"/>",
+                           "  <target name=\"late\" format=\"rgba8\"/>",
+                           "  <target name=\"a\" format=\"rgba8\"/>",
+                           "  <target name=\"b\" format=\"rgba8\"/>",
+                           "  <effect name=\"through\" passes=\"pa\" source=\"src\"/>",
+                           "  <effect name=\"history\" passes=\"pb\" source=\"src\"/>",
+                           "  <pass name=\"make\" target=\"src\">", kPlainShader, "  </pass>",
+                           "  <pass name=\"blur\" target=\"blurred\">", "    <sampler name=\"S\" target=\"src\"/>", sampling, "  </pass>",
+                           "  <pass name=\"pa\" target=\"a\">", "    <sampler name=\"S\" target=\"blurred\"/>", sampling, "  </pass>",
+                           "  <pass name=\"remember\" target=\"late\">",
+                           "    <sampler name=\"S\" target=\"src\" frame=\"previous\"/>", sampling, "  </pass>",
+                           "  <pass name=\"pb\" target=\"b\">", "    <sampler name=\"S\" target=\"late\"/>", sampling, "  </pass>",
+                           "</workspace>",
+                       }));
+    EXPECT_EQ(l.errors, (Lines{l.path + ":8: error: <effect name=\"history\">: no pass of the effect reads its source "
+                                        "'src', directly or through what passes before it make of it"}));
 }
 
 TEST(Validation, ACycleOfPassesIsAnErrorNamingThem) {
