@@ -2,8 +2,10 @@
 // (or --workspace W) at 512x512 with the check off and on, side by side. Each round renders
 // --frames frames with each executor, the two in alternating order, a frame being renderFrame +
 // glFinish on the wall clock; the check's frame includes reading its buffer back at the end.
-// Three executors: the check off, the check inspecting each target after its pass (after-pass),
-// and the passes counting what they write (while-drawing, gl/HealthInstrumentation.h).
+// Four executors: the check off, the check inspecting each target after its pass (after-pass),
+// the passes counting what they write (while-drawing, gl/HealthInstrumentation.h), and the
+// default (auto: while-drawing on a GPU, on a software rasteriser only in passes the next pass
+// draws onto).
 // Printed: each round's medians and ratios against off, then the median ratios over the rounds and
 // their spread, the GPU time of a frame and of each pass (timer queries). The issue's target: the
 // check costs under 10 % of the frame at 512x512.
@@ -56,14 +58,17 @@ int main(int argc, char** argv) {
     }
     auto ws = std::make_shared<const Workspace>(std::move(*loaded));
     // Check off; the check inspecting each target after its pass; the passes counting what they
-    // write (where they can: the others are inspected after them).
-    constexpr int kExecutors = 3;
+    // write (where they can: the others are inspected after them); auto.
+    constexpr int kExecutors = 4;
+    const char* const names[kExecutors] = {"off", "after-pass", "while-drawing", "auto"};
+    const HealthCheckMethod methods[kExecutors] = {HealthCheckMethod::Automatic, HealthCheckMethod::AfterPass,
+                                                   HealthCheckMethod::WhileDrawing, HealthCheckMethod::Automatic};
     std::unique_ptr<GlExecutor> executors[kExecutors];
     for (int e = 0; e < kExecutors; ++e) {
         ExecutorOptions options;
         options.outputs = {ws->outputTargetName()};  // as rmfx render asks for its one image
         options.checkHealth = e > 0;
-        options.healthCheckMethod = e == 1 ? HealthCheckMethod::AfterPass : HealthCheckMethod::WhileDrawing;
+        options.healthCheckMethod = methods[e];
         auto created = GlExecutor::create(ws, a.size, options);
         if (!created) {
             std::fprintf(stderr, "rmfx_bench_health_check: %s", formatAll(created.diagnostics()).c_str());
@@ -108,7 +113,10 @@ int main(int argc, char** argv) {
         return 1;
     }
     std::vector<double> ms[kExecutors], ratios[kExecutors];  // ratios against off, per round
-    std::printf("round  off (ms)  after-pass (ms)  while-drawing (ms)  after-pass / off  while-drawing / off\n");
+    std::printf("round");
+    for (int e = 0; e < kExecutors; ++e) std::printf("  %s (ms)", names[e]);
+    for (int e = 1; e < kExecutors; ++e) std::printf("  %s / off", names[e]);
+    std::printf("\n");
     for (int round = 0; round < a.rounds; ++round) {
         double t[kExecutors];
         for (int k = 0; k < kExecutors; ++k) {  // the order rotates each round
@@ -119,7 +127,10 @@ int main(int argc, char** argv) {
             ms[e].push_back(t[e]);
             ratios[e].push_back(t[e] / t[0]);
         }
-        std::printf("%5d  %8.2f  %15.2f  %18.2f  %16.3f  %19.3f\n", round + 1, t[0], t[1], t[2], t[1] / t[0], t[2] / t[0]);
+        std::printf("%5d", round + 1);
+        for (int e = 0; e < kExecutors; ++e) std::printf("  %*.2f", static_cast<int>(std::string(names[e]).size()) + 5, t[e]);
+        for (int e = 1; e < kExecutors; ++e) std::printf("  %*.3f", static_cast<int>(std::string(names[e]).size()) + 6, t[e] / t[0]);
+        std::printf("\n");
     }
     // The GPU's own time of a frame and of each pass (timer queries around every pass, the
     // check's draws after a pass counted in the pass they follow).
@@ -149,27 +160,50 @@ int main(int argc, char** argv) {
                       *std::max_element(v.begin(), v.end()));
         return std::string(text);
     };
-    std::printf("\n| frame | check off | after-pass | while-drawing | after-pass / off | while-drawing / off | target |\n"
-                "|---|---|---|---|---|---|---|\n");
-    std::printf("| wall clock (ms), median of rounds | %.2f | %.2f | %.2f | %s | %s | ≤ 1.10 |\n", median(ms[0]), median(ms[1]),
-                median(ms[2]), spread(ratios[1]).c_str(), spread(ratios[2]).c_str());
-    std::printf("| GPU time (ms, timer queries) | %.2f | %.2f | %.2f | %.3f | %.3f | |\n", gpu[0], gpu[1], gpu[2], gpu[1] / gpu[0],
-                gpu[2] / gpu[0]);
-    std::printf("| CPU time of renderFrame (ms), this thread | %.2f | %.2f | %.2f | %.3f | %.3f | |\n", median(issueCpu[0]),
-                median(issueCpu[1]), median(issueCpu[2]), median(issueCpu[1]) / median(issueCpu[0]),
-                median(issueCpu[2]) / median(issueCpu[0]));
-    if (passGpu[0].size() == passGpu[1].size() && passGpu[0].size() == passGpu[2].size()) {
-        std::printf("\n| pass | GPU off (ms) | after-pass (ms) | while-drawing (ms) |\n|---|---|---|---|\n");
-        for (size_t p = 0; p < passGpu[0].size() && p < passNames.size(); ++p)
-            std::printf("| %s | %.3f | %.3f | %.3f |\n", passNames[p].c_str(), median(passGpu[0][p]), median(passGpu[1][p]),
-                        median(passGpu[2][p]));
+    auto row = [&](const char* label, const double* values, const std::vector<double>* roundRatios, const char* target) {
+        std::printf("| %s |", label);
+        for (int e = 0; e < kExecutors; ++e) std::printf(" %.2f |", values[e]);
+        for (int e = 1; e < kExecutors; ++e)
+            std::printf(" %s |", roundRatios ? spread(roundRatios[e]).c_str() : std::to_string(values[e] / values[0]).substr(0, 5).c_str());
+        std::printf(" %s |\n", target);
+    };
+    std::printf("\n| frame |");
+    for (int e = 0; e < kExecutors; ++e) std::printf(" %s%s |", e == 0 ? "check " : "", names[e]);
+    for (int e = 1; e < kExecutors; ++e) std::printf(" %s / off |", names[e]);
+    std::printf(" target |\n|---|");
+    for (int e = 1; e < 2 * kExecutors; ++e) std::printf("---|");
+    std::printf("---|\n");
+    double wall[kExecutors], cpu[kExecutors];
+    for (int e = 0; e < kExecutors; ++e) {
+        wall[e] = median(ms[e]);
+        cpu[e] = median(issueCpu[e]);
     }
+    row("wall clock (ms), median of rounds", wall, ratios, "≤ 1.10");
+    row("GPU time (ms, timer queries)", gpu, nullptr, "");
+    row("CPU time of renderFrame (ms), this thread", cpu, nullptr, "");
+    bool samePasses = true;
+    for (int e = 1; e < kExecutors; ++e) samePasses = samePasses && passGpu[e].size() == passGpu[0].size();
+    if (samePasses) {
+        std::printf("\n| pass |");
+        for (int e = 0; e < kExecutors; ++e) std::printf(" GPU %s (ms) |", names[e]);
+        std::printf("\n|---|");
+        for (int e = 0; e < kExecutors; ++e) std::printf("---|");
+        std::printf("\n");
+        for (size_t p = 0; p < passGpu[0].size() && p < passNames.size(); ++p) {
+            std::printf("| %s |", passNames[p].c_str());
+            for (int e = 0; e < kExecutors; ++e) std::printf(" %.3f |", median(passGpu[e][p]));
+            std::printf("\n");
+        }
+    }
+    auto counting = [&](int e) {
+        size_t n = 0;
+        if (const FrameHealth* health = executors[e]->frameHealth())
+            for (const PassHealth& p : health->passes) n += p.countedWhileDrawing ? 1 : 0;
+        return n;
+    };
     const FrameHealth* health = executors[2]->frameHealth();
-    size_t counting = 0;
-    if (health)
-        for (const PassHealth& p : health->passes) counting += p.countedWhileDrawing ? 1 : 0;
-    std::printf("%zu passes a frame; while drawing, %zu of them count what they write (the others are inspected after "
-                "they ran)\n", health ? health->passes.size() : 0, counting);
+    std::printf("%zu passes a frame; %zu of them count what they write while drawing, %zu with auto (the others are "
+                "inspected after they ran)\n", health ? health->passes.size() : 0, counting(2), counting(3));
     std::printf("the benchmark took %.0f s\n", std::chrono::duration<double>(Clock::now() - began).count());
     if (!frameError.empty()) {
         std::fprintf(stderr, "rmfx_bench_health_check: a frame failed: %s", frameError.c_str());

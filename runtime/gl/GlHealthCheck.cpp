@@ -127,14 +127,11 @@ Result<ProgramHandle> fullScreenProgram(const std::string& fragmentSource, const
 
 Result<std::unique_ptr<GlHealthCheck>> GlHealthCheck::create(HealthCheckMethod method) {
     std::unique_ptr<GlHealthCheck> check(new GlHealthCheck);
-    if (method == HealthCheckMethod::Automatic) {
-        const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-        const std::string name = renderer ? renderer : "";
-        const bool software = name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos ||
-                              name.find("SwiftShader") != std::string::npos;
-        method = software ? HealthCheckMethod::AfterPass : HealthCheckMethod::WhileDrawing;
-    }
-    check->whileDrawing_ = method == HealthCheckMethod::WhileDrawing;
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const std::string name = renderer ? renderer : "";
+    check->software_ = name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos ||
+                       name.find("SwiftShader") != std::string::npos;
+    check->method_ = method;
     check->binding_ = healthBufferBinding();
     auto reduce = fullScreenProgram(withLayout(reduceSource, check->binding_), "health-count");
     if (!reduce) return Error{reduce.error()};
@@ -250,6 +247,17 @@ bool GlHealthCheck::notePass(size_t position, const std::string& pass, const std
     for (size_t k = 0; k < inputs.size() && k < static_cast<size_t>(kHealthMaxInputs); ++k)
         inputLabels_[position].push_back(inputs[k].label);
     return true;
+}
+
+bool GlHealthCheck::countsWhileDrawing(bool drawsOnBeforeTheNext) const {
+    switch (method_) {
+        case HealthCheckMethod::WhileDrawing: return true;
+        case HealthCheckMethod::AfterPass: return false;
+        case HealthCheckMethod::Automatic: break;
+    }
+    // A software rasteriser runs the counting code of every fragment, found or not (about half
+    // speed), but an inspection between two passes drawing into one target costs it more.
+    return !software_ || drawsOnBeforeTheNext;
 }
 
 void GlHealthCheck::afterPass(size_t position, const std::string& pass, const std::string& target, unsigned texture,

@@ -30,8 +30,11 @@ class GlHealthCheck {
 public:
     // Automatic resolves from the context's renderer (model/TargetHealth.h).
     static Result<std::unique_ptr<GlHealthCheck>> create(HealthCheckMethod method);
-    // Whether passes' programs should be made to count what they write.
-    bool countsWhileDrawing() const { return whileDrawing_; }
+    // Whether a pass's program should be made to count what it writes. `drawsOnBeforeTheNext`: the
+    // next pass writes the same target (hdr_lighting's scene, drawn model by model), where a
+    // software rasteriser would finish the pass and load the target again for an inspection
+    // between them; Automatic counts in such passes there and in every pass on a GPU.
+    bool countsWhileDrawing(bool drawsOnBeforeTheNext) const;
 
     // A 2D texture a pass sampled: what the report calls it, its GL object and the texture unit the
     // pass bound it to.
@@ -89,7 +92,8 @@ private:
     int fetchPosition_ = -1, fetchInputCount_ = -1, fetchInputs_ = -1, fetchRecords_ = -1;
     BufferHandle buffer_;  // HealthBuffer.h
     int binding_ = 0;
-    bool whileDrawing_ = true;
+    HealthCheckMethod method_ = HealthCheckMethod::WhileDrawing;
+    bool software_ = false;  // llvmpipe, softpipe, SwiftShader
     FramebufferHandle empty_;     // no attachment: the shaders only write the buffers
     glm::ivec2 maxSize_{0, 0};    // the largest framebuffer
     glm::ivec2 emptySize_{0, 0};  // empty_'s default size

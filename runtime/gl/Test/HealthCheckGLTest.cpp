@@ -11,6 +11,7 @@
 #include <limits>
 #include <optional>
 
+#include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
 #include "gl/GlExecutor.h"
@@ -475,6 +476,68 @@ TEST_P(HealthCheckGLTest, HdrLightingAsShippedHasNoNanOrInfinity) {
         for (const PassHealth& p : health->passes) EXPECT_TRUE(p.countedWhileDrawing) << p.pass;
     for (const HealthFinding& f : run.exec->firstHealthFindings())
         EXPECT_FALSE(healthKindIsError(f.kind)) << describeFinding(f);
+}
+
+// auto: on a GPU every pass counts what it writes; on a software rasteriser only a pass whose next
+// pass writes the same target (an inspection between them would make the rasteriser finish the
+// first and load the target again), the others are inspected after they ran. Both ways in one
+// frame: 'first' writes 1 and a NaN into 't', onto which 'second' adds -2 (a pass that blends is
+// always inspected after it ran).
+class HealthCheckAutomaticGLTest : public GlTest {};
+
+TEST_F(HealthCheckAutomaticGLTest, OnASoftwareRasteriserOnlyAPassDrawnOnByTheNextCounts) {
+    const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const bool software = renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos ||
+                          renderer.find("SwiftShader") != std::string::npos;
+    std::unique_ptr<Workspace> ws = workspaceFromText(R"(<workspace version="1" name="auto" size="9x7">
+  <target name="t" format="rgba32f"/>
+  <target name="u" format="rgba32f"/>
+  <pass name="first" target="t"><shader stage="fragment"><![CDATA[
+#version 450 core
+out vec4 c;
+void main() { float zero = gl_FragCoord.x - gl_FragCoord.x; c = ivec2(gl_FragCoord.xy) == ivec2(2, 3) ? vec4(zero / zero) : vec4(1.0); }
+]]></shader></pass>
+  <pass name="second" target="t"><blend mode="add"/><shader stage="fragment"><![CDATA[
+#version 450 core
+out vec4 c;
+void main() { c = vec4(-2.0, 0.0, 0.0, 0.0); }
+]]></shader></pass>
+  <pass name="use" target="u"><sampler name="T" target="t" filter="nearest"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D T;
+out vec4 c;
+void main() { c = abs(texelFetch(T, ivec2(gl_FragCoord.xy), 0)); }
+]]></shader></pass>
+  <pass name="final"><sampler name="U" target="u" filter="nearest"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D U;
+out vec4 c;
+void main() { c = texelFetch(U, ivec2(gl_FragCoord.xy), 0); }
+]]></shader></pass>
+  <output format="rgba32f" transform="none"/>
+</workspace>
+)");
+    ASSERT_TRUE(ws);
+    GlRun run = runChecked(std::move(ws), {9, 7}, 1, HealthCheckMethod::Automatic);
+    ASSERT_TRUE(run.exec);
+    const FrameHealth* health = run.exec->frameHealth();
+    ASSERT_TRUE(health);
+    std::map<std::string, bool> counted;
+    for (const PassHealth& p : health->passes) counted[p.pass] = p.countedWhileDrawing;
+    if (software)
+        EXPECT_EQ(counted, (std::map<std::string, bool>{{"first", true}, {"second", false}, {"use", false}, {"final", false}}))
+            << renderer;
+    else
+        EXPECT_EQ(counted, (std::map<std::string, bool>{{"first", true}, {"second", false}, {"use", true}, {"final", true}}))
+            << renderer;
+    ASSERT_EQ(health->findings.size(), 2u);
+    EXPECT_EQ(health->findings[0].kind, HealthKind::NaN);
+    EXPECT_EQ(health->findings[0].pass, "first");
+    EXPECT_EQ(health->findings[0].count, 1);
+    EXPECT_EQ(health->findings[0].pixel, glm::ivec2(2, 7 - 1 - 3));
+    EXPECT_EQ(health->findings[1].kind, HealthKind::Negative);
+    EXPECT_EQ(health->findings[1].pass, "second");
+    EXPECT_EQ(health->findings[1].count, 9 * 7 - 1) << "every pixel but the NaN";
 }
 
 }  // namespace
