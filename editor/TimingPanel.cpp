@@ -11,8 +11,14 @@ void TimingPanel::record(GlExecutor& executor) {
     const std::vector<PassTiming>& passes = executor.passTimings();
     history_.add(passes, executor.frameGpuMilliseconds());
     skippedPasses_.clear();
-    for (const auto& [name, why] : executor.contentSkippedEffects(false))
+    const std::map<std::string, std::string>& skipped = executor.contentSkippedEffects(false);
+    for (const auto& [name, why] : skipped)
         if (const Effect* e = executor.workspace().findEffect(name)) skippedPasses_.insert(e->passes.begin(), e->passes.end());
+    // Passes outside the effects that only they read are left out with them.
+    if (!skipped.empty())
+        for (const auto& [pass, effects] : executor.passesDrawnOnlyForEffects())
+            if (std::all_of(effects.begin(), effects.end(), [&](const std::string& e) { return skipped.count(e) > 0; }))
+                skippedPasses_.insert(pass);
     for (const PassTiming& p : passes)
         if (!skippedPasses_.count(p.pass)) ranMilliseconds_[p.pass] = p.milliseconds;
 }
