@@ -187,17 +187,8 @@ struct GlExecutor::Impl {
         gp.program = std::move(built.program);
         gp.initializedUniforms = built.initializedUniforms;
         if (!bindProgram(gp, d)) return false;
-        if (healthCheck && healthCheck->countsWhileDrawing(nextWritesTheSameTarget(gp))) countOwnWrites(gp, built);
+        if (healthCheck && healthCheck->countsWhileDrawing()) countOwnWrites(gp, built);
         return true;
-    }
-
-    // Whether the next pass that may run writes the target `gp` writes (culling by the effect
-    // switches aside).
-    bool nextWritesTheSameTarget(const GpuPass& gp) const {
-        const std::set<int> runnable = plan.runnablePasses();
-        auto it = std::find(runnable.begin(), runnable.end(), gp.index);
-        if (it == runnable.end() || std::next(it) == runnable.end()) return false;
-        return ws.passTargetName(ws.passes[static_cast<size_t>(*std::next(it))]) == ws.passTargetName(*gp.pass);
     }
 
     // The pass's program made to count what it writes (gl/HealthInstrumentation.h); where it

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <climits>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 #include <epoxy/gl.h>
 
@@ -55,6 +57,21 @@ void main() {
     if (negativeInf) record(2, pixel);
     if (negative) record(3, pixel);
     if (atLargest) record(4, pixel);
+}
+)";
+
+// One fragment per pixel, first: a pixel whose channels all lie within what the format holds
+// without a finding is discarded, the others pass an occlusion query, and only where one passed
+// are the count and its record drawn (under the query's condition). NaN fails every comparison.
+// Cheap where nothing is found, as is usual: a software rasteriser runs every line of a shader
+// for every fragment, taken or not, so the atomics above cost it even where no pixel records.
+const char* const screenSource = R"(#version 450 core
+uniform sampler2D Target;
+uniform vec4 Lowest;   // per channel: the smallest value that is no finding
+uniform vec4 Highest;  // the largest
+void main() {
+    vec4 v = texelFetch(Target, ivec2(gl_FragCoord.xy), 0);
+    if (all(greaterThanEqual(v, Lowest)) && all(lessThanEqual(v, Highest))) discard;
 }
 )";
 
@@ -133,6 +150,12 @@ Result<std::unique_ptr<GlHealthCheck>> GlHealthCheck::create(HealthCheckMethod m
                        name.find("SwiftShader") != std::string::npos;
     check->method_ = method;
     check->binding_ = healthBufferBinding();
+    auto screen = fullScreenProgram(screenSource, "health-screen");
+    if (!screen) return Error{screen.error()};
+    check->screen_ = std::move(*screen);
+    glProgramUniform1i(check->screen_.get(), glGetUniformLocation(check->screen_.get(), "Target"), static_cast<GLint>(kTargetUnit));
+    check->screenLowest_ = glGetUniformLocation(check->screen_.get(), "Lowest");
+    check->screenHighest_ = glGetUniformLocation(check->screen_.get(), "Highest");
     auto reduce = fullScreenProgram(withLayout(reduceSource, check->binding_), "health-count");
     if (!reduce) return Error{reduce.error()};
     auto fetch = fullScreenProgram(withLayout(fetchSource, check->binding_), "health-pixel");
@@ -193,7 +216,7 @@ void GlHealthCheck::bindCommonState() {
     glBindVertexArray(vertexArray_.get());
 }
 
-void GlHealthCheck::drawCount(const Inspection& i) {
+void GlHealthCheck::overTarget(const Inspection& i) {
     // Changed only when the size does: each change makes the driver validate the framebuffer again
     // (and a framebuffer larger than the draw costs llvmpipe its whole area).
     const glm::ivec2 defaultSize{std::max(i.size.x, healthKindCount), i.size.y};
@@ -205,6 +228,26 @@ void GlHealthCheck::drawCount(const Inspection& i) {
     glBindTextureUnit(kTargetUnit, i.texture);
     glBindSampler(kTargetUnit, 0);
     glViewport(0, 0, i.size.x, i.size.y);
+}
+
+void GlHealthCheck::drawScreen(const Inspection& i) {
+    overTarget(i);
+    glUseProgram(screen_.get());
+    constexpr float infinity = std::numeric_limits<float>::infinity();
+    glm::vec4 lowest(-infinity), highest(infinity);
+    for (int c = 0; c < i.limits.channels && c < 4; ++c) {
+        // Below the format's largest where it has one (a finding at and beyond it), else finite.
+        const float largest = i.limits.largest[c];
+        highest[c] = largest > 0.0f ? std::nextafter(largest, 0.0f) : std::numeric_limits<float>::max();
+        lowest[c] = i.limits.holdsNegatives ? 0.0f : -highest[c];
+    }
+    glUniform4fv(screenLowest_, 1, &lowest[0]);
+    glUniform4fv(screenHighest_, 1, &highest[0]);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void GlHealthCheck::drawCount(const Inspection& i) {
+    overTarget(i);
     glUseProgram(reduce_.get());
     glUniform1i(reducePosition_, static_cast<GLint>(i.position));
     glUniform1i(reduceChannels_, i.limits.channels);
@@ -249,15 +292,14 @@ bool GlHealthCheck::notePass(size_t position, const std::string& pass, const std
     return true;
 }
 
-bool GlHealthCheck::countsWhileDrawing(bool drawsOnBeforeTheNext) const {
+bool GlHealthCheck::countsWhileDrawing() const {
     switch (method_) {
         case HealthCheckMethod::WhileDrawing: return true;
         case HealthCheckMethod::AfterPass: return false;
         case HealthCheckMethod::Automatic: break;
     }
-    // A software rasteriser runs the counting code of every fragment, found or not (about half
-    // speed), but an inspection between two passes drawing into one target costs it more.
-    return !software_ || drawsOnBeforeTheNext;
+    // A software rasteriser runs the counting code of every fragment, found or not.
+    return !software_;
 }
 
 void GlHealthCheck::afterPass(size_t position, const std::string& pass, const std::string& target, unsigned texture,
@@ -293,14 +335,24 @@ void GlHealthCheck::inspectPending() {
     if (pending_.empty()) return;
     // None of the count draws waits for another; one barrier orders them all before the pixel draws.
     bindCommonState();
-    auto underItsCondition = [](const Inspection& i, auto draw) {
+    while (screens_.size() < pending_.size()) screens_.push_back(createQuery(GL_ANY_SAMPLES_PASSED));
+    // A pass content skip left out (Inspection::condition) draws no screen, so its query fails.
+    for (size_t k = 0; k < pending_.size(); ++k) {
+        const Inspection& i = pending_[k];
+        glBeginQuery(GL_ANY_SAMPLES_PASSED, screens_[k].get());
         if (i.condition) glBeginConditionalRender(i.condition, GL_QUERY_WAIT);
-        draw(i);
+        drawScreen(i);
         if (i.condition) glEndConditionalRender();
+        glEndQuery(GL_ANY_SAMPLES_PASSED);
+    }
+    auto whereScreened = [&](size_t k, auto draw) {
+        glBeginConditionalRender(screens_[k].get(), GL_QUERY_WAIT);
+        draw(pending_[k]);
+        glEndConditionalRender();
     };
-    for (const Inspection& i : pending_) underItsCondition(i, [&](const Inspection& k) { drawCount(k); });
+    for (size_t k = 0; k < pending_.size(); ++k) whereScreened(k, [&](const Inspection& i) { drawCount(i); });
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    for (const Inspection& i : pending_) underItsCondition(i, [&](const Inspection& k) { drawPixel(k); });
+    for (size_t k = 0; k < pending_.size(); ++k) whereScreened(k, [&](const Inspection& i) { drawPixel(i); });
     glBindVertexArray(0);
     glBindTextureUnit(kTargetUnit, 0);
     pending_.clear();

@@ -30,11 +30,8 @@ class GlHealthCheck {
 public:
     // Automatic resolves from the context's renderer (model/TargetHealth.h).
     static Result<std::unique_ptr<GlHealthCheck>> create(HealthCheckMethod method);
-    // Whether a pass's program should be made to count what it writes. `drawsOnBeforeTheNext`: the
-    // next pass writes the same target (hdr_lighting's scene, drawn model by model), where a
-    // software rasteriser would finish the pass and load the target again for an inspection
-    // between them; Automatic counts in such passes there and in every pass on a GPU.
-    bool countsWhileDrawing(bool drawsOnBeforeTheNext) const;
+    // Whether passes' programs should be made to count what they write.
+    bool countsWhileDrawing() const;
 
     // A 2D texture a pass sampled: what the report calls it, its GL object and the texture unit the
     // pass bound it to.
@@ -84,10 +81,14 @@ private:
     void growBuffer(size_t passes);
     void bindCommonState();
     void inspectPending();
+    void overTarget(const Inspection& inspection);  // the framebuffer, viewport and target's unit
+    void drawScreen(const Inspection& inspection);
     void drawCount(const Inspection& inspection);
     void drawPixel(const Inspection& inspection);  // binds the inputs to units 0…
 
-    ProgramHandle reduce_, fetch_;
+    ProgramHandle screen_, reduce_, fetch_;
+    int screenLowest_ = -1, screenHighest_ = -1;
+    std::vector<QueryHandle> screens_;  // one per inspection of a batch: whether its screen found anything
     int reducePosition_ = -1, reduceChannels_ = -1, reduceNegatives_ = -1, reduceLargest_ = -1;
     int fetchPosition_ = -1, fetchInputCount_ = -1, fetchInputs_ = -1, fetchRecords_ = -1;
     BufferHandle buffer_;  // HealthBuffer.h

@@ -43,10 +43,9 @@ FormatHealthLimits formatHealthLimits(TargetFormat format);
 
 // How the check looks at a pass (rmfx render --check-method). WhileDrawing: the pass's own
 // fragment shader counts what it writes (gl/HealthInstrumentation.h), where the pass allows it;
-// AfterPass: a draw over the target after the pass. Automatic: WhileDrawing on a GPU; on a
-// software rasteriser, where a fragment shader that can write memory runs at about half speed
-// (llvmpipe, docs/performance.md), WhileDrawing only in a pass the next pass draws onto (an
-// inspection between them costs more there), AfterPass in the others.
+// AfterPass: a draw over the target after the pass. Automatic: WhileDrawing on a GPU, AfterPass
+// on a software rasteriser, where a fragment shader that can write memory runs at about half
+// speed (llvmpipe, docs/performance.md).
 enum class HealthCheckMethod { Automatic, WhileDrawing, AfterPass };
 // "auto", "while-drawing", "after-pass".
 const char* healthCheckMethodName(HealthCheckMethod method);

@@ -478,14 +478,66 @@ TEST_P(HealthCheckGLTest, HdrLightingAsShippedHasNoNanOrInfinity) {
         EXPECT_FALSE(healthKindIsError(f.kind)) << describeFinding(f);
 }
 
-// auto: on a GPU every pass counts what it writes; on a software rasteriser only a pass whose next
-// pass writes the same target (an inspection between them would make the rasteriser finish the
-// first and load the target again), the others are inspected after they ran. Both ways in one
-// frame: 'first' writes 1 and a NaN into 't', onto which 'second' adds -2 (a pass that blends is
-// always inspected after it ran).
+// What lies just inside and just outside each kind, each value alone in a target of its own (the
+// check after a pass first screens the whole target, and counts only in one where the screen let
+// something through: a finding elsewhere in the same target would hide a screen that missed it).
+// In 32-bit floats -0, the largest finite value and 1 are no finding, -FLT_MAX is negative; in
+// halves 65472 (the value below the largest) is none, 65504 and -65504 are at the largest.
+TEST_P(HealthCheckGLTest, TheEdgesOfEachKindAreCountedExactly) {
+    struct Edge {
+        const char* name;
+        const char* format;
+        const char* value;  // GLSL
+        std::array<long long, healthKindCount> kinds;  // per pixel: NaN, +Inf, -Inf, negative, at the largest
+    };
+    const Edge edges[] = {
+        {"minus_zero", "rgba32f", "uintBitsToFloat(0x80000000u)", {0, 0, 0, 0, 0}},
+        {"float_max", "rgba32f", "uintBitsToFloat(0x7f7fffffu)", {0, 0, 0, 0, 0}},
+        {"minus_float_max", "rgba32f", "uintBitsToFloat(0xff7fffffu)", {0, 0, 0, 1, 0}},
+        {"infinity", "rgba32f", "uintBitsToFloat(0x7f800000u)", {0, 1, 0, 0, 0}},
+        {"minus_infinity", "rgba32f", "uintBitsToFloat(0xff800000u)", {0, 0, 1, 0, 0}},
+        {"nan", "rgba32f", "uintBitsToFloat(0x7fc00000u)", {1, 0, 0, 0, 0}},
+        {"one", "rgba32f", "1.0", {0, 0, 0, 0, 0}},
+        {"half_max", "rgba16f", "65504.0", {0, 0, 0, 0, 1}},
+        {"below_half_max", "rgba16f", "65472.0", {0, 0, 0, 0, 0}},
+        {"minus_half_max", "rgba16f", "-65504.0", {0, 0, 0, 1, 1}},
+    };
+    std::string xml = R"(<workspace version="1" name="edges" size="3x2">)";
+    std::string samplers, declarations, sum;
+    for (const Edge& e : edges) {
+        xml += std::string("<target name=\"") + e.name + "\" format=\"" + e.format + "\"/>\n";
+        xml += std::string("<pass name=\"") + e.name + "\" target=\"" + e.name +
+               "\"><shader stage=\"fragment\"><![CDATA[\n#version 450 core\nout vec4 c;\nvoid main() { c = vec4(" + e.value +
+               ", 0.0, 0.0, 1.0); }\n]]></shader></pass>\n";
+        samplers += std::string("<sampler name=\"S_") + e.name + "\" target=\"" + e.name + "\" filter=\"nearest\"/>";
+        declarations += std::string("uniform sampler2D S_") + e.name + ";\n";
+        sum += std::string(" + texelFetch(S_") + e.name + ", ivec2(0), 0)";
+    }
+    xml += "<pass name=\"final\">" + samplers + "<shader stage=\"fragment\"><![CDATA[\n#version 450 core\n" + declarations +
+           "out vec4 c;\nvoid main() { c = vec4(0.0)" + sum + "; c = vec4(c.g, 0.0, 0.0, 1.0); }\n]]></shader></pass>\n";
+    xml += R"(<output format="rgba32f" transform="none"/></workspace>)";
+    std::unique_ptr<Workspace> ws = workspaceFromText(xml);
+    ASSERT_TRUE(ws);
+    GlRun run = runChecked(std::move(ws), {3, 2}, 1, GetParam());
+    ASSERT_TRUE(run.exec);
+    const FrameHealth* health = run.exec->frameHealth();
+    ASSERT_TRUE(health);
+    std::map<std::string, std::array<long long, healthKindCount>> counts;
+    for (const PassHealth& p : health->passes) counts[p.pass] = p.counts;
+    for (const Edge& e : edges) {
+        std::array<long long, healthKindCount> expected = e.kinds;
+        for (long long& k : expected) k *= 3 * 2;
+        EXPECT_EQ(counts[e.name], expected) << e.name << " in " << e.format;
+    }
+    EXPECT_EQ(counts["final"], (std::array<long long, healthKindCount>{}));
+}
+
+// auto: on a GPU every pass that can counts what it writes (a pass that blends is inspected after
+// it ran); on a software rasteriser every pass is inspected after it ran. Both ways in one frame on
+// a GPU: 'first' writes 1 and a NaN into 't', onto which 'second' adds -2.
 class HealthCheckAutomaticGLTest : public GlTest {};
 
-TEST_F(HealthCheckAutomaticGLTest, OnASoftwareRasteriserOnlyAPassDrawnOnByTheNextCounts) {
+TEST_F(HealthCheckAutomaticGLTest, ASoftwareRasteriserInspectsAfterEachPassAGpuCountsWhileDrawing) {
     const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     const bool software = renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos ||
                           renderer.find("SwiftShader") != std::string::npos;
@@ -525,7 +577,7 @@ void main() { c = texelFetch(U, ivec2(gl_FragCoord.xy), 0); }
     std::map<std::string, bool> counted;
     for (const PassHealth& p : health->passes) counted[p.pass] = p.countedWhileDrawing;
     if (software)
-        EXPECT_EQ(counted, (std::map<std::string, bool>{{"first", true}, {"second", false}, {"use", false}, {"final", false}}))
+        EXPECT_EQ(counted, (std::map<std::string, bool>{{"first", false}, {"second", false}, {"use", false}, {"final", false}}))
             << renderer;
     else
         EXPECT_EQ(counted, (std::map<std::string, bool>{{"first", true}, {"second", false}, {"use", true}, {"final", true}}))
