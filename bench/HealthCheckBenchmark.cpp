@@ -4,8 +4,7 @@
 // glFinish on the wall clock; the check's frame includes reading its buffer back at the end.
 // Four executors: the check off, the check inspecting each target after its pass (after-pass),
 // the passes counting what they write (while-drawing, gl/HealthInstrumentation.h), and the
-// default (auto: while-drawing on a GPU, on a software rasteriser only in passes the next pass
-// draws onto).
+// default (auto: while-drawing on a GPU, after-pass on a software rasteriser).
 // Printed: each round's medians and ratios against off, then the median ratios over the rounds and
 // their spread, the GPU time of a frame and of each pass (timer queries). The target: the
 // check costs under 10 % of the frame at 512x512.
