@@ -200,6 +200,36 @@ TEST(RfxCameraFraming, TheViewerCameraIsRecoveredFromAStoredViewProjectionAlone)
     EXPECT_FLOAT_EQ(ortho.camera.target.x, 10.0f);  // framed instead
 }
 
+// Files that kept only WorldViewProjection (P·V·W), with the World beside it or without one (the
+// identity, as RenderMonkey's viewer leaves it): the camera comes back from P·V = P·V·W·W⁻¹.
+TEST(RfxCameraFraming, TheViewerCameraIsRecoveredFromAStoredWorldViewProjection) {
+    test::ScratchDir dir;
+    dir.write("big.obj", kBigCube);
+    const glm::dvec3 centre(10, 20, 30);
+    const glm::dmat4 world = glm::rotate(glm::translate(glm::dmat4(1.0), glm::dvec3(5, -3, 7)), glm::radians(30.0), glm::dvec3(0, 1, 0));
+    for (const bool direct3d : {false, true})
+        for (const bool keptWorld : {true, false}) {
+            SCOPED_TRACE(std::string(direct3d ? "Direct3D" : "OpenGL") + (keptWorld ? ", World kept" : ", no World"));
+            const glm::dvec3 eye(-150, 90, direct3d ? -260 : 260);
+            const glm::dmat4 viewProjection =
+                direct3d ? glm::perspectiveLH_ZO(glm::radians(40.0), 1.0, 1.0, 1000.0) * glm::lookAtLH(eye, centre, glm::dvec3(0, 1, 0))
+                         : glm::perspectiveRH_NO(glm::radians(40.0), 1.0, 1.0, 1000.0) * glm::lookAtRH(eye, centre, glm::dvec3(0, 1, 0));
+            const std::string variables = keptWorld ? stored("wvp", "WorldViewProjection", viewProjection * world) + stored("w", "World", world)
+                                                    : stored("wvp", "WorldViewProjection", viewProjection);
+            Workspace ws = load(dir, direct3d ? direct3dEffectDrawing("big.obj", variables) : effectDrawing("big.obj", variables));
+            const OrbitCamera camera(ws.camera);
+            EXPECT_NEAR(glm::length(glm::dvec3(camera.position()) - eye), 0.0, 0.05);
+            EXPECT_NEAR(ws.camera.fovYDegrees, 40.0, 1e-3);
+            EXPECT_NEAR(ws.camera.rollDegrees, 0.0, 1e-3);
+        }
+    // A World that cannot be inverted gives nothing: the models are framed instead.
+    const glm::dmat4 someView = glm::perspectiveRH_NO(glm::radians(40.0), 1.0, 1.0, 1000.0) *
+                                glm::lookAtRH(glm::dvec3(0, 0, 300), centre, glm::dvec3(0, 1, 0));
+    Workspace flat = load(dir, effectDrawing("big.obj", stored("wvp", "WorldViewProjection", someView) +
+                                                            stored("w", "World", glm::scale(glm::dmat4(1.0), glm::dvec3(1, 0, 1)))));
+    EXPECT_FLOAT_EQ(flat.camera.target.x, 10.0f);
+}
+
 // RenderMonkey's stock Sphere.3ds, missing, is drawn as rmfx's unit sphere; through the file's
 // camera 300 units away it would be a dot, so it is scaled to half the view's height there. A
 // screen-aligned quad keeps its size, and so does a stand-in the camera is framed to.

@@ -9,6 +9,7 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include "io/mesh/BuiltinMeshes.h"
 #include "io/mesh/ModelLoader.h"
@@ -124,6 +125,35 @@ std::optional<OrbitCameraSettings> fromStoredViewProjection(const Variable& view
     return s;
 }
 
+// A stored matrix's data (element (row i, column j) at 4i + j, as fromStoredView reads it) as a
+// matrix, and back.
+glm::dmat4 matrixOf(const std::array<float, 16>& data) {
+    glm::dmat4 m(0.0);
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) m[j][i] = data[static_cast<size_t>(4 * i + j)];
+    return m;
+}
+std::array<float, 16> dataOf(const glm::dmat4& m) {
+    std::array<float, 16> data{};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) data[static_cast<size_t>(4 * i + j)] = static_cast<float>(m[j][i]);
+    return data;
+}
+
+// P·V from a stored WorldViewProjection (P·V·W): times the inverse of the stored World, where the
+// file kept one; without one the world is taken as the identity, as RenderMonkey's viewer leaves
+// it (its camera moves, not the model). Nothing where the World kept cannot be inverted.
+std::optional<Variable> viewProjectionFromWorldViewProjection(const Workspace& ws, const Variable& worldViewProjection) {
+    Variable viewProjection = worldViewProjection;
+    if (const Variable* world = stored(ws, "World", ValueType::Mat4)) {
+        const glm::dmat4 w = matrixOf(world->value.data);
+        const double determinant = glm::determinant(w);
+        if (!(std::abs(determinant) > 1e-12) || !std::isfinite(determinant)) return std::nullopt;
+        viewProjection.value.data = dataOf(matrixOf(worldViewProjection.value.data) * glm::inverse(w));
+    }
+    return viewProjection;
+}
+
 }  // namespace
 
 void frameDrawnModels(Workspace& ws) {
@@ -184,6 +214,12 @@ void frameDrawnModels(Workspace& ws) {
             return;
         }
     }
+    if (const Variable* worldViewProjection = stored(ws, "WorldViewProjection", ValueType::Mat4))
+        if (std::optional<Variable> viewProjection = viewProjectionFromWorldViewProjection(ws, *worldViewProjection))
+            if (auto camera = fromStoredViewProjection(*viewProjection, models, haveModels, ws.camera)) {
+                adopt(*camera);
+                return;
+            }
     if (!haveModels) return;
     const double halfFov = ws.camera.fovYDegrees * 0.5 * std::numbers::pi / 180.0;
     const double distance = models.radius / std::sin(halfFov) * 1.05;

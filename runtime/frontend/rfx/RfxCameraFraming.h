@@ -3,8 +3,8 @@
 // through its viewer's camera, which the file does not keep, looking at the model; rmfx's default
 // orbit camera (4 units from the origin) suits unit-sized models only, and RenderMonkey's models
 // are about 100 units across: one would swallow it. Many files keep the viewer's last matrices in
-// variables RenderMonkey filled by semantic (View, Projection): the camera is then recovered from
-// them. Otherwise the camera keeps its direction and moves to where the bounding sphere of the
+// variables RenderMonkey filled by semantic (View and Projection, ViewProjection, or
+// WorldViewProjection with World): the camera is then recovered from them. Otherwise the camera keeps its direction and moves to where the bounding sphere of the
 // models the passes draw fills its field of view, leaving out a dome or box around the scene.
 
 #include "model/Workspace.h"
