@@ -448,15 +448,15 @@ TEST(RfxImporter, CameraBecomesTheOrbitThatSeesTheSame) {
     EXPECT_FLOAT_EQ(ws.camera.farPlane, 50.0f);
 }
 
+// An ACTIVE_CAMERA naming none of the effect's RmCameras is a warning; with no RmCamera at all it
+// names RenderMonkey's viewer camera ("Camera" in most files), which the import recovers or frames
+// (RfxCameraFraming): no warning.
 TEST(RfxImporter, ActiveCameraNamingNoCameraWarns) {
     auto warnings = [](const std::string& text) { return formatAll(importRfxText(text, "t.rfx", ".", {}).diagnostics()); };
     const std::string pass = "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n" + std::string(kFragment) + "\n</RmGLPass>\n";
     std::string none = glEffect(pass);
     none.replace(none.find("API=\"OpenGL\">"), 14, "API=\"OpenGL\" ACTIVE_CAMERA=\"Camera\">");
-    EXPECT_NE(warnings(none).find("t.rfx:3: warning: <RmOpenGLEffect NAME=\"E\">: ACTIVE_CAMERA 'Camera' names no <RmCamera> "
-                                  "of the effect; rmfx's default camera is used"),
-              std::string::npos)
-        << warnings(none);
+    EXPECT_EQ(warnings(none).find("ACTIVE_CAMERA"), std::string::npos) << warnings(none);
     std::string other = glEffect("<RmCamera NAME=\"Side\" CAMERA_POSITION_X=\"0\" CAMERA_POSITION_Y=\"0\" CAMERA_POSITION_Z=\"3\"/>\n" + pass);
     other.replace(other.find("API=\"OpenGL\">"), 14, "API=\"OpenGL\" ACTIVE_CAMERA=\"Main\">");
     EXPECT_NE(warnings(other).find("ACTIVE_CAMERA 'Main' names no <RmCamera> of the effect; using the first one, 'Side'"),

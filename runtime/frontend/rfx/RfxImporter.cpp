@@ -53,9 +53,10 @@ void readCamera(const RfxEffectEntry& effect, const std::string& file, Diagnosti
     for (const XMLElement* c = effect.element->FirstChildElement("RmCamera"); c; c = c->NextSiblingElement("RmCamera"))
         if (!chosen || RfxElement(c, file, diagnostics).name() == active) chosen = c;
     const std::string chosenName = chosen ? RfxElement(chosen, file, diagnostics).name() : "";
-    if (!active.empty() && chosenName != active)
-        e.warning("ACTIVE_CAMERA '" + active + "' names no <RmCamera> of the effect; " +
-                  (chosen ? "using the first one, '" + chosenName + "'" : "rmfx's default camera is used"));
+    // Without any RmCamera, RenderMonkey showed the effect through its viewer's camera, which
+    // ACTIVE_CAMERA then names ("Camera", by default): RfxCameraFraming recovers or frames it.
+    if (!active.empty() && chosen && chosenName != active)
+        e.warning("ACTIVE_CAMERA '" + active + "' names no <RmCamera> of the effect; using the first one, '" + chosenName + "'");
     const CameraConvention convention = ws.camera.convention;
     if (chosen) ws.camera = orbitFromRmCamera(RfxElement(chosen, file, diagnostics));
     ws.camera.convention = convention;
