@@ -1,14 +1,16 @@
 #pragma once
 // The numeric health check of rmfx render --check (model/TargetHealth.h), done on the GPU. A pass
 // whose fragment shader was made to count what it writes (HealthInstrumentation.h) counts during
-// its own draw (beforeCountingPass). After any other pass a full-screen draw over the target's size (into a framebuffer without attachments)
-// reads the target it wrote, counts the pixels holding each kind (NaN, ±Inf, negative, at the
-// format's largest) with atomics in a storage buffer and keeps the first such pixel in reading
-// order; a second draw of five fragments records, for each kind the pass holds, that pixel's value
-// and its inputs' texels there. The inspections wait until a pass is about to write memory one of
-// them reads, or the frame ends, and then run together: the count draws do not wait for each
-// other, and one barrier orders them before the pixel draws (a barrier and a wait after every
-// pass cost an NVIDIA H200 about 29 µs each). Nothing is read back until
+// its own draw (beforeCountingPass). After any other pass, draws over the target's size (into a
+// framebuffer without attachments) read the target it wrote: a screen lets through, in an
+// occlusion query, only texels outside what the format holds without a finding; where it let one
+// through (conditional rendering), a count draw counts the pixels holding each kind (NaN, ±Inf,
+// negative, at the format's largest) with atomics in a storage buffer and keeps the first such
+// pixel in reading order, and a draw of five fragments records, for each kind the pass holds,
+// that pixel's value and its inputs' texels there. The inspections wait until a pass is about to
+// write memory one of them reads, or the frame ends, and then run together: the draws of one kind
+// do not wait for each other, and one barrier orders the counts before the records (a barrier and
+// a wait after every pass cost an NVIDIA H200 about 29 µs each). Nothing is read back until
 // the frame ends, and then only the buffer's counts (a few hundred bytes per pass) and the records
 // of each kind's first pass: no stall between passes.
 // Needs a current GL 4.5 context.
