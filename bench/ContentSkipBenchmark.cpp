@@ -1,8 +1,10 @@
 // What content skip (<effect source>, gl/GlContentSkip.h) saves and what it costs, on
-// effects/hdr_lighting.xml (or --workspace W) at 512x512: the frame time of three executors of
+// effects/hdr_lighting.xml (or --workspace W) at 512x512: the frame time of four executors of
 // one workspace, on three inputs.
 //
-//   executors   skip on        content skip on (rmfx render's default)
+//   executors   skip on        content skip on (rmfx render's default): the GPU leaves the passes
+//                              out, or the CPU where the source's answer has already arrived
+//               GPU only       content skip on, the passes left out by the GPU alone
 //               skip off       --content-skip off: every effect runs
 //               no effects     --effects "": the workspace without its effects (the floor a
 //                              skipped effect can reach)
@@ -73,9 +75,18 @@ Image sceneImage(glm::ivec2 size, bool bright) {
     return image;
 }
 
-enum class Executor { SkipOn, SkipOff, NoEffects };
+enum class Executor { SkipOn, GpuOnly, SkipOff, NoEffects };
 enum class Input { Dark, Bright, Alternating };
-const char* name(Executor e) { return e == Executor::SkipOn ? "skip on" : e == Executor::SkipOff ? "skip off" : "no effects"; }
+const char* name(Executor e) {
+    switch (e) {
+        case Executor::SkipOn: return "skip on";
+        case Executor::GpuOnly: return "GPU only";
+        case Executor::SkipOff: return "skip off";
+        case Executor::NoEffects: return "no effects";
+    }
+    return "?";
+}
+constexpr Executor kExecutors[] = {Executor::SkipOn, Executor::GpuOnly, Executor::SkipOff, Executor::NoEffects};
 const char* name(Input i) { return i == Input::Dark ? "dark" : i == Input::Bright ? "bright" : "alternating"; }
 
 struct Pair {
@@ -130,11 +141,12 @@ int main(int argc, char** argv) {
     const std::string input = *supplied->given.begin();
 
     std::map<Executor, std::unique_ptr<GlExecutor>> executors;
-    for (Executor e : {Executor::SkipOn, Executor::SkipOff, Executor::NoEffects}) {
+    for (Executor e : kExecutors) {
         ExecutorOptions options;
         options.outputs = {ws.outputTargetName()};  // as rmfx render asks for its one image
         options.givenInputs = supplied->given;
         options.contentSkip = e != Executor::SkipOff;
+        if (e == Executor::GpuOnly) options.contentSkipDecision = ExecutorOptions::ContentSkipDecision::GpuOnly;
         if (e == Executor::NoEffects) options.effects = std::vector<std::string>{};
         auto created = GlExecutor::create(std::make_shared<const Workspace>(ws), supplied->viewport, options);
         if (!created) {
@@ -146,10 +158,11 @@ int main(int argc, char** argv) {
 
     std::vector<Pair> pairs;
     for (Input i : {Input::Dark, Input::Bright, Input::Alternating})
-        for (Executor e : {Executor::SkipOn, Executor::SkipOff, Executor::NoEffects}) pairs.push_back({e, i});
+        for (Executor e : kExecutors) pairs.push_back({e, i});
     std::map<std::pair<Executor, Input>, std::vector<double>> roundMedians;  // ms
     std::map<std::pair<Executor, Input>, std::vector<double>> issueCpu;      // ms per frame, renderFrame alone
     std::map<Input, std::pair<int, int>> skippedFrames;                       // skip on: frames skipping any effect, frames
+    std::map<Input, std::vector<double>> notIssued;                           // skip on: passes the CPU left out, per frame
     std::string frameError;
 
     // One round of one pair: its median frame, in milliseconds.
@@ -172,6 +185,7 @@ int main(int argc, char** argv) {
                 auto& [skipping, total] = skippedFrames[pair.input];
                 skipping += executor.contentSkippedEffects().empty() ? 0 : 1;
                 total += 1;
+                notIssued[pair.input].push_back(executor.passesNotIssuedByContentSkip());
             }
         }
         return median(times);
@@ -187,16 +201,17 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "rmfx_bench_content_skip: a frame failed: %s", frameError.c_str());
         return 1;
     }
-    std::printf("round  dark: on/none  bright: on/off  alternating: on/off  (median frame ms: on, off, none per input)\n");
+    std::printf("round  dark: on/none  bright: on/off  alternating: on/off  dark: GPU only/none  (median frame ms: on, off, none per input)\n");
     for (int round = 0; round < a.rounds; ++round) {
         for (size_t p = 0; p < pairs.size(); ++p) {
             const Pair& pair = pairs[(p + round) % pairs.size()];
             roundMedians[{pair.executor, pair.input}].push_back(run(pair, a.frames, true));
         }
         auto ms = [&](Executor e, Input i) { return roundMedians[{e, i}].back(); };
-        std::printf("%5d  %12.3f  %14.3f  %19.3f  ", round + 1, ms(Executor::SkipOn, Input::Dark) / ms(Executor::NoEffects, Input::Dark),
+        std::printf("%5d  %12.3f  %14.3f  %19.3f  %19.3f  ", round + 1, ms(Executor::SkipOn, Input::Dark) / ms(Executor::NoEffects, Input::Dark),
                     ms(Executor::SkipOn, Input::Bright) / ms(Executor::SkipOff, Input::Bright),
-                    ms(Executor::SkipOn, Input::Alternating) / ms(Executor::SkipOff, Input::Alternating));
+                    ms(Executor::SkipOn, Input::Alternating) / ms(Executor::SkipOff, Input::Alternating),
+                    ms(Executor::GpuOnly, Input::Dark) / ms(Executor::NoEffects, Input::Dark));
         for (Input i : {Input::Dark, Input::Bright, Input::Alternating})
             std::printf(" %s %.2f %.2f %.2f", name(i), ms(Executor::SkipOn, i), ms(Executor::SkipOff, i), ms(Executor::NoEffects, i));
         std::printf("\n");
@@ -224,13 +239,22 @@ int main(int argc, char** argv) {
                     spread(ratios(Executor::SkipOn, Executor::SkipOff, i)).c_str(),
                     spread(ratios(Executor::SkipOn, Executor::NoEffects, i)).c_str(), skipping, total, target);
     }
+    // The same with the passes left out by the GPU alone: what the CPU's side adds, where the
+    // source's answer arrives before the passes it decides are issued.
+    std::printf("\n| input | GPU only (ms) | GPU only / off | GPU only / no effects | passes the CPU left out (skip on, median a frame) |\n");
+    std::printf("|---|---|---|---|---|\n");
+    for (Input i : {Input::Dark, Input::Bright, Input::Alternating})
+        std::printf("| %s | %.2f | %s | %s | %.0f |\n", name(i), median(roundMedians[{Executor::GpuOnly, i}]),
+                    spread(ratios(Executor::GpuOnly, Executor::SkipOff, i)).c_str(),
+                    spread(ratios(Executor::GpuOnly, Executor::NoEffects, i)).c_str(), median(notIssued[i]));
     // What the calling thread spends issuing a frame (renderFrame, before glFinish): on a GPU whose
     // passes take microseconds, this is most of a small frame.
     std::printf("\nCPU time to issue a frame (ms, this thread, median of all frames):\n");
-    std::printf("%-12s %8s %9s %11s\n", "input", "skip on", "skip off", "no effects");
+    std::printf("%-12s %8s %9s %9s %11s\n", "input", "skip on", "GPU only", "skip off", "no effects");
     for (Input i : {Input::Dark, Input::Bright, Input::Alternating})
-        std::printf("%-12s %8.3f %9.3f %11.3f\n", name(i), median(issueCpu[{Executor::SkipOn, i}]),
-                    median(issueCpu[{Executor::SkipOff, i}]), median(issueCpu[{Executor::NoEffects, i}]));
+        std::printf("%-12s %8.3f %9.3f %9.3f %11.3f\n", name(i), median(issueCpu[{Executor::SkipOn, i}]),
+                    median(issueCpu[{Executor::GpuOnly, i}]), median(issueCpu[{Executor::SkipOff, i}]),
+                    median(issueCpu[{Executor::NoEffects, i}]));
     // Where a dark frame's time goes: each pass's GPU time (timer queries), skip on against no effects.
     std::printf("\nGPU time of each pass on a dark frame (ms, timer queries; median of 5 frames):\n");
     std::map<std::string, std::map<Executor, double>> passMs;

@@ -204,8 +204,13 @@ void GlContentSkip::planConsumers(const std::vector<GpuPass*>& schedule) {
 bool GlContentSkip::beginConsumerDraw(size_t position, bool withoutEffects) {
     for (const Consumer& consumer : consumers_) {
         if (consumer.position != position) continue;
-        const Probe& probe = probes_[consumer.probe];
+        Probe& probe = probes_[consumer.probe];
         if (!probe.issued) return !withoutEffects;
+        switch (answerOf(probe)) {
+            case Answer::Nothing: return withoutEffects;
+            case Answer::Something: return !withoutEffects;
+            case Answer::Pending: break;
+        }
         glBeginConditionalRender(probe.queries[slot_].get(), withoutEffects ? GL_QUERY_WAIT_INVERTED : GL_QUERY_WAIT);
         consumerCondition_ = true;
         return true;
@@ -219,7 +224,29 @@ void GlContentSkip::endConsumerDraw() {
 }
 
 void GlContentSkip::beginFrame() {
-    for (Probe& p : probes_) p.issued = false;
+    for (Probe& p : probes_) {
+        p.issued = false;
+        p.answer = Answer::Pending;
+    }
+    conditionOf_ = -1;
+    notIssued_ = 0;
+}
+
+GlContentSkip::Answer GlContentSkip::answerOf(Probe& probe) {
+    if (!probe.issued || probe.answer != Answer::Pending || decision_ == FramePlanOptions::ContentSkipDecision::GpuOnly)
+        return probe.answer;
+    const GLuint query = probe.queries[slot_].get();
+    GLuint available = decision_ == FramePlanOptions::ContentSkipDecision::CpuWaits ? 1 : 0;
+    if (!available) glGetQueryObjectuiv(query, GL_QUERY_RESULT_AVAILABLE, &available);
+    if (!available) return Answer::Pending;
+    GLuint passed = 1;
+    glGetQueryObjectuiv(query, GL_QUERY_RESULT, &passed);
+    probe.answer = passed ? Answer::Something : Answer::Nothing;
+    return probe.answer;
+}
+
+void GlContentSkip::endCondition() {
+    if (conditionOf_ >= 0) glEndConditionalRender();
     conditionOf_ = -1;
 }
 
@@ -253,22 +280,34 @@ void GlContentSkip::issueProbe(Probe& probe) {
     glBindVertexArray(0);
     glBindSampler(0, 0);
     probe.issued = true;
+    // Sent now, so that the answer may be in before the passes it decides are issued.
+    if (decision_ == FramePlanOptions::ContentSkipDecision::CpuWhenKnown) glFlush();
 }
 
-void GlContentSkip::beforePass(size_t index) {
+bool GlContentSkip::beforePass(size_t index) {
     const int p = probeAt(index);
-    if (p < 0 || conditionOf_ == p) return;
+    if (p < 0) return true;
     Probe& probe = probes_[static_cast<size_t>(p)];
     if (!probe.issued) issueProbe(probe);
-    if (!probe.issued) return;
+    if (!probe.issued) return true;
+    const Answer answer = answerOf(probe);
+    if (answer != Answer::Pending) {
+        endCondition();
+        if (answer == Answer::Nothing) ++notIssued_;
+        return answer == Answer::Something;
+    }
+    if (conditionOf_ == p) return true;
     glBeginConditionalRender(probe.queries[slot_].get(), GL_QUERY_WAIT);
     conditionOf_ = p;
+    return true;
 }
 
 unsigned GlContentSkip::conditionOf(size_t index) const {
     const int p = probeAt(index);
-    if (p < 0 || !probes_[static_cast<size_t>(p)].issued) return 0;
-    return probes_[static_cast<size_t>(p)].queries[slot_].get();
+    if (p < 0) return 0;
+    const Probe& probe = probes_[static_cast<size_t>(p)];
+    if (!probe.issued || probe.answer == Answer::Something) return 0;
+    return probe.queries[slot_].get();
 }
 
 void GlContentSkip::afterPass(size_t index) {
@@ -278,12 +317,12 @@ void GlContentSkip::afterPass(size_t index) {
     if (!probe.issued) return;
     // An effect's last pass ends the condition: what it hands on is cleared under the inverse.
     const bool ends = endsAnEffect(index);
-    if (spanning_ && !ends && probeAt(index + 1) == p) return;
-    if (conditionOf_ >= 0) glEndConditionalRender();
-    conditionOf_ = -1;
-    if (!ends) return;
+    if (spanning_ && !ends && probeAt(index + 1) == p && conditionOf_ == p) return;
+    endCondition();
+    if (!ends || probe.answer == Answer::Something) return;
     const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    glBeginConditionalRender(probe.queries[slot_].get(), GL_QUERY_WAIT_INVERTED);
+    const bool conditional = probe.answer == Answer::Pending;
+    if (conditional) glBeginConditionalRender(probe.queries[slot_].get(), GL_QUERY_WAIT_INVERTED);
     for (const ActiveEffect& e : effects_) {
         if (e.last != index) continue;
         for (const GpuTarget* t : e.handedOn)
@@ -293,7 +332,7 @@ void GlContentSkip::afterPass(size_t index) {
                 glClearNamedFramebufferfv(t->resource->framebuffers[t->resource->writeBuffer()].get(), GL_COLOR, 0, zero);
             }
     }
-    glEndConditionalRender();
+    if (conditional) glEndConditionalRender();
     for (const ActiveEffect& e : effects_) {
         if (e.last != index) continue;
         for (const GpuTarget* t : e.handedOn)
@@ -303,6 +342,7 @@ void GlContentSkip::afterPass(size_t index) {
 }
 
 void GlContentSkip::endFrame() {
+    lastNotIssued_ = notIssued_;
     if (effects_.empty()) return;
     lastFrameSlot_ = slot_;
     slot_ = (slot_ + 1) % 3;

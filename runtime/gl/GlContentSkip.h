@@ -11,6 +11,9 @@
 // Passes outside the effects that only they read, between the source and the effects (hdr_lighting's
 // star_source, the blur of the bright pass that bloom and star start from), are feeders: drawn
 // under the same condition, since where it fails nothing reads what they write.
+// The probe is flushed to the GPU at once, and each later pass under its condition asks whether
+// the answer has arrived, without waiting: once it has, the CPU leaves the passes out itself (or
+// draws them without a condition), which saves issuing them; until then the GPU decides.
 // Needs a current GL 4.5 context.
 
 #include <map>
@@ -22,6 +25,7 @@
 #include "core/Result.h"
 #include "gl/GlHandles.h"
 #include "gl/GlRenderTargets.h"
+#include "graph/FramePlan.h"
 #include "model/Workspace.h"
 
 namespace rmfx {
@@ -42,13 +46,19 @@ public:
     // begin and end cost the driver a wait on the query): not when something else draws between
     // passes that must run whatever the condition (the health check).
     void setSpanning(bool spanning) { spanning_ = spanning; }
+    void setDecision(FramePlanOptions::ContentSkipDecision decision) { decision_ = decision; }
 
     void beginFrame();
-    // Around scheduled pass `index` (its position in the schedule given to plan()).
-    void beforePass(size_t index);
+    // Around scheduled pass `index` (its position in the schedule given to plan()). beforePass
+    // returns false when the CPU knows the pass is left out this frame: it is then not issued at
+    // all (afterPass is still called).
+    bool beforePass(size_t index);
     void afterPass(size_t index);
+    // How many passes of the last finished frame the CPU left out (beforePass false).
+    int passesNotIssued() const { return lastNotIssued_; }
     // The query whose answer decides whether scheduled pass `index` is drawn this frame (between
-    // beforePass and the end of the frame), for draws that look at what it wrote; 0: it is drawn.
+    // beforePass and the end of the frame), for draws that look at what it wrote; 0: it is drawn
+    // (or the CPU already knows it is).
     unsigned conditionOf(size_t index) const;
     void endFrame();
 
@@ -84,11 +94,13 @@ public:
     const std::map<std::string, std::string>& skipped(bool wait);
 
 private:
+    enum class Answer { Pending, Nothing, Something };  // as far as the CPU knows this frame
     struct Probe {
         GpuTarget* source = nullptr;
         glm::bvec4 channels{false};
         QueryHandle queries[3];
         bool issued = false;  // this frame
+        Answer answer = Answer::Pending;
     };
     struct ActiveEffect {
         const Effect* effect = nullptr;
@@ -99,6 +111,8 @@ private:
 
     GlContentSkip() = default;
     void issueProbe(Probe& probe);
+    Answer answerOf(Probe& probe);  // asks the GPU without waiting (but with CpuWaits)
+    void endCondition();
     void planFeeders(const std::vector<GpuPass*>& schedule, const std::vector<std::string>& outputs);
     void planConsumers(const std::vector<GpuPass*>& schedule);
     int probeAt(size_t index) const;  // the probe whose condition scheduled pass `index` is drawn under, or -1
@@ -122,7 +136,9 @@ private:
     int slot_ = 0;                   // the query of this frame in each probe's ring
     int lastFrameSlot_ = -1;         // the last finished frame's, -1 before the first
     bool spanning_ = true;
+    FramePlanOptions::ContentSkipDecision decision_ = FramePlanOptions::ContentSkipDecision::CpuWhenKnown;
     int conditionOf_ = -1;           // the probe whose condition is active, or -1
+    int notIssued_ = 0, lastNotIssued_ = 0;
     std::map<std::string, std::string> skipped_;
 };
 

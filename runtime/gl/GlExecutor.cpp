@@ -295,6 +295,7 @@ struct GlExecutor::Build {
             auto skip = GlContentSkip::create();
             if (!skip) return Failure::failure({workspaceError(ws, "", skip.error())});
             impl->contentSkip = std::move(*skip);
+            impl->contentSkip->setDecision(options.contentSkipDecision);
         }
         impl->selectVariant();
         glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
@@ -344,7 +345,18 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
         GLuint framebuffer = memory.framebuffers[memory.writeBuffer()].get();
         // Before the pass's condition: the inspections it flushes are of earlier passes.
         if (s.healthCheck) s.healthCheck->beforeWriting(memory.textures[memory.writeBuffer()].get());
-        if (s.contentSkip) s.contentSkip->beforePass(position);
+        if (s.contentSkip && !s.contentSkip->beforePass(position)) {
+            // Content skip knows already that nothing of the pass is drawn this frame.
+            target.writtenThisFrame = true;
+            s.lastFramePasses.push_back(pass.name);
+            s.contentSkip->afterPass(position);
+            if (s.healthCheck)  // reported clean: its inspection is drawn under the failed condition
+                s.healthCheck->afterPass(position, pass.name, target.name, memory.textures[memory.writeBuffer()].get(),
+                                         memory.spec.size, memory.spec.format, {}, gp.whyNotCounting,
+                                         s.contentSkip->conditionOf(position));
+            s.timers.passDone(pass.name);
+            continue;
+        }
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
         glViewport(0, 0, memory.spec.size.x, memory.spec.size.y);
         applyRenderState(pass, s.compatibility);
@@ -568,6 +580,10 @@ std::map<std::string, std::set<std::string>> GlExecutor::passesDrawnOnlyForEffec
     if (!s.contentSkip) return out;
     for (const GlContentSkip::Feeder& f : s.contentSkip->feeders()) out[s.schedule[f.position]->pass->name] = f.effects;
     return out;
+}
+
+int GlExecutor::passesNotIssuedByContentSkip() const {
+    return impl_->contentSkip ? impl_->contentSkip->passesNotIssued() : 0;
 }
 
 const std::map<std::string, std::string>& GlExecutor::contentSkippedEffects(bool wait) {

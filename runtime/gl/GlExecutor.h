@@ -104,6 +104,9 @@ public:
     // The passes outside the effects drawn only where effects with a source run, since only they
     // read what those passes write (gl/GlContentSkip.h's feeders), each with the effects.
     std::map<std::string, std::set<std::string>> passesDrawnOnlyForEffects() const;
+    // How many passes of the last frame content skip left out on the CPU, the source's answer
+    // having arrived before they were issued (the others it skipped, the GPU did).
+    int passesNotIssuedByContentSkip() const;
     // With FramePlanOptions::checkHealth, what the last frame's passes left in their targets
     // (model/TargetHealth.h); null otherwise or before the first frame.
     const FrameHealth* frameHealth() const;

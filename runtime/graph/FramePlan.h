@@ -37,6 +37,13 @@ struct FramePlanOptions {
     // <effect source>: skip on the GPU the effects whose source holds nothing (rmfx render
     // --content-skip off runs them all the same).
     bool contentSkip = true;
+    // Who leaves the skipped passes out (gl/GlContentSkip.h). CpuWhenKnown: the GPU through
+    // conditional rendering, but a pass that comes after the source's answer has arrived (asked
+    // for without waiting) is left out, or drawn without a condition, by the CPU itself.
+    // GpuOnly: always the GPU. CpuWaits: the CPU waits for the answer right after the source is
+    // measured (a stall: for tests that must take the CPU's side).
+    enum class ContentSkipDecision { CpuWhenKnown, GpuOnly, CpuWaits };
+    ContentSkipDecision contentSkipDecision = ContentSkipDecision::CpuWhenKnown;
     // rmfx render --check: after each pass, inspect on the GPU the target it wrote for NaN, ±Inf,
     // negatives and values at its format's largest (gl/GlHealthCheck.h, model/TargetHealth.h).
     bool checkHealth = false;

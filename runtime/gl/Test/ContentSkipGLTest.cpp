@@ -22,12 +22,24 @@ namespace rmfx::test {
 namespace {
 
 using Skipped = std::map<std::string, std::string>;
+using Decision = ExecutorOptions::ContentSkipDecision;
 
-std::unique_ptr<GlExecutor> executorFor(const Workspace& ws, glm::ivec2 size, const std::set<std::string>& given, bool skip) {
+const char* decisionName(Decision d) {
+    switch (d) {
+        case Decision::CpuWhenKnown: return "CpuWhenKnown";
+        case Decision::GpuOnly: return "GpuOnly";
+        case Decision::CpuWaits: return "CpuWaits";
+    }
+    return "?";
+}
+
+std::unique_ptr<GlExecutor> executorFor(const Workspace& ws, glm::ivec2 size, const std::set<std::string>& given, bool skip,
+                                        Decision decision = Decision::CpuWhenKnown) {
     ExecutorOptions options;
     options.outputs = {"output"};
     options.givenInputs = given;
     options.contentSkip = skip;
+    options.contentSkipDecision = decision;
     auto created = GlExecutor::create(std::make_shared<const Workspace>(ws), size, options);
     EXPECT_TRUE(created) << formatAll(created.diagnostics());
     return created ? std::move(*created) : nullptr;
@@ -65,14 +77,16 @@ DimAndBright dimAndBright(int w, int h) {
 
 // Runs `ws` on dim and bright frames, alternating, so that adaptation carries between frames of
 // both kinds, with skipping on and off, and compares every frame; dim frames must skip `effects`.
-void expectAlternatingFramesBitIdentical(Workspace& ws, const std::set<std::string>& effects, const std::string& label) {
+// With CpuWaits, dim frames must leave out `notIssued` passes on the CPU.
+void expectAlternatingFramesBitIdentical(Workspace& ws, const std::set<std::string>& effects, const std::string& label,
+                                         Decision decision = Decision::CpuWhenKnown, int notIssued = 0) {
     const int w = 64, h = 48;
     const DimAndBright images = dimAndBright(w, h);
     ScratchDir dir;
     ASSERT_TRUE(writeImage(dir / "dim.exr", images.dim));
     Result<SuppliedInputs> supplied = supplyInputs(ws, {parseInputArgument((dir / "dim.exr").string())}, std::nullopt);
     ASSERT_TRUE(supplied) << formatAll(supplied.diagnostics());
-    auto on = executorFor(ws, {w, h}, supplied->given, true);
+    auto on = executorFor(ws, {w, h}, supplied->given, true, decision);
     auto off = executorFor(ws, {w, h}, supplied->given, false);
     ASSERT_TRUE(on && off);
     const bool frames[] = {false, true, false, false, true, true, false};  // bright?
@@ -88,25 +102,40 @@ void expectAlternatingFramesBitIdentical(Workspace& ws, const std::set<std::stri
         if (k == 0) {
             EXPECT_EQ(skipped, effects) << what;
         }
+        // Which side left the passes out: the GPU alone, or the CPU, which waited for the answer.
+        if (decision == Decision::GpuOnly || frames[k]) {
+            EXPECT_EQ(on->passesNotIssuedByContentSkip(), 0) << what;
+        }
+        if (decision == Decision::CpuWaits && !frames[k]) {
+            EXPECT_EQ(on->passesNotIssuedByContentSkip(), notIssued) << what;
+        }
         if (frames[k]) {
             EXPECT_TRUE(skipped.empty()) << what << ": a light far above 1 runs every effect";
         }
     }
 }
 
-class HdrLightingContentSkipGLTest : public GlTest, public ::testing::WithParamInterface<HdrEncoding> {};
+// Each encoding, with the passes left out by the GPU alone (conditional rendering) and by the CPU
+// (which waits for the source's answer here, to be sure to take that side; by default it takes
+// it only where the answer has arrived).
+class HdrLightingContentSkipGLTest : public GlTest, public ::testing::WithParamInterface<std::tuple<HdrEncoding, Decision>> {};
 
 TEST_P(HdrLightingContentSkipGLTest, DimBrightAndAlternatingFramesAreBitIdenticalToRunningEverything) {
-    const int encoding = static_cast<int>(GetParam());
-    std::unique_ptr<Workspace> ws = effectWorkspace("hdr_lighting.xml", {{"HDR_Encoding", std::to_string(encoding)}});
+    const auto [encoding, decision] = GetParam();
+    std::unique_ptr<Workspace> ws = effectWorkspace("hdr_lighting.xml", {{"HDR_Encoding", std::to_string(static_cast<int>(encoding))}});
     ASSERT_TRUE(ws);
-    expectAlternatingFramesBitIdentical(*ws, {"bloom", "star"}, hdrEncodingName(GetParam()));
+    // star_source, bloom's 4 passes and star's 25.
+    expectAlternatingFramesBitIdentical(*ws, {"bloom", "star"}, std::string(hdrEncodingName(encoding)) + ", " + decisionName(decision),
+                                        decision, 30);
 }
 
 INSTANTIATE_TEST_SUITE_P(Encodings, HdrLightingContentSkipGLTest,
-                         ::testing::Values(HdrEncoding::Float, HdrEncoding::Rgb16, HdrEncoding::Rgb32, HdrEncoding::Rgb9e5,
-                                           HdrEncoding::Rgbe8, HdrEncoding::Rgba8x64),
-                         [](const auto& info) { return std::string(hdrEncodingName(info.param)); });
+                         ::testing::Combine(::testing::Values(HdrEncoding::Float, HdrEncoding::Rgb16, HdrEncoding::Rgb32,
+                                                              HdrEncoding::Rgb9e5, HdrEncoding::Rgbe8, HdrEncoding::Rgba8x64),
+                                            ::testing::Values(Decision::GpuOnly, Decision::CpuWaits)),
+                         [](const auto& info) {
+                             return std::string(hdrEncodingName(std::get<0>(info.param))) + "_" + decisionName(std::get<1>(info.param));
+                         });
 
 // A bright pass keeps what exceeds 1; the glow effect spreads it over 3x3 pixels and the final
 // pass adds it to the scene. The scene is black but for one pixel.
@@ -220,27 +249,30 @@ TEST_F(GlowContentSkipGLTest, APassReadingASkippedEffectIsDrawnCompiledWithoutIt
                 "c = texelFetch(Scene, p, 0); if (RMFX_EFFECT_glow) c += texelFetch(Glow, p, 0) + vec4(0.0, 0.0, 0.0, 0.25); }");
     std::unique_ptr<Workspace> ws = workspaceFromText(xml);
     ASSERT_TRUE(ws);
-    auto on = executorFor(*ws, {37, 23}, {}, true);
-    auto off = executorFor(*ws, {37, 23}, {}, false);
-    ASSERT_TRUE(on && off);
-    auto alphaOf = [&](GlExecutor& e, float value) {
-        EXPECT_TRUE(e.setVariable("Pixel_X", Value::ofInt(5)));
-        EXPECT_TRUE(e.setVariable("Pixel_Y", Value::ofInt(7)));
-        EXPECT_TRUE(e.setVariable("Value", Value::ofFloat(value)));
-        Diagnostics frame = e.renderFrame({0.0f, 1.0f / 24.0f}).takeDiagnostics();
-        EXPECT_FALSE(hasErrors(frame)) << formatAll(frame);
-        Image out = readBack(e, "output");
-        std::set<float> alphas;
-        for (int y = 0; y < out.height; ++y)
-            for (int x = 0; x < out.width; ++x) alphas.insert(out.at(x, y, 3));
-        return alphas;
-    };
-    EXPECT_EQ(alphaOf(*on, 0.5f), (std::set<float>{1.0f})) << "dim: drawn without the effect";
-    EXPECT_EQ(on->contentSkippedEffects().count("glow"), 1u);
-    EXPECT_EQ(alphaOf(*on, 3.0f), (std::set<float>{1.25f})) << "bright: drawn as compiled";
-    EXPECT_TRUE(on->contentSkippedEffects().empty());
-    EXPECT_EQ(alphaOf(*on, 0.5f), (std::set<float>{1.0f})) << "dim again";
-    EXPECT_EQ(alphaOf(*off, 0.5f), (std::set<float>{1.25f})) << "--content-skip off: as compiled";
+    for (Decision decision : {Decision::GpuOnly, Decision::CpuWaits}) {
+        SCOPED_TRACE(decisionName(decision));
+        auto on = executorFor(*ws, {37, 23}, {}, true, decision);
+        auto off = executorFor(*ws, {37, 23}, {}, false);
+        ASSERT_TRUE(on && off);
+        auto alphaOf = [&](GlExecutor& e, float value) {
+            EXPECT_TRUE(e.setVariable("Pixel_X", Value::ofInt(5)));
+            EXPECT_TRUE(e.setVariable("Pixel_Y", Value::ofInt(7)));
+            EXPECT_TRUE(e.setVariable("Value", Value::ofFloat(value)));
+            Diagnostics frame = e.renderFrame({0.0f, 1.0f / 24.0f}).takeDiagnostics();
+            EXPECT_FALSE(hasErrors(frame)) << formatAll(frame);
+            Image out = readBack(e, "output");
+            std::set<float> alphas;
+            for (int y = 0; y < out.height; ++y)
+                for (int x = 0; x < out.width; ++x) alphas.insert(out.at(x, y, 3));
+            return alphas;
+        };
+        EXPECT_EQ(alphaOf(*on, 0.5f), (std::set<float>{1.0f})) << "dim: drawn without the effect";
+        EXPECT_EQ(on->contentSkippedEffects().count("glow"), 1u);
+        EXPECT_EQ(alphaOf(*on, 3.0f), (std::set<float>{1.25f})) << "bright: drawn as compiled";
+        EXPECT_TRUE(on->contentSkippedEffects().empty());
+        EXPECT_EQ(alphaOf(*on, 0.5f), (std::set<float>{1.0f})) << "dim again";
+        EXPECT_EQ(alphaOf(*off, 0.5f), (std::set<float>{1.25f})) << "--content-skip off: as compiled";
+    }
 }
 
 // kGlow with spread_pass between the bright pass and the glow, which reads it instead of
@@ -319,33 +351,37 @@ class ContentSkipHealthGLTest : public GlTest, public ::testing::WithParamInterf
 TEST_P(ContentSkipHealthGLTest, APassLeftOutIsReportedClean) {
     std::unique_ptr<Workspace> ws = workspaceFromText(glowWithAFeeder());
     ASSERT_TRUE(ws);
-    ExecutorOptions options;
-    options.outputs = {"output"};
-    options.checkHealth = true;
-    options.healthCheckMethod = GetParam();
-    auto created = GlExecutor::create(std::make_shared<const Workspace>(*ws), {37, 23}, options);
-    ASSERT_TRUE(created) << formatAll(created.diagnostics());
-    GlExecutor& e = **created;
-    auto infinitiesOf = [&](const std::string& pass) -> long long {
-        const FrameHealth* health = e.frameHealth();
-        if (!health) return -1;
-        for (const PassHealth& p : health->passes)
-            if (p.pass == pass) return p.counts[static_cast<size_t>(HealthKind::PositiveInfinity)];
-        return -1;
-    };
-    ASSERT_TRUE(e.setVariable("Pixel_X", Value::ofInt(4)));
-    ASSERT_TRUE(e.setVariable("Kind", Value::ofInt(2)));
-    ASSERT_TRUE(e.renderFrame({0.0f, 1.0f / 24.0f}));
-    EXPECT_TRUE(e.contentSkippedEffects().empty());
-    EXPECT_EQ(infinitiesOf("spread_pass"), 1) << "bright: spread_pass copies the +Inf";
-    EXPECT_EQ(infinitiesOf("glow_pass"), 6) << "the 3x2 pixels around it at the bottom edge";
-    ASSERT_TRUE(e.setVariable("Kind", Value::ofInt(0)));
-    ASSERT_TRUE(e.setVariable("Value", Value::ofFloat(0.5f)));
-    ASSERT_TRUE(e.renderFrame({1.0f / 24.0f, 1.0f / 24.0f}));
-    EXPECT_EQ(e.contentSkippedEffects().count("glow"), 1u);
-    EXPECT_EQ(infinitiesOf("spread_pass"), 0) << "dim: spread_pass did not run";
-    EXPECT_EQ(infinitiesOf("glow_pass"), 0);
-    EXPECT_TRUE(e.frameHealth()->findings.empty());
+    for (Decision decision : {Decision::GpuOnly, Decision::CpuWaits}) {
+        SCOPED_TRACE(decisionName(decision));
+        ExecutorOptions options;
+        options.outputs = {"output"};
+        options.checkHealth = true;
+        options.healthCheckMethod = GetParam();
+        options.contentSkipDecision = decision;
+        auto created = GlExecutor::create(std::make_shared<const Workspace>(*ws), {37, 23}, options);
+        ASSERT_TRUE(created) << formatAll(created.diagnostics());
+        GlExecutor& e = **created;
+        auto infinitiesOf = [&](const std::string& pass) -> long long {
+            const FrameHealth* health = e.frameHealth();
+            if (!health) return -1;
+            for (const PassHealth& p : health->passes)
+                if (p.pass == pass) return p.counts[static_cast<size_t>(HealthKind::PositiveInfinity)];
+            return -1;
+        };
+        ASSERT_TRUE(e.setVariable("Pixel_X", Value::ofInt(4)));
+        ASSERT_TRUE(e.setVariable("Kind", Value::ofInt(2)));
+        ASSERT_TRUE(e.renderFrame({0.0f, 1.0f / 24.0f}));
+        EXPECT_TRUE(e.contentSkippedEffects().empty());
+        EXPECT_EQ(infinitiesOf("spread_pass"), 1) << "bright: spread_pass copies the +Inf";
+        EXPECT_EQ(infinitiesOf("glow_pass"), 6) << "the 3x2 pixels around it at the bottom edge";
+        ASSERT_TRUE(e.setVariable("Kind", Value::ofInt(0)));
+        ASSERT_TRUE(e.setVariable("Value", Value::ofFloat(0.5f)));
+        ASSERT_TRUE(e.renderFrame({1.0f / 24.0f, 1.0f / 24.0f}));
+        EXPECT_EQ(e.contentSkippedEffects().count("glow"), 1u);
+        EXPECT_EQ(infinitiesOf("spread_pass"), 0) << "dim: spread_pass did not run";
+        EXPECT_EQ(infinitiesOf("glow_pass"), 0);
+        EXPECT_TRUE(e.frameHealth()->findings.empty());
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, ContentSkipHealthGLTest,
