@@ -60,18 +60,26 @@ void main() {
 }
 )";
 
-// One fragment per pixel, first: a pixel whose channels all lie within what the format holds
-// without a finding is discarded, the others pass an occlusion query, and only where one passed
-// are the count and its record drawn (under the query's condition). NaN fails every comparison.
-// Cheap where nothing is found, as is usual: a software rasteriser runs every line of a shader
-// for every fragment, taken or not, so the atomics above cost it even where no pixel records.
+// First, a screen: one fragment per 2x2 pixels (the last row and column read again where the size
+// is odd), discarded when the channels of all four lie within what the format holds without a
+// finding; the others pass an occlusion query, and only where one passed are the count and its
+// record drawn (under the query's condition). NaN fails every comparison. Cheap where nothing
+// is found, as is usual: a software rasteriser runs every line of a shader for every fragment,
+// taken or not, so the atomics above cost it even where no pixel records (and four pixels a
+// fragment measured faster on llvmpipe than one or sixteen: docs/performance.md).
+constexpr int kScreenBlock = 2;
 const char* const screenSource = R"(#version 450 core
 uniform sampler2D Target;
 uniform vec4 Lowest;   // per channel: the smallest value that is no finding
 uniform vec4 Highest;  // the largest
+bool clean(ivec2 p, ivec2 last) {
+    vec4 v = texelFetch(Target, min(p, last), 0);
+    return all(greaterThanEqual(v, Lowest)) && all(lessThanEqual(v, Highest));
+}
 void main() {
-    vec4 v = texelFetch(Target, ivec2(gl_FragCoord.xy), 0);
-    if (all(greaterThanEqual(v, Lowest)) && all(lessThanEqual(v, Highest))) discard;
+    ivec2 last = textureSize(Target, 0) - 1;
+    ivec2 p = ivec2(gl_FragCoord.xy) * 2;
+    if (clean(p, last) && clean(p + ivec2(1, 0), last) && clean(p + ivec2(0, 1), last) && clean(p + ivec2(1, 1), last)) discard;
 }
 )";
 
@@ -232,6 +240,7 @@ void GlHealthCheck::overTarget(const Inspection& i) {
 
 void GlHealthCheck::drawScreen(const Inspection& i) {
     overTarget(i);
+    glViewport(0, 0, (i.size.x + kScreenBlock - 1) / kScreenBlock, (i.size.y + kScreenBlock - 1) / kScreenBlock);
     glUseProgram(screen_.get());
     constexpr float infinity = std::numeric_limits<float>::infinity();
     glm::vec4 lowest(-infinity), highest(infinity);

@@ -478,6 +478,52 @@ TEST_P(HealthCheckGLTest, HdrLightingAsShippedHasNoNanOrInfinity) {
         EXPECT_FALSE(healthKindIsError(f.kind)) << describeFinding(f);
 }
 
+// A NaN alone at each pixel of an odd-sized target in turn is found there, once (the check after a
+// pass screens the target a few pixels a fragment before it counts).
+TEST_P(HealthCheckGLTest, ALoneNanIsFoundAtEveryPixel) {
+    std::unique_ptr<Workspace> ws = workspaceFromText(R"(<workspace version="1" name="lone" size="5x3">
+  <int name="At_X" value="0"/>
+  <int name="At_Y" value="0"/>
+  <target name="t" format="rgba32f"/>
+  <pass name="lone" target="t"><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform int At_X;
+uniform int At_Y;
+out vec4 c;
+void main() { c = ivec2(gl_FragCoord.xy) == ivec2(At_X, At_Y) ? vec4(0.5, uintBitsToFloat(0x7fc00000u), 0.5, 1.0) : vec4(0.5); }
+]]></shader></pass>
+  <pass name="final"><sampler name="T" target="t" filter="nearest"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D T;
+out vec4 c;
+void main() { c = vec4(texelFetch(T, ivec2(gl_FragCoord.xy), 0).r); }
+]]></shader></pass>
+  <output format="rgba32f" transform="none"/>
+</workspace>
+)");
+    ASSERT_TRUE(ws);
+    ExecutorOptions options;
+    options.checkHealth = true;
+    options.healthCheckMethod = GetParam();
+    auto created = GlExecutor::create(std::make_shared<const Workspace>(*ws), {5, 3}, options);
+    ASSERT_TRUE(created) << formatAll(created.diagnostics());
+    GlExecutor& e = **created;
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 5; ++x) {
+            ASSERT_TRUE(e.setVariable("At_X", Value::ofInt(x)));
+            ASSERT_TRUE(e.setVariable("At_Y", Value::ofInt(y)));
+            ASSERT_TRUE(e.renderFrame({0.0f, 1.0f / 60.0f}));
+            const FrameHealth* health = e.frameHealth();
+            ASSERT_TRUE(health);
+            ASSERT_EQ(health->findings.size(), 1u) << x << "," << y;
+            const HealthFinding& f = health->findings.front();
+            EXPECT_EQ(f.kind, HealthKind::NaN);
+            EXPECT_EQ(f.pass, "lone");
+            EXPECT_EQ(f.count, 1) << x << "," << y;
+            EXPECT_EQ(f.pixel, glm::ivec2(x, 3 - 1 - y)) << "reading coordinates";
+        }
+}
+
 // What lies just inside and just outside each kind, each value alone in a target of its own (the
 // check after a pass first screens the whole target, and counts only in one where the screen let
 // something through: a finding elsewhere in the same target would hide a screen that missed it).
