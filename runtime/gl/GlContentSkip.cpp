@@ -33,6 +33,12 @@ std::string compileStage(GLuint shader, const char* source) {
     return log;
 }
 
+// Whether `pass` samples `target` as this frame leaves it (not frame="previous").
+bool readsThisFrame(const Pass& pass, const std::string& target) {
+    return std::any_of(pass.samplers.begin(), pass.samplers.end(),
+                       [&](const Sampler& s) { return s.target == target && !s.previousFrame; });
+}
+
 std::string channelNames(glm::bvec4 channels) {
     static const char* const names[4] = {"red", "green", "blue", "alpha"};
     std::vector<std::string> chosen;
@@ -97,8 +103,7 @@ void GlContentSkip::plan(const Workspace& ws, const std::vector<GpuPass*>& sched
         for (const std::string& t : written) {
             bool handed = outputs.empty() || std::find(outputs.begin(), outputs.end(), t) != outputs.end();
             for (size_t i = 0; i < schedule.size() && !handed; ++i)
-                if (effectOfPass_[i] != static_cast<int>(effects_.size()))
-                    for (const Sampler& s : schedule[i]->pass->samplers) handed = handed || (s.target == t && !s.previousFrame);
+                handed = effectOfPass_[i] != static_cast<int>(effects_.size()) && readsThisFrame(*schedule[i]->pass, t);
             if (handed)
                 if (GpuTarget* target = targets.find(t)) active.handedOn.push_back(target);
         }
@@ -151,9 +156,8 @@ void GlContentSkip::planFeeders(const std::vector<GpuPass*>& schedule, const std
                 feeds = false;
                 continue;
             }
-            bool reads = false;
-            for (const Sampler& s : schedule[j]->pass->samplers) reads = reads || s.target == written;
-            if (!reads) continue;
+            // (What is read as last frame's was ruled out above.)
+            if (!readsThisFrame(*schedule[j]->pass, written)) continue;
             read = true;
             const int readerProbe = probeAt(j);
             feeds = j > i && readerProbe >= 0 && (probe < 0 || probe == readerProbe);
@@ -187,10 +191,9 @@ void GlContentSkip::planConsumers(const std::vector<GpuPass*>& schedule) {
         std::set<size_t> probes;
         for (const ActiveEffect& e : effects_) {
             if (i <= e.last) continue;
-            bool reads = false;
-            for (const Sampler& s : schedule[i]->pass->samplers)
-                for (const GpuTarget* t : e.handedOn) reads = reads || (s.target == t->name && !s.previousFrame);
-            if (!reads) continue;
+            if (std::none_of(e.handedOn.begin(), e.handedOn.end(),
+                             [&](const GpuTarget* t) { return readsThisFrame(*schedule[i]->pass, t->name); }))
+                continue;
             consumer.effects.insert(e.effect->name);
             probes.insert(e.probe);
         }

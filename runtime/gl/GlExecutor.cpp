@@ -345,82 +345,76 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
         GLuint framebuffer = memory.framebuffers[memory.writeBuffer()].get();
         // Before the pass's condition: the inspections it flushes are of earlier passes.
         if (s.healthCheck) s.healthCheck->beforeWriting(memory.textures[memory.writeBuffer()].get());
-        if (s.contentSkip && !s.contentSkip->beforePass(position)) {
-            // Content skip knows already that nothing of the pass is drawn this frame.
-            target.writtenThisFrame = true;
-            s.lastFramePasses.push_back(pass.name);
-            s.contentSkip->afterPass(position);
-            if (s.healthCheck)  // reported clean: its inspection is drawn under the failed condition
-                s.healthCheck->afterPass(position, pass.name, target.name, memory.textures[memory.writeBuffer()].get(),
-                                         memory.spec.size, memory.spec.format, {}, gp.whyNotCounting,
-                                         s.contentSkip->conditionOf(position));
-            s.timers.passDone(pass.name);
-            continue;
-        }
-        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-        glViewport(0, 0, memory.spec.size.x, memory.spec.size.y);
-        applyRenderState(pass, s.compatibility);
-        if (pass.clear.color) glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, glm::value_ptr(*pass.clear.color));
-        if (pass.clear.depth) {
-            glDepthMask(GL_TRUE);
-            glClearNamedFramebufferfv(framebuffer, GL_DEPTH, 0, &*pass.clear.depth);
-            glDepthMask(pass.depth.write ? GL_TRUE : GL_FALSE);
-        }
-        const auto named = pass.camera.empty() ? namedCameras.end() : namedCameras.find(pass.camera);
-        const FrameCamera& passCamera = named == namedCameras.end() ? camera : named->second;
-        FrameInputs passInputs = inputs;
-        passInputs.camera = &passCamera;
-        // The pass's draw with `program`: the pass as compiled, or content skip's version of it
-        // without the effects it reads.
-        auto drawWith = [&](const GpuPass& program) {
-            glUseProgram(program.program.get());
-            uploadUniforms(program, passInputs);
-            if (s.compatibility) loadFixedFunctionState(passCamera.projection, passCamera.view * program.model);
-            healthInputs.clear();
-            for (const SamplerSlot& slot : program.samplers) {
-                GLuint texture = slot.texture;
-                if (slot.target) {
-                    // frame="previous": what the last frame left. The current frame: the buffer a pass
-                    // wrote this frame, or, before any pass has, still what the last frame left (the
-                    // write buffer of a double-buffered target then holds the frame before that).
-                    const GpuTarget& t = *slot.target;
-                    const GpuResource& r = *t.resource;
-                    bool current = !slot.sampler->previousFrame && t.writtenThisFrame;
-                    texture = r.textures[current ? r.writeBuffer() : r.front].get();
-                }
-                glBindTextureUnit(static_cast<GLuint>(slot.unit), texture);
-                glBindSampler(static_cast<GLuint>(slot.unit), slot.samplerObject.get());
-                if (s.healthCheck)
-                    if (std::optional<std::string> label = s.healthInputLabel(slot))
-                        healthInputs.push_back({slot.sampler->uniform, std::move(*label), texture, slot.unit});
+        // False: content skip knows already that nothing of the pass is drawn this frame.
+        const bool issued = !s.contentSkip || s.contentSkip->beforePass(position);
+        healthInputs.clear();
+        if (issued) {
+            glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+            glViewport(0, 0, memory.spec.size.x, memory.spec.size.y);
+            applyRenderState(pass, s.compatibility);
+            if (pass.clear.color) glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, glm::value_ptr(*pass.clear.color));
+            if (pass.clear.depth) {
+                glDepthMask(GL_TRUE);
+                glClearNamedFramebufferfv(framebuffer, GL_DEPTH, 0, &*pass.clear.depth);
+                glDepthMask(pass.depth.write ? GL_TRUE : GL_FALSE);
             }
-            if (s.healthCheck && program.health.found) {
-                // In the order its shader records them.
-                std::vector<GlHealthCheck::Input> recorded;
-                for (const std::string& sampler : program.healthInputs)
-                    for (const GlHealthCheck::Input& input : healthInputs)
-                        if (input.sampler == sampler) recorded.push_back(input);
-                s.healthCheck->beforeCountingPass(position, pass.name, target.name, memory.spec.size, memory.spec.format, recorded,
-                                                  program.health);
-            }
-            program.mesh->draw(program.streams);
-        };
-        const GpuPass* without = position < s.withoutEffectsAt.size() ? s.withoutEffectsAt[position] : nullptr;
-        if (without) {
-            for (bool leftOut : {false, true})
-                if (s.contentSkip->beginConsumerDraw(position, leftOut)) {
-                    drawWith(leftOut ? *without : gp);
-                    s.contentSkip->endConsumerDraw();
+            const auto named = pass.camera.empty() ? namedCameras.end() : namedCameras.find(pass.camera);
+            const FrameCamera& passCamera = named == namedCameras.end() ? camera : named->second;
+            FrameInputs passInputs = inputs;
+            passInputs.camera = &passCamera;
+            // The pass's draw with `program`: the pass as compiled, or content skip's version of it
+            // without the effects it reads.
+            auto drawWith = [&](const GpuPass& program) {
+                glUseProgram(program.program.get());
+                uploadUniforms(program, passInputs);
+                if (s.compatibility) loadFixedFunctionState(passCamera.projection, passCamera.view * program.model);
+                healthInputs.clear();
+                for (const SamplerSlot& slot : program.samplers) {
+                    GLuint texture = slot.texture;
+                    if (slot.target) {
+                        // frame="previous": what the last frame left. The current frame: the buffer a pass
+                        // wrote this frame, or, before any pass has, still what the last frame left (the
+                        // write buffer of a double-buffered target then holds the frame before that).
+                        const GpuTarget& t = *slot.target;
+                        const GpuResource& r = *t.resource;
+                        bool current = !slot.sampler->previousFrame && t.writtenThisFrame;
+                        texture = r.textures[current ? r.writeBuffer() : r.front].get();
+                    }
+                    glBindTextureUnit(static_cast<GLuint>(slot.unit), texture);
+                    glBindSampler(static_cast<GLuint>(slot.unit), slot.samplerObject.get());
+                    if (s.healthCheck)
+                        if (std::optional<std::string> label = s.healthInputLabel(slot))
+                            healthInputs.push_back({slot.sampler->uniform, std::move(*label), texture, slot.unit});
                 }
-        } else {
-            drawWith(gp);
+                if (s.healthCheck && program.health.found) {
+                    // In the order its shader records them.
+                    std::vector<GlHealthCheck::Input> recorded;
+                    for (const std::string& sampler : program.healthInputs)
+                        for (const GlHealthCheck::Input& input : healthInputs)
+                            if (input.sampler == sampler) recorded.push_back(input);
+                    s.healthCheck->beforeCountingPass(position, pass.name, target.name, memory.spec.size, memory.spec.format, recorded,
+                                                      program.health);
+                }
+                program.mesh->draw(program.streams);
+            };
+            const GpuPass* without = position < s.withoutEffectsAt.size() ? s.withoutEffectsAt[position] : nullptr;
+            if (without) {
+                for (bool leftOut : {false, true})
+                    if (s.contentSkip->beginConsumerDraw(position, leftOut)) {
+                        drawWith(leftOut ? *without : gp);
+                        s.contentSkip->endConsumerDraw();
+                    }
+            } else {
+                drawWith(gp);
+            }
+            restoreFilledPolygons(pass, s.compatibility);  // what draws next (the checks, the editor) fills
         }
-        restoreFilledPolygons(pass, s.compatibility);  // what draws next (the checks, the editor) fills
         target.writtenThisFrame = true;
         s.lastFramePasses.push_back(pass.name);
         if (s.contentSkip) s.contentSkip->afterPass(position);
-        if (memory.spec.mipmaps) glGenerateTextureMipmap(memory.textures[memory.writeBuffer()].get());
-        if (s.healthCheck && !gp.health.found)
+        if (issued && memory.spec.mipmaps) glGenerateTextureMipmap(memory.textures[memory.writeBuffer()].get());
+        // A pass left out on the CPU is reported clean: its inspection is drawn under the failed condition.
+        if (s.healthCheck && (!issued || !gp.health.found))
             s.healthCheck->afterPass(position, pass.name, target.name, memory.textures[memory.writeBuffer()].get(),
                                      memory.spec.size, memory.spec.format, healthInputs, gp.whyNotCounting,
                                      s.contentSkip ? s.contentSkip->conditionOf(position) : 0);

@@ -11,6 +11,7 @@
 
 #include "gl/GlFullScreenTriangle.h"
 #include "gl/HealthBuffer.h"
+#include "gl/SoftwareRasteriser.h"
 
 namespace rmfx {
 namespace {
@@ -152,10 +153,7 @@ Result<ProgramHandle> fullScreenProgram(const std::string& fragmentSource, const
 
 Result<std::unique_ptr<GlHealthCheck>> GlHealthCheck::create(HealthCheckMethod method) {
     std::unique_ptr<GlHealthCheck> check(new GlHealthCheck);
-    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    const std::string name = renderer ? renderer : "";
-    check->software_ = name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos ||
-                       name.find("SwiftShader") != std::string::npos;
+    check->software_ = currentContextIsSoftwareRasteriser();
     check->method_ = method;
     check->binding_ = healthBufferBinding();
     auto screen = fullScreenProgram(screenSource, "health-screen");

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "gl/GlExecutor.h"
+#include "gl/SoftwareRasteriser.h"
 #include "tests/support/GlTestSupport.h"
 #include "tests/support/TestSupport.h"
 
@@ -472,8 +473,9 @@ TEST_P(HealthCheckGLTest, HdrLightingAsShippedHasNoNanOrInfinity) {
     const FrameHealth* health = run.exec->frameHealth();
     ASSERT_TRUE(health);
     EXPECT_GT(health->passes.size(), 20u);
-    if (GetParam() == HealthCheckMethod::WhileDrawing)  // every pass of it can count its own writes
+    if (GetParam() == HealthCheckMethod::WhileDrawing) {  // every pass of it can count its own writes
         for (const PassHealth& p : health->passes) EXPECT_TRUE(p.countedWhileDrawing) << p.pass;
+    }
     for (const HealthFinding& f : run.exec->firstHealthFindings())
         EXPECT_FALSE(healthKindIsError(f.kind)) << describeFinding(f);
 }
@@ -585,8 +587,7 @@ class HealthCheckAutomaticGLTest : public GlTest {};
 
 TEST_F(HealthCheckAutomaticGLTest, ASoftwareRasteriserInspectsAfterEachPassAGpuCountsWhileDrawing) {
     const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    const bool software = renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos ||
-                          renderer.find("SwiftShader") != std::string::npos;
+    const bool software = currentContextIsSoftwareRasteriser();
     std::unique_ptr<Workspace> ws = workspaceFromText(R"(<workspace version="1" name="auto" size="9x7">
   <target name="t" format="rgba32f"/>
   <target name="u" format="rgba32f"/>
@@ -622,12 +623,13 @@ void main() { c = texelFetch(U, ivec2(gl_FragCoord.xy), 0); }
     ASSERT_TRUE(health);
     std::map<std::string, bool> counted;
     for (const PassHealth& p : health->passes) counted[p.pass] = p.countedWhileDrawing;
-    if (software)
+    if (software) {
         EXPECT_EQ(counted, (std::map<std::string, bool>{{"first", false}, {"second", false}, {"use", false}, {"final", false}}))
             << renderer;
-    else
+    } else {
         EXPECT_EQ(counted, (std::map<std::string, bool>{{"first", true}, {"second", false}, {"use", true}, {"final", true}}))
             << renderer;
+    }
     ASSERT_EQ(health->findings.size(), 2u);
     EXPECT_EQ(health->findings[0].kind, HealthKind::NaN);
     EXPECT_EQ(health->findings[0].pass, "first");
