@@ -19,7 +19,10 @@
 // each pair and the ratios of the issue's targets; printed at the end: medians over the rounds and
 // their spread, as a Markdown table (docs/performance.md).
 //
-//   rmfx_bench_content_skip [--size WxH] [--rounds N] [--frames N] [--workspace FILE]
+// Then each target's ratio again from --pairs pairs of adjacent frames (bench/PairedFrames.h),
+// the median with its 95 % interval: on a noisy machine the tighter figure.
+//
+//   rmfx_bench_content_skip [--size WxH] [--rounds N] [--frames N] [--pairs N] [--workspace FILE]
 
 #include <algorithm>
 #include <chrono>
@@ -36,6 +39,7 @@
 
 #include <epoxy/gl.h>
 
+#include "bench/PairedFrames.h"
 #include "bench/RoundsArguments.h"
 #include "core/Percentile.h"
 #include "gl/GlContext.h"
@@ -165,29 +169,33 @@ int main(int argc, char** argv) {
     std::map<Input, std::vector<double>> notIssued;                           // skip on: passes the CPU left out, per frame
     std::string frameError;
 
+    // One frame of one executor, in milliseconds; `count` adds it to the per-frame figures.
+    auto frame = [&](Executor e, Input in, bool isBright, int k, bool count) -> double {
+        GlExecutor& executor = *executors[e];
+        (void)executor.replaceInputImage(input, isBright ? bright : dark);
+        glFinish();
+        const float time = static_cast<float>(k) / 60.0f;
+        auto start = Clock::now();
+        const double cpuStart = threadCpuMilliseconds();
+        Diagnostics d = executor.renderFrame({time, 1.0f / 60.0f}).takeDiagnostics();
+        if (count) issueCpu[{e, in}].push_back(threadCpuMilliseconds() - cpuStart);
+        glFinish();
+        const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        if (hasErrors(d) && frameError.empty()) frameError = formatAll(d);
+        if (count && e == Executor::SkipOn) {
+            auto& [skipping, total] = skippedFrames[in];
+            skipping += executor.contentSkippedEffects().empty() ? 0 : 1;
+            total += 1;
+            notIssued[in].push_back(executor.passesNotIssuedByContentSkip());
+        }
+        return ms;
+    };
+    auto isBrightFrame = [](Input in, int k) { return in == Input::Bright || (in == Input::Alternating && k % 2 == 1); };
     // One round of one pair: its median frame, in milliseconds.
     auto run = [&](const Pair& pair, int frames, bool count) -> double {
-        GlExecutor& executor = *executors[pair.executor];
         std::vector<double> times;
-        for (int k = 0; k < frames; ++k) {
-            const bool isBright = pair.input == Input::Bright || (pair.input == Input::Alternating && k % 2 == 1);
-            (void)executor.replaceInputImage(input, isBright ? bright : dark);
-            glFinish();
-            const float time = static_cast<float>(k) / 60.0f;
-            auto start = Clock::now();
-            const double cpuStart = threadCpuMilliseconds();
-            Diagnostics d = executor.renderFrame({time, 1.0f / 60.0f}).takeDiagnostics();
-            if (count) issueCpu[{pair.executor, pair.input}].push_back(threadCpuMilliseconds() - cpuStart);
-            glFinish();
-            times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-            if (hasErrors(d) && frameError.empty()) frameError = formatAll(d);
-            if (count && pair.executor == Executor::SkipOn) {
-                auto& [skipping, total] = skippedFrames[pair.input];
-                skipping += executor.contentSkippedEffects().empty() ? 0 : 1;
-                total += 1;
-                notIssued[pair.input].push_back(executor.passesNotIssuedByContentSkip());
-            }
-        }
+        for (int k = 0; k < frames; ++k)
+            times.push_back(frame(pair.executor, pair.input, isBrightFrame(pair.input, k), k, count));
         return median(times);
     };
 
@@ -247,6 +255,32 @@ int main(int argc, char** argv) {
         std::printf("| %s | %.2f | %s | %s | %.0f |\n", name(i), median(roundMedians[{Executor::GpuOnly, i}]),
                     spread(ratios(Executor::GpuOnly, Executor::SkipOff, i)).c_str(),
                     spread(ratios(Executor::GpuOnly, Executor::NoEffects, i)).c_str(), median(notIssued[i]));
+    // The targets again from adjacent frames (bench/PairedFrames.h): the tighter estimate.
+    if (a.pairs > 0) {
+        struct Compared {
+            Input input;
+            Executor top, bottom;
+            const char* target;
+        };
+        const Compared compared[] = {{Input::Dark, Executor::SkipOn, Executor::NoEffects, "≤ 1.05"},
+                                     {Input::Dark, Executor::GpuOnly, Executor::NoEffects, ""},
+                                     {Input::Bright, Executor::SkipOn, Executor::SkipOff, "≤ 1.02"},
+                                     {Input::Bright, Executor::GpuOnly, Executor::SkipOff, ""},
+                                     {Input::Alternating, Executor::SkipOn, Executor::SkipOff, ""}};
+        std::printf("\nPaired frames: %d pairs per ratio, each the two executors' frames back to back (order alternating); "
+                    "the median ratio and its 95 %% interval:\n\n", a.pairs);
+        std::printf("| input | ratio | median (95 %% interval) | target |\n|---|---|---|---|\n");
+        for (const Compared& c : compared) {
+            // An alternating pair compares a dark and a bright frame of each executor together.
+            const std::vector<double> r = bench::pairedRatios(a.pairs, [&](int which, int k) {
+                const Executor e = which == 0 ? c.top : c.bottom;
+                if (c.input != Input::Alternating) return frame(e, c.input, c.input == Input::Bright, k, false);
+                return frame(e, c.input, false, 2 * k, false) + frame(e, c.input, true, 2 * k + 1, false);
+            });
+            std::printf("| %s | %s / %s | %s | %s |\n", name(c.input), name(c.top), name(c.bottom),
+                        bench::medianWithInterval(r).c_str(), c.target);
+        }
+    }
     // What the calling thread spends issuing a frame (renderFrame, before glFinish): on a GPU whose
     // passes take microseconds, this is most of a small frame.
     std::printf("\nCPU time to issue a frame (ms, this thread, median of all frames):\n");

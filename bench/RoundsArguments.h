@@ -1,7 +1,7 @@
 #pragma once
 // The options of the benchmarks that compare executors of one workspace in interleaved rounds
 // (rmfx_bench_content_skip, rmfx_bench_health_check):
-//   PROGRAM [--size WxH] [--rounds N] [--frames N] [--workspace FILE]
+//   PROGRAM [--size WxH] [--rounds N] [--frames N] [--pairs N] [--workspace FILE]
 // Errors go to stderr with the usage line.
 
 #include <cstdio>
@@ -19,6 +19,7 @@ struct RoundsArguments {
     glm::ivec2 size{512, 512};
     int rounds = 10;
     int frames = 8;  // per executor and round
+    int pairs = 150;  // of adjacent frames per compared ratio (bench/PairedFrames.h); 0: none
     std::filesystem::path workspace = std::filesystem::path(RMFX_SOURCE_DIR) / "effects" / "hdr_lighting.xml";
 };
 
@@ -27,13 +28,13 @@ inline std::optional<RoundsArguments> parseRoundsArguments(int argc, char** argv
                                                            RoundsArguments defaults) {
     RoundsArguments a = defaults;
     auto fail = [&](const std::string& message) -> std::optional<RoundsArguments> {
-        std::fprintf(stderr, "%s: %s\nusage: %s [--size WxH] [--rounds N] [--frames N] [--workspace FILE]\n", program,
+        std::fprintf(stderr, "%s: %s\nusage: %s [--size WxH] [--rounds N] [--frames N] [--pairs N] [--workspace FILE]\n", program,
                      message.c_str(), program);
         return std::nullopt;
     };
     for (int i = 1; i < argc; ++i) {
         const std::string option = argv[i];
-        if (option != "--size" && option != "--rounds" && option != "--frames" && option != "--workspace")
+        if (option != "--size" && option != "--rounds" && option != "--frames" && option != "--pairs" && option != "--workspace")
             return fail("unknown argument '" + option + "'");
         if (i + 1 >= argc) return fail(option + ": expected a value");
         const std::string value = argv[++i];
@@ -45,6 +46,10 @@ inline std::optional<RoundsArguments> parseRoundsArguments(int argc, char** argv
             std::optional<int> n = wholeNumberArgument(value, 1, 1000);
             if (!n) return fail(option + ": expected a whole number from 1 to 1000, got '" + value + "'");
             (option == "--rounds" ? a.rounds : a.frames) = *n;
+        } else if (option == "--pairs") {
+            std::optional<int> n = wholeNumberArgument(value, 0, 10000);
+            if (!n) return fail("--pairs: expected a whole number from 0 to 10000, got '" + value + "'");
+            a.pairs = *n;
         } else {
             a.workspace = value;
         }
