@@ -101,11 +101,13 @@ void GlContentSkip::plan(const Workspace& ws, const std::vector<GpuPass*>& sched
         if (!any) continue;
         // Handed on: read by a scheduled pass outside the effect, or read back after the frame.
         for (const std::string& t : written) {
-            bool handed = outputs.empty() || std::find(outputs.begin(), outputs.end(), t) != outputs.end();
-            for (size_t i = 0; i < schedule.size() && !handed; ++i)
-                handed = effectOfPass_[i] != static_cast<int>(effects_.size()) && readsThisFrame(*schedule[i]->pass, t);
-            if (handed)
-                if (GpuTarget* target = targets.find(t)) active.handedOn.push_back(target);
+            HandedOn handed;
+            handed.target = targets.find(t);
+            handed.readBack = outputs.empty() || std::find(outputs.begin(), outputs.end(), t) != outputs.end();
+            for (size_t i = 0; i < schedule.size(); ++i)
+                if (effectOfPass_[i] != static_cast<int>(effects_.size()) && readsThisFrame(*schedule[i]->pass, t))
+                    handed.readers.push_back(i);
+            if (handed.target && (handed.readBack || !handed.readers.empty())) active.handedOn.push_back(std::move(handed));
         }
         auto probe = std::find_if(probes_.begin(), probes_.end(), [&](const Probe& p) {
             return p.source == source && p.channels == e.sourceChannels;
@@ -192,7 +194,7 @@ void GlContentSkip::planConsumers(const std::vector<GpuPass*>& schedule) {
         for (const ActiveEffect& e : effects_) {
             if (i <= e.last) continue;
             if (std::none_of(e.handedOn.begin(), e.handedOn.end(),
-                             [&](const GpuTarget* t) { return readsThisFrame(*schedule[i]->pass, t->name); }))
+                             [&](const HandedOn& h) { return readsThisFrame(*schedule[i]->pass, h.target->name); }))
                 continue;
             consumer.effects.insert(e.effect->name);
             probes.insert(e.probe);
@@ -219,6 +221,15 @@ bool GlContentSkip::beginConsumerDraw(size_t position, bool withoutEffects) {
         return true;
     }
     return !withoutEffects;
+}
+
+void GlContentSkip::setSampledWithoutEffects(const std::map<size_t, std::set<const GpuTarget*>>& sampled) {
+    for (ActiveEffect& e : effects_)
+        for (HandedOn& h : e.handedOn)
+            h.cleared = h.readBack || std::any_of(h.readers.begin(), h.readers.end(), [&](size_t reader) {
+                            auto second = sampled.find(reader);
+                            return second == sampled.end() || second->second.count(h.target);
+                        });
 }
 
 void GlContentSkip::endConsumerDraw() {
@@ -328,19 +339,20 @@ void GlContentSkip::afterPass(size_t index) {
     if (conditional) glBeginConditionalRender(probe.queries[slot_].get(), GL_QUERY_WAIT_INVERTED);
     for (const ActiveEffect& e : effects_) {
         if (e.last != index) continue;
-        for (const GpuTarget* t : e.handedOn)
-            if (t->resource) {
+        for (const HandedOn& h : e.handedOn)
+            if (h.cleared && h.target->resource) {
                 glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
                 glDisable(GL_SCISSOR_TEST);
-                glClearNamedFramebufferfv(t->resource->framebuffers[t->resource->writeBuffer()].get(), GL_COLOR, 0, zero);
+                glClearNamedFramebufferfv(h.target->resource->framebuffers[h.target->resource->writeBuffer()].get(), GL_COLOR, 0,
+                                          zero);
             }
     }
     if (conditional) glEndConditionalRender();
     for (const ActiveEffect& e : effects_) {
         if (e.last != index) continue;
-        for (const GpuTarget* t : e.handedOn)
-            if (t->resource && t->resource->spec.mipmaps)
-                glGenerateTextureMipmap(t->resource->textures[t->resource->writeBuffer()].get());
+        for (const HandedOn& h : e.handedOn)
+            if (h.cleared && h.target->resource && h.target->resource->spec.mipmaps)
+                glGenerateTextureMipmap(h.target->resource->textures[h.target->resource->writeBuffer()].get());
     }
 }
 

@@ -88,6 +88,11 @@ public:
     // at all: false when the draw is to be left out.
     bool beginConsumerDraw(size_t position, bool withoutEffects);
     void endConsumerDraw();
+    // The targets each consumer's second program samples, by schedule position (none given: it has
+    // no second program and draws as compiled). A target handed on only to second programs that do
+    // not sample it, and not read back after the frame, is not cleared where its effect is
+    // skipped: nothing reads the zeros. Replaces what an earlier call gave.
+    void setSampledWithoutEffects(const std::map<size_t, std::set<const GpuTarget*>>& sampled);
 
     // The effects the last frame skipped, each with why; waits for the GPU's answer when `wait`,
     // else reports only what has arrived (and what arrived for an earlier frame is kept).
@@ -102,11 +107,19 @@ private:
         bool issued = false;  // this frame
         Answer answer = Answer::Pending;
     };
+    // A target the effect writes that something after it reads: cleared to zero when the effect is
+    // skipped, unless nothing would read the zeros.
+    struct HandedOn {
+        GpuTarget* target = nullptr;
+        bool readBack = false;        // after the frame
+        std::vector<size_t> readers;  // schedule positions of the passes outside the effect that sample it
+        bool cleared = true;
+    };
     struct ActiveEffect {
         const Effect* effect = nullptr;
         size_t probe = 0;
         size_t first = 0, last = 0;           // schedule positions of its first and last pass
-        std::vector<GpuTarget*> handedOn;     // cleared to zero when it is skipped
+        std::vector<HandedOn> handedOn;
     };
 
     GlContentSkip() = default;

@@ -122,9 +122,16 @@ struct GlExecutor::Impl {
         // that count what they write are skipped together with what they count.
         contentSkip->setSpanning(!healthCheck || std::all_of(schedule.begin(), schedule.end(),
                                                              [](const GpuPass* p) { return p->health.found; }));
-        if (healthCheck) return;  // the check looks at every pass as compiled
-        for (const GlContentSkip::Consumer& c : contentSkip->consumers())
-            withoutEffectsAt[c.position] = passWithout(*schedule[c.position], c.effects);
+        std::map<size_t, std::set<const GpuTarget*>> sampled;
+        if (!healthCheck)  // the check looks at every pass as compiled
+            for (const GlContentSkip::Consumer& c : contentSkip->consumers())
+                if (const GpuPass* without = passWithout(*schedule[c.position], c.effects)) {
+                    withoutEffectsAt[c.position] = without;
+                    std::set<const GpuTarget*>& targets = sampled[c.position];
+                    for (const SamplerSlot& slot : without->samplers)
+                        if (slot.target) targets.insert(slot.target);
+                }
+        contentSkip->setSampledWithoutEffects(sampled);
     }
 
     // The pass compiled with `effects` left out, when that changes its code; null otherwise, or

@@ -5,6 +5,7 @@
 // reads a skipped effect's output is drawn compiled without the effect; one test tells the two
 // versions apart.
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -341,6 +342,61 @@ TEST_F(GlowContentSkipGLTest, APassOnlyTheEffectReadsIsSkippedWithIt) {
     ASSERT_TRUE((*created)->renderFrame({0.0f, 1.0f / 24.0f}));
     EXPECT_EQ((*created)->contentSkippedEffects().count("glow"), 1u);
     EXPECT_EQ(spreadAlphas(**created), (std::set<float>{0.5f}));
+}
+
+// Where the effect is skipped, what it hands on is cleared to zero only where something reads the
+// zeros: not when the pass after it, drawn compiled without the effect, samples nothing of it
+// (the target keeps what the last bright frame left), but when that version still samples it, or
+// the target is read back after the frame. Bright frame, then dim; every output is compared with
+// --content-skip off byte for byte.
+TEST_F(GlowContentSkipGLTest, WhatASkippedEffectHandsOnIsClearedOnlyWhereSomethingReadsIt) {
+    const std::string plain = "c = texelFetch(Scene, p, 0) + texelFetch(Glow, p, 0); }";
+    struct Case {
+        const char* label;
+        std::string final;
+        std::set<std::string> outputs;
+        bool cleared;
+    };
+    const Case cases[] = {
+        {"guarded", "c = texelFetch(Scene, p, 0); if (RMFX_EFFECT_glow) c += texelFetch(Glow, p, 0); }", {"output"}, false},
+        {"also read unguarded", "c = texelFetch(Scene, p, 0) + texelFetch(Glow, p, 0); if (RMFX_EFFECT_glow) c += texelFetch(Glow, p, 0); }",
+         {"output"}, true},
+        {"not guarded", plain, {"output"}, true},
+        {"guarded, read back", "c = texelFetch(Scene, p, 0); if (RMFX_EFFECT_glow) c += texelFetch(Glow, p, 0); }", {"output", "glow"}, true},
+    };
+    for (const Case& c : cases)
+        for (Decision decision : {Decision::GpuOnly, Decision::CpuWaits}) {
+            SCOPED_TRACE(std::string(c.label) + ", " + decisionName(decision));
+            std::string xml = kGlow;
+            xml.replace(xml.find(plain), plain.size(), c.final);
+            std::unique_ptr<Workspace> ws = workspaceFromText(xml);
+            ASSERT_TRUE(ws);
+            ExecutorOptions options;
+            options.outputs = std::vector<std::string>(c.outputs.begin(), c.outputs.end());
+            options.contentSkipDecision = decision;
+            auto on = GlExecutor::create(std::make_shared<const Workspace>(*ws), {37, 23}, options);
+            options.contentSkip = false;
+            auto off = GlExecutor::create(std::make_shared<const Workspace>(*ws), {37, 23}, options);
+            ASSERT_TRUE(on && off) << formatAll(on.diagnostics()) << formatAll(off.diagnostics());
+            for (GlExecutor* e : {on->get(), off->get()}) {
+                ASSERT_TRUE(e->setVariable("Pixel_X", Value::ofInt(9)));
+                ASSERT_TRUE(e->setVariable("Pixel_Y", Value::ofInt(3)));
+                ASSERT_TRUE(e->setVariable("Value", Value::ofFloat(3.0f)));
+            }
+            expectSameFrame(**on, **off, 0.0f, "bright");
+            for (GlExecutor* e : {on->get(), off->get()}) ASSERT_TRUE(e->setVariable("Value", Value::ofFloat(0.5f)));
+            expectSameFrame(**on, **off, 1.0f / 24.0f, "dim");
+            EXPECT_EQ((*on)->contentSkippedEffects().count("glow"), 1u);
+            std::vector<float> glow(37 * 23 * 4);
+            glGetTextureImage((*on)->targetTexture("glow"), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(glow.size() * sizeof(float)),
+                              glow.data());
+            const float most = *std::max_element(glow.begin(), glow.end());
+            if (c.cleared) {
+                EXPECT_EQ(most, 0.0f) << "cleared to zero";
+            } else {
+                EXPECT_EQ(most, 1.0f) << "left as the bright frame made it ((3 - 1) / 2)";
+            }
+        }
 }
 
 // The health check reports what the passes of a frame wrote: a pass content skip leaves out
