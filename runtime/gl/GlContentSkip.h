@@ -2,12 +2,14 @@
 // Skipping on the GPU what an effect computes from a source that holds nothing (<effect source>):
 // when no pixel of the source has a non-zero value in the chosen channels, every pass of the
 // effect gives zero everywhere. Before the effect's first pass of a frame a probe draws over the
-// source's size into a framebuffer with no attachment, discarding the pixels whose channels are
-// all zero, inside an occlusion query. The effect's passes then run under conditional rendering on
-// that query (GL_QUERY_WAIT: the GPU waits for it, the CPU never does, and the frame uses its own
-// source, with no frame of lag); after its last pass, under the inverted condition, the targets it
-// hands to later passes (and those read back after the frame) are cleared to zero, which is what
-// running it would have left there. A NaN or an infinity is not zero: the effect runs on it.
+// source (a fragment for each 2x2 pixels) into a framebuffer with no attachment, discarding the
+// fragments whose pixels' chosen channels are all zero, inside an occlusion query. The effect's
+// passes then run under conditional rendering on that query (GL_QUERY_WAIT: the GPU waits for it,
+// the CPU never does, and the frame uses its own source, with no frame of lag); after its last
+// pass, under the inverted condition, the targets it hands to later passes (and those read back
+// after the frame) are cleared to zero, which is what running it would have left there, unless
+// what reads them is drawn compiled without the effect and samples none of them. A NaN or an
+// infinity is not zero: the effect runs on it.
 // Passes outside the effects that only they read, between the source and the effects (hdr_lighting's
 // star_source, the blur of the bright pass that bloom and star start from), are feeders: drawn
 // under the same condition, since where it fails nothing reads what they write.

@@ -229,6 +229,15 @@ TEST_F(GlowContentSkipGLTest, OnePixelJustAboveTheThresholdInAnyCornerKeepsTheEf
     }
 }
 
+// The probe gives each fragment 2x2 pixels: a pixel at each place of a block (odd coordinates
+// too, and the last, unpaired column and row of this odd-sized source) must keep the effect.
+TEST_F(GlowContentSkipGLTest, OnePixelAtEachPlaceOfATwoByTwoBlockKeepsTheEffect) {
+    const float justAbove = std::nextafter(1.0f, 2.0f);
+    for (glm::ivec2 pixel : {glm::ivec2(1, 0), glm::ivec2(0, 1), glm::ivec2(1, 1), glm::ivec2(35, 21), glm::ivec2(35, 22),
+                             glm::ivec2(36, 21), glm::ivec2(17, 9)})
+        EXPECT_TRUE(frameWith(pixel, justAbove).empty()) << "pixel " << pixel.x << "," << pixel.y;
+}
+
 TEST_F(GlowContentSkipGLTest, NanAndInfinityCountAsTheShadersTreatThem) {
     // +Inf - 1 is +Inf: the effect runs. NaN goes through max() as the GL implementation makes
     // it; whatever the bright pass writes, the output is what running everything gives.
