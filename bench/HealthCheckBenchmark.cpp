@@ -7,9 +7,11 @@
 // default (auto: while-drawing on a GPU, after-pass on a software rasteriser).
 // Printed: each round's medians and ratios against off, then the median ratios over the rounds and
 // their spread, the GPU time of a frame and of each pass (timer queries). The issue's target: the
-// check costs under 10 % of the frame at 512x512.
+// check costs under 10 % of the frame at 512x512. Then each method's ratio against off again from
+// --pairs pairs of adjacent frames (bench/PairedFrames.h), the median with its 95 % interval: on a
+// noisy machine the tighter figure.
 //
-//   rmfx_bench_health_check [--size WxH] [--rounds N] [--frames N] [--workspace FILE]
+//   rmfx_bench_health_check [--size WxH] [--rounds N] [--frames N] [--pairs N] [--workspace FILE]
 
 #include <algorithm>
 #include <chrono>
@@ -23,6 +25,7 @@
 
 #include <epoxy/gl.h>
 
+#include "bench/PairedFrames.h"
 #include "bench/RoundsArguments.h"
 #include "core/Percentile.h"
 #include "gl/GlContext.h"
@@ -131,6 +134,10 @@ int main(int argc, char** argv) {
         for (int e = 1; e < kExecutors; ++e) std::printf("  %*.3f", static_cast<int>(std::string(names[e]).size()) + 6, t[e] / t[0]);
         std::printf("\n");
     }
+    // Each method against off again from adjacent frames (bench/PairedFrames.h): the tighter estimate.
+    std::string paired[kExecutors];
+    for (int e = 1; e < kExecutors && a.pairs > 0; ++e)
+        paired[e] = bench::medianWithInterval(bench::pairedRatios(a.pairs, [&](int which, int) { return run(which == 0 ? e : 0, 1); }));
     // The GPU's own time of a frame and of each pass (timer queries around every pass, the
     // check's draws after a pass counted in the pass they follow).
     double gpu[kExecutors];
@@ -178,6 +185,12 @@ int main(int argc, char** argv) {
         cpu[e] = median(issueCpu[e]);
     }
     row("wall clock (ms), median of rounds", wall, ratios, "≤ 1.10");
+    if (a.pairs > 0) {
+        std::printf("| paired frames (%d pairs): median ratio (95 %% interval) |", a.pairs);
+        for (int e = 0; e < kExecutors; ++e) std::printf(" |");
+        for (int e = 1; e < kExecutors; ++e) std::printf(" %s |", paired[e].c_str());
+        std::printf(" ≤ 1.10 |\n");
+    }
     row("GPU time (ms, timer queries)", gpu, nullptr, "");
     row("CPU time of renderFrame (ms), this thread", cpu, nullptr, "");
     bool samePasses = true;
