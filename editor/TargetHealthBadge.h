@@ -2,7 +2,8 @@
 // What the target browser shows of each target's numeric health (rmfx edit --check, the panel's
 // "Check targets" box; model/TargetHealth.h): a badge under its thumbnail and, on hover, the first
 // bad pixel. The badge tells what the thumbnail shows: the counts of the last pass of the frame
-// that wrote the target.
+// that wrote the target, and where that pass counted only the pixels it drew over what the target
+// held (PassHealth::ownPixelsOnly), those of the passes before it back to one that covered it.
 
 #include <map>
 #include <string>

@@ -10,12 +10,14 @@ namespace rmfx::editor {
 namespace {
 
 PassHealth pass(const std::string& name, const std::string& target, std::array<long long, healthKindCount> counts,
-                bool inspected = true) {
+                bool inspected = true, bool ownPixelsOnly = false) {
     PassHealth p;
     p.pass = name;
     p.target = target;
     p.counts = counts;
     p.inspected = inspected;
+    p.countedWhileDrawing = ownPixelsOnly;
+    p.ownPixelsOnly = ownPixelsOnly;
     return p;
 }
 
@@ -52,6 +54,28 @@ TEST(EditorTargetHealthBadge, TheLastWriterDecidesAndErrorsComeFirst) {
     EXPECT_TRUE(badges["output"].inspected);
     EXPECT_EQ(badges["output"].text, "");
     EXPECT_FALSE(badges["output"].error);
+}
+
+// Passes that counted only what they drew over the target (meshes drawn while drawing-counting,
+// after a pass that cleared it) add to what the target holds; a pass covering the whole target
+// starts again.
+TEST(EditorTargetHealthBadge, PassesDrawingOverTheTargetAddUpBackToOneThatCoveredIt) {
+    FrameHealth health;
+    health.passes = {pass("sky", "scene", {0, 0, 0, 0, 5}),                // covers the target: overwritten below
+                     pass("floor", "scene", {12, 0, 0, 0, 0}),             // clears colour, then draws: covers it
+                     pass("teapot", "scene", {}, true, true),              // draws over it, clean
+                     pass("panel", "scene", {0, 0, 0, 3, 0}, true, true),  // draws over it
+                     pass("blur_h", "blur", {0, 0, 0, 4, 0}, true, true),
+                     pass("blur_v", "blur", {})};                          // a full-screen pass: replaces it
+    auto badges = targetHealthBadges(health);
+    EXPECT_EQ(badges["scene"].text, "NaN 12 neg 3");
+    EXPECT_TRUE(badges["scene"].error);
+    EXPECT_NE(badges["scene"].details.find("NaN: 12 pixels, written by pass 'floor'"), std::string::npos) << badges["scene"].details;
+    EXPECT_NE(badges["scene"].details.find("negative values: 3 pixels, written by pass 'panel'"), std::string::npos)
+        << badges["scene"].details;
+    EXPECT_EQ(badges["scene"].details.find("sky"), std::string::npos) << badges["scene"].details;
+    EXPECT_EQ(badges["blur"].text, "");
+    EXPECT_FALSE(badges["blur"].error);
 }
 
 }  // namespace

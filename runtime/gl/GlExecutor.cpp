@@ -400,7 +400,7 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
                         for (const GlHealthCheck::Input& input : healthInputs)
                             if (input.sampler == sampler) recorded.push_back(input);
                     s.healthCheck->beforeCountingPass(position, pass.name, target.name, memory.spec.size, memory.spec.format, recorded,
-                                                      program.health);
+                                                      program.health, s.current.graph->nodes[static_cast<size_t>(gp.index)].loadsTarget);
                 }
                 program.mesh->draw(program.streams);
             };

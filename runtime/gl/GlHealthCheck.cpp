@@ -321,9 +321,13 @@ void GlHealthCheck::afterPass(size_t position, const std::string& pass, const st
 }
 
 void GlHealthCheck::beforeCountingPass(size_t position, const std::string& pass, const std::string& target, glm::ivec2 size,
-                                       TargetFormat format, const std::vector<Input>& inputs, const HealthUniforms& uniforms) {
+                                       TargetFormat format, const std::vector<Input>& inputs, const HealthUniforms& uniforms,
+                                       bool keepsEarlierPixels) {
     notePass(position, pass, target, size, format, inputs);
-    if (position < passes_.size()) passes_[position].countedWhileDrawing = true;
+    if (position < passes_.size()) {
+        passes_[position].countedWhileDrawing = true;
+        passes_[position].ownPixelsOnly = keepsEarlierPixels;
+    }
     setHealthUniforms(uniforms, position, capacity_, size, format);
 }
 

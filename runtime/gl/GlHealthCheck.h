@@ -54,8 +54,10 @@ public:
                    const std::string& whyNotWhileDrawing = "", unsigned condition = 0);
     // Before pass `position`, whose program counts what it writes (`uniforms`, its program current),
     // draws into a target of `size` and `format`, reading `inputs` in the order its shader records.
+    // `keepsEarlierPixels`: it leaves what the target held where it does not draw (PassHealth::ownPixelsOnly).
     void beforeCountingPass(size_t position, const std::string& pass, const std::string& target, glm::ivec2 size,
-                            TargetFormat format, const std::vector<Input>& inputs, const HealthUniforms& uniforms);
+                            TargetFormat format, const std::vector<Input>& inputs, const HealthUniforms& uniforms,
+                            bool keepsEarlierPixels);
     // The binding point of the check's buffer in the shaders that write it.
     int bufferBinding() const { return binding_; }
     // Before a pass writes `texture`: inspects, together, what waits on it.

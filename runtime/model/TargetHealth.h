@@ -59,6 +59,10 @@ struct PassHealth {
     // True: the pass's own shader counted what it wrote (gl/HealthInstrumentation.h); false: the
     // check inspected the whole target after the pass.
     bool countedWhileDrawing = false;
+    // Counted while drawing by a pass that keeps what its target held where it does not draw (a
+    // mesh drawn without clearing colour): its counts are of the pixels it drew, not of the whole
+    // target, which may still hold what earlier passes wrote.
+    bool ownPixelsOnly = false;
     // With the while-drawing method, why this pass was inspected after it ran instead ("it blends
     // onto its target"); empty otherwise.
     std::string whyNotWhileDrawing;

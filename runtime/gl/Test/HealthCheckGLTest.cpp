@@ -288,6 +288,54 @@ void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0); }
     EXPECT_TRUE(f.inputs.empty());
 }
 
+// A mesh drawn over what its target held (no colour clear) covers only some of it: counting while
+// drawing, its counts are of the pixels it drew (PassHealth::ownPixelsOnly), and the NaN the pass
+// before it left elsewhere is not its; inspected after it ran, the whole target is. Either way the
+// frame's first NaN is poison's.
+TEST_P(HealthCheckGLTest, AMeshDrawnOverATargetCountsWhatItDrewWhileDrawing) {
+    const std::string xml = R"(<workspace version="1" name="patch">
+  <target name="t" format="rgba32f" scale="1"/>
+  <pass name="poison" target="t"><shader stage="fragment"><![CDATA[
+#version 450 core
+out vec4 fragColor;
+void main() { fragColor = vec4(uintBitsToFloat(0x7fc00000u), 0.0, 0.0, 1.0); }
+]]></shader></pass>
+  <pass name="patch" target="t"><draw mesh="quad"/><shader stage="fragment"><![CDATA[
+#version 450 core
+out vec4 fragColor;
+void main() { fragColor = vec4(0.5, 0.5, 0.5, 1.0); }
+]]></shader></pass>
+  <pass name="final"><sampler name="s" target="t"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D s;
+out vec4 fragColor;
+void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0); }
+]]></shader></pass>
+</workspace>
+)";
+    const glm::ivec2 size{16, 16};
+    GlRun run = runChecked(workspaceFromText(xml), size, 1, GetParam());
+    ASSERT_TRUE(run.exec);
+    const FrameHealth* health = run.exec->frameHealth();
+    ASSERT_TRUE(health);
+    ASSERT_EQ(health->passes.size(), 3u);
+    Result<Image> t = run.exec->readTarget("t");
+    ASSERT_TRUE(t);
+    long long nan = 0;
+    for (int y = 0; y < size.y; ++y)
+        for (int x = 0; x < size.x; ++x) nan += std::isnan(t->at(x, y, 0)) ? 1 : 0;
+    ASSERT_GT(nan, 0) << "the quad covers the whole target: the test needs it not to";
+    ASSERT_LT(nan, size.x * size.y) << "the quad covers nothing";
+    const bool whileDrawing = GetParam() == HealthCheckMethod::WhileDrawing;
+    EXPECT_FALSE(health->passes[0].ownPixelsOnly) << "a full-screen pass replaces its target";
+    EXPECT_EQ(health->passes[1].countedWhileDrawing, whileDrawing);
+    EXPECT_EQ(health->passes[1].ownPixelsOnly, whileDrawing);
+    EXPECT_EQ(health->passes[0].counts[0], size.x * size.y);
+    EXPECT_EQ(health->passes[1].counts[0], whileDrawing ? 0 : nan);
+    ASSERT_EQ(health->findings.size(), 1u);
+    EXPECT_EQ(health->findings[0].pass, "poison");
+}
+
 // What a pass that blends leaves is not what its shader wrote, and a shader that discards behind a
 // depth test cannot let the test run first: both are inspected after they ran, by either method.
 // base holds -3; blend adds 1 (the target then holds -2: negative); cut writes 0.25 where it does
