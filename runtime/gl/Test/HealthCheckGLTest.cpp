@@ -235,6 +235,18 @@ void main() { fragColor = vec4(texelFetch(s, ivec2(gl_FragCoord.xy), 0).rrr * 0.
     }
 }
 
+// The last pass of a test workspace and its end: shows `target` as the output.
+std::string finalShowing(const std::string& target) {
+    return R"(  <pass name="final"><sampler name="s" target=")" + target + R"("/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D s;
+out vec4 fragColor;
+void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0); }
+]]></shader></pass>
+</workspace>
+)";
+}
+
 // The inspections wait for memory to be written again: a target that holds NaN after its first
 // pass and is overwritten clean later in the frame is reported for that first pass, with the
 // value it held then, and the pass that read it sees its NaN input.
@@ -261,14 +273,7 @@ uniform sampler2D s;
 out vec4 fragColor;
 void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0) * 2.0; }
 ]]></shader></pass>
-  <pass name="final"><sampler name="s" target="t"/><shader stage="fragment"><![CDATA[
-#version 450 core
-uniform sampler2D s;
-out vec4 fragColor;
-void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0); }
-]]></shader></pass>
-</workspace>
-)";
+)" + finalShowing("t");
     const glm::ivec2 size{7, 5};
     GlRun run = runChecked(workspaceFromText(xml), size, 1, GetParam());
     ASSERT_TRUE(run.exec);
@@ -305,14 +310,7 @@ void main() { fragColor = vec4(uintBitsToFloat(0x7fc00000u), 0.0, 0.0, 1.0); }
 out vec4 fragColor;
 void main() { fragColor = vec4(0.5, 0.5, 0.5, 1.0); }
 ]]></shader></pass>
-  <pass name="final"><sampler name="s" target="t"/><shader stage="fragment"><![CDATA[
-#version 450 core
-uniform sampler2D s;
-out vec4 fragColor;
-void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0); }
-]]></shader></pass>
-</workspace>
-)";
+)" + finalShowing("t");
     const glm::ivec2 size{16, 16};
     GlRun run = runChecked(workspaceFromText(xml), size, 1, GetParam());
     ASSERT_TRUE(run.exec);
@@ -363,14 +361,7 @@ void main() {
     fragColor = vec4(texelFetch(s, ivec2(gl_FragCoord.xy), 0).x, 0.25, 0.0, 1.0);
 }
 ]]></shader></pass>
-  <pass name="final"><sampler name="s" target="u"/><shader stage="fragment"><![CDATA[
-#version 450 core
-uniform sampler2D s;
-out vec4 fragColor;
-void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0); }
-]]></shader></pass>
-</workspace>
-)";
+)" + finalShowing("u");
     const glm::ivec2 size{5, 3};
     GlRun run = runChecked(workspaceFromText(xml), size, 1, GetParam());
     ASSERT_TRUE(run.exec) ;
