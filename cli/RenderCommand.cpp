@@ -306,7 +306,8 @@ int renderCommand(const std::vector<std::string>& args) {
         FrameExplanationInput explained{&ws, &executor->graph(), &executor->targetPlan(), executor->askedEffects(),
                                         executor->switchedOffEffects(), a->executor.poolTargets, {},
                                         a->executor.contentSkip, executor->contentSkippedEffects(true),
-                                        executor->passesDrawnWithoutSkippedEffects(), executor->passesDrawnOnlyForEffects()};
+                                        executor->passesDrawnWithoutSkippedEffects(), executor->passesDrawnOnlyForEffects(),
+                                        executor->effectsRunningWhateverTheContent()};
         for (const InputArgument& given : a->inputs) {
             const std::string name = !given.name.empty() ? given.name : ws.inputs.size() == 1 ? ws.inputs.front().name : "";
             explained.inputFiles[name] = given.file.string() + (given.layer.empty() ? "" : ":" + given.layer);

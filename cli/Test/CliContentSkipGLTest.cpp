@@ -41,6 +41,31 @@ TEST(CliContentSkipGLTest, ADimImageSkipsBloomAndStarAndTheImageIsTheSameBitForB
     EXPECT_TRUE(has(bad.err, "--content-skip: expected on or off, got 'maybe'")) << bad.err;
 }
 
+// Asked for one of an effect's targets, the user gets what its passes write, not content skip's
+// zeros (hdr_lighting's bloom writes alpha 1 from a zero source in the float encoding): the effect
+// runs whatever its source holds, and --explain says why; star, which bloom does not need, is
+// culled, not reported as run or skipped.
+TEST(CliContentSkipGLTest, AnEffectsTargetAskedForRunsTheEffectOnADimImage) {
+    ScratchDir dir;
+    Image dim = blankHdrImage(48, 32);
+    for (size_t i = 0; i < dim.pixels.size(); ++i) dim.pixels[i] = i % 4 == 3 ? 1.0f : 0.03f;
+    ASSERT_TRUE(writeImage(dir / "dim.exr", dim));
+    const std::string workspace = shellQuoted(sourceDir() / "effects/hdr_lighting.xml");
+    CommandResult on = runRmfx("render " + workspace + " --input dim.exr --target bloom --explain -o on.exr", dir.path());
+    ASSERT_EQ(on.status, 0) << on.err;
+    EXPECT_TRUE(has(on.out, "  bloom: run whatever 'bright' holds: its target 'bloom' is read back after the frame, and holds "
+                            "what its passes write\n"))
+        << on.out;
+    EXPECT_FALSE(has(on.out, "  star:")) << on.out;
+    CommandResult off = runRmfx("render " + workspace + " --input dim.exr --target bloom --content-skip off -o off.exr", dir.path());
+    ASSERT_EQ(off.status, 0) << off.err;
+    Result<Image> a = readImage(dir / "on.exr"), b = readImage(dir / "off.exr");
+    ASSERT_TRUE(a && b);
+    ASSERT_FALSE(a->pixels.empty());
+    EXPECT_EQ(a->at(0, 0, 3), 1.0f) << "what the bloom pass writes from a zero source";
+    EXPECT_TRUE(a->pixels == b->pixels) << "the target with content skip differs from the target without it";
+}
+
 // The article's pipeline: its tone map reads the one skippable effect, bloom.
 TEST(CliContentSkipGLTest, ExplainNamesThePassDrawnWithoutASkippedEffect) {
     ScratchDir dir;

@@ -86,6 +86,7 @@ void GlContentSkip::plan(const Workspace& ws, const std::vector<GpuPass*>& sched
                          const std::vector<std::string>& outputs) {
     effects_.clear();
     skipped_.clear();
+    runningAlways_.clear();
     lastFrameSlot_ = -1;
     effectOfPass_.assign(schedule.size(), -1);
     for (const Effect& e : ws.effects) {
@@ -93,18 +94,26 @@ void GlContentSkip::plan(const Workspace& ws, const std::vector<GpuPass*>& sched
         if (!source) continue;
         ActiveEffect active;
         active.effect = &e;
-        bool any = false;
+        std::vector<size_t> positions;
         std::set<std::string> written;
         for (size_t i = 0; i < schedule.size(); ++i) {
             const std::string& pass = schedule[i]->pass->name;
             if (std::find(e.passes.begin(), e.passes.end(), pass) == e.passes.end()) continue;
-            if (!any) active.first = i;
-            any = true;
-            active.last = i;
-            effectOfPass_[i] = static_cast<int>(effects_.size());
+            positions.push_back(i);
             written.insert(schedule[i]->target->name);
         }
-        if (!any) continue;
+        if (positions.empty()) continue;
+        // Asked for by name (an empty list, every target, is the editor's thumbnails): exact bits.
+        const auto readBack = std::find_if(written.begin(), written.end(), [&](const std::string& t) {
+            return std::find(outputs.begin(), outputs.end(), t) != outputs.end();
+        });
+        if (readBack != written.end()) {
+            runningAlways_[e.name] = "its target '" + *readBack + "' is read back after the frame, and holds what its passes write";
+            continue;
+        }
+        active.first = positions.front();
+        active.last = positions.back();
+        for (size_t i : positions) effectOfPass_[i] = static_cast<int>(effects_.size());
         // Handed on: read by a scheduled pass outside the effect, or read back after the frame.
         for (const std::string& t : written) {
             HandedOn handed;

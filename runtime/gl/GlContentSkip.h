@@ -96,6 +96,11 @@ public:
     // skipped: nothing reads the zeros. Replaces what an earlier call gave.
     void setSampledWithoutEffects(const std::map<size_t, std::set<const GpuTarget*>>& sampled);
 
+    // The effects with a source that content skip leaves running whatever it holds, each with why
+    // (a target it writes is read back after the frame, and must hold what its passes write, not
+    // zeros: running a pass on a zero source can still write a non-zero alpha). Set by plan().
+    const std::map<std::string, std::string>& runningAlways() const { return runningAlways_; }
+
     // The effects the last frame skipped, each with why; waits for the GPU's answer when `wait`,
     // else reports only what has arrived (and what arrived for an earlier frame is kept).
     const std::map<std::string, std::string>& skipped(bool wait);
@@ -155,6 +160,7 @@ private:
     int conditionOf_ = -1;           // the probe whose condition is active, or -1
     int notIssued_ = 0, lastNotIssued_ = 0;
     std::map<std::string, std::string> skipped_;
+    std::map<std::string, std::string> runningAlways_;
 };
 
 }  // namespace rmfx

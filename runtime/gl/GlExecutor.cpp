@@ -583,6 +583,10 @@ std::map<std::string, std::set<std::string>> GlExecutor::passesDrawnOnlyForEffec
     return out;
 }
 
+std::map<std::string, std::string> GlExecutor::effectsRunningWhateverTheContent() const {
+    return impl_->contentSkip ? impl_->contentSkip->runningAlways() : std::map<std::string, std::string>{};
+}
+
 int GlExecutor::passesNotIssuedByContentSkip() const {
     return impl_->contentSkip ? impl_->contentSkip->passesNotIssued() : 0;
 }

@@ -98,6 +98,9 @@ public:
     // nothing (<effect source>, docs/workspace-format.md), each with why. `wait`: for the GPU's
     // answer (after a headless frame); else what has arrived, as the editor asks each frame.
     const std::map<std::string, std::string>& contentSkippedEffects(bool wait = true);
+    // The effects with a source that content skip runs whatever their source holds, each with why
+    // (a target of theirs is an output: it must hold what their passes write).
+    std::map<std::string, std::string> effectsRunningWhateverTheContent() const;
     // The passes content skip draws compiled without the effects they read, where those are
     // skipped (gl/GlContentSkip.h's consumers), each with the effects, for the current switches.
     std::map<std::string, std::set<std::string>> passesDrawnWithoutSkippedEffects() const;

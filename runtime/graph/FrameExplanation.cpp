@@ -131,9 +131,14 @@ std::string explainFrame(const FrameExplanationInput& in) {
         << " bytes) for all declared targets: " << percent << "\n";
 
     // Effects with a source that ran this frame: skipped by content, or run because it held something.
+    // (An effect whose passes the outputs do not need is culled, not skipped: the table above says so.)
     std::vector<std::string> sourced;
-    for (const Effect& e : ws.effects)
-        if (!e.source.empty() && in.askedEffects.count(e.name) && !in.switchedOffEffects.count(e.name)) sourced.push_back(e.name);
+    for (const Effect& e : ws.effects) {
+        const bool scheduled = std::any_of(graph.nodes.begin(), graph.nodes.end(),
+                                           [&](const PassNode& n) { return n.effect && n.effect->name == e.name && n.fate == PassFate::Run; });
+        if (!e.source.empty() && scheduled && in.askedEffects.count(e.name) && !in.switchedOffEffects.count(e.name))
+            sourced.push_back(e.name);
+    }
     if (!sourced.empty()) {
         out << "\nskipped by content (the last frame):";
         if (!in.contentSkip) out << " nothing: --content-skip off";
@@ -142,7 +147,10 @@ std::string explainFrame(const FrameExplanationInput& in) {
             if (!in.contentSkip) break;
             const Effect& e = *ws.findEffect(name);
             auto skipped = in.contentSkipped.find(name);
-            if (skipped != in.contentSkipped.end())
+            auto always = in.runningWhateverTheContent.find(name);
+            if (always != in.runningWhateverTheContent.end())
+                out << "  " << name << ": run whatever '" << e.source << "' holds: " << always->second << "\n";
+            else if (skipped != in.contentSkipped.end())
                 out << "  " << name << ": skipped by content: " << skipped->second << "\n";
             else
                 out << "  " << name << ": run: '" << e.source << "' holds a pixel it works on\n";

@@ -30,6 +30,8 @@ struct FrameExplanationInput {
     std::map<std::string, std::set<std::string>> drawnWithoutSkipped;
     // Passes outside the effects drawn only where those effects run (only they read them), by pass.
     std::map<std::string, std::set<std::string>> drawnOnlyForEffects;
+    // Effects with a source run whatever it holds, with why (a target of theirs is an output).
+    std::map<std::string, std::string> runningWhateverTheContent;
 };
 
 std::string explainFrame(const FrameExplanationInput& input);
