@@ -101,6 +101,47 @@ TEST(RfxCameraFraming, TheViewerCameraIsRecoveredFromAStoredViewMatrix) {
     EXPECT_GT(ws.camera.farPlane, glm::length(eye - centre) + 50.0 * std::sqrt(3.0));
 }
 
+// A View left at the identity (alexey-malov/cg-course's NPR-optimized.rfx keeps one no shader
+// reads) was never filled by RenderMonkey's viewer, which stands away from the models: it would put
+// the eye at the origin, inside them. It is passed over, and the models are framed as without it;
+// the ViewProjection after it is still used.
+TEST(RfxCameraFraming, AViewLeftAtTheIdentityIsPassedOver) {
+    test::ScratchDir dir;
+    dir.write("big.obj", kBigCube);
+    const Workspace framed = load(dir, effectDrawing("big.obj"));
+    Workspace ws = load(dir, effectDrawing("big.obj", stored("view_matrix", "View", glm::dmat4(1.0))));
+    EXPECT_FLOAT_EQ(ws.camera.distance, framed.camera.distance);
+    EXPECT_EQ(ws.camera.target, framed.camera.target);
+    const glm::dvec3 eye(120, 80, 300), centre(10, 20, 30);
+    const glm::dmat4 viewProjection =
+        glm::perspective(glm::radians(30.0), 1.0, 1.0, 1000.0) * glm::lookAt(eye, centre, glm::dvec3(0, 1, 0));
+    ws = load(dir, effectDrawing("big.obj", stored("view_matrix", "View", glm::dmat4(1.0)) +
+                                                stored("view_proj", "ViewProjection", viewProjection)));
+    EXPECT_NEAR(glm::length(glm::dvec3(OrbitCamera(ws.camera).position()) - eye), 0.0, 1e-2);
+}
+
+// The same file keeps the viewer's eye in a ViewPosition (198.5, -23.8, -4.0 there): the camera
+// stands there and looks at the models. One inside the models' bounds, or at the origin where
+// nothing filled it, is passed over like the identity View.
+TEST(RfxCameraFraming, AStoredViewPositionAloneGivesTheEyeLookingAtTheModels) {
+    test::ScratchDir dir;
+    dir.write("big.obj", kBigCube);
+    auto position = [](glm::dvec3 p) {
+        return "<RmVectorVariable NAME=\"view_position\" VARIABLE_SEMANTIC=\"ViewPosition\" VALUE_0=\"" + std::to_string(p.x) +
+               "\" VALUE_1=\"" + std::to_string(p.y) + "\" VALUE_2=\"" + std::to_string(p.z) + "\" VALUE_3=\"1\"/>\n";
+    };
+    const glm::dvec3 eye(198.5, -23.8, -4.0), centre(10, 20, 30);
+    Workspace ws = load(dir, effectDrawing("big.obj", stored("view_matrix", "View", glm::dmat4(1.0)) + position(eye)));
+    EXPECT_NEAR(glm::length(glm::dvec3(OrbitCamera(ws.camera).position()) - eye), 0.0, 1e-2);
+    EXPECT_NEAR(glm::length(glm::dvec3(ws.camera.target) - centre), 0.0, 1e-2);
+    EXPECT_GT(ws.camera.farPlane, glm::length(eye - centre) + 50.0 * std::sqrt(3.0));
+    const Workspace framed = load(dir, effectDrawing("big.obj"));
+    for (glm::dvec3 inside : {glm::dvec3(0.0), glm::dvec3(20, 30, 40)}) {
+        ws = load(dir, effectDrawing("big.obj", position(inside)));
+        EXPECT_FLOAT_EQ(ws.camera.distance, framed.camera.distance) << inside.x;
+    }
+}
+
 // A dome around the scene (an octahedron reaching 5000 from the origin) is not framed: the
 // camera fits the cube inside it, not the dome.
 TEST(RfxCameraFraming, ADomeAroundTheSceneIsLeftOutOfTheFraming) {

@@ -198,7 +198,16 @@ void frameDrawnModels(Workspace& ws) {
         ws.camera.nearPlane = static_cast<float>(std::max(ws.camera.distance * 1e-3, 1e-3));
         sizeStandInsToTheCamera(ws);
     };
-    if (const Variable* view = stored(ws, "View", ValueType::Mat4)) {
+    // A View left at the identity was never filled by the viewer, which stands away from the
+    // models (it would put the eye at the origin, inside them): passed over.
+    const Variable* view = stored(ws, "View", ValueType::Mat4);
+    auto identity = [](const Variable& v) {
+        for (size_t i = 0; i < 16; ++i)
+            if (v.value.data[i] != (i % 5 == 0 ? 1.0f : 0.0f)) return false;
+        return true;
+    };
+    if (view && identity(*view)) view = nullptr;
+    if (view) {
         if (auto camera = fromStoredView(*view, models, haveModels, ws.camera)) {
             if (const Variable* projection = stored(ws, "Projection", ValueType::Mat4)) {
                 const double p11 = projection->value.data[5];
@@ -221,6 +230,22 @@ void frameDrawnModels(Workspace& ws) {
                 return;
             }
     if (!haveModels) return;
+    // Only the eye kept (ViewPosition, which the viewer fills with the matrices; 0 where it never
+    // did): looking from it at the models, when it stands outside them.
+    const Variable* viewPosition = stored(ws, "ViewPosition", ValueType::Vec4);
+    if (!viewPosition) viewPosition = stored(ws, "ViewPosition", ValueType::Vec3);
+    if (viewPosition) {
+        const glm::dvec3 eye(viewPosition->value.data[0], viewPosition->value.data[1], viewPosition->value.data[2]);
+        const glm::dvec3 toModels = models.centre - eye;
+        if (std::isfinite(eye.x + eye.y + eye.z) && eye != glm::dvec3(0.0) && glm::length(toModels) > models.radius) {
+            const glm::dvec3 forward = glm::normalize(toModels);
+            const glm::dvec3 up = std::abs(forward.y) > 0.999 ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
+            if (auto camera = orbitLookingAt(glm::vec3(eye), glm::vec3(models.centre), glm::vec3(up), ws.camera)) {
+                adopt(*camera);
+                return;
+            }
+        }
+    }
     const double halfFov = ws.camera.fovYDegrees * 0.5 * std::numbers::pi / 180.0;
     const double distance = models.radius / std::sin(halfFov) * 1.05;
     ws.camera.target = glm::vec3(models.centre);
