@@ -227,6 +227,11 @@ TEST(RfxCameraFraming, TheViewerCameraIsRecoveredFromAStoredViewProjectionAlone)
                      : glm::perspectiveRH_NO(glm::radians(50.0), 1.0, 1.0, 1000.0) * glm::lookAtRH(eye, centre, glm::dvec3(0, 1, 0));
         const std::string variable = stored("view_proj_matrix", "ViewProjection", viewProjection);
         Workspace ws = load(dir, direct3d ? direct3dEffectDrawing("big.obj", variable) : effectDrawing("big.obj", variable));
+        // RenderMonkey 1.0 saved no semantics: its examples' name for the same constant says it.
+        std::string unnamed = variable;
+        unnamed.erase(unnamed.find(" VARIABLE_SEMANTIC=\"ViewProjection\""), std::string(" VARIABLE_SEMANTIC=\"ViewProjection\"").size());
+        Workspace rm10 = load(dir, direct3d ? direct3dEffectDrawing("big.obj", unnamed) : effectDrawing("big.obj", unnamed));
+        EXPECT_NEAR(glm::length(glm::dvec3(OrbitCamera(rm10.camera).position()) - eye), 0.0, 0.05) << "without a semantic";
         const OrbitCamera camera(ws.camera);
         EXPECT_NEAR(glm::length(glm::dvec3(camera.position()) - eye), 0.0, 0.05);
         EXPECT_NEAR(glm::length(glm::dvec3(ws.camera.target) - centre), 0.0, 0.05);

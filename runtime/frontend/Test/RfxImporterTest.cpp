@@ -295,6 +295,31 @@ TEST(RfxImporter, ShadersKeepTheirRfxLinesAndDialect) {
     EXPECT_EQ(ws.passes[2].streams.size(), show.streams.size());
 }
 
+// RenderMonkey 1.0 kept a shader's code in its CODE attribute and the constants in
+// DECLARATION_BLOCK, compiled first: code line 1 is the element's line, the declarations before it.
+TEST(RfxImporter, RenderMonkey10ShadersFromAttributesAndTheActiveEffectByName) {
+    const std::filesystem::path file = rfxDir() / "rm10_attribute_code.rfx";
+    Workspace ws = imported("rm10_attribute_code.rfx");
+    EXPECT_EQ(allWarnings("rm10_attribute_code.rfx").find("ACTIVE_EFFECT"), std::string::npos)
+        << allWarnings("rm10_attribute_code.rfx");
+    ASSERT_EQ(ws.passes.size(), 1u);
+    EXPECT_EQ(ws.passes[0].name, "Single Pass");
+    ASSERT_EQ(ws.passes[0].shaders.size(), 2u);
+    const ShaderSource& pixel = ws.passes[0].shaders[1];
+    EXPECT_EQ(pixel.stage, ShaderStage::Fragment);
+    EXPECT_EQ(pixel.code.rfind("float4 Color: register(c0);\nfloat Gain: register(c1);\nfloat4 ps_main()", 0), 0u) << pixel.code;
+    EXPECT_EQ(pixel.codeLine, lineOf(file, "PIXEL_SHADER=\"TRUE\" DECLARATION_BLOCK=\"float4") - 2);
+    EXPECT_EQ(ws.passes[0].shaders[0].code.substr(0, 28), "// Vertex shader entry point");
+    EXPECT_EQ(ws.passes[0].shaders[0].codeLine, lineOf(file, "CODE=\"// Vertex shader entry point"));
+    EXPECT_NE(errorsOf("<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\" ACTIVE_EFFECT=\"E\">\n<RmDirectXEffect NAME=\"E\" "
+                       "API=\"D3D\">\n<RmPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n<RmHLSLShader NAME=\"S\" "
+                       "PIXEL_SHADER=\"TRUE\" TARGET=\"ps_2_0\" ENTRY_POINT=\"main\"/>\n</RmPass>\n</RmDirectXEffect>\n"
+                       "</RmEffectWorkspace>\n</RENDER_MONKEY>\n")
+                  .find("t.rfx:5: error: <RmHLSLShader NAME=\"S\">: it has no <RmShaderCode> (nor a CODE attribute, where "
+                        "RenderMonkey 1.0 kept the code)"),
+              std::string::npos);
+}
+
 TEST(RfxImporter, SamplerStatesAndStreams) {
     Workspace ws = imported("gl_legacy.rfx");
     const Pass& show = ws.passes[1];

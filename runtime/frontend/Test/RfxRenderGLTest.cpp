@@ -97,6 +97,14 @@ TEST_F(RfxCoreRenderGLTest, Direct3DHlslPassesRunThroughGlslang) {
     expectUniformOutput(runWorkspace(std::move(ws), RunSettings{{kSize, kSize}}), expected);
 }
 
+// RenderMonkey 1.0's form: the code in CODE attributes, the constants in DECLARATION_BLOCK, the
+// active effect named alone (the first effect, "Decoy", would write red).
+TEST_F(RfxCoreRenderGLTest, RenderMonkey10CodeAttributesAndItsActiveEffectRun) {
+    auto ws = loadRfx("rm10_attribute_code.rfx", GlProfile::Core);
+    ASSERT_TRUE(ws);
+    expectUniformOutput(runWorkspace(std::move(ws), RunSettings{{kSize, kSize}}), {0.4, 0.2, 0.1});
+}
+
 TEST_F(RfxCoreRenderGLTest, Direct3DStreamsInitialValuesAndCbuffersReachTheShaders) {
     auto ws = loadRfx("d3d_streams.rfx", GlProfile::Core);
     ASSERT_TRUE(ws);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <vector>
@@ -39,10 +40,18 @@ Sphere boundsOf(const std::vector<const Mesh*>& meshes) {
     return s;
 }
 
-// The value RenderMonkey saved last in a variable it fills by this semantic.
+// The value RenderMonkey saved last in a variable it fills by this semantic. RenderMonkey 1.0's
+// files name no semantics: their shaders read the camera from constants under the names its
+// examples gave them (view_proj_matrix, view_matrix, view_position), saved as the viewer left them.
 const Variable* stored(const Workspace& ws, const std::string& semantic, ValueType type) {
     for (const Variable& v : ws.variables)
         if (v.semantic == semantic && v.value.type == type) return &v;
+    static const std::map<std::string, std::string> conventionalNames = {
+        {"ViewProjection", "view_proj_matrix"}, {"View", "view_matrix"}, {"ViewPosition", "view_position"}};
+    auto name = conventionalNames.find(semantic);
+    if (name == conventionalNames.end()) return nullptr;
+    for (const Variable& v : ws.variables)
+        if (v.semantic.empty() && v.value.type == type && v.name == name->second) return &v;
     return nullptr;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "frontend/rfx/detail/RfxShaderCode.h"
 #include "frontend/shader/D3DAsmHlslNames.h"
 #include "frontend/shader/D3DAsmParser.h"
 
@@ -11,9 +12,8 @@ std::optional<ShaderSource> readAssemblyShader(const RfxElement& c, const Assemb
     const bool pixel = c.flag("PIXEL_SHADER", false).value_or(false);
     const std::string stage = pixel ? "pixel" : "vertex";
     why = "its " + stage + " shader " + c.label() + " (line " + std::to_string(c.line()) + ") ";
-    const XMLElement* codeElement = c.xml()->FirstChildElement("RmShaderCode");
-    if (!codeElement) {
-        c.error("it has no <RmShaderCode>");
+    std::optional<RfxShaderCode> codeOf = shaderCodeOf(c);
+    if (!codeOf) {
         why += "has no code";
         return std::nullopt;
     }
@@ -22,14 +22,8 @@ std::optional<ShaderSource> readAssemblyShader(const RfxElement& c, const Assemb
     s.where = c.where();
     s.dialect = ShaderDialect::Hlsl;
     s.matrixOrder = HlslMatrixOrder::ColumnVector;  // m4x4 reads register base+i as row i
-    const tinyxml2::XMLNode* text = codeElement->FirstChild();
-    std::string code;
-    if (text && text->ToText()) {
-        code = text->Value();
-        s.codeLine = text->GetLineNum();
-    } else {
-        s.codeLine = codeElement->GetLineNum();
-    }
+    std::string code = std::move(codeOf->code);
+    s.codeLine = codeOf->line;
 
     bool failed = false;
     auto report = [&](const std::vector<d3dasm::Message>& messages) {

@@ -1,5 +1,6 @@
 #include "frontend/rfx/detail/RfxEffectCatalogue.h"
 
+#include <algorithm>
 #include <string_view>
 
 #include "frontend/rfx/detail/RfxElement.h"
@@ -58,6 +59,10 @@ RfxCatalogue readCatalogue(const XMLElement* root, const std::string& file, Diag
     if (!out.activePath.empty() && !out.effects.empty()) {
         bool found = false;
         for (const RfxEffectEntry& e : out.effects) found = found || e.active;
+        // RenderMonkey 1.0 saved the effect's name alone: the active one, where it names one.
+        if (!found && std::count_if(out.effects.begin(), out.effects.end(),
+                                    [&](const RfxEffectEntry& e) { return e.name == out.activePath; }) == 1)
+            for (RfxEffectEntry& e : out.effects) found = found || (e.active = e.name == out.activePath);
         if (!found)
             wsElement.warning("ACTIVE_EFFECT '" + out.activePath + "' names no effect of the workspace");
     }

@@ -11,6 +11,7 @@
 #include "frontend/rfx/detail/RfxRenderStates.h"
 #include "frontend/rfx/detail/RfxSamplerStates.h"
 #include "frontend/rfx/detail/RfxTextureStageStates.h"
+#include "frontend/rfx/detail/RfxShaderCode.h"
 #include "frontend/shader/HlslGlobalInitializers.h"
 #include "frontend/shader/HlslSemantics.h"
 
@@ -155,18 +156,10 @@ private:
             s.matrixOrder = hlslMatrices_;
             constantsOf(c);
         }
-        const XMLElement* code = c.xml()->FirstChildElement("RmShaderCode");
-        if (!code) {
-            c.error("it has no <RmShaderCode>");
-            return;
-        }
-        const tinyxml2::XMLNode* text = code->FirstChild();
-        if (text && text->ToText()) {
-            s.code = text->Value();
-            s.codeLine = text->GetLineNum();
-        } else {
-            s.codeLine = code->GetLineNum();
-        }
+        std::optional<RfxShaderCode> code = shaderCodeOf(c);
+        if (!code) return;
+        s.code = std::move(code->code);
+        s.codeLine = code->line;
         if (!pixel) return;
         for (const ShaderSource& other : out_.pass.shaders)
             if (other.stage == s.stage) {
