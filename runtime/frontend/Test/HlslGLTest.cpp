@@ -555,7 +555,7 @@ float4 main(float4 inDiffuse : COLOR0, float2 uv : TEXCOORD0, float3 extra : TEX
     std::unique_ptr<Workspace> ws = hlslWorkspace(xml);
     ASSERT_TRUE(ws);
     const std::string warnings = formatAll(validateWorkspace(*ws).diagnostics());
-    EXPECT_NE(warnings.find("warning: <pass name=\"hlsl\">: the pixel shader reads COLOR0, TEXCOORD3, which the vertex "
+    EXPECT_NE(warnings.find("warning: <pass name=\"hlsl\">: the pixel shader takes COLOR0, TEXCOORD3 as input, which the vertex "
                             "shader does not write; Direct3D 9 ran it anyway, so rmfx supplies them"),
               std::string::npos) << warnings;
     RefImage out = renderOut(xml);

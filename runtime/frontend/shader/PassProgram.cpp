@@ -146,7 +146,7 @@ Result<PassProgramSource> assemblePassProgram(const Workspace& ws, const Pass& p
             std::string list;
             for (const std::string& semantic : supplied) list += (list.empty() ? "" : ", ") + semantic;
             diagnostics.push_back({Diagnostic::Severity::Warning, fragment->where, passLabel(pass),
-                                   "the pixel shader reads " + list + ", which the vertex shader does not write; " +
+                                   "the pixel shader takes " + list + " as input, which the vertex shader does not write; " +
                                        "Direct3D 9 ran it anyway, so rmfx supplies " +
                                        (supplied.size() == 1 ? "it" : "them") +
                                        " (COLORn opaque white, others (0, 0, 0, 1))"});
