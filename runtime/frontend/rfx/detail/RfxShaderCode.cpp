@@ -17,9 +17,10 @@ std::optional<RfxShaderCode> shaderCodeOf(const RfxElement& shader) {
         return out;
     }
     if (std::optional<std::string> code = shader.text("CODE", false)) {
-        // One attribute on one line of the file: a message about line n of the code names the
-        // element's line. The declarations come first, on lines of their own, as RenderMonkey
-        // compiled them; a message about them points before the element.
+        // The attribute holds every line of the code on the element's one line of the file, so no
+        // line of the file matches a line of the code: the code's first line is put on the
+        // element's line, a message about its n-th line points n - 1 lines past it, and one about
+        // the declarations (first, on lines of their own, as RenderMonkey compiled them) before it.
         const std::string declarations = shader.text("DECLARATION_BLOCK", false).value_or("");
         int declarationLines = 0;
         for (char c : declarations) declarationLines += c == '\n' ? 1 : 0;
