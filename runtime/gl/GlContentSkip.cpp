@@ -114,11 +114,12 @@ void GlContentSkip::plan(const Workspace& ws, const std::vector<GpuPass*>& sched
         active.first = positions.front();
         active.last = positions.back();
         for (size_t i : positions) effectOfPass_[i] = static_cast<int>(effects_.size());
-        // Handed on: read by a scheduled pass outside the effect, or read back after the frame.
+        // Handed on: read by a scheduled pass outside the effect, or read back after the frame
+        // (only where every target is: one asked for by name makes the effect run, above).
         for (const std::string& t : written) {
             HandedOn handed;
             handed.target = targets.find(t);
-            handed.readBack = outputs.empty() || std::find(outputs.begin(), outputs.end(), t) != outputs.end();
+            handed.readBack = outputs.empty();
             for (size_t i = 0; i < schedule.size(); ++i)
                 if (effectOfPass_[i] != static_cast<int>(effects_.size()) && readsThisFrame(*schedule[i]->pass, t))
                     handed.readers.push_back(i);

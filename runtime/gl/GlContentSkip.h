@@ -118,7 +118,7 @@ private:
     // skipped, unless nothing would read the zeros.
     struct HandedOn {
         GpuTarget* target = nullptr;
-        bool readBack = false;        // after the frame
+        bool readBack = false;        // after the frame (the editor reads every target)
         std::vector<size_t> readers;  // schedule positions of the passes outside the effect that sample it
         bool cleared = true;
     };

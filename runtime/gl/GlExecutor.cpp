@@ -127,9 +127,9 @@ struct GlExecutor::Impl {
             for (const GlContentSkip::Consumer& c : contentSkip->consumers())
                 if (const GpuPass* without = passWithout(*schedule[c.position], c.effects)) {
                     withoutEffectsAt[c.position] = without;
-                    std::set<const GpuTarget*>& targets = sampled[c.position];
+                    std::set<const GpuTarget*>& read = sampled[c.position];
                     for (const SamplerSlot& slot : without->samplers)
-                        if (slot.target) targets.insert(slot.target);
+                        if (slot.target) read.insert(slot.target);
                 }
         contentSkip->setSampledWithoutEffects(sampled);
     }
