@@ -26,7 +26,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -40,8 +39,8 @@
 #include <epoxy/gl.h>
 
 #include "bench/PairedFrames.h"
+#include "bench/RoundFigures.h"
 #include "bench/RoundsArguments.h"
-#include "core/Percentile.h"
 #include "gl/GlContext.h"
 #include "gl/GlExecutor.h"
 #include "io/image/ImageIO.h"
@@ -98,14 +97,8 @@ struct Pair {
     Input input;
 };
 
-double median(std::vector<double> v) { return v.empty() ? 0.0 : percentile(std::move(v), 0.5); }
-
-// This thread's CPU time: what issuing a frame costs the caller, the driver's work on it included.
-double threadCpuMilliseconds() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
-}
+using bench::median;
+using bench::threadCpuMilliseconds;
 
 }  // namespace
 
@@ -231,12 +224,7 @@ int main(int argc, char** argv) {
         for (size_t k = 0; k < roundMedians[{top, i}].size(); ++k) r.push_back(roundMedians[{top, i}][k] / roundMedians[{bottom, i}][k]);
         return r;
     };
-    auto spread = [](std::vector<double> r) {
-        char text[64];
-        std::snprintf(text, sizeof text, "%.3f (%.3f to %.3f)", median(r), *std::min_element(r.begin(), r.end()),
-                      *std::max_element(r.begin(), r.end()));
-        return std::string(text);
-    };
+    const auto spread = bench::medianAndRange;
     std::printf("\n| input | skip on (ms) | skip off (ms) | no effects (ms) | on / off | on / no effects | frames skipping an effect | target |\n");
     std::printf("|---|---|---|---|---|---|---|---|\n");
     for (Input i : {Input::Dark, Input::Bright, Input::Alternating}) {

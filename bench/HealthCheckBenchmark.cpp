@@ -15,7 +15,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -26,8 +25,8 @@
 #include <epoxy/gl.h>
 
 #include "bench/PairedFrames.h"
+#include "bench/RoundFigures.h"
 #include "bench/RoundsArguments.h"
-#include "core/Percentile.h"
 #include "gl/GlContext.h"
 #include "gl/GlExecutor.h"
 #include "validation/WorkspaceLoader.h"
@@ -38,7 +37,7 @@ using namespace rmfx;
 using Clock = std::chrono::steady_clock;
 
 
-double median(std::vector<double> v) { return v.empty() ? 0.0 : percentile(std::move(v), 0.5); }
+using bench::median;
 
 }  // namespace
 
@@ -83,11 +82,7 @@ int main(int argc, char** argv) {
     // This thread's CPU time to issue a frame (renderFrame without the check's read-back wait is
     // not separable: the read-back is inside it), per executor over all rounds.
     std::vector<double> issueCpu[kExecutors];
-    auto threadCpuMilliseconds = [] {
-        timespec t{};
-        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-        return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
-    };
+    using bench::threadCpuMilliseconds;
     auto run = [&](int e, int frames) {
         std::vector<double> times;
         for (int k = 0; k < frames; ++k) {
@@ -160,12 +155,7 @@ int main(int argc, char** argv) {
         executors[e]->setTimingEnabled(false);
         gpu[e] = median(samples);
     }
-    auto spread = [](const std::vector<double>& v) {
-        char text[64];
-        std::snprintf(text, sizeof text, "%.3f (%.3f to %.3f)", median(v), *std::min_element(v.begin(), v.end()),
-                      *std::max_element(v.begin(), v.end()));
-        return std::string(text);
-    };
+    const auto spread = bench::medianAndRange;
     auto row = [&](const char* label, const double* values, const std::vector<double>* roundRatios, const char* target) {
         std::printf("| %s |", label);
         for (int e = 0; e < kExecutors; ++e) std::printf(" %.2f |", values[e]);
