@@ -257,6 +257,7 @@ void GlContentSkip::beginFrame() {
     for (Probe& p : probes_) {
         p.issued = false;
         p.answer = Answer::Pending;
+        p.fence.reset();
     }
     conditionOf_ = -1;
     notIssued_ = 0;
@@ -265,13 +266,19 @@ void GlContentSkip::beginFrame() {
 GlContentSkip::Answer GlContentSkip::answerOf(Probe& probe) {
     if (!probe.issued || probe.answer != Answer::Pending || decision_ == FramePlanOptions::ContentSkipDecision::GpuOnly)
         return probe.answer;
+    const bool waits = decision_ == FramePlanOptions::ContentSkipDecision::CpuWaits;
+    // The fence, not the query: NVIDIA reports GL_INVALID_OPERATION for reading a query that an
+    // active conditional rendering uses (the passes spanned by the probe's condition ask here).
+    if (!waits && !probe.fence.signalled()) return Answer::Pending;
+    if (conditionOf_ >= 0 && &probes_[static_cast<size_t>(conditionOf_)] == &probe) endCondition();
     const GLuint query = probe.queries[slot_].get();
-    GLuint available = decision_ == FramePlanOptions::ContentSkipDecision::CpuWaits ? 1 : 0;
+    GLuint available = waits ? 1 : 0;
     if (!available) glGetQueryObjectuiv(query, GL_QUERY_RESULT_AVAILABLE, &available);
     if (!available) return Answer::Pending;
     GLuint passed = 1;
     glGetQueryObjectuiv(query, GL_QUERY_RESULT, &passed);
     probe.answer = passed ? Answer::Something : Answer::Nothing;
+    probe.fence.reset();
     return probe.answer;
 }
 
@@ -312,7 +319,10 @@ void GlContentSkip::issueProbe(Probe& probe) {
     glBindSampler(0, 0);
     probe.issued = true;
     // Sent now, so that the answer may be in before the passes it decides are issued.
-    if (decision_ == FramePlanOptions::ContentSkipDecision::CpuWhenKnown) glFlush();
+    if (decision_ == FramePlanOptions::ContentSkipDecision::CpuWhenKnown) {
+        probe.fence.insert();
+        glFlush();
+    }
 }
 
 bool GlContentSkip::beforePass(size_t index) {

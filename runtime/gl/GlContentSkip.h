@@ -111,6 +111,7 @@ private:
         GpuTarget* source = nullptr;
         glm::bvec4 channels{false};
         QueryHandle queries[3];
+        FenceHandle fence;    // after this frame's query (CpuWhenKnown): whether its answer is in
         bool issued = false;  // this frame
         Answer answer = Answer::Pending;
     };
@@ -131,7 +132,9 @@ private:
 
     GlContentSkip() = default;
     void issueProbe(Probe& probe);
-    Answer answerOf(Probe& probe);  // asks the GPU without waiting (but with CpuWaits)
+    // Asks the GPU without waiting (but with CpuWaits); ends a conditional rendering on the
+    // probe's query before reading it.
+    Answer answerOf(Probe& probe);
     void endCondition();
     void planFeeders(const std::vector<GpuPass*>& schedule, const std::vector<std::string>& outputs);
     void planConsumers(const std::vector<GpuPass*>& schedule);

@@ -8,6 +8,8 @@
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
+#include "gl/GlDebugOutput.h"
+
 namespace rmfx {
 namespace {
 
@@ -79,10 +81,11 @@ Result<std::unique_ptr<GlContext>> GlContext::createHeadless(GlProfile profile) 
             terminateIfUnused(c.display);
             continue;
         }
+        const bool debug = glDebugOutputAsked();
         const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
                                      EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                      core ? EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT : EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
-                                     EGL_NONE};
+                                     debug ? EGL_CONTEXT_OPENGL_DEBUG : EGL_NONE, EGL_TRUE, EGL_NONE};
         EGLConfig config = EGL_NO_CONFIG_KHR;
         bool noConfig = hasExtension(eglQueryString(c.display, EGL_EXTENSIONS), "EGL_KHR_no_config_context");
         if (!noConfig) {
@@ -115,6 +118,7 @@ Result<std::unique_ptr<GlContext>> GlContext::createHeadless(GlProfile profile) 
         gl->display_ = c.display;
         gl->context_ = context;
         gl->profile_ = profile;
+        if (debug) installGlDebugOutput();
         std::string version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
         // Mesa names the profile in its version string ("4.5 (Compatibility Profile) Mesa"); NVIDIA does not.
         GLint mask = 0;

@@ -17,6 +17,23 @@ void deleteVertexArray(unsigned name) { glDeleteVertexArrays(1, &name); }
 
 }  // namespace gl
 
+void FenceHandle::reset() {
+    if (sync_) glDeleteSync(static_cast<GLsync>(sync_));
+    sync_ = nullptr;
+}
+
+void FenceHandle::insert() {
+    reset();
+    sync_ = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+}
+
+bool FenceHandle::signalled() const {
+    if (!sync_) return false;
+    GLint status = GL_UNSIGNALED;
+    glGetSynciv(static_cast<GLsync>(sync_), GL_SYNC_STATUS, 1, nullptr, &status);
+    return status == GL_SIGNALED;
+}
+
 TextureHandle createTexture(unsigned target) {
     GLuint name = 0;
     glCreateTextures(target, 1, &name);

@@ -54,6 +54,33 @@ using QueryHandle = GlHandle<gl::deleteQuery>;
 using BufferHandle = GlHandle<gl::deleteBuffer>;
 using VertexArrayHandle = GlHandle<gl::deleteVertexArray>;
 
+// A fence (glFenceSync) in the command stream: whether the GPU has passed it can be asked at any
+// time without touching what came before it (a query an active conditional rendering uses, which
+// NVIDIA forbids reading).
+class FenceHandle {
+public:
+    FenceHandle() = default;
+    ~FenceHandle() { reset(); }
+    FenceHandle(FenceHandle&& other) noexcept : sync_(std::exchange(other.sync_, nullptr)) {}
+    FenceHandle& operator=(FenceHandle&& other) noexcept {
+        if (this != &other) {
+            reset();
+            sync_ = std::exchange(other.sync_, nullptr);
+        }
+        return *this;
+    }
+    FenceHandle(const FenceHandle&) = delete;
+    FenceHandle& operator=(const FenceHandle&) = delete;
+
+    explicit operator bool() const { return sync_ != nullptr; }
+    void reset();
+    void insert();          // a new fence after the commands issued so far (replacing this one)
+    bool signalled() const; // the GPU has passed it; false without one. Never waits or flushes.
+
+private:
+    void* sync_ = nullptr;  // GLsync
+};
+
 // New objects (glCreate*), owned by the handle returned.
 TextureHandle createTexture(unsigned target);
 FramebufferHandle createFramebuffer();
