@@ -1,7 +1,8 @@
 // What rmfx render --check (gl/GlHealthCheck.h) costs: the frame time of effects/hdr_lighting.xml
 // (or --workspace W) at 512x512 with the check off and on, side by side. Each round renders
 // --frames frames with each executor, the two in alternating order, a frame being renderFrame +
-// glFinish on the wall clock; the check's frame includes reading its buffer back at the end.
+// glFinish on the wall clock; the check's frame includes reading back the results of the frames
+// before it that the GPU has finished (GlExecutor::renderFrame reads them without waiting).
 // Four executors: the check off, the check inspecting each target after its pass (after-pass),
 // the passes counting what they write (while-drawing, gl/HealthInstrumentation.h), and the
 // default (auto: while-drawing on a GPU, after-pass on a software rasteriser).
@@ -79,8 +80,8 @@ int main(int argc, char** argv) {
     }
     std::string frameError;
     int frameIndex = 0;
-    // This thread's CPU time to issue a frame (renderFrame without the check's read-back wait is
-    // not separable: the read-back is inside it), per executor over all rounds.
+    // This thread's CPU time to issue a frame (renderFrame, with the check's reading of the results
+    // of earlier frames, which waits for nothing), per executor over all rounds.
     std::vector<double> issueCpu[kExecutors];
     using bench::threadCpuMilliseconds;
     auto run = [&](int e, int frames) {

@@ -74,6 +74,19 @@ struct GlExecutor::Impl {
     std::unique_ptr<GlHealthCheck> healthCheck;  // with FramePlanOptions::checkHealth
     std::optional<FrameHealth> lastHealth;
     std::vector<HealthFinding> firstFindings;  // of each kind, since the first frame
+
+    // The health of the frames whose results are in (all that ended, when `wait`), in order.
+    void takeHealth(bool wait) {
+        if (!healthCheck) return;
+        for (FrameHealth& frame : healthCheck->finishedFrames(wait)) {
+            for (const HealthFinding& f : frame.findings)
+                if (std::none_of(firstFindings.begin(), firstFindings.end(), [&](const HealthFinding& k) { return k.kind == f.kind; }))
+                    firstFindings.push_back(f);
+            lastHealth = std::move(frame);
+        }
+        std::sort(firstFindings.begin(), firstFindings.end(),
+                  [](const HealthFinding& a, const HealthFinding& b) { return a.kind < b.kind; });
+    }
     glm::dvec2 mouse{0.0};
     glm::ivec3 mouseButtons{0};
 
@@ -431,12 +444,8 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
     }
     if (s.contentSkip) s.contentSkip->endFrame();
     if (s.healthCheck) {
-        s.lastHealth = s.healthCheck->endFrame();
-        for (const HealthFinding& f : s.lastHealth->findings)
-            if (std::none_of(s.firstFindings.begin(), s.firstFindings.end(), [&](const HealthFinding& k) { return k.kind == f.kind; }))
-                s.firstFindings.push_back(f);
-        std::sort(s.firstFindings.begin(), s.firstFindings.end(),
-                  [](const HealthFinding& a, const HealthFinding& b) { return a.kind < b.kind; });
+        s.healthCheck->endFrame();
+        s.takeHealth(false);
     }
     s.targets.finishFrame();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -562,8 +571,14 @@ const std::set<std::string>& GlExecutor::switchedOffEffects() const {
 }
 const std::vector<std::string>& GlExecutor::passesRun() const { return impl_->lastFramePasses; }
 
-const FrameHealth* GlExecutor::frameHealth() const { return impl_->lastHealth ? &*impl_->lastHealth : nullptr; }
-const std::vector<HealthFinding>& GlExecutor::firstHealthFindings() const { return impl_->firstFindings; }
+const FrameHealth* GlExecutor::frameHealth(bool wait) const {
+    impl_->takeHealth(wait);
+    return impl_->lastHealth ? &*impl_->lastHealth : nullptr;
+}
+const std::vector<HealthFinding>& GlExecutor::firstHealthFindings() const {
+    impl_->takeHealth(true);
+    return impl_->firstFindings;
+}
 
 std::map<std::string, std::set<std::string>> GlExecutor::passesDrawnWithoutSkippedEffects() const {
     const Impl& s = *impl_;

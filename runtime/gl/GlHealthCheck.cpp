@@ -186,33 +186,37 @@ Result<std::unique_ptr<GlHealthCheck>> GlHealthCheck::create(HealthCheckMethod m
     return check;
 }
 
-void GlHealthCheck::growBuffer(size_t passes) {
-    if (buffer_.get() && passes <= capacity_) return;
-    capacity_ = std::max<size_t>(passes, 16);
-    const size_t words = healthRecordsBase(capacity_) +
-                         capacity_ * healthKindCount * kHealthRecordSlots * static_cast<size_t>(kHealthRecordWords);
-    buffer_ = createBuffer();
-    glNamedBufferStorage(buffer_.get(), static_cast<GLsizeiptr>(words * sizeof(std::int32_t)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+void GlHealthCheck::growBuffer(FrameInFlight& f, size_t passes) {
+    if (f.buffer.get() && passes <= f.capacity) return;
+    f.capacity = std::max<size_t>(passes, 16);
+    const size_t words = healthRecordsBase(f.capacity) +
+                         f.capacity * healthKindCount * kHealthRecordSlots * static_cast<size_t>(kHealthRecordWords);
+    f.buffer = createBuffer();
+    glNamedBufferStorage(f.buffer.get(), static_cast<GLsizeiptr>(words * sizeof(std::int32_t)), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
 void GlHealthCheck::beginFrame(int frame, size_t passes) {
-    frame_ = frame;
-    growBuffer(passes);
-    passes_.assign(passes, PassHealth{});
-    inputLabels_.assign(passes, {});
-    sizes_.assign(passes, glm::ivec2(1));
+    auto free = std::find_if(frames_.begin(), frames_.end(), [](const auto& f) { return !f->inFlight; });
+    if (free == frames_.end()) free = frames_.insert(frames_.end(), std::make_unique<FrameInFlight>());
+    now_ = free->get();
+    FrameInFlight& f = now();
+    f.frame = frame;
+    growBuffer(f, passes);
+    f.passes.assign(passes, PassHealth{});
+    f.inputLabels.assign(passes, {});
+    f.sizes.assign(passes, glm::ivec2(1));
     pending_.clear();
     std::vector<std::int32_t> entries(healthRecordsBase(passes), 0);  // count, first, records taken, 0
     for (size_t e = 1; e < entries.size(); e += kHealthEntryWords) entries[e] = INT_MAX;
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     if (!entries.empty())
-        glNamedBufferSubData(buffer_.get(), 0, static_cast<GLsizeiptr>(entries.size() * sizeof(std::int32_t)), entries.data());
+        glNamedBufferSubData(f.buffer.get(), 0, static_cast<GLsizeiptr>(entries.size() * sizeof(std::int32_t)), entries.data());
     // For the frame: nothing else in rmfx binds a storage buffer there.
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding_), buffer_.get());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding_), f.buffer.get());
 }
 
 void GlHealthCheck::bindCommonState() {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding_), buffer_.get());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(binding_), now().buffer.get());
     glBindFramebuffer(GL_FRAMEBUFFER, empty_.get());
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
@@ -277,7 +281,7 @@ void GlHealthCheck::drawPixel(const Inspection& i) {
         glBindSampler(static_cast<GLuint>(k), 0);
     }
     glUniform1iv(fetchInputs_, kHealthMaxInputs, units);
-    glUniform1i(fetchRecords_, static_cast<GLint>(healthRecordsBase(capacity_)));
+    glUniform1i(fetchRecords_, static_cast<GLint>(healthRecordsBase(now().capacity)));
     glUniform1i(fetchInputCount_, count);
     glUniform1i(fetchPosition_, static_cast<GLint>(i.position));
     glViewport(0, 0, healthKindCount, 1);
@@ -286,16 +290,16 @@ void GlHealthCheck::drawPixel(const Inspection& i) {
 
 bool GlHealthCheck::notePass(size_t position, const std::string& pass, const std::string& target, glm::ivec2 size,
                              TargetFormat format, const std::vector<Input>& inputs) {
-    if (position >= passes_.size()) return false;
-    PassHealth& health = passes_[position];
+    if (position >= now().passes.size()) return false;
+    PassHealth& health = now().passes[position];
     health.pass = pass;
     health.target = target;
     health.inspected = formatHealthLimits(format).inspected;
     if (!health.inspected || size.x <= 0 || size.y <= 0) return false;
-    sizes_[position] = size;
-    inputLabels_[position].clear();
+    now().sizes[position] = size;
+    now().inputLabels[position].clear();
     for (size_t k = 0; k < inputs.size() && k < static_cast<size_t>(kHealthMaxInputs); ++k)
-        inputLabels_[position].push_back(inputs[k].label);
+        now().inputLabels[position].push_back(inputs[k].label);
     return true;
 }
 
@@ -312,7 +316,7 @@ bool GlHealthCheck::countsWhileDrawing() const {
 void GlHealthCheck::afterPass(size_t position, const std::string& pass, const std::string& target, unsigned texture,
                               glm::ivec2 size, TargetFormat format, const std::vector<Input>& inputs,
                               const std::string& whyNotWhileDrawing, unsigned condition) {
-    if (position < passes_.size()) passes_[position].whyNotWhileDrawing = whyNotWhileDrawing;
+    if (position < now().passes.size()) now().passes[position].whyNotWhileDrawing = whyNotWhileDrawing;
     if (!notePass(position, pass, target, size, format, inputs)) return;
     if (texture == 0 || size.x > maxSize_.x || size.y > maxSize_.y) return;
     Inspection inspection{position, texture, size, formatHealthLimits(format), {}, condition};
@@ -324,11 +328,11 @@ void GlHealthCheck::beforeCountingPass(size_t position, const std::string& pass,
                                        TargetFormat format, const std::vector<Input>& inputs, const HealthUniforms& uniforms,
                                        bool keepsEarlierPixels) {
     notePass(position, pass, target, size, format, inputs);
-    if (position < passes_.size()) {
-        passes_[position].countedWhileDrawing = true;
-        passes_[position].ownPixelsOnly = keepsEarlierPixels;
+    if (position < now().passes.size()) {
+        now().passes[position].countedWhileDrawing = true;
+        now().passes[position].ownPixelsOnly = keepsEarlierPixels;
     }
-    setHealthUniforms(uniforms, position, capacity_, size, format);
+    setHealthUniforms(uniforms, position, now().capacity, size, format);
 }
 
 void GlHealthCheck::beforeWriting(unsigned texture) {
@@ -369,39 +373,60 @@ void GlHealthCheck::inspectPending() {
     pending_.clear();
 }
 
-FrameHealth GlHealthCheck::endFrame() {
+void GlHealthCheck::endFrame() {
     inspectPending();
+    FrameInFlight& f = now();
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // the shaders' writes, for the reads after the fence
+    f.fence.insert();
+    f.inFlight = true;
+    inFlight_.push_back(now_);
+    glFlush();  // so that the fence signals without anything else sending it
+}
+
+std::vector<FrameHealth> GlHealthCheck::finishedFrames(bool wait) {
+    std::vector<FrameHealth> out;
+    size_t done = 0;
+    while (done < inFlight_.size() && (wait || inFlight_[done]->fence.signalled())) {
+        out.push_back(read(*inFlight_[done]));
+        ++done;
+    }
+    inFlight_.erase(inFlight_.begin(), inFlight_.begin() + static_cast<std::ptrdiff_t>(done));
+    return out;
+}
+
+FrameHealth GlHealthCheck::read(FrameInFlight& f) {
+    f.inFlight = false;
+    f.fence.reset();
     FrameHealth frame;
-    const size_t passes = passes_.size();
+    const size_t passes = f.passes.size();
     std::vector<std::int32_t> entries(healthRecordsBase(passes));
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     if (!entries.empty())
-        glGetNamedBufferSubData(buffer_.get(), 0, static_cast<GLsizeiptr>(entries.size() * sizeof(std::int32_t)), entries.data());
+        glGetNamedBufferSubData(f.buffer.get(), 0, static_cast<GLsizeiptr>(entries.size() * sizeof(std::int32_t)), entries.data());
     auto entry = [&](size_t pass, int kind) { return &entries[(pass * healthKindCount + static_cast<size_t>(kind)) * kHealthEntryWords]; };
     for (size_t p = 0; p < passes; ++p)
-        for (int k = 0; k < healthKindCount; ++k) passes_[p].counts[static_cast<size_t>(k)] = entry(p, k)[0];
+        for (int k = 0; k < healthKindCount; ++k) f.passes[p].counts[static_cast<size_t>(k)] = entry(p, k)[0];
     for (int k = 0; k < healthKindCount; ++k) {
         size_t first = passes;
         for (size_t p = 0; p < passes && first == passes; ++p)
-            if (passes_[p].counts[static_cast<size_t>(k)] > 0) first = p;
+            if (f.passes[p].counts[static_cast<size_t>(k)] > 0) first = p;
         if (first == passes) continue;
         const std::int32_t firstPixel = entry(first, k)[1];
         const int taken = std::clamp(entry(first, k)[2], 0, kHealthRecordSlots);
         std::vector<std::int32_t> records(static_cast<size_t>(taken * kHealthRecordWords));
-        const size_t at = healthRecordsBase(capacity_) +
+        const size_t at = healthRecordsBase(f.capacity) +
                           (first * healthKindCount + static_cast<size_t>(k)) * kHealthRecordSlots * static_cast<size_t>(kHealthRecordWords);
         if (taken > 0)
-            glGetNamedBufferSubData(buffer_.get(), static_cast<GLintptr>(at * sizeof(std::int32_t)),
+            glGetNamedBufferSubData(f.buffer.get(), static_cast<GLintptr>(at * sizeof(std::int32_t)),
                                     static_cast<GLsizeiptr>(records.size() * sizeof(std::int32_t)), records.data());
-        const PassHealth& p = passes_[first];
+        const PassHealth& p = f.passes[first];
         HealthFinding finding;
         finding.kind = allHealthKinds[static_cast<size_t>(k)];
-        finding.frame = frame_;
+        finding.frame = f.frame;
         finding.pass = p.pass;
         finding.target = p.target;
         finding.count = p.counts[static_cast<size_t>(k)];
         // Counted from GL's bottom row; reported from the top, as images are shown.
-        const glm::ivec2 size(std::max(1, sizes_[first].x), std::max(1, sizes_[first].y));
+        const glm::ivec2 size(std::max(1, f.sizes[first].x), std::max(1, f.sizes[first].y));
         finding.pixel = glm::ivec2(firstPixel % size.x, size.y - 1 - firstPixel / size.x);
         finding.recorded = false;
         auto vec4At = [&](const std::int32_t* words) {
@@ -414,12 +439,12 @@ FrameHealth GlHealthCheck::endFrame() {
             if (record[0] != firstPixel) continue;
             finding.recorded = true;
             finding.value = vec4At(record + 4);
-            const auto& labels = inputLabels_[first];
+            const auto& labels = f.inputLabels[first];
             for (size_t i = 0; i < labels.size(); ++i) finding.inputs.push_back({labels[i], vec4At(record + 8 + 4 * i)});
         }
         frame.findings.push_back(std::move(finding));
     }
-    frame.passes = passes_;
+    frame.passes = f.passes;
     return frame;
 }
 

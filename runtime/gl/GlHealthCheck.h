@@ -10,9 +10,11 @@
 // that pixel's value and its inputs' texels there. The inspections wait until a pass is about to
 // write memory one of them reads, or the frame ends, and then run together: the draws of one kind
 // do not wait for each other, and one barrier orders the counts before the records (a barrier and
-// a wait after every pass cost an NVIDIA H200 about 29 µs each). Nothing is read back until
-// the frame ends, and then only the buffer's counts (a few hundred bytes per pass) and the records
-// of each kind's first pass: no stall between passes.
+// a wait after every pass cost an NVIDIA H200 about 29 µs each). Nothing is read back during the
+// frame, and nothing when it ends: each frame counts into a buffer of its own, and
+// its counts (a few hundred bytes per pass) and the records of each kind's first pass are read
+// once a fence after its last draw has signalled, or when asked for with `wait`. Reading them at
+// the end of each frame made an H200 wait for the whole frame: 16 % of a 512x512 frame.
 // Needs a current GL 4.5 context.
 
 #include <memory>
@@ -62,8 +64,11 @@ public:
     int bufferBinding() const { return binding_; }
     // Before a pass writes `texture`: inspects, together, what waits on it.
     void beforeWriting(unsigned texture);
-    // Inspects what still waits, then reads the buffers (waits for the frame's GPU work).
-    FrameHealth endFrame();
+    // Inspects what still waits; the frame's results are read later (finishedFrames).
+    void endFrame();
+    // The frames ended since the last call whose results the GPU has written, oldest first: every
+    // one of them when `wait` (which waits for their GPU work), else those whose fence has signalled.
+    std::vector<FrameHealth> finishedFrames(bool wait);
 
 private:
     struct Inspection {
@@ -78,11 +83,26 @@ private:
         unsigned condition = 0;
     };
 
+    // A frame's results on their way back: the buffer its passes count into (HealthBuffer.h), a
+    // fence after its last draw, and what the report says of its passes.
+    struct FrameInFlight {
+        BufferHandle buffer;
+        size_t capacity = 0;  // passes the buffer holds
+        FenceHandle fence;
+        bool inFlight = false;  // ended, not read yet
+        int frame = 0;
+        std::vector<PassHealth> passes;
+        std::vector<std::vector<std::string>> inputLabels;
+        std::vector<glm::ivec2> sizes;  // of each pass's target
+    };
+
     GlHealthCheck() = default;
+    FrameInFlight& now() { return *now_; }
+    void growBuffer(FrameInFlight& f, size_t passes);
+    FrameHealth read(FrameInFlight& f);  // waits for its GPU work
     // What the report says of the pass; false when its target is not inspected.
     bool notePass(size_t position, const std::string& pass, const std::string& target, glm::ivec2 size, TargetFormat format,
                   const std::vector<Input>& inputs);
-    void growBuffer(size_t passes);
     void bindCommonState();
     void inspectPending();
     void overTarget(const Inspection& inspection);  // the framebuffer, viewport and target's unit
@@ -95,7 +115,6 @@ private:
     std::vector<QueryHandle> screens_;  // one per inspection of a batch: whether its screen found anything
     int reducePosition_ = -1, reduceChannels_ = -1, reduceNegatives_ = -1, reduceLargest_ = -1;
     int fetchPosition_ = -1, fetchInputCount_ = -1, fetchInputs_ = -1, fetchRecords_ = -1;
-    BufferHandle buffer_;  // HealthBuffer.h
     int binding_ = 0;
     HealthCheckMethod method_ = HealthCheckMethod::WhileDrawing;
     bool software_ = false;  // llvmpipe, softpipe, SwiftShader
@@ -103,11 +122,11 @@ private:
     glm::ivec2 maxSize_{0, 0};    // the largest framebuffer
     glm::ivec2 emptySize_{0, 0};  // empty_'s default size
     VertexArrayHandle vertexArray_;
-    size_t capacity_ = 0;  // passes the buffers hold
-    int frame_ = 0;
-    std::vector<PassHealth> passes_;
-    std::vector<std::vector<std::string>> inputLabels_;
-    std::vector<glm::ivec2> sizes_;  // of each pass's target
+    // As many as frames are in flight (a frame's results are usually in before the next but one
+    // begins): a frame takes one whose results were read, or a new one.
+    std::vector<std::unique_ptr<FrameInFlight>> frames_;
+    FrameInFlight* now_ = nullptr;
+    std::vector<FrameInFlight*> inFlight_;  // oldest first
     std::vector<Inspection> pending_;
 };
 

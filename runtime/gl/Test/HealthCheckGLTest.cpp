@@ -565,6 +565,66 @@ void main() { c = vec4(texelFetch(T, ivec2(gl_FragCoord.xy), 0).r); }
         }
 }
 
+// Each frame's results come back after it (a buffer of its own, three in turn): frames rendered
+// without asking, more than the buffers, are still each judged by what that frame drew. Frames
+// 0 to 2 are clean, frame 3 has a NaN at (1, 2) in GL's rows, frames 4 to 8 at (4, 0).
+TEST_P(HealthCheckGLTest, FramesRenderedWithoutAskingAreEachJudgedByTheirOwnDraws) {
+    std::unique_ptr<Workspace> ws = workspaceFromText(R"(<workspace version="1" name="frames" size="5x3">
+  <int name="At_X" value="-1"/>
+  <int name="At_Y" value="0"/>
+  <target name="t" format="rgba32f"/>
+  <pass name="lone" target="t"><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform int At_X;
+uniform int At_Y;
+out vec4 c;
+void main() { c = ivec2(gl_FragCoord.xy) == ivec2(At_X, At_Y) ? vec4(uintBitsToFloat(0x7fc00000u)) : vec4(0.5); }
+]]></shader></pass>
+  <pass name="final"><sampler name="T" target="t" filter="nearest"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D T;
+out vec4 c;
+void main() { c = vec4(texelFetch(T, ivec2(gl_FragCoord.xy), 0).r * 0.0); }
+]]></shader></pass>
+  <output format="rgba32f" transform="none"/>
+</workspace>
+)");
+    ASSERT_TRUE(ws);
+    ExecutorOptions options;
+    options.checkHealth = true;
+    options.healthCheckMethod = GetParam();
+    auto created = GlExecutor::create(std::make_shared<const Workspace>(*ws), {5, 3}, options);
+    ASSERT_TRUE(created) << formatAll(created.diagnostics());
+    GlExecutor& e = **created;
+    for (int frame = 0; frame < 9; ++frame) {
+        const glm::ivec2 at = frame < 3 ? glm::ivec2(-1, 0) : frame == 3 ? glm::ivec2(1, 2) : glm::ivec2(4, 0);
+        ASSERT_TRUE(e.setVariable("At_X", Value::ofInt(at.x)));
+        ASSERT_TRUE(e.setVariable("At_Y", Value::ofInt(at.y)));
+        ASSERT_TRUE(e.renderFrame({static_cast<float>(frame) / 60.0f, 1.0f / 60.0f}));
+        if (const FrameHealth* soFar = e.frameHealth(false)) {  // what is in: never a frame not yet drawn
+            EXPECT_LE(soFar->findings.empty() ? 0 : soFar->findings.front().frame, frame);
+        }
+    }
+    const std::vector<HealthFinding>& first = e.firstHealthFindings();
+    ASSERT_EQ(first.size(), 1u);
+    EXPECT_EQ(first.front().frame, 3);
+    EXPECT_EQ(first.front().pass, "lone");
+    EXPECT_EQ(first.front().count, 1);
+    EXPECT_EQ(first.front().pixel, glm::ivec2(1, 0)) << "reading coordinates";
+    const FrameHealth* last = e.frameHealth();
+    ASSERT_TRUE(last);
+    ASSERT_EQ(last->findings.size(), 1u);
+    EXPECT_EQ(last->findings.front().frame, 8);
+    EXPECT_EQ(last->findings.front().pixel, glm::ivec2(4, 2));
+    // Once the GPU has finished a frame, asking without waiting gives that frame.
+    ASSERT_TRUE(e.setVariable("At_X", Value::ofInt(-1)));
+    ASSERT_TRUE(e.renderFrame({9.0f / 60.0f, 1.0f / 60.0f}));
+    glFinish();
+    const FrameHealth* finished = e.frameHealth(false);
+    ASSERT_TRUE(finished);
+    EXPECT_TRUE(finished->findings.empty()) << "frame 9 is clean";
+}
+
 // What lies just inside and just outside each kind, each value alone in a target of its own (the
 // check after a pass first screens the whole target, and counts only in one where the screen let
 // something through: a finding elsewhere in the same target would hide a screen that missed it).
