@@ -79,4 +79,14 @@ VertexArrayHandle createVertexArray() {
     return VertexArrayHandle(name);
 }
 
+void FenceHandle::wait() const {
+    if (!sync_) return;
+    GLbitfield flags = GL_SYNC_FLUSH_COMMANDS_BIT;
+    for (;;) {
+        const GLenum r = glClientWaitSync(static_cast<GLsync>(sync_), flags, 1000000000);  // a second at a time
+        if (r == GL_ALREADY_SIGNALED || r == GL_CONDITION_SATISFIED || r == GL_WAIT_FAILED) return;
+        flags = 0;
+    }
+}
+
 }  // namespace rmfx

@@ -76,6 +76,7 @@ public:
     void reset();
     void insert();          // a new fence after the commands issued so far (replacing this one)
     bool signalled() const; // the GPU has passed it; false without one. Never waits or flushes.
+    void wait() const;      // until the GPU has passed it (flushing what is before it)
 
 private:
     void* sync_ = nullptr;  // GLsync

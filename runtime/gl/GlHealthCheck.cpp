@@ -193,6 +193,11 @@ void GlHealthCheck::growBuffer(FrameInFlight& f, size_t passes) {
                          f.capacity * healthKindCount * kHealthRecordSlots * static_cast<size_t>(kHealthRecordWords);
     f.buffer = createBuffer();
     glNamedBufferStorage(f.buffer.get(), static_cast<GLsizeiptr>(words * sizeof(std::int32_t)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    const GLsizeiptr countBytes = static_cast<GLsizeiptr>(healthRecordsBase(f.capacity) * sizeof(std::int32_t));
+    const GLbitfield access = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+    f.counts = createBuffer();
+    glNamedBufferStorage(f.counts.get(), countBytes, nullptr, access | GL_CLIENT_STORAGE_BIT);
+    f.mapped = static_cast<const std::int32_t*>(glMapNamedBufferRange(f.counts.get(), 0, countBytes, access));
 }
 
 void GlHealthCheck::beginFrame(int frame, size_t passes) {
@@ -376,7 +381,10 @@ void GlHealthCheck::inspectPending() {
 void GlHealthCheck::endFrame() {
     inspectPending();
     FrameInFlight& f = now();
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // the shaders' writes, for the reads after the fence
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // the shaders' writes, for the copy and the reads after the fence
+    const size_t countWords = healthRecordsBase(f.passes.size());
+    if (f.mapped && countWords > 0)
+        glCopyNamedBufferSubData(f.buffer.get(), f.counts.get(), 0, 0, static_cast<GLsizeiptr>(countWords * sizeof(std::int32_t)));
     f.fence.insert();
     f.inFlight = true;
     inFlight_.push_back(now_);
@@ -387,6 +395,7 @@ std::vector<FrameHealth> GlHealthCheck::finishedFrames(bool wait) {
     std::vector<FrameHealth> out;
     size_t done = 0;
     while (done < inFlight_.size() && (wait || inFlight_[done]->fence.signalled())) {
+        inFlight_[done]->fence.wait();  // the mapped counts are the GPU's only once it has passed
         out.push_back(read(*inFlight_[done]));
         ++done;
     }
@@ -400,7 +409,9 @@ FrameHealth GlHealthCheck::read(FrameInFlight& f) {
     FrameHealth frame;
     const size_t passes = f.passes.size();
     std::vector<std::int32_t> entries(healthRecordsBase(passes));
-    if (!entries.empty())
+    if (!entries.empty() && f.mapped)
+        std::memcpy(entries.data(), f.mapped, entries.size() * sizeof(std::int32_t));
+    else if (!entries.empty())
         glGetNamedBufferSubData(f.buffer.get(), 0, static_cast<GLsizeiptr>(entries.size() * sizeof(std::int32_t)), entries.data());
     auto entry = [&](size_t pass, int kind) { return &entries[(pass * healthKindCount + static_cast<size_t>(kind)) * kHealthEntryWords]; };
     for (size_t p = 0; p < passes; ++p)

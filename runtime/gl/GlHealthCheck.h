@@ -14,9 +14,11 @@
 // frame, and nothing when it ends: each frame counts into a buffer of its own, and
 // its counts (a few hundred bytes per pass) and the records of each kind's first pass are read
 // once a fence after its last draw has signalled, or when asked for with `wait`. Reading them at
-// the end of each frame made an H200 wait for the whole frame: 16 % of a 512x512 frame.
+// the end of each frame made an H200 wait for the whole frame: 16 % of a 512x512 frame. The
+// records are read only for a frame with a finding.
 // Needs a current GL 4.5 context.
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -88,6 +90,11 @@ private:
     struct FrameInFlight {
         BufferHandle buffer;
         size_t capacity = 0;  // passes the buffer holds
+        // The counts, copied after the frame into memory the CPU reads as it is (persistently
+        // mapped): NVIDIA reads a GPU buffer back by a copy queued behind everything issued since,
+        // so reading the last frame's during the next waited for that one too. Null: unmapped.
+        BufferHandle counts;
+        const std::int32_t* mapped = nullptr;
         FenceHandle fence;
         bool inFlight = false;  // ended, not read yet
         int frame = 0;
