@@ -83,37 +83,27 @@ void rmfx_health_storeVec4(int at, vec4 v) {
 // Counts the kinds in `kinds` (bit k: kind k) at `pixel`; a fragment that lowers a kind's first
 // pixel takes a record slot for it, and writes its value and inputs there.
 void rmfx_health_count(int rmfx_health_kinds, int rmfx_health_pixel, vec4 rmfx_health_value) {
-    int rmfx_health_slots[)" + std::to_string(healthKindCount) + R"(];
-    bool rmfx_health_improved = false;
+    vec2 rmfx_health_centre = (floor(gl_FragCoord.xy) + 0.5) / vec2(rmfx_health_Size);
+    ivec2 rmfx_health_size;
     for (int rmfx_health_kind = 0; rmfx_health_kind < )" + std::to_string(healthKindCount) + R"(; ++rmfx_health_kind) {
-        rmfx_health_slots[rmfx_health_kind] = -1;
         if ((rmfx_health_kinds & (1 << rmfx_health_kind)) == 0) continue;
         int rmfx_health_entry = (rmfx_health_Slot + rmfx_health_kind) * )" + std::to_string(kHealthEntryWords) + R"(;
         atomicAdd(rmfx_health_words[rmfx_health_entry], 1);
         if (atomicMin(rmfx_health_words[rmfx_health_entry + 1], rmfx_health_pixel) <= rmfx_health_pixel) continue;
         int rmfx_health_slot = atomicAdd(rmfx_health_words[rmfx_health_entry + 2], 1);
         if (rmfx_health_slot >= )" + std::to_string(kHealthRecordSlots) + R"() continue;
-        rmfx_health_slots[rmfx_health_kind] = rmfx_health_Records + ((rmfx_health_Slot + rmfx_health_kind) * )" +
+        int rmfx_health_record = rmfx_health_Records + ((rmfx_health_Slot + rmfx_health_kind) * )" +
          std::to_string(kHealthRecordSlots) + " + rmfx_health_slot) * " + std::to_string(kHealthRecordWords) + R"(;
-        rmfx_health_improved = true;
-    }
-    if (rmfx_health_improved) {
-        vec4 rmfx_health_inputs[)" + std::to_string(std::max<size_t>(inputs.size(), 1)) + R"(];
-        vec2 rmfx_health_centre = (floor(gl_FragCoord.xy) + 0.5) / vec2(rmfx_health_Size);
-        ivec2 rmfx_health_size;
+        rmfx_health_words[rmfx_health_record] = rmfx_health_pixel;
+        rmfx_health_storeVec4(rmfx_health_record + 4, rmfx_health_value);
 )";
+    // Each input fetched and stored at once, never held: an array of the inputs' texels kept every
+    // fragment's registers for a path that almost none takes.
     for (size_t i = 0; i < inputs.size(); ++i)
-        s += "        rmfx_health_size = textureSize(" + inputs[i] + ", 0);\n        rmfx_health_inputs[" + std::to_string(i) + "] = texelFetch(" +
-             inputs[i] + ", clamp(ivec2(rmfx_health_centre * vec2(rmfx_health_size)), ivec2(0), rmfx_health_size - 1), 0);\n";
-    s += "        for (int rmfx_health_kind = 0; rmfx_health_kind < " + std::to_string(healthKindCount) + R"(; ++rmfx_health_kind) {
-            int rmfx_health_record = rmfx_health_slots[rmfx_health_kind];
-            if (rmfx_health_record < 0) continue;
-            rmfx_health_words[rmfx_health_record] = rmfx_health_pixel;
-            rmfx_health_storeVec4(rmfx_health_record + 4, rmfx_health_value);
-)";
-    for (size_t i = 0; i < inputs.size(); ++i)
-        s += "            rmfx_health_storeVec4(rmfx_health_record + " + std::to_string(8 + 4 * i) + ", rmfx_health_inputs[" + std::to_string(i) + "]);\n";
-    s += "        }\n    }\n}\nvoid main() {\n    " + std::string(kRenamedMain) + "();\n    vec4 rmfx_health_written = " + widened(output) + ";\n";
+        s += "        rmfx_health_size = textureSize(" + inputs[i] + ", 0);\n        rmfx_health_storeVec4(rmfx_health_record + " +
+             std::to_string(8 + 4 * i) + ", texelFetch(" + inputs[i] +
+             ", clamp(ivec2(rmfx_health_centre * vec2(rmfx_health_size)), ivec2(0), rmfx_health_size - 1), 0));\n";
+    s += "    }\n}\nvoid main() {\n    " + std::string(kRenamedMain) + "();\n    vec4 rmfx_health_written = " + widened(output) + ";\n";
     s += "    int rmfx_health_channels = min(rmfx_health_Channels, " + std::to_string(output.components) + ");\n";
     s += R"(    int rmfx_health_kinds = 0;
     for (int rmfx_health_c = 0; rmfx_health_c < rmfx_health_channels; ++rmfx_health_c) {
