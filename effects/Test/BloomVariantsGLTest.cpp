@@ -27,12 +27,31 @@ std::string format(double value) {
     return buffer;
 }
 
+// How many targets of the chain a value of `blurred` went through: the bright pass and each blur pass.
+int chainWrites(BloomBlur blur) {
+    switch (blur) {
+        case BloomBlur::Gauss9x1: return 3;
+        case BloomBlur::Gauss9x2: return 5;
+        case BloomBlur::Gauss9x4: return 9;
+        case BloomBlur::Gauss49: return 2;
+        case BloomBlur::Linear9x2: return 5;
+        case BloomBlur::Kawase: return 6;
+        case BloomBlur::DualFilter: return 5;
+        case BloomBlur::Tent13: return 5;
+    }
+    return 0;
+}
+
 // Bloom_Sigma 1/16 at 128 texels: sigma_D = 2 texels of the 32x32 reduced image.
 // How far llvmpipe's filtering and float32 arithmetic take a blur from the float64 one, relative
 // to the peak of `blurred`: measured at most 4.8e-7 (kawase; 1.4e-7 for the pyramids, 2.6e-7 for
 // the texel-fetching Gaussians), so llvmpipe filters float textures in float32 without coarse
-// subtexel steps. A GPU with 8 bits of subtexel precision would need about 4e-3 here.
-constexpr double kFilterTolerance = 1e-5;
+// subtexel steps. An NVIDIA H200, with 8 bits of subtexel precision, measured 3.6e-4 (linear9x2)
+// and 7.3e-4 (kawase). So the tolerance adds what the context's filtering allows
+// (bilinearWeightError): each pass of the chain that filters values within [0, peak] may be off
+// by twice its weight error times the peak, and a later averaging pass does not enlarge that.
+constexpr double kArithmeticTolerance = 1e-5;
+double filterTolerance(BloomBlur blur) { return kArithmeticTolerance + 2.0 * chainWrites(blur) * bilinearWeightError(); }
 
 const Overrides kSigma2{{"Bloom_Sigma", "0.0625"}, {"Target_Format", "0"}};
 
@@ -56,25 +75,11 @@ TEST_F(BloomVariantsGLTest, EveryBlurMatchesTheFloat64ReferenceWithRgba32fTarget
         // The box average is exact in float32 (measured 0); result = S + 0.5 U adds float32 rounding
         // of S (measured at most 3.2e-8 of its peak).
         expectWithin(name + " down", downError, 1e-6);
-        expectWithin(name + " blurred", blurError, kFilterTolerance);
-        expectWithin(name + " result", resultError, kFilterTolerance);
+        expectWithin(name + " blurred", blurError, filterTolerance(blur));
+        expectWithin(name + " result", resultError, filterTolerance(blur));
     }
 }
 
-// How many targets of the chain a value of `blurred` went through: the bright pass and each blur pass.
-int chainWrites(BloomBlur blur) {
-    switch (blur) {
-        case BloomBlur::Gauss9x1: return 3;
-        case BloomBlur::Gauss9x2: return 5;
-        case BloomBlur::Gauss9x4: return 9;
-        case BloomBlur::Gauss49: return 2;
-        case BloomBlur::Linear9x2: return 5;
-        case BloomBlur::Kawase: return 6;
-        case BloomBlur::DualFilter: return 5;
-        case BloomBlur::Tent13: return 5;
-    }
-    return 0;
-}
 
 // Each format compiles every shader anew on llvmpipe (about a second each), so the formats are
 // checked on the default blur and on gauss9x1, whose taps fetch texels rather than filter.
@@ -82,7 +87,7 @@ TEST_F(BloomVariantsGLTest, EveryFormatStaysWithinItsQuantisationOfTheRgba32fRes
     RefImage input = syntheticInput(64, 64);
     for (BloomBlur blur : {BloomBlur::DualFilter, BloomBlur::Gauss9x1})
         expectFormatsWithinQuantisation("bloom.xml", input, bloomBlurName(blur), {{"Bloom_Sigma", "0.0625"}},
-                                        chainWrites(blur), 0.5, kFilterTolerance);
+                                        chainWrites(blur), 0.5, kArithmeticTolerance);
 }
 
 // The impulse response of every blur kind: one reduced texel of 10 in the middle of a black 32x32
@@ -108,7 +113,9 @@ TEST_F(BloomVariantsGLTest, EffectiveSigmaOfEveryBlurFromItsImpulseResponse) {
         std::printf("%-12s effective sigma %.4f (reference %.4f), sigma_D %.1f, energy %.4f of 10\n", name.c_str(),
                     gpuSigma, cpuSigma, sigmaD, gpu.total);
         ::testing::Test::RecordProperty(name + " effective sigma", format(gpuSigma));
-        expectWithin(name + " sigma against the reference", std::abs(gpuSigma - cpuSigma) / cpuSigma, 1e-3);
+        // 1e-3 on llvmpipe (measured at most 1.6e-7); an H200's filtering gave 1.0086e-3.
+        expectWithin(name + " sigma against the reference", std::abs(gpuSigma - cpuSigma) / cpuSigma,
+                     1e-3 + 2.0 * chainWrites(blur) * bilinearWeightError());
         bool matched = blur == BloomBlur::Kawase || blur == BloomBlur::DualFilter || blur == BloomBlur::Tent13 ||
                        blur == BloomBlur::Gauss9x4;
         if (matched) expectWithin(name + " sigma against sigma_D", std::abs(gpuSigma - sigmaD) / sigmaD, 0.1);

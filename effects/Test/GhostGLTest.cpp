@@ -39,13 +39,19 @@ RefImage ghostMask() {
 // filtering precision to the implementation: llvmpipe blends float textures in float32 (far finer
 // than a half step; the glare tests rely on it too) but 8-bit textures in 8-bit arithmetic, so a
 // mask value between texels of different alpha may come back one step (1/255) off. Per pixel,
-// through Glow_Factor · Σ_s source · mask.
+// through Glow_Factor · Σ_s source · mask. A GPU with coarse subtexel precision (8 bits on an
+// H200) also puts each filtered value up to twice its weight error (bilinearWeightError) times
+// the range of the texels it blends away from the float64 one, in the source and in the mask.
 RefImage filterSlack(const RefImage& source, const RefImage& mask) {
+    const double weightError = 2.0 * bilinearWeightError();
     return shadePixels(kQuarter.x, kQuarter.y, [&](glm::dvec2 uv) {
         glm::dvec4 slack(0.0);
         for (double s : kGhostScales) {
             glm::dvec2 c = (uv - 0.5) * s + 0.5;
-            if (bilinearFootprintRange(mask, c).a > 0.0) slack += sampleBilinear(source, c) / 255.0;
+            const glm::dvec4 maskRange = bilinearFootprintRange(mask, c);
+            const glm::dvec4 value = sampleBilinear(source, c);
+            if (maskRange.a > 0.0) slack += value / 255.0;
+            slack += weightError * (bilinearFootprintRange(source, c) + value * maskRange.a);
         }
         return slack * kGlowFactor;
     });

@@ -135,7 +135,9 @@ TEST_F(GlareHardCasesGLTest, NanInfAndNegativeTexelsRenderAsZeros) {
 
 // Sizes that leave partial blocks at every level: one bright pixel in the last row and the last
 // column must still reach the result. The added light, GPU against the float64 reference of the
-// default variants (with rgba32f targets), within 1e-4.
+// default variants (with rgba32f targets), within 1e-4 plus what the context's filtering allows
+// each filtering pass of the chain (bilinearWeightError: tent13's five passes, the streak's three
+// and the merge): an H200 added 0.18 % more light than the reference through tent13 at 1921x1081.
 void expectCornerPixelContributes(glm::ivec2 size) {
     SCOPED_TRACE(std::to_string(size.x) + "x" + std::to_string(size.y));
     RefImage input = black(size.x, size.y);
@@ -144,7 +146,8 @@ void expectCornerPixelContributes(glm::ivec2 size) {
     int n = reductionFactor(size, reduced);
     RefImage bloom = bloomStage(input, BloomBlur::Tent13, {}, n).result;
     RefImage streak = streakStage(input, 3, {}, n).result;
-    for (auto [file, effect, expected] : {std::tuple{"bloom.xml", "tent13", &bloom}, std::tuple{"streak.xml", "streak_3pass", &streak}}) {
+    for (auto [file, effect, expected, passes] :
+         {std::tuple{"bloom.xml", "tent13", &bloom, 5}, std::tuple{"streak.xml", "streak_3pass", &streak, 4}}) {
         SCOPED_TRACE(effect);
         GlRun run = renderStage(file, input, effect, {{"Target_Format", "0"}});
         ASSERT_TRUE(run.exec);
@@ -153,7 +156,8 @@ void expectCornerPixelContributes(glm::ivec2 size) {
         double added = rgbSum(result) - rgbSum(input), expectedAdded = rgbSum(*expected) - rgbSum(input);
         std::printf("%dx%d %-12s added light %.6g, reference %.6g\n", size.x, size.y, effect, added, expectedAdded);
         EXPECT_GT(expectedAdded, 0.0);
-        expectWithin(std::string(effect) + " added light", std::abs(added - expectedAdded) / expectedAdded, 1e-4);
+        expectWithin(std::string(effect) + " added light", std::abs(added - expectedAdded) / expectedAdded,
+                     1e-4 + 2.0 * passes * bilinearWeightError());
     }
 }
 

@@ -1,6 +1,7 @@
 #include "tests/support/GlTestSupport.h"
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <thread>
@@ -196,6 +197,48 @@ Image readBack(const GlExecutor& exec, const std::string& target) {
 }
 
 RefImage readRef(const GlRun& run, const std::string& target) { return fromImage(readBack(*run.exec, target)); }
+
+double bilinearWeightError() {
+    static const double error = [] {
+        const std::string xml = R"(<workspace version="1" name="subtexel" size="1000x1">
+  <target name="edge" format="r32f" size="2x1"/>
+  <target name="ramp" format="r32f" size="1000x1"/>
+  <pass name="edge" target="edge"><shader stage="fragment"><![CDATA[
+#version 450 core
+out vec4 c;
+void main() { c = vec4(gl_FragCoord.x > 1.0 ? 1.0 : 0.0); }
+]]></shader></pass>
+  <pass name="ramp" target="ramp"><sampler name="E" target="edge" filter="linear" wrap="clamp"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D E;
+out vec4 c;
+void main() { c = texture(E, vec2((0.5 + floor(gl_FragCoord.x) / 1000.0) / 2.0, 0.5)); }
+]]></shader></pass>
+  <pass name="final"><sampler name="R" target="ramp" filter="nearest"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D R;
+out vec4 c;
+void main() { c = texelFetch(R, ivec2(gl_FragCoord.xy), 0); }
+]]></shader></pass>
+</workspace>
+)";
+        GlRun run = runWorkspace(xml, RunSettings({1000, 1}));
+        if (!run.exec) return 1.0;
+        const Image ramp = readBack(*run.exec, "ramp");
+        double worst = 0.0;
+        // Texel coordinate 0.5 + x / 1000: x / 1000 of the way (not a binary fraction, which a
+        // filter with 10 bits of subtexel precision would hit exactly) from the centre of texel 0 to texel 1's.
+        for (int x = 0; x < ramp.width; ++x) worst = std::max(worst, std::abs(static_cast<double>(ramp.at(x, 0, 0)) - x / 1000.0));
+        // The probe itself: a ramp from 0 through one half, not a constant or a step.
+        if (ramp.width != 1000 || std::abs(ramp.at(500, 0, 0) - 0.5f) > 0.01f || std::abs(ramp.at(250, 0, 0) - 0.25f) > 0.01f)
+            ADD_FAILURE() << "bilinearWeightError: the probe did not draw a ramp";
+        return worst;
+    }();
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", error);
+    ::testing::Test::RecordProperty("bilinear weight error", text);
+    return error;
+}
 
 void expectWithin(const std::string& what, double error, double tolerance) {
     char text[64];

@@ -100,6 +100,14 @@ Image blankHdrImage(int width, int height);
 // readBack as a float64 reference image (row 0 at the bottom).
 RefImage readRef(const GlRun& run, const std::string& target);
 
+// How far the current context's bilinear filtering takes a weight from the exact one: the largest
+// |v - f| over a float texture holding 0 and 1 in two texels, sampled at 1000 fractions f between
+// their centres. A rasteriser that filters in float32 (llvmpipe) gives about 1e-7; one with 8 bits
+// of subtexel precision (NVIDIA's) up to 2^-9. A filtering pass of values within [0, m] then lies
+// within 2 · this · m of the exact one (one weight error in each direction); tests of filtered
+// taps take their tolerance from it. Measured once per process (needs a current context).
+double bilinearWeightError();
+
 // EXPECT_LE(error, tolerance) that also records "error of tolerance" as the test property `what`,
 // so --gtest_output=xml shows how close each comparison comes to its bound.
 void expectWithin(const std::string& what, double error, double tolerance);
