@@ -521,7 +521,9 @@ TEST_P(HealthCheckGLTest, HdrLightingAsShippedHasNoNanOrInfinity) {
 
 // A NaN alone at each pixel of an odd-sized target in turn is found there, once (the check after a
 // pass screens the target a few pixels a fragment before it counts).
-TEST_P(HealthCheckGLTest, ALoneNanIsFoundAtEveryPixel) {
+// A 5x3 rgba32f target that pass "lone" fills with 0.5, but for a NaN (in green) at the pixel
+// (At_X, At_Y) in GL's rows; an executor running it with the check by `method`.
+std::unique_ptr<GlExecutor> loneNanExecutor(HealthCheckMethod method) {
     std::unique_ptr<Workspace> ws = workspaceFromText(R"(<workspace version="1" name="lone" size="5x3">
   <int name="At_X" value="0"/>
   <int name="At_Y" value="0"/>
@@ -542,13 +544,19 @@ void main() { c = vec4(texelFetch(T, ivec2(gl_FragCoord.xy), 0).r); }
   <output format="rgba32f" transform="none"/>
 </workspace>
 )");
-    ASSERT_TRUE(ws);
+    if (!ws) return nullptr;
     ExecutorOptions options;
     options.checkHealth = true;
-    options.healthCheckMethod = GetParam();
+    options.healthCheckMethod = method;
     auto created = GlExecutor::create(std::make_shared<const Workspace>(*ws), {5, 3}, options);
-    ASSERT_TRUE(created) << formatAll(created.diagnostics());
-    GlExecutor& e = **created;
+    if (!created) ADD_FAILURE() << formatAll(created.diagnostics());
+    return created ? std::move(*created) : nullptr;
+}
+
+TEST_P(HealthCheckGLTest, ALoneNanIsFoundAtEveryPixel) {
+    std::unique_ptr<GlExecutor> executor = loneNanExecutor(GetParam());
+    ASSERT_TRUE(executor);
+    GlExecutor& e = *executor;
     for (int y = 0; y < 3; ++y)
         for (int x = 0; x < 5; ++x) {
             ASSERT_TRUE(e.setVariable("At_X", Value::ofInt(x)));
@@ -565,37 +573,13 @@ void main() { c = vec4(texelFetch(T, ivec2(gl_FragCoord.xy), 0).r); }
         }
 }
 
-// Each frame's results come back after it (a buffer of its own, three in turn): frames rendered
-// without asking, more than the buffers, are still each judged by what that frame drew. Frames
-// 0 to 2 are clean, frame 3 has a NaN at (1, 2) in GL's rows, frames 4 to 8 at (4, 0).
+// Each frame's results come back after it (a buffer of its own while it is in flight): frames
+// rendered without asking are still each judged by what that frame drew. Frames 0 to 2 are
+// clean, frame 3 has a NaN at (1, 2) in GL's rows, frames 4 to 8 at (4, 0).
 TEST_P(HealthCheckGLTest, FramesRenderedWithoutAskingAreEachJudgedByTheirOwnDraws) {
-    std::unique_ptr<Workspace> ws = workspaceFromText(R"(<workspace version="1" name="frames" size="5x3">
-  <int name="At_X" value="-1"/>
-  <int name="At_Y" value="0"/>
-  <target name="t" format="rgba32f"/>
-  <pass name="lone" target="t"><shader stage="fragment"><![CDATA[
-#version 450 core
-uniform int At_X;
-uniform int At_Y;
-out vec4 c;
-void main() { c = ivec2(gl_FragCoord.xy) == ivec2(At_X, At_Y) ? vec4(uintBitsToFloat(0x7fc00000u)) : vec4(0.5); }
-]]></shader></pass>
-  <pass name="final"><sampler name="T" target="t" filter="nearest"/><shader stage="fragment"><![CDATA[
-#version 450 core
-uniform sampler2D T;
-out vec4 c;
-void main() { c = vec4(texelFetch(T, ivec2(gl_FragCoord.xy), 0).r * 0.0); }
-]]></shader></pass>
-  <output format="rgba32f" transform="none"/>
-</workspace>
-)");
-    ASSERT_TRUE(ws);
-    ExecutorOptions options;
-    options.checkHealth = true;
-    options.healthCheckMethod = GetParam();
-    auto created = GlExecutor::create(std::make_shared<const Workspace>(*ws), {5, 3}, options);
-    ASSERT_TRUE(created) << formatAll(created.diagnostics());
-    GlExecutor& e = **created;
+    std::unique_ptr<GlExecutor> executor = loneNanExecutor(GetParam());
+    ASSERT_TRUE(executor);
+    GlExecutor& e = *executor;
     for (int frame = 0; frame < 9; ++frame) {
         const glm::ivec2 at = frame < 3 ? glm::ivec2(-1, 0) : frame == 3 ? glm::ivec2(1, 2) : glm::ivec2(4, 0);
         ASSERT_TRUE(e.setVariable("At_X", Value::ofInt(at.x)));
