@@ -75,4 +75,13 @@ ArgumentParser::TakeValue textureValue(std::vector<TextureArgument>& textures) {
     };
 }
 
+ArgumentParser::TakeValue rfxMatricesValue(std::optional<HlslMatrixOrder>& order) {
+    return [&order](const std::string& value) -> std::string {
+        if (value == "row-vector") order = HlslMatrixOrder::RowVector;
+        else if (value == "column-vector") order = HlslMatrixOrder::ColumnVector;
+        else return "--rfx-matrices: expected row-vector (the HLSL writes mul(v, M)) or column-vector (mul(M, v)), got '" + value + "'";
+        return "";
+    };
+}
+
 }  // namespace rmfx::cli

@@ -10,6 +10,7 @@
 #include <glm/vec2.hpp>
 
 #include "cli/ArgumentParser.h"
+#include "model/Workspace.h"
 #include "validation/ImageInputs.h"
 #include "validation/TextureArguments.h"
 
@@ -28,5 +29,7 @@ ArgumentParser::TakeValue overrideValue(std::vector<std::pair<std::string, std::
 ArgumentParser::TakeValue inputValue(std::vector<InputArgument>& inputs);
 // --texture NAME=FILE[,FILE…] (parseTextureArgument), appended in order.
 ArgumentParser::TakeValue textureValue(std::vector<TextureArgument>& textures);
+// --rfx-matrices row-vector|column-vector: how a RenderMonkey file's HLSL multiplies its matrices.
+ArgumentParser::TakeValue rfxMatricesValue(std::optional<HlslMatrixOrder>& order);
 
 }  // namespace rmfx::cli

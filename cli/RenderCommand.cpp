@@ -97,6 +97,7 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
             return "";
         }, Empty::Allowed)
         .option({"--effect"}, [&](const std::string& value) { a.load.effect = value; return ""; }, Empty::Allowed)
+        .option({"--rfx-matrices"}, rfxMatricesValue(a.load.rfxMatrices))
         .flag({"-q", "--quiet"}, [&] { a.quiet = true; })
         .flag({"--explain"}, [&] { a.explain = true; })
         .flag({"--check"}, [&] { a.executor.checkHealth = true; })

@@ -2,6 +2,7 @@
 
 #include "cli/ArgumentParser.h"
 #include "cli/Commands.h"
+#include "cli/OptionValues.h"
 #include "io/media/MediaArguments.h"
 #include "validation/WorkspaceLoader.h"
 
@@ -23,6 +24,7 @@ int validateCommand(const std::vector<std::string>& args) {
     parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, load.media); })
         .option({"--effect"}, [&](const std::string& value) { load.effect = value; return ""; },
                 ArgumentParser::EmptyValue::Allowed)
+        .option({"--rfx-matrices"}, rfxMatricesValue(load.rfxMatrices))
         .positional([&](const std::string& path) { paths.push_back(path); return ""; })
         .unknownOptionHint("");
     if (std::string message = parser.parse(args); !message.empty()) {

@@ -34,6 +34,10 @@ render, validate and edit option for .rfx files:
   --effect NAME          the effect to run: its dotted path as `rmfx list` prints it ("Effect
                          Workspace.Group.Effect", or "Group.Effect"), or a name only one effect
                          has (default: the file's ACTIVE_EFFECT)
+  --rfx-matrices row-vector|column-vector
+                         how a Direct3D effect's HLSL multiplies the matrices rmfx fills by
+                         semantic: mul(v, M) or mul(M, v) (default: by the RenderMonkey that
+                         saved the file, 1.5 and before column-vector; docs/rendermonkey.md)
 
 render options:
   -o, --output FILE      image to write: .exr/.hdr keep float data; .png/.jpg/.tga/.bmp get the

@@ -357,7 +357,7 @@ private:
 int runEditor(const EditorOptions& options) {
     // Checked before any window opens: a broken workspace or input image is reported like rmfx
     // render reports it.
-    const WorkspaceLoadOptions load{options.effect, options.media, options.textures};
+    const WorkspaceLoadOptions load{options.effect, options.media, options.textures, options.rfxMatrices};
     Result<Workspace> loaded = loadWorkspace(options.workspace, {}, load);
     Diagnostics diagnostics = loaded.diagnostics();
     Workspace* checked = loaded ? &*loaded : nullptr;

@@ -23,6 +23,7 @@ std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& 
         .option({"--frames"}, cli::frameCountValue(o.frames), Empty::Allowed)
         .option({"--dt"}, cli::secondsValue(o.deltaTime, &dtGiven), Empty::Allowed)
         .option({"--effect"}, [&](const std::string& value) { o.effect = value; return ""; }, Empty::Allowed)
+        .option({"--rfx-matrices"}, cli::rfxMatricesValue(o.rfxMatrices))
         .option({"--input"}, cli::inputValue(o.inputs))
         .option({"--texture"}, cli::textureValue(o.textures))
         .option({"--split"}, [&](const std::string& value) -> std::string {

@@ -10,6 +10,7 @@
 #include <glm/vec2.hpp>
 
 #include "io/media/MediaResolver.h"
+#include "model/Workspace.h"
 #include "validation/ImageInputs.h"
 #include "validation/TextureArguments.h"
 
@@ -18,6 +19,7 @@ namespace rmfx::editor {
 struct EditorOptions {
     std::filesystem::path workspace;
     std::string effect;  // --effect NAME: the effect of a RenderMonkey .rfx file
+    std::optional<HlslMatrixOrder> rfxMatrices;  // --rfx-matrices: its HLSL's matrix order
     glm::ivec2 size{0};  // 0: the workspace's size
     std::vector<std::pair<std::string, std::string>> overrides;  // --set NAME=VALUE, as rmfx render
     std::vector<std::string> viewTargets;  // --view TARGET: viewer windows open from the start

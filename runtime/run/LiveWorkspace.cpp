@@ -68,7 +68,7 @@ Result<LiveWorkspace::Build> LiveWorkspace::load(const std::set<std::string>& st
     Diagnostics diagnostics = loaded.diagnostics();
     if (!loaded) {
         // Watch what the broken file names too (a texture it names that is not there yet, say).
-        Result<Workspace> parsed = isRfxPath(file_) ? importRfxFile(file_, {loadOptions_.effect}) : parseWorkspaceFile(file_);
+        Result<Workspace> parsed = isRfxPath(file_) ? importRfxFile(file_, {loadOptions_.effect, loadOptions_.rfxMatrices}) : parseWorkspaceFile(file_);
         if (parsed) failedDependencies_ = findWorkspaceDependencies(*parsed);
         return Result<Build>::failure(std::move(diagnostics));
     }

@@ -30,7 +30,7 @@ static Result<Workspace> validated(Result<Workspace> parsed, const ValidationOpt
 
 Result<Workspace> loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options,
                                 const WorkspaceLoadOptions& load) {
-    if (isRfxPath(path)) return validated(importRfxFile(path, {load.effect}), options, load.media, load.textures, true);
+    if (isRfxPath(path)) return validated(importRfxFile(path, {load.effect, load.rfxMatrices}), options, load.media, load.textures, true);
     if (!load.effect.empty()) {
         return Result<Workspace>::failure(
             {{Diagnostic::Severity::Error, {path.string(), 0}, "--effect " + load.effect,

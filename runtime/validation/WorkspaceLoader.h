@@ -25,6 +25,9 @@ struct WorkspaceLoadOptions {
     // rmfx render --texture NAME=FILE: files put in place of the textures' own before they are
     // resolved, so that a texture whose file is missing (an old .rfx) can be given one.
     std::vector<TextureArgument> textures;
+    // RenderMonkey (.rfx) Direct3D effects: the matrix order their HLSL is given, in place of the
+    // one the saving RenderMonkey's version implies (--rfx-matrices).
+    std::optional<HlslMatrixOrder> rfxMatrices{};
 };
 
 // Dispatches on the extension: .rfx (any case) to the RenderMonkey importer, else the XML format.

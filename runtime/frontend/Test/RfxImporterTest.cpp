@@ -697,6 +697,31 @@ TEST(RfxImporter, HlslMatrixOrderFollowsTheVersionThatSavedTheFile) {
     EXPECT_EQ(ws.passes[2].shaders[0].matrixOrder, HlslMatrixOrder::ColumnVector);
 }
 
+// A file whose HLSL was written for the other order than its version implies (gaxlin's
+// LensFlare_10: saved by 1.71, mul(g_matViewProj, v)) is given the order asked for
+// (rmfx render --rfx-matrices); assembly still reads rows, and a version that cannot be read is
+// not warned about, since it decides nothing.
+TEST(RfxImporter, TheHlslMatrixOrderAskedForOverridesTheVersion) {
+    for (const auto& [version, asked] : {std::pair{"RenderMonkey 1.71", HlslMatrixOrder::ColumnVector},
+                                         std::pair{"RenderMonkey 1.5", HlslMatrixOrder::RowVector},
+                                         std::pair{"", HlslMatrixOrder::ColumnVector}}) {
+        SCOPED_TRACE(version);
+        std::string text = d3dEffect(d3dStatePass(0, ""));
+        if (*version) text.replace(text.find("ACTIVE_EFFECT"), 0, "XML_VERSION=\"" + std::string(version) + "\" ");
+        Result<Workspace> ws = importRfxText(text, "t.rfx", ".", {"", asked});
+        ASSERT_TRUE(ws) << formatAll(ws.diagnostics());
+        EXPECT_EQ(ws->passes[0].shaders[0].matrixOrder, asked);
+        EXPECT_EQ(formatAll(ws.diagnostics()).find("XML_VERSION"), std::string::npos) << formatAll(ws.diagnostics());
+    }
+    Result<Workspace> ws = importRfxFile(rfxDir() / "d3d_hlsl.rfx", {"", HlslMatrixOrder::ColumnVector});
+    ASSERT_TRUE(ws) << formatAll(ws.diagnostics());
+    EXPECT_EQ(ws->passes[0].shaders[0].matrixOrder, HlslMatrixOrder::ColumnVector);
+    EXPECT_EQ(ws->passes[2].shaders[0].matrixOrder, HlslMatrixOrder::ColumnVector);
+    ws = importRfxFile(rfxDir() / "d3d_hlsl.rfx", {"", HlslMatrixOrder::RowVector});
+    ASSERT_TRUE(ws) << formatAll(ws.diagnostics());
+    EXPECT_EQ(ws->passes[2].shaders[0].matrixOrder, HlslMatrixOrder::ColumnVector) << "assembly";
+}
+
 TEST(RfxImporter, AssemblyShaderInAnEnabledPassIsAnError) {
     std::string errors = errorsOf(glEffect(
         "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n"

@@ -72,7 +72,7 @@ void readCamera(const RfxEffectEntry& effect, const std::string& file, Diagnosti
 }
 
 Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path& path,
-                       const std::filesystem::path& folder, Diagnostics& diagnostics) {
+                       const std::filesystem::path& folder, const RfxImportOptions& options, Diagnostics& diagnostics) {
     const std::string file = path.string();
     Workspace ws;
     ws.path = path;
@@ -107,8 +107,10 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
     readCamera(effect, file, diagnostics, ws);
 
     // Only Direct3D effects have HLSL (and only they are warned about a missing version).
-    const HlslMatrixOrder hlslMatrices = effect.api == RfxApi::Direct3D ? hlslMatrixOrderOf(RfxElement(effect.workspace, file, diagnostics))
-                                                                        : HlslMatrixOrder::RowVector;
+    const HlslMatrixOrder hlslMatrices =
+        effect.api != RfxApi::Direct3D ? HlslMatrixOrder::RowVector
+        : options.hlslMatrices         ? *options.hlslMatrices
+                                       : hlslMatrixOrderOf(RfxElement(effect.workspace, file, diagnostics));
     std::vector<ReadPass> passes;
     for (const XMLElement* x = effect.element->FirstChildElement(); x; x = x->NextSiblingElement())
         if (isPassTag(x->Name())) {
@@ -262,7 +264,7 @@ Result<Workspace> importRfxText(const std::string& text, const std::filesystem::
         RfxCatalogue catalogue = readCatalogue(root, file, diagnostics);
         const RfxEffectEntry* effect = chooseEffect(catalogue, options.effect, file, diagnostics);
         if (!effect || hasErrors(diagnostics)) return Workspace{};
-        return importEffect(*effect, path, folder, diagnostics);
+        return importEffect(*effect, path, folder, options, diagnostics);
     });
 }
 

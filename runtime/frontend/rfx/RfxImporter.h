@@ -4,6 +4,7 @@
 // Windows paths is the media resolver's job.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,10 @@ struct RfxImportOptions {
     // The effect to import: a dotted path ("Effect Workspace.Group.Effect", or without the
     // workspace's name "Group.Effect"), or a name only one effect has. Empty: ACTIVE_EFFECT.
     std::string effect;
+    // How the Direct3D effect's HLSL multiplies the matrices rmfx fills by semantic; unset: by the
+    // RenderMonkey that saved the file (docs/rendermonkey.md), which a file written for the other
+    // order contradicts (rmfx render --rfx-matrices).
+    std::optional<HlslMatrixOrder> hlslMatrices{};
 };
 
 Result<Workspace> importRfxFile(const std::filesystem::path& path, const RfxImportOptions& options = {});
