@@ -43,7 +43,7 @@ RefImage ghostMask() {
 // H200) also puts each filtered value up to twice its weight error (bilinearWeightError) times
 // the range of the texels it blends away from the float64 one, in the source and in the mask.
 RefImage filterSlack(const RefImage& source, const RefImage& mask) {
-    const double weightError = 2.0 * bilinearWeightError();
+    const double weightError = filteringAllowance(1);  // per unit of the range blended
     return shadePixels(kQuarter.x, kQuarter.y, [&](glm::dvec2 uv) {
         glm::dvec4 slack(0.0);
         for (double s : kGhostScales) {

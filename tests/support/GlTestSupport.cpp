@@ -240,6 +240,8 @@ void main() { c = texelFetch(R, ivec2(gl_FragCoord.xy), 0); }
     return error;
 }
 
+double filteringAllowance(int passes) { return 2.0 * passes * bilinearWeightError(); }
+
 void expectWithin(const std::string& what, double error, double tolerance) {
     char text[64];
     std::snprintf(text, sizeof text, "%.3g of %.3g", error, tolerance);  // to_string would print 1e-7 as 0.000000

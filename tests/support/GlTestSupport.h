@@ -107,6 +107,9 @@ RefImage readRef(const GlRun& run, const std::string& target);
 // within 2 · this · m of the exact one (one weight error in each direction); tests of filtered
 // taps take their tolerance from it. Measured once per process (needs a current context).
 double bilinearWeightError();
+// What `passes` filtering passes of values within [0, 1] may add to an error through the context's
+// filtering: 2 · passes · bilinearWeightError() (a later averaging pass does not enlarge it).
+double filteringAllowance(int passes);
 
 // EXPECT_LE(error, tolerance) that also records "error of tolerance" as the test property `what`,
 // so --gtest_output=xml shows how close each comparison comes to its bound.
