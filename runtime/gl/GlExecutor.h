@@ -113,7 +113,7 @@ public:
     // With FramePlanOptions::checkHealth, what the last frame's passes left in their targets
     // (model/TargetHealth.h); null otherwise or before the first frame. The results come back from
     // the GPU after the frame: `wait` waits for the last frame's; without it, the latest frame
-    // whose results are in (the editor's way: no stall, a frame or two behind).
+    // whose results are in (no stall; a frame or two behind).
     const FrameHealth* frameHealth(bool wait = true) const;
     // The first finding of each kind over every frame so far, in HealthKind order (waits for the
     // last frame's results).

@@ -34,6 +34,16 @@ bool FenceHandle::signalled() const {
     return status == GL_SIGNALED;
 }
 
+void FenceHandle::wait() const {
+    if (!sync_) return;
+    GLbitfield flags = GL_SYNC_FLUSH_COMMANDS_BIT;
+    for (;;) {
+        const GLenum r = glClientWaitSync(static_cast<GLsync>(sync_), flags, 1000000000);  // a second at a time
+        if (r == GL_ALREADY_SIGNALED || r == GL_CONDITION_SATISFIED || r == GL_WAIT_FAILED) return;
+        flags = 0;
+    }
+}
+
 TextureHandle createTexture(unsigned target) {
     GLuint name = 0;
     glCreateTextures(target, 1, &name);
@@ -77,16 +87,6 @@ VertexArrayHandle createVertexArray() {
     GLuint name = 0;
     glCreateVertexArrays(1, &name);
     return VertexArrayHandle(name);
-}
-
-void FenceHandle::wait() const {
-    if (!sync_) return;
-    GLbitfield flags = GL_SYNC_FLUSH_COMMANDS_BIT;
-    for (;;) {
-        const GLenum r = glClientWaitSync(static_cast<GLsync>(sync_), flags, 1000000000);  // a second at a time
-        if (r == GL_ALREADY_SIGNALED || r == GL_CONDITION_SATISFIED || r == GL_WAIT_FAILED) return;
-        flags = 0;
-    }
 }
 
 }  // namespace rmfx
