@@ -5,7 +5,8 @@
 // before it that the GPU has finished (GlExecutor::renderFrame reads them without waiting).
 // Four executors: the check off, the check inspecting each target after its pass (after-pass),
 // the passes counting what they write (while-drawing, gl/HealthInstrumentation.h), and the
-// default (auto: while-drawing on a GPU, after-pass on a software rasteriser).
+// default (auto: while-drawing on a GPU; on a software rasteriser while-drawing in the passes that
+// share their target with a neighbour, the scene's seven, and after-pass in the others).
 // Printed: each round's medians and ratios against off, then the median ratios over the rounds and
 // their spread, the GPU time of a frame and of each pass (timer queries). The target: the
 // check costs under 10 % of the frame at 512x512. Then each method's ratio against off again from

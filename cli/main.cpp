@@ -71,7 +71,8 @@ render options:
   --check-method auto|while-drawing|after-pass
                          how --check looks: the passes' own shaders count what they write, or a
                          draw over each target after its pass (default auto: while-drawing on a
-                         GPU, after-pass on a software rasteriser such as llvmpipe); implies --check
+                         GPU; on a software rasteriser such as llvmpipe, while-drawing only where
+                         consecutive passes draw into one target); implies --check
   --content-skip on|off  skip on the GPU the effects whose source holds nothing this frame
                          (<effect source>; default on; the image is the same either way)
   --memory-budget MiB    the most render-target memory a frame may hold (default 4096); a

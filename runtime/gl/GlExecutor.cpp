@@ -207,8 +207,19 @@ struct GlExecutor::Impl {
         gp.program = std::move(built.program);
         gp.initializedUniforms = built.initializedUniforms;
         if (!bindProgram(gp, d)) return false;
-        if (healthCheck && healthCheck->countsWhileDrawing()) countOwnWrites(gp, built);
+        if (healthCheck && healthCheck->countsWhileDrawing(sharesItsTargetWithANeighbour(gp))) countOwnWrites(gp, built);
         return true;
+    }
+
+    // Whether the pass before or after `gp`, of those that may run, writes the target `gp` writes
+    // (a scene drawn model by model; culling by the effect switches aside).
+    bool sharesItsTargetWithANeighbour(const GpuPass& gp) const {
+        const std::set<int> runnable = plan.runnablePasses();
+        auto it = runnable.find(gp.index);
+        if (it == runnable.end()) return false;
+        const std::string target = ws.passTargetName(*gp.pass);
+        auto writesIt = [&](int index) { return ws.passTargetName(ws.passes[static_cast<size_t>(index)]) == target; };
+        return (it != runnable.begin() && writesIt(*std::prev(it))) || (std::next(it) != runnable.end() && writesIt(*std::next(it)));
     }
 
     // The pass's program made to count what it writes (gl/HealthInstrumentation.h); where it

@@ -308,14 +308,16 @@ bool GlHealthCheck::notePass(size_t position, const std::string& pass, const std
     return true;
 }
 
-bool GlHealthCheck::countsWhileDrawing() const {
+bool GlHealthCheck::countsWhileDrawing(bool sharesItsTarget) const {
     switch (method_) {
         case HealthCheckMethod::WhileDrawing: return true;
         case HealthCheckMethod::AfterPass: return false;
         case HealthCheckMethod::Automatic: break;
     }
-    // A software rasteriser runs the counting code of every fragment, found or not.
-    return !software_;
+    // A software rasteriser runs the counting code of every fragment, found or not, which costs it
+    // more than a screen over a target one full-screen pass wrote, and less than a screen of the
+    // whole target after each model drawn into it (docs/performance.md).
+    return !software_ || sharesItsTarget;
 }
 
 void GlHealthCheck::afterPass(size_t position, const std::string& pass, const std::string& target, unsigned texture,

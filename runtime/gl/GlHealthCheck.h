@@ -36,8 +36,11 @@ class GlHealthCheck {
 public:
     // Automatic resolves from the context's renderer (model/TargetHealth.h).
     static Result<std::unique_ptr<GlHealthCheck>> create(HealthCheckMethod method);
-    // Whether passes' programs should be made to count what they write.
-    bool countsWhileDrawing() const;
+    // Whether a pass's program should be made to count what it writes. `sharesItsTarget`: the pass
+    // before or after it writes the same target (hdr_lighting's scene, model by model), where each
+    // inspection after a pass reads the whole target while counting runs only on the model's own
+    // fragments; Automatic counts in such passes on a software rasteriser and in every pass on a GPU.
+    bool countsWhileDrawing(bool sharesItsTarget) const;
 
     // A 2D texture a pass sampled: what the report calls it, its GL object and the texture unit the
     // pass bound it to.

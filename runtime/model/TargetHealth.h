@@ -43,9 +43,11 @@ FormatHealthLimits formatHealthLimits(TargetFormat format);
 
 // How the check looks at a pass (rmfx render --check-method). WhileDrawing: the pass's own
 // fragment shader counts what it writes (gl/HealthInstrumentation.h), where the pass allows it;
-// AfterPass: a draw over the target after the pass. Automatic: WhileDrawing on a GPU, AfterPass
-// on a software rasteriser, where a fragment shader that can write memory runs at about half
-// speed (llvmpipe, docs/performance.md).
+// AfterPass: a draw over the target after the pass. Automatic: WhileDrawing on a GPU; on a
+// software rasteriser, where the counting code costs every fragment (llvmpipe,
+// docs/performance.md), WhileDrawing only in a pass whose neighbour in the schedule writes the
+// same target (a scene drawn model by model, where each inspection would read the whole target
+// while the counting runs on the model's fragments only), AfterPass in the others.
 enum class HealthCheckMethod { Automatic, WhileDrawing, AfterPass };
 // "auto", "while-drawing", "after-pass".
 const char* healthCheckMethodName(HealthCheckMethod method);
