@@ -36,8 +36,9 @@ render, validate and edit option for .rfx files:
                          has (default: the file's ACTIVE_EFFECT)
   --rfx-matrices row-vector|column-vector
                          how a Direct3D effect's HLSL multiplies the matrices rmfx fills by
-                         semantic: mul(v, M) or mul(M, v) (default: by the RenderMonkey that
-                         saved the file, 1.5 and before column-vector; docs/rendermonkey.md)
+                         semantic: mul(v, M) or mul(M, v) (default: the side of mul() the
+                         code puts them on, else the RenderMonkey that saved the file, 1.5 and
+                         before column-vector; docs/rendermonkey.md)
 
 render options:
   -o, --output FILE      image to write: .exr/.hdr keep float data; .png/.jpg/.tga/.bmp get the

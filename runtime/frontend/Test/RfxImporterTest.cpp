@@ -722,6 +722,83 @@ TEST(RfxImporter, TheHlslMatrixOrderAskedForOverridesTheVersion) {
     EXPECT_EQ(ws->passes[2].shaders[0].matrixOrder, HlslMatrixOrder::ColumnVector) << "assembly";
 }
 
+// A Direct3D effect saved by `version` whose vertex shader (`code` from line 12 of the file)
+// multiplies with `code`, the semantic matrices Mvp (ViewProjection) and MvpT
+// (ViewProjectionTranspose) and the stored matrix S visible.
+std::string matrixOrderEffect(const std::string& version, const std::string& code) {
+    std::string values;
+    for (int i = 0; i < 16; ++i) values += " VALUE_" + std::to_string(i) + "=\"" + (i % 5 == 0 ? "1" : "0") + "\"";
+    std::string text = d3dEffect(
+        "<RmMatrixVariable NAME=\"Mvp\" VARIABLE_SEMANTIC=\"ViewProjection\"" + values + "/>\n"
+        "<RmMatrixVariable NAME=\"MvpT\" VARIABLE_SEMANTIC=\"ViewProjectionTranspose\"" + values + "/>\n"
+        "<RmMatrixVariable NAME=\"S\" VARIABLE_SEMANTIC=\"\"" + values + "/>\n"
+        "<RmPass NAME=\"P\" PASS_INDEX=\"0\"><RmHLSLShader NAME=\"VS\" PIXEL_SHADER=\"FALSE\" TARGET=\"vs_2_0\" "
+        "ENTRY_POINT=\"main\"><RmShaderConstant NAME=\"Mvp\"/><RmShaderConstant NAME=\"MvpT\"/><RmShaderConstant NAME=\"S\"/>"
+        "<RmShaderCode><![CDATA[\nfloat4x4 Mvp : register(c0);\nfloat4x4 MvpT;\nfloat4x4 S;\n"
+        "float4 main(float4 p : POSITION) : POSITION {\n" + code + "\n}]]></RmShaderCode></RmHLSLShader></RmPass>\n");
+    if (!version.empty()) text.replace(text.find("ACTIVE_EFFECT"), 0, "XML_VERSION=\"" + version + "\" ");
+    return text;
+}
+
+// Which way round the HLSL multiplies the semantic matrices decides their order where it says one
+// (LensFlare_10, saved by 1.71, writes mul(g_matViewProj, v)); a warning names the line that goes
+// against the version. Where the code says both, or nothing, the version decides.
+TEST(RfxImporter, TheHlslMatrixOrderFollowsWhatTheCodeMultiplies) {
+    struct Case {
+        const char* version;
+        const char* code;  // from line 12 of the file
+        HlslMatrixOrder expected;
+        const char* warning;  // empty: none
+    };
+    const Case cases[] = {
+        {"RenderMonkey 1.71", "return mul(Mvp, p);", HlslMatrixOrder::ColumnVector,
+         "t.rfx:2: warning: <RmEffectWorkspace NAME=\"W\">: t.rfx:12 multiplies mul(Mvp, v) (1 such in the effect), where "
+         "RenderMonkey of XML_VERSION \"RenderMonkey 1.71\" passed its semantic matrices for mul(v, M): they are passed for "
+         "mul(M, v), as the code asks (--rfx-matrices to choose)"},
+        {"RenderMonkey 1.71", "return mul(float4(p.xyz, 1), (Mvp));", HlslMatrixOrder::RowVector, ""},
+        {"RenderMonkey 1.5", "return mul(Mvp, p);", HlslMatrixOrder::ColumnVector, ""},
+        {"RenderMonkey 1.5", "float4 q = mul(p, Mvp);\nreturn mul(q, Mvp);", HlslMatrixOrder::RowVector,
+         "t.rfx:12 multiplies mul(v, Mvp) (2 such in the effect), where RenderMonkey of XML_VERSION \"RenderMonkey 1.5\" passed "
+         "its semantic matrices for mul(M, v): they are passed for mul(v, M)"},
+        // A transposed semantic, or transpose(), counts the other way round.
+        {"RenderMonkey 1.71", "return mul(MvpT, p);", HlslMatrixOrder::RowVector, ""},
+        {"RenderMonkey 1.71", "return mul(transpose(Mvp), p);", HlslMatrixOrder::RowVector, ""},
+        {"RenderMonkey 1.5", "return mul(p, transpose(Mvp));", HlslMatrixOrder::ColumnVector, ""},
+        // A matrix on each side, a stored matrix, or no variable at all says nothing.
+        {"RenderMonkey 1.5", "return mul(mul(S, Mvp), p) + mul(Mvp, MvpT) + mul(p, S) + mul(p, Mvp[0]);",
+         HlslMatrixOrder::ColumnVector, ""},
+        {"RenderMonkey 1.71", "return mul(Mvp, mul(S, p)) + mul(mul(p, Mvp), S);", HlslMatrixOrder::RowVector,
+         "both ways round (mul(Mvp, v) at t.rfx:12, 1 such; mul(v, Mvp) at t.rfx:12, 1 such): they are passed for mul(v, M), "
+         "as RenderMonkey of XML_VERSION \"RenderMonkey 1.71\" did"},
+        // Without a version the code decides, unwarned; with neither, the later versions' order, warned.
+        {"", "return mul(Mvp, p);", HlslMatrixOrder::ColumnVector, ""},
+        {"", "return p;", HlslMatrixOrder::RowVector, "XML_VERSION missing: HLSL semantic matrices are passed as RenderMonkey 1.6"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(std::string(c.version) + ": " + c.code);
+        Result<Workspace> ws = importRfxText(matrixOrderEffect(c.version, c.code), "t.rfx", ".", {""});
+        ASSERT_TRUE(ws) << formatAll(ws.diagnostics());
+        ASSERT_EQ(ws->passes.size(), 1u);
+        ASSERT_EQ(ws->passes[0].shaders.size(), 1u);
+        EXPECT_EQ(ws->passes[0].shaders[0].matrixOrder, c.expected);
+        const std::string said = formatAll(ws.diagnostics());
+        if (*c.warning) {
+            EXPECT_NE(said.find(c.warning), std::string::npos) << said;
+        } else {
+            EXPECT_EQ(said.find("mul("), std::string::npos) << said;
+        }
+        if (std::string(c.warning).find("XML_VERSION missing") == std::string::npos) {
+            EXPECT_EQ(said.find("XML_VERSION missing"), std::string::npos) << said;
+        }
+    }
+    // What --rfx-matrices asks for overrides the code too.
+    Result<Workspace> asked = importRfxText(matrixOrderEffect("RenderMonkey 1.71", "return mul(Mvp, p);"), "t.rfx", ".",
+                                            {"", HlslMatrixOrder::RowVector});
+    ASSERT_TRUE(asked) << formatAll(asked.diagnostics());
+    EXPECT_EQ(asked->passes[0].shaders[0].matrixOrder, HlslMatrixOrder::RowVector);
+    EXPECT_EQ(formatAll(asked.diagnostics()).find("mul("), std::string::npos) << formatAll(asked.diagnostics());
+}
+
 TEST(RfxImporter, AssemblyShaderInAnEnabledPassIsAnError) {
     std::string errors = errorsOf(glEffect(
         "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n"

@@ -110,7 +110,8 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
     const HlslMatrixOrder hlslMatrices =
         effect.api != RfxApi::Direct3D ? HlslMatrixOrder::RowVector
         : options.hlslMatrices         ? *options.hlslMatrices
-                                       : hlslMatrixOrderOf(RfxElement(effect.workspace, file, diagnostics));
+                                       : hlslMatrixOrderOf(RfxElement(effect.workspace, file, diagnostics),
+                                                           matrixOrderEvidence(RfxElement(effect.element, file, diagnostics), scopes));
     std::vector<ReadPass> passes;
     for (const XMLElement* x = effect.element->FirstChildElement(); x; x = x->NextSiblingElement())
         if (isPassTag(x->Name())) {

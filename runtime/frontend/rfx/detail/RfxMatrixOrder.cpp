@@ -1,29 +1,111 @@
 #include "frontend/rfx/detail/RfxMatrixOrder.h"
 
+#include <cctype>
 #include <charconv>
 #include <string_view>
 
-namespace rmfx::rfx {
+#include "frontend/rfx/detail/RfxShaderCode.h"
+#include "frontend/shader/HlslMulOperands.h"
+#include "model/SemanticValues.h"
 
-HlslMatrixOrder hlslMatrixOrderOf(const RfxElement& workspace) {
-    const std::optional<std::string> version = workspace.text("XML_VERSION", false);
+namespace rmfx::rfx {
+namespace {
+
+bool endsWithTranspose(std::string_view semantic) {
+    constexpr std::string_view suffix = "transpose";
+    if (semantic.size() < suffix.size()) return false;
+    for (size_t i = 0; i < suffix.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(semantic[semantic.size() - suffix.size() + i])) != suffix[i]) return false;
+    return true;
+}
+
+// The version's order; nullopt when XML_VERSION is missing or unreadable.
+std::optional<HlslMatrixOrder> versionOrder(const std::optional<std::string>& version) {
     const std::string_view prefix = "RenderMonkey ";
-    if (version && version->rfind(prefix, 0) == 0) {
-        const char* first = version->data() + prefix.size();
-        const char* last = version->data() + version->size();
-        int major = 0, minor = 0;
-        auto [afterMajor, majorError] = std::from_chars(first, last, major);
-        if (majorError == std::errc() && afterMajor < last && *afterMajor == '.') {
-            // "1.71" is 1.71, so only the first digit after the point orders minor versions.
-            const char* digit = afterMajor + 1;
-            if (digit < last && *digit >= '0' && *digit <= '9') {
-                minor = *digit - '0';
-                return major < 1 || (major == 1 && minor < 6) ? HlslMatrixOrder::ColumnVector : HlslMatrixOrder::RowVector;
+    if (!version || version->rfind(prefix, 0) != 0) return std::nullopt;
+    const char* first = version->data() + prefix.size();
+    const char* last = version->data() + version->size();
+    int major = 0;
+    auto [afterMajor, majorError] = std::from_chars(first, last, major);
+    if (majorError != std::errc() || afterMajor >= last || *afterMajor != '.') return std::nullopt;
+    // "1.71" is 1.71, so only the first digit after the point orders minor versions.
+    const char* digit = afterMajor + 1;
+    if (digit >= last || *digit < '0' || *digit > '9') return std::nullopt;
+    const int minor = *digit - '0';
+    return major < 1 || (major == 1 && minor < 6) ? HlslMatrixOrder::ColumnVector : HlslMatrixOrder::RowVector;
+}
+
+const char* spelled(HlslMatrixOrder order) { return order == HlslMatrixOrder::ColumnVector ? "mul(M, v)" : "mul(v, M)"; }
+
+std::string written(const MatrixOrderEvidence::Use& use, HlslMatrixOrder order) {
+    return order == HlslMatrixOrder::ColumnVector ? "mul(" + use.matrix + ", v)" : "mul(v, " + use.matrix + ")";
+}
+
+std::string where(const MatrixOrderEvidence::Use& use) { return use.where.file + ":" + std::to_string(use.where.line); }
+
+}  // namespace
+
+MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleScopes& scopes) {
+    MatrixOrderEvidence evidence;
+    auto matrixVariable = [&](const MulOperandVariable& operand) -> const Variable* {
+        if (operand.name.empty()) return nullptr;
+        const Variable* v = scopes.variable(operand.name);
+        return v && v->value.type == ValueType::Mat4 ? v : nullptr;
+    };
+    Diagnostics quiet;  // the pass reader reports what is wrong with the shaders
+    for (const tinyxml2::XMLElement* pass = effect.xml()->FirstChildElement(); pass; pass = pass->NextSiblingElement()) {
+        for (const tinyxml2::XMLElement* x = pass->FirstChildElement("RmHLSLShader"); x; x = x->NextSiblingElement("RmHLSLShader")) {
+            std::optional<RfxShaderCode> code = shaderCodeOf(RfxElement(x, effect.file(), quiet));
+            if (!code) continue;
+            for (const MulCall& call : mulCalls(code->code)) {
+                const MulOperandVariable first = mulOperandVariable(call.first), second = mulOperandVariable(call.second);
+                const Variable* a = matrixVariable(first);
+                const Variable* b = matrixVariable(second);
+                if ((a == nullptr) == (b == nullptr)) continue;  // no matrix, or one on each side
+                const Variable& m = a ? *a : *b;
+                std::optional<SemanticInfo> semantic = m.semantic.empty() ? std::nullopt : findSemantic(m.semantic);
+                if (!semantic || semantic->type != UniformType::Mat4) continue;
+                bool columnVector = a != nullptr;
+                if (endsWithTranspose(semantic->name) != (a ? first : second).transposed) columnVector = !columnVector;
+                std::optional<MatrixOrderEvidence::Use>& use = columnVector ? evidence.columnVector : evidence.rowVector;
+                if (!use) use = MatrixOrderEvidence::Use{{effect.file(), code->line + call.line - 1}, m.name, 0};
+                ++use->count;
             }
         }
     }
-    workspace.warning("XML_VERSION " + (version ? "\"" + *version + "\"" : std::string("missing")) +
-                      ": HLSL semantic matrices are passed as RenderMonkey 1.6 and later did, for mul(v, M)");
+    return evidence;
+}
+
+HlslMatrixOrder hlslMatrixOrderOf(const RfxElement& workspace, const MatrixOrderEvidence& code) {
+    const std::optional<std::string> version = workspace.text("XML_VERSION", false);
+    const std::optional<HlslMatrixOrder> byVersion = versionOrder(version);
+    const std::string versionText = version ? "\"" + *version + "\"" : std::string("missing");
+    if (code.columnVector && code.rowVector) {
+        const HlslMatrixOrder order = byVersion.value_or(HlslMatrixOrder::RowVector);
+        const auto& c = *code.columnVector;
+        const auto& r = *code.rowVector;
+        workspace.warning("the effect's HLSL multiplies its semantic matrices both ways round (" +
+                          written(c, HlslMatrixOrder::ColumnVector) + " at " + where(c) + ", " + std::to_string(c.count) + " such; " +
+                          written(r, HlslMatrixOrder::RowVector) + " at " + where(r) + ", " + std::to_string(r.count) +
+                          " such): they are passed for " + spelled(order) +
+                          (byVersion ? ", as RenderMonkey of XML_VERSION " + versionText + " did"
+                                     : ", as RenderMonkey 1.6 and later did (XML_VERSION " + versionText + ")") +
+                          " (--rfx-matrices to choose)");
+        return order;
+    }
+    if (code.columnVector || code.rowVector) {
+        const HlslMatrixOrder order = code.columnVector ? HlslMatrixOrder::ColumnVector : HlslMatrixOrder::RowVector;
+        if (byVersion && *byVersion != order) {
+            const auto& use = code.columnVector ? *code.columnVector : *code.rowVector;
+            workspace.warning(where(use) + " multiplies " + written(use, order) + " (" +
+                              std::to_string(use.count) + " such in the effect), where RenderMonkey of XML_VERSION " + versionText +
+                              " passed its semantic matrices for " + spelled(*byVersion) + ": they are passed for " + spelled(order) +
+                              ", as the code asks (--rfx-matrices to choose)");
+        }
+        return order;
+    }
+    if (byVersion) return *byVersion;
+    workspace.warning("XML_VERSION " + versionText + ": HLSL semantic matrices are passed as RenderMonkey 1.6 and later did, for mul(v, M)");
     return HlslMatrixOrder::RowVector;
 }
 

@@ -1,17 +1,39 @@
 #pragma once
-// Which way round a RenderMonkey workspace's HLSL multiplies its semantic matrices, from the
-// version that saved it (RmEffectWorkspace XML_VERSION="RenderMonkey 1.5"). RenderMonkey up to
-// 1.5 passed matrices in OpenGL's layout, so its HLSL wrote mul(view_proj_matrix, Pos); from 1.6
-// on it passed them as D3DX does, and its template wrote mul(Input.Position, matViewProjection).
-// docs/rendermonkey.md, "Matrices", has the files this was read from.
+// Which way round a RenderMonkey effect's HLSL multiplies its semantic matrices (World,
+// ViewProjection…, which rmfx fills). First from the code: a mul() with such a matrix on one side
+// and no matrix variable on the other says it, mul(M, v) for OpenGL's layout (M·v) and mul(v, M)
+// for D3DX's (a matrix whose semantic ends in Transpose, or inside transpose(), counts the other
+// way). Where the code says nothing, or says both, the version that saved the file decides
+// (RmEffectWorkspace XML_VERSION="RenderMonkey 1.5"): up to 1.5 RenderMonkey passed matrices in
+// OpenGL's layout, so its HLSL wrote mul(view_proj_matrix, Pos); from 1.6 on it passed them as
+// D3DX does, and its template wrote mul(Input.Position, matViewProjection). Of the public files
+// tried, one saved by 1.71 writes mul(g_matViewProj, v) (docs/rendermonkey.md, "Matrices").
+
+#include <optional>
+#include <string>
 
 #include "frontend/rfx/detail/RfxElement.h"
+#include "frontend/rfx/detail/RfxPassReader.h"
 #include "model/Workspace.h"
 
 namespace rmfx::rfx {
 
-// ColumnVector for versions before 1.6, RowVector for later ones. A missing or unreadable
-// XML_VERSION is read as a later version, with a warning.
-HlslMatrixOrder hlslMatrixOrderOf(const RfxElement& workspace);
+// What an effect's HLSL shaders say: the first mul() of each order, and how many there are.
+struct MatrixOrderEvidence {
+    struct Use {
+        SourceLocation where;  // the line of the mul in the file
+        std::string matrix;    // the semantic matrix's variable
+        int count = 0;         // uses of this order
+    };
+    std::optional<Use> columnVector, rowVector;  // mul(M, v); mul(v, M)
+};
+
+// From the <RmHLSLShader> code of the effect's passes, the matrices looked up in `scopes`.
+MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleScopes& scopes);
+
+// The code's order where it says one, else the version's (ColumnVector before 1.6, RowVector for
+// later ones, and for a missing or unreadable XML_VERSION, with a warning). A warning names the
+// line where the code goes against the version, or where it says both.
+HlslMatrixOrder hlslMatrixOrderOf(const RfxElement& workspace, const MatrixOrderEvidence& code);
 
 }  // namespace rmfx::rfx

@@ -1,0 +1,59 @@
+#include <gtest/gtest.h>
+
+#include "frontend/shader/HlslMulOperands.h"
+
+namespace rmfx::test {
+namespace {
+
+TEST(HlslMulOperands, EachCallGivesItsTwoOperandsAndLineNestedCallsToo) {
+    const std::string code =
+        "float4x4 g_matViewProj : register(c0);\n"
+        "// mul(Commented, Out)\n"
+        "VS_OUTPUT main(float4 Pos : POSITION) {\n"
+        "   Out.Pos = mul(g_matViewProj, float4(Pos.xyz, 1));\n"
+        "   float3 n = mul ( (float3x3) World , normal );\n"
+        "   float4 p = mul(mul(Pos, World), ViewProjection);\n"
+        "   x = matmul(a, b) + s.mul(c, d) + mul(only) + mul(a, b, c);\n"
+        "   /* mul(hidden, too) */ y = mul(arr[i], M[0]);\n"
+        "}\n";
+    const std::vector<MulCall> calls = mulCalls(code);
+    ASSERT_EQ(calls.size(), 5u);
+    EXPECT_EQ(calls[0].line, 4);
+    EXPECT_EQ(calls[0].first, "g_matViewProj");
+    EXPECT_EQ(calls[0].second, "float4(Pos.xyz, 1)");
+    EXPECT_EQ(calls[1].line, 5);
+    EXPECT_EQ(calls[1].first, "(float3x3) World");
+    EXPECT_EQ(calls[1].second, "normal");
+    EXPECT_EQ(calls[2].line, 6);
+    EXPECT_EQ(calls[2].first, "mul(Pos, World)");
+    EXPECT_EQ(calls[2].second, "ViewProjection");
+    EXPECT_EQ(calls[3].line, 6);
+    EXPECT_EQ(calls[3].first, "Pos");
+    EXPECT_EQ(calls[3].second, "World");
+    EXPECT_EQ(calls[4].line, 8);
+    EXPECT_EQ(calls[4].first, "arr[i]");
+    EXPECT_EQ(calls[4].second, "M[0]");
+}
+
+TEST(HlslMulOperands, AnUnclosedCallIsLeftOut) {
+    EXPECT_TRUE(mulCalls("x = mul(a, (b;\n").empty());
+    EXPECT_TRUE(mulCalls("mul").empty());
+    EXPECT_TRUE(mulCalls("x = mul(a, b]").empty());
+}
+
+TEST(HlslMulOperands, AnOperandNamesAVariableOnlyWhenItIsOne) {
+    EXPECT_EQ(mulOperandVariable("  World ").name, "World");
+    EXPECT_EQ(mulOperandVariable("(World)").name, "World");
+    EXPECT_EQ(mulOperandVariable("(float3x3) World").name, "World");
+    EXPECT_EQ(mulOperandVariable("(float3x3)(World)").name, "World");
+    MulOperandVariable t = mulOperandVariable("transpose( ViewProjection )");
+    EXPECT_EQ(t.name, "ViewProjection");
+    EXPECT_TRUE(t.transposed);
+    EXPECT_FALSE(mulOperandVariable("World").transposed);
+    for (const char* other : {"M[0]", "a.b", "float4(p, 1)", "2 * M", "mul(a, b)", "(a + b)", "(float3x3 World", "", "3",
+                              "transpose(a, b)"})
+        EXPECT_EQ(mulOperandVariable(other).name, "") << other;
+}
+
+}  // namespace
+}  // namespace rmfx::test
