@@ -55,5 +55,29 @@ TEST(HlslMulOperands, AnOperandNamesAVariableOnlyWhenItIsOne) {
         EXPECT_EQ(mulOperandVariable(other).name, "") << other;
 }
 
+TEST(HlslMulOperands, DeclarationsSayWhichNamesAreVectorsAndWhichMatrices) {
+    const std::string code =
+        "float4x4 Mvp : register(c0);\nuniform matrix<float, 4, 4> M2;\nmatrix M3;\nstatic const float3 light = float3(0, 1, 0);\n"
+        "half4 colour;\nfloat scale;\n// float4 commented;\n"
+        "float4 main(float4 p : POSITION, in float3 n : NORMAL) : POSITION {\n"
+        "   float3x3 r = (float3x3) Mvp;\n   float4 both; float4x4 both;\n   vector v;\n   return p;\n}\n";
+    const std::map<std::string, MulOperandShape> shapes = declaredShapes(code);
+    const std::map<std::string, MulOperandShape> expected{
+        {"Mvp", MulOperandShape::Matrix},   {"M2", MulOperandShape::Matrix}, {"M3", MulOperandShape::Matrix},
+        {"light", MulOperandShape::Vector}, {"colour", MulOperandShape::Vector}, {"p", MulOperandShape::Vector},
+        {"n", MulOperandShape::Vector},     {"r", MulOperandShape::Matrix},  {"v", MulOperandShape::Vector}};
+    EXPECT_EQ(shapes, expected);
+}
+
+TEST(HlslMulOperands, AnOperandIsAVectorOnlyWhereTheCodeShowsIt) {
+    const std::map<std::string, MulOperandShape> declared{{"p", MulOperandShape::Vector}, {"W", MulOperandShape::Matrix}};
+    for (const char* vector : {"p", "(p)", "float4(p.xyz, 1)", "half3 (n)", "In.Pos", "Input . Position", "p.xyz", "(float4) q"})
+        EXPECT_EQ(mulOperandShape(vector, declared), MulOperandShape::Vector) << vector;
+    for (const char* matrix : {"W", "(W)", "(float4x4) S", "float3x3(a, b, c)"})
+        EXPECT_EQ(mulOperandShape(matrix, declared), MulOperandShape::Matrix) << matrix;
+    for (const char* unknown : {"q", "mul(p, W)", "2 * p", "arr[0]", "f(p)", "p + p", "", "In.Pos.xyz * 2", "(p"})
+        EXPECT_EQ(mulOperandShape(unknown, declared), MulOperandShape::Unknown) << unknown;
+}
+
 }  // namespace
 }  // namespace rmfx::test

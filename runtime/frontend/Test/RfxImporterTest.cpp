@@ -764,11 +764,15 @@ TEST(RfxImporter, TheHlslMatrixOrderFollowsWhatTheCodeMultiplies) {
         {"RenderMonkey 1.71", "return mul(MvpT, p);", HlslMatrixOrder::RowVector, ""},
         {"RenderMonkey 1.71", "return mul(transpose(Mvp), p);", HlslMatrixOrder::RowVector, ""},
         {"RenderMonkey 1.5", "return mul(p, transpose(Mvp));", HlslMatrixOrder::ColumnVector, ""},
-        // A matrix on each side, a stored matrix, or no variable at all says nothing.
-        {"RenderMonkey 1.5", "return mul(mul(S, Mvp), p) + mul(Mvp, MvpT) + mul(p, S) + mul(p, Mvp[0]);",
+        // A matrix on each side (a local one too), a stored matrix, no variable, or something on the
+        // other side that is not known to be a vector says nothing.
+        {"RenderMonkey 1.5", "float4x4 W = S;\nreturn mul(mul(S, Mvp), p) + mul(Mvp, MvpT) + mul(p, S) + mul(p, Mvp[0]) + mul(W, Mvp) + "
+         "mul(2 * p, Mvp) + mul(unknown, Mvp);",
          HlslMatrixOrder::ColumnVector, ""},
-        {"RenderMonkey 1.71", "return mul(Mvp, mul(S, p)) + mul(mul(p, Mvp), S);", HlslMatrixOrder::RowVector,
-         "both ways round (mul(Mvp, v) at t.rfx:12, 1 such; mul(v, Mvp) at t.rfx:12, 1 such): they are passed for mul(v, M), "
+        {"RenderMonkey 1.71", "float4x4 W = S;\nreturn mul(Mvp, W) + mul((float4x4) S, Mvp);", HlslMatrixOrder::RowVector, ""},
+        {"RenderMonkey 1.71", "float4 q = mul(Mvp, mul(S, p)) + mul(mul(p, S), Mvp);\nreturn mul(Mvp, p) + mul(p.xyzw, Mvp);",
+         HlslMatrixOrder::RowVector,
+         "both ways round (mul(Mvp, v) at t.rfx:13, 1 such; mul(v, Mvp) at t.rfx:13, 1 such): they are passed for mul(v, M), "
          "as RenderMonkey of XML_VERSION \"RenderMonkey 1.71\" did"},
         // Without a version the code decides, unwarned; with neither, the later versions' order, warned.
         {"", "return mul(Mvp, p);", HlslMatrixOrder::ColumnVector, ""},

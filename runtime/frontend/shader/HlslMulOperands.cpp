@@ -1,6 +1,7 @@
 #include "frontend/shader/HlslMulOperands.h"
 
 #include <cctype>
+#include <regex>
 
 #include "frontend/shader/HlslBlankedCode.h"
 
@@ -105,6 +106,66 @@ MulOperandVariable mulOperandVariable(std::string_view operand) {
     }
     if (!isIdentifier(s)) return {};
     return {std::string(s), transposed};
+}
+
+namespace {
+
+// A type name's shape: floatN / halfN / intN… and vector are vectors, floatNxM… and matrix matrices.
+MulOperandShape typeShape(std::string_view type) {
+    static const std::regex vector(R"((?:float|half|double|int|uint|bool|min16float|min10float|min16int|min16uint)[1-4])");
+    static const std::regex matrix(R"((?:float|half|double|int|uint|bool|min16float|min10float|min16int|min16uint)[1-4]x[1-4])");
+    const std::string t(type);
+    if (t == "vector" || std::regex_match(t, vector)) return MulOperandShape::Vector;
+    if (t == "matrix" || std::regex_match(t, matrix)) return MulOperandShape::Matrix;
+    return MulOperandShape::Unknown;
+}
+
+}  // namespace
+
+std::map<std::string, MulOperandShape> declaredShapes(const std::string& code) {
+    const std::string blanked = blankedHlsl(code);
+    // A type, optional template arguments (matrix<float, 4, 4>), then the declared name(s).
+    static const std::regex declaration(R"(\b([A-Za-z_][A-Za-z0-9_]*)\s*(?:<[^<>;]*>)?\s+([A-Za-z_][A-Za-z0-9_]*)\s*(?=[;,:=)\[]))");
+    std::map<std::string, MulOperandShape> shapes;
+    std::map<std::string, bool> conflicting;
+    for (auto it = std::sregex_iterator(blanked.begin(), blanked.end(), declaration); it != std::sregex_iterator(); ++it) {
+        const MulOperandShape shape = typeShape((*it)[1].str());
+        if (shape == MulOperandShape::Unknown) continue;
+        const std::string name = (*it)[2].str();
+        auto [at, inserted] = shapes.emplace(name, shape);
+        if (!inserted && at->second != shape) conflicting[name] = true;
+    }
+    for (const auto& [name, both] : conflicting) shapes.erase(name);
+    return shapes;
+}
+
+MulOperandShape mulOperandShape(std::string_view operand, const std::map<std::string, MulOperandShape>& declared) {
+    std::string_view s = trimmed(operand);
+    while (!s.empty() && s.front() == '(' && closingOf(s, 0) == s.size() - 1) s = trimmed(s.substr(1, s.size() - 2));
+    if (s.empty()) return MulOperandShape::Unknown;
+    if (s.front() == '(') {
+        // A cast: its type says it.
+        const size_t close = closingOf(s, 0);
+        if (close == std::string_view::npos) return MulOperandShape::Unknown;
+        return typeShape(trimmed(s.substr(1, close - 1)));
+    }
+    // A constructor: a type name, then its arguments to the end.
+    size_t name = 0;
+    while (name < s.size() && identifierChar(s[name])) ++name;
+    if (name > 0 && name < s.size()) {
+        size_t open = name;
+        while (open < s.size() && std::isspace(static_cast<unsigned char>(s[open]))) ++open;
+        if (open < s.size() && s[open] == '(' && closingOf(s, open) == s.size() - 1) return typeShape(s.substr(0, name));
+    }
+    // A member or swizzle of a variable: identifiers joined by dots.
+    static const std::regex member(R"([A-Za-z_][A-Za-z0-9_]*(?:\s*\.\s*[A-Za-z_][A-Za-z0-9_]*)+)");
+    const std::string text(s);
+    if (std::regex_match(text, member)) return MulOperandShape::Vector;
+    if (isIdentifier(s)) {
+        auto it = declared.find(text);
+        return it == declared.end() ? MulOperandShape::Unknown : it->second;
+    }
+    return MulOperandShape::Unknown;
 }
 
 }  // namespace rmfx

@@ -4,6 +4,7 @@
 // Comments, strings and preprocessor lines are skipped; calls nested in an operand are listed too.
 // A call whose parentheses do not close, or that does not have two operands, is left out.
 
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,5 +26,16 @@ struct MulOperandVariable {
     bool transposed = false;
 };
 MulOperandVariable mulOperandVariable(std::string_view operand);
+
+// What an operand is, as far as the code shows without compiling it.
+enum class MulOperandShape { Vector, Matrix, Unknown };
+// The names the code declares with a vector type (float2…float4, half4, int3…, vector) or a
+// matrix type (float4x4, half3x3, matrix…), globals, parameters and locals alike; a name declared
+// as both is left out.
+std::map<std::string, MulOperandShape> declaredShapes(const std::string& code);
+// A vector constructor (float4(…)) or cast, a member or swizzle (In.Pos, p.xyz), or a variable
+// `declared` as a vector: Vector; a variable declared as a matrix, or a matrix cast: Matrix;
+// anything else (a call such as mul(…), an element, arithmetic, a scalar): Unknown.
+MulOperandShape mulOperandShape(std::string_view operand, const std::map<std::string, MulOperandShape>& declared);
 
 }  // namespace rmfx

@@ -57,11 +57,15 @@ MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleS
         for (const tinyxml2::XMLElement* x = pass->FirstChildElement("RmHLSLShader"); x; x = x->NextSiblingElement("RmHLSLShader")) {
             std::optional<RfxShaderCode> code = shaderCodeOf(RfxElement(x, effect.file(), quiet));
             if (!code) continue;
+            const std::map<std::string, MulOperandShape> declared = declaredShapes(code->code);
             for (const MulCall& call : mulCalls(code->code)) {
                 const MulOperandVariable first = mulOperandVariable(call.first), second = mulOperandVariable(call.second);
                 const Variable* a = matrixVariable(first);
                 const Variable* b = matrixVariable(second);
                 if ((a == nullptr) == (b == nullptr)) continue;  // no matrix, or one on each side
+                // Only a vector on the other side says it: World on the left of a matrix is v·W·VP's
+                // order, on the left of a vector M·v's.
+                if (mulOperandShape(a ? call.second : call.first, declared) != MulOperandShape::Vector) continue;
                 const Variable& m = a ? *a : *b;
                 std::optional<SemanticInfo> semantic = m.semantic.empty() ? std::nullopt : findSemantic(m.semantic);
                 if (!semantic || semantic->type != UniformType::Mat4) continue;

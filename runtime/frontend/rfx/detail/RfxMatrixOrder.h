@@ -1,9 +1,10 @@
 #pragma once
 // Which way round a RenderMonkey effect's HLSL multiplies its semantic matrices (World,
 // ViewProjection…, which rmfx fills). First from the code: a mul() with such a matrix on one side
-// and no matrix variable on the other says it, mul(M, v) for OpenGL's layout (M·v) and mul(v, M)
-// for D3DX's (a matrix whose semantic ends in Transpose, or inside transpose(), counts the other
-// way). Where the code says nothing, or says both, the version that saved the file decides
+// and a vector on the other (a constructor, a member or swizzle, or a variable declared as a
+// vector) says it, mul(M, v) for OpenGL's layout (M·v) and mul(v, M) for D3DX's (a matrix whose
+// semantic ends in Transpose, or inside transpose(), counts the other way); a product of two
+// matrices says nothing, since World stands on the left in v·W·VP and on the right in P·V·W·v. Where the code says nothing, or says both, the version that saved the file decides
 // (RmEffectWorkspace XML_VERSION="RenderMonkey 1.5"): up to 1.5 RenderMonkey passed matrices in
 // OpenGL's layout, so its HLSL wrote mul(view_proj_matrix, Pos); from 1.6 on it passed them as
 // D3DX does, and its template wrote mul(Input.Position, matViewProjection). Of the public files
