@@ -41,6 +41,25 @@ TEST(HlslMulOperands, AnUnclosedCallIsLeftOut) {
     EXPECT_TRUE(mulCalls("x = mul(a, b]").empty());
 }
 
+// Code of many nested calls: each is found once, and those with long operands are left out rather
+// than copied once per level.
+TEST(HlslMulOperands, DeeplyNestedCallsKeepOnlyTheShortOnes) {
+    const int depth = 100000;
+    std::string code;
+    for (int i = 0; i < depth; ++i) code += "mul(a, ";
+    code += "b";
+    code.append(static_cast<size_t>(depth), ')');
+    const std::vector<MulCall> calls = mulCalls(code);
+    ASSERT_FALSE(calls.empty());
+    EXPECT_LT(calls.size(), 40u);
+    EXPECT_EQ(calls.back().first, "a");
+    EXPECT_EQ(calls.back().second, "b");
+    for (const MulCall& call : calls) EXPECT_LE(call.second.size(), 256u);
+    std::string templates;
+    for (int i = 0; i < depth; ++i) templates += "matrix< ";
+    EXPECT_TRUE(declaredShapes(templates).empty());
+}
+
 TEST(HlslMulOperands, AnOperandNamesAVariableOnlyWhenItIsOne) {
     EXPECT_EQ(mulOperandVariable("  World ").name, "World");
     EXPECT_EQ(mulOperandVariable("(World)").name, "World");

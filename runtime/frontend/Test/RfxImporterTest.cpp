@@ -803,6 +803,19 @@ TEST(RfxImporter, TheHlslMatrixOrderFollowsWhatTheCodeMultiplies) {
     EXPECT_EQ(formatAll(asked.diagnostics()).find("mul("), std::string::npos) << formatAll(asked.diagnostics());
 }
 
+// The test file written in LensFlare_10's way: both shaders of its pass get the order its vertex
+// shader's mul(g_matViewProj, v) asks for, with a warning naming that line.
+TEST(RfxImporter, AFileWrittenForTheOtherMatrixOrderIsReadByItsCode) {
+    Result<Workspace> ws = importRfxFile(rfxDir() / "d3d_matrix_order.rfx", {""});
+    ASSERT_TRUE(ws) << formatAll(ws.diagnostics());
+    ASSERT_EQ(ws->passes.size(), 1u);
+    ASSERT_EQ(ws->passes[0].shaders.size(), 2u);
+    for (const ShaderSource& s : ws->passes[0].shaders) EXPECT_EQ(s.matrixOrder, HlslMatrixOrder::ColumnVector);
+    const std::string said = formatAll(ws.diagnostics());
+    EXPECT_NE(said.find("d3d_matrix_order.rfx:34 multiplies mul(g_matViewProj, v) (1 such in the effect)"), std::string::npos)
+        << said;
+}
+
 TEST(RfxImporter, AssemblyShaderInAnEnabledPassIsAnError) {
     std::string errors = errorsOf(glEffect(
         "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n"

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,37 @@ TEST_F(RfxCoreRenderGLTest, Direct3DHlslPassesRunThroughGlslang) {
     std::array<double, 3> expected{};
     for (int c = 0; c < 3; ++c) expected[c] = color[c] * gain * 2.0;
     expectUniformOutput(runWorkspace(std::move(ws), RunSettings{{kSize, kSize}}), expected);
+}
+
+// A 1.71 file whose HLSL multiplies mul(g_matViewProj, v) (written for OpenGL-layout matrices, as
+// gaxlin's LensFlare_10): imported on its own it renders bit for bit as with --rfx-matrices
+// column-vector, and the billboard lands elsewhere with the order its version implies.
+TEST_F(RfxCoreRenderGLTest, TheMatrixOrderTheCodeMultipliesIsTheOrderItRendersWith) {
+    auto render = [](std::optional<HlslMatrixOrder> asked) {
+        WorkspaceLoadOptions load;
+        load.rfxMatrices = asked;
+        Result<Workspace> loaded = loadWorkspace(sourceDir() / "tests" / "rfx" / "d3d_matrix_order.rfx", {}, load);
+        EXPECT_TRUE(loaded.ok()) << formatAll(loaded.diagnostics());
+        if (!loaded.ok()) return Image{};
+        GlRun run = runWorkspace(std::make_unique<Workspace>(std::move(*loaded)), RunSettings{{64, 64}});
+        return run.exec ? readBack(*run.exec, run.ws->outputTargetName()) : Image{};
+    };
+    const Image fromCode = render(std::nullopt);
+    const Image columnVector = render(HlslMatrixOrder::ColumnVector);
+    const Image rowVector = render(HlslMatrixOrder::RowVector);
+    ASSERT_EQ(fromCode.width, 64);
+    ASSERT_EQ(columnVector.width, 64);
+    ASSERT_EQ(rowVector.width, 64);
+    int lit = 0, differing = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            for (int c = 0; c < 4; ++c) EXPECT_EQ(fromCode.at(x, y, c), columnVector.at(x, y, c)) << x << "," << y << " channel " << c;
+            lit += fromCode.at(x, y, 2) > 0.5 ? 1 : 0;
+            differing += std::abs(fromCode.at(x, y, 2) - rowVector.at(x, y, 2)) > 0.5 ? 1 : 0;
+        }
+    EXPECT_GT(lit, 64) << "the billboard is on screen";
+    EXPECT_LT(lit, 64 * 64 / 2) << "and does not fill it";
+    EXPECT_GT(differing, lit / 4) << "the other order puts it elsewhere";
 }
 
 // RenderMonkey 1.0's form: the code in CODE attributes, the constants in DECLARATION_BLOCK, the

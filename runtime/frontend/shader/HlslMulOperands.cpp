@@ -1,12 +1,14 @@
 #include "frontend/shader/HlslMulOperands.h"
 
+#include <algorithm>
 #include <cctype>
-#include <regex>
 
 #include "frontend/shader/HlslBlankedCode.h"
 
 namespace rmfx {
 namespace {
+
+constexpr size_t kLongestOperand = 256;
 
 bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
 bool identifierStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0 || c == '_'; }
@@ -41,11 +43,35 @@ size_t closingOf(std::string_view s, size_t open) {
     return std::string_view::npos;
 }
 
+// For each opening bracket, where it closes (npos: never, or by the wrong kind): one pass, so
+// that code of many nested calls is not scanned again for each.
+std::vector<size_t> closers(std::string_view s) {
+    std::vector<size_t> closes(s.size(), std::string_view::npos);
+    std::vector<size_t> open;  // positions, innermost last
+    for (size_t i = 0; i < s.size(); ++i) {
+        const char c = s[i];
+        if (c == '(' || c == '[' || c == '{') {
+            open.push_back(i);
+        } else if (c == ')' || c == ']' || c == '}') {
+            if (open.empty()) continue;
+            const char opener = s[open.back()];
+            if ((opener == '(' && c == ')') || (opener == '[' && c == ']') || (opener == '{' && c == '}')) {
+                closes[open.back()] = i;
+                open.pop_back();
+            } else {
+                open.clear();  // a mismatch: nothing open before it closes properly
+            }
+        }
+    }
+    return closes;
+}
+
 }  // namespace
 
 std::vector<MulCall> mulCalls(const std::string& code) {
     const std::string blanked = blankedHlsl(code);
     const std::string_view s = blanked;
+    const std::vector<size_t> closes = closers(s);
     std::vector<MulCall> calls;
     int line = 1;
     size_t counted = 0;  // newlines counted up to here
@@ -54,8 +80,11 @@ std::vector<MulCall> mulCalls(const std::string& code) {
         size_t open = at + 3;
         while (open < s.size() && std::isspace(static_cast<unsigned char>(s[open]))) ++open;
         if (open >= s.size() || s[open] != '(') continue;
-        const size_t close = closingOf(s, open);
+        const size_t close = closes[open];
         if (close == std::string_view::npos) continue;
+        // Operands that say which way round are short (a name, a cast, float4(p, 1)); long ones are
+        // not kept, so that deeply nested calls do not copy the code once per level.
+        if (close - open > 2 * kLongestOperand) continue;
         // The operands: split at the one comma outside any bracket.
         std::vector<std::string_view> operands;
         int depth = 0;
@@ -73,6 +102,7 @@ std::vector<MulCall> mulCalls(const std::string& code) {
         for (; counted < at; ++counted)
             if (s[counted] == '\n') ++line;
         if (operands.size() != 2 || trimmed(operands[0]).empty() || trimmed(operands[1]).empty()) continue;
+        if (trimmed(operands[0]).size() > kLongestOperand || trimmed(operands[1]).size() > kLongestOperand) continue;
         calls.push_back({line, std::string(trimmed(operands[0])), std::string(trimmed(operands[1]))});
     }
     return calls;
@@ -112,11 +142,15 @@ namespace {
 
 // A type name's shape: floatN / halfN / intN… and vector are vectors, floatNxM… and matrix matrices.
 MulOperandShape typeShape(std::string_view type) {
-    static const std::regex vector(R"((?:float|half|double|int|uint|bool|min16float|min10float|min16int|min16uint)[1-4])");
-    static const std::regex matrix(R"((?:float|half|double|int|uint|bool|min16float|min10float|min16int|min16uint)[1-4]x[1-4])");
-    const std::string t(type);
-    if (t == "vector" || std::regex_match(t, vector)) return MulOperandShape::Vector;
-    if (t == "matrix" || std::regex_match(t, matrix)) return MulOperandShape::Matrix;
+    if (type == "vector") return MulOperandShape::Vector;
+    if (type == "matrix") return MulOperandShape::Matrix;
+    for (std::string_view scalar : {"float", "half", "double", "int", "uint", "bool", "min16float", "min10float", "min16int", "min16uint"}) {
+        if (type.substr(0, scalar.size()) != scalar) continue;
+        const std::string_view rest = type.substr(scalar.size());
+        auto dimension = [](char c) { return c >= '1' && c <= '4'; };
+        if (rest.size() == 1 && dimension(rest[0])) return MulOperandShape::Vector;
+        if (rest.size() == 3 && dimension(rest[0]) && rest[1] == 'x' && dimension(rest[2])) return MulOperandShape::Matrix;
+    }
     return MulOperandShape::Unknown;
 }
 
@@ -124,16 +158,41 @@ MulOperandShape typeShape(std::string_view type) {
 
 std::map<std::string, MulOperandShape> declaredShapes(const std::string& code) {
     const std::string blanked = blankedHlsl(code);
-    // A type, optional template arguments (matrix<float, 4, 4>), then the declared name(s).
-    static const std::regex declaration(R"(\b([A-Za-z_][A-Za-z0-9_]*)\s*(?:<[^<>;]*>)?\s+([A-Za-z_][A-Za-z0-9_]*)\s*(?=[;,:=)\[]))");
+    const std::string_view s = blanked;
     std::map<std::string, MulOperandShape> shapes;
     std::map<std::string, bool> conflicting;
-    for (auto it = std::sregex_iterator(blanked.begin(), blanked.end(), declaration); it != std::sregex_iterator(); ++it) {
-        const MulOperandShape shape = typeShape((*it)[1].str());
+    auto skipSpace = [&](size_t i) {
+        while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+        return i;
+    };
+    size_t i = 0;
+    while (i < s.size()) {
+        if (!identifierStart(s[i]) || (i > 0 && (identifierChar(s[i - 1]) || s[i - 1] == '.'))) {
+            ++i;
+            continue;
+        }
+        size_t end = i;
+        while (end < s.size() && identifierChar(s[end])) ++end;
+        const MulOperandShape shape = typeShape(s.substr(i, end - i));
+        i = end;
         if (shape == MulOperandShape::Unknown) continue;
-        const std::string name = (*it)[2].str();
-        auto [at, inserted] = shapes.emplace(name, shape);
-        if (!inserted && at->second != shape) conflicting[name] = true;
+        // A type, optional template arguments (matrix<float, 4, 4>), then the declared name.
+        size_t at = skipSpace(end);
+        if (at < s.size() && s[at] == '<') {
+            const size_t close = s.substr(0, std::min(s.size(), at + 64)).find_first_of(">;", at);
+            if (close == std::string_view::npos || s[close] != '>') continue;
+            at = skipSpace(close + 1);
+        } else if (at == end) {
+            continue;  // no space before the name
+        }
+        if (at >= s.size() || !identifierStart(s[at])) continue;
+        size_t nameEnd = at;
+        while (nameEnd < s.size() && identifierChar(s[nameEnd])) ++nameEnd;
+        const size_t after = skipSpace(nameEnd);
+        if (after >= s.size() || std::string_view(";,:=)[").find(s[after]) == std::string_view::npos) continue;
+        const std::string name(s.substr(at, nameEnd - at));
+        auto [known, inserted] = shapes.emplace(name, shape);
+        if (!inserted && known->second != shape) conflicting[name] = true;
     }
     for (const auto& [name, both] : conflicting) shapes.erase(name);
     return shapes;
@@ -158,14 +217,17 @@ MulOperandShape mulOperandShape(std::string_view operand, const std::map<std::st
         if (open < s.size() && s[open] == '(' && closingOf(s, open) == s.size() - 1) return typeShape(s.substr(0, name));
     }
     // A member or swizzle of a variable: identifiers joined by dots.
-    static const std::regex member(R"([A-Za-z_][A-Za-z0-9_]*(?:\s*\.\s*[A-Za-z_][A-Za-z0-9_]*)+)");
-    const std::string text(s);
-    if (std::regex_match(text, member)) return MulOperandShape::Vector;
-    if (isIdentifier(s)) {
-        auto it = declared.find(text);
-        return it == declared.end() ? MulOperandShape::Unknown : it->second;
+    if (s.find('.') != std::string_view::npos) {
+        for (std::string_view rest = s;;) {
+            const size_t dot = rest.find('.');
+            if (!isIdentifier(trimmed(rest.substr(0, dot)))) return MulOperandShape::Unknown;
+            if (dot == std::string_view::npos) return MulOperandShape::Vector;
+            rest = rest.substr(dot + 1);
+        }
     }
-    return MulOperandShape::Unknown;
+    if (!isIdentifier(s)) return MulOperandShape::Unknown;
+    auto it = declared.find(std::string(s));
+    return it == declared.end() ? MulOperandShape::Unknown : it->second;
 }
 
 }  // namespace rmfx

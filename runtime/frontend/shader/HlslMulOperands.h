@@ -2,7 +2,8 @@
 // The operands of each call of HLSL's mul() in a shader's code, as written: which side of mul a
 // matrix stands on says which way round the code expects it (mul(M, v) is M·v, mul(v, M) is v·M).
 // Comments, strings and preprocessor lines are skipped; calls nested in an operand are listed too.
-// A call whose parentheses do not close, or that does not have two operands, is left out.
+// A call whose parentheses do not close, that does not have two operands, or with an operand
+// longer than 256 characters is left out.
 
 #include <map>
 #include <string>
