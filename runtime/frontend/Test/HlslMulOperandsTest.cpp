@@ -1,3 +1,7 @@
+#include <string>
+#include <tuple>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "frontend/shader/HlslMulOperands.h"
@@ -17,22 +21,14 @@ TEST(HlslMulOperands, EachCallGivesItsTwoOperandsAndLineNestedCallsToo) {
         "   /* mul(hidden, too) */ y = mul(arr[i], M[0]);\n"
         "}\n";
     const std::vector<MulCall> calls = mulCalls(code);
-    ASSERT_EQ(calls.size(), 5u);
-    EXPECT_EQ(calls[0].line, 4);
-    EXPECT_EQ(calls[0].first, "g_matViewProj");
-    EXPECT_EQ(calls[0].second, "float4(Pos.xyz, 1)");
-    EXPECT_EQ(calls[1].line, 5);
-    EXPECT_EQ(calls[1].first, "(float3x3) World");
-    EXPECT_EQ(calls[1].second, "normal");
-    EXPECT_EQ(calls[2].line, 6);
-    EXPECT_EQ(calls[2].first, "mul(Pos, World)");
-    EXPECT_EQ(calls[2].second, "ViewProjection");
-    EXPECT_EQ(calls[3].line, 6);
-    EXPECT_EQ(calls[3].first, "Pos");
-    EXPECT_EQ(calls[3].second, "World");
-    EXPECT_EQ(calls[4].line, 8);
-    EXPECT_EQ(calls[4].first, "arr[i]");
-    EXPECT_EQ(calls[4].second, "M[0]");
+    const std::vector<std::tuple<int, std::string, std::string>> expected{{4, "g_matViewProj", "float4(Pos.xyz, 1)"},
+                                                                          {5, "(float3x3) World", "normal"},
+                                                                          {6, "mul(Pos, World)", "ViewProjection"},
+                                                                          {6, "Pos", "World"},
+                                                                          {8, "arr[i]", "M[0]"}};
+    std::vector<std::tuple<int, std::string, std::string>> found;
+    for (const MulCall& c : calls) found.emplace_back(c.line, c.first, c.second);
+    EXPECT_EQ(found, expected);
 }
 
 TEST(HlslMulOperands, AnUnclosedCallIsLeftOut) {
