@@ -10,8 +10,9 @@
 # Everything goes to $OUT (default /tmp/device-out): log.txt and results.tar.gz (the image, replay
 # JUnit report and failures, benchmark tables, GL test report). Each part has its own time limit,
 # so a failing one leaves time for the others. QUICK=1 runs a few seconds of each (a dry run);
-# PARTS picks some of render replay bench accuracy probe gltests health skip sequence (the last
-# three: rmfx_bench_health_check, rmfx_bench_content_skip, rmfx_bench_sequence, when bundled).
+# PARTS picks some of render replay bench accuracy probe gltests health skip sequence storage (the
+# last four: rmfx_bench_health_check, rmfx_bench_content_skip, rmfx_bench_sequence and
+# rmfx_bench_storage_writes, when bundled).
 set -uo pipefail
 out=${OUT:-/tmp/device-out}
 quick=${QUICK:-0}
@@ -86,6 +87,13 @@ if has skip; then
   part "rmfx_bench_content_skip (dark, bright, alternating; 512x512)"
   if [ "$quick" = 1 ]; then args="--rounds 1 --frames 2"; else args="--rounds 10 --frames 20"; fi
   timeout "${SKIP_SECONDS:-120}" build/rmfx_bench_content_skip $args
+  echo "exit status: $?"
+fi
+
+if has storage; then
+  part "rmfx_bench_storage_writes (what counting code costs a 128x128 pass, by variant)"
+  if [ "$quick" = 1 ]; then args="--rounds 1 --frames 2"; else args="--rounds 10 --frames 20"; fi
+  timeout "${STORAGE_SECONDS:-60}" build/rmfx_bench_storage_writes $args
   echo "exit status: $?"
 fi
 
