@@ -795,6 +795,16 @@ TEST(RfxImporter, TheHlslMatrixOrderFollowsWhatTheCodeMultiplies) {
             EXPECT_EQ(said.find("XML_VERSION missing"), std::string::npos) << said;
         }
     }
+    // A matrix the pass declares itself counts too.
+    std::string passLevel = matrixOrderEffect("RenderMonkey 1.71", "return mul(Own, p);");
+    std::string own16;
+    for (int i = 0; i < 16; ++i) own16 += " VALUE_" + std::to_string(i) + "=\"" + (i % 5 == 0 ? "1" : "0") + "\"";
+    passLevel.replace(passLevel.find("<RmHLSLShader"), 0,
+                      "<RmMatrixVariable NAME=\"Own\" VARIABLE_SEMANTIC=\"WorldViewProjection\"" + own16 + "/>");
+    passLevel.replace(passLevel.find("float4x4 S;"), 0, "float4x4 Own;\n");
+    Result<Workspace> own = importRfxText(passLevel, "t.rfx", ".", {""});
+    ASSERT_TRUE(own) << formatAll(own.diagnostics());
+    EXPECT_EQ(own->passes[0].shaders[0].matrixOrder, HlslMatrixOrder::ColumnVector) << formatAll(own.diagnostics());
     // What --rfx-matrices asks for overrides the code too.
     Result<Workspace> asked = importRfxText(matrixOrderEffect("RenderMonkey 1.71", "return mul(Mvp, p);"), "t.rfx", ".",
                                             {"", HlslMatrixOrder::RowVector});

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <string_view>
 
+#include "frontend/rfx/detail/RfxDeclarations.h"
 #include "frontend/rfx/detail/RfxShaderCode.h"
 #include "frontend/shader/HlslMulOperands.h"
 #include "model/SemanticValues.h"
@@ -47,13 +48,20 @@ std::string where(const MatrixOrderEvidence::Use& use) { return use.where.file +
 
 MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleScopes& scopes) {
     MatrixOrderEvidence evidence;
-    auto matrixVariable = [&](const MulOperandVariable& operand) -> const Variable* {
-        if (operand.name.empty()) return nullptr;
-        const Variable* v = scopes.variable(operand.name);
-        return v && v->value.type == ValueType::Mat4 ? v : nullptr;
-    };
-    Diagnostics quiet;  // the pass reader reports what is wrong with the shaders
+    Diagnostics quiet;  // the pass reader reports what is wrong with the shaders and declarations
     for (const tinyxml2::XMLElement* pass = effect.xml()->FirstChildElement(); pass; pass = pass->NextSiblingElement()) {
+        // The pass's own variables first, as the pass reader looks them up.
+        Declarations passLevel;
+        for (const tinyxml2::XMLElement* x = pass->FirstChildElement(); x; x = x->NextSiblingElement())
+            if (std::string_view(x->Name()).find("Variable") != std::string_view::npos) readDeclaration(RfxElement(x, effect.file(), quiet), passLevel);
+        auto matrixVariable = [&](const MulOperandVariable& operand) -> const Variable* {
+            if (operand.name.empty()) return nullptr;
+            const Variable* v = nullptr;
+            for (const Variable& own : passLevel.variables)
+                if (own.name == operand.name) v = &own;
+            if (!v) v = scopes.variable(operand.name);
+            return v && v->value.type == ValueType::Mat4 ? v : nullptr;
+        };
         for (const tinyxml2::XMLElement* x = pass->FirstChildElement("RmHLSLShader"); x; x = x->NextSiblingElement("RmHLSLShader")) {
             std::optional<RfxShaderCode> code = shaderCodeOf(RfxElement(x, effect.file(), quiet));
             if (!code) continue;

@@ -29,7 +29,8 @@ struct MatrixOrderEvidence {
     std::optional<Use> columnVector, rowVector;  // mul(M, v); mul(v, M)
 };
 
-// From the <RmHLSLShader> code of the effect's passes, the matrices looked up in `scopes`.
+// From the <RmHLSLShader> code of the effect's passes, the matrices looked up among each pass's own
+// variables, then in `scopes`.
 MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleScopes& scopes);
 
 // The code's order where it says one, else the version's (ColumnVector before 1.6, RowVector for
