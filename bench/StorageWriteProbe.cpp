@@ -35,6 +35,7 @@
 #include "gl/GlContext.h"
 #include "gl/GlFullScreenTriangle.h"
 #include "gl/GlHandles.h"
+#include "gl/GlProgramBuild.h"
 
 namespace {
 
@@ -73,31 +74,14 @@ enum Variant { Plain, Bound, Counting, BufferPerDraw, EarlyTests, kVariants };
 const char* const kNames[kVariants] = {"plain", "bound", "counting", "buffer-per-draw", "early-tests"};
 
 ProgramHandle program(const std::string& fragment) {
-    ProgramHandle p = createProgram();
-    for (const auto& [type, text] : {std::pair{GL_VERTEX_SHADER, std::string(fullScreenTriangleVertexSource())},
-                                     std::pair{GL_FRAGMENT_SHADER, fragment}}) {
-        ShaderHandle s = createShader(type);
-        const char* source = text.c_str();
-        glShaderSource(s.get(), 1, &source, nullptr);
-        glCompileShader(s.get());
-        GLint ok = 0;
-        glGetShaderiv(s.get(), GL_COMPILE_STATUS, &ok);
-        if (!ok) {
-            char log[2048] = {};
-            glGetShaderInfoLog(s.get(), sizeof log, nullptr, log);
-            std::fprintf(stderr, "rmfx_bench_storage_writes: shader does not compile: %s\n", log);
-            std::exit(1);
-        }
-        glAttachShader(p.get(), s.get());
-    }
-    glLinkProgram(p.get());
-    GLint linked = 0;
-    glGetProgramiv(p.get(), GL_LINK_STATUS, &linked);
-    if (!linked) {
-        std::fprintf(stderr, "rmfx_bench_storage_writes: program does not link\n");
+    PassGlProgram fullScreen;
+    fullScreen.vertexCode = fullScreenTriangleVertexSource();
+    Result<ProgramHandle> p = relinkWithFragment(fullScreen, fragment);
+    if (!p) {
+        std::fprintf(stderr, "rmfx_bench_storage_writes: the shader does not build: %s\n", p.error().c_str());
         std::exit(1);
     }
-    return p;
+    return std::move(*p);
 }
 
 // The fragment shader's text: the pass, then `main` (after the pass's #version line, the early
