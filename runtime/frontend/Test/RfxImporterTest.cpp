@@ -722,9 +722,9 @@ TEST(RfxImporter, TheHlslMatrixOrderAskedForOverridesTheVersion) {
     EXPECT_EQ(ws->passes[2].shaders[0].matrixOrder, HlslMatrixOrder::ColumnVector) << "assembly";
 }
 
-// A Direct3D effect saved by `version` whose vertex shader (`code` from line 12 of the file)
-// multiplies with `code`, the semantic matrices Mvp (ViewProjection) and MvpT
-// (ViewProjectionTranspose) and the stored matrix S visible.
+// A Direct3D effect saved by `version` whose vertex shader (`code` from line 13 of the file)
+// multiplies with `code`, the semantic matrices Mvp (ViewProjection), MvpT
+// (ViewProjectionTranspose) and Wld (World) and the stored matrix S visible.
 std::string matrixOrderEffect(const std::string& version, const std::string& code) {
     std::string values;
     for (int i = 0; i < 16; ++i) values += " VALUE_" + std::to_string(i) + "=\"" + (i % 5 == 0 ? "1" : "0") + "\"";
@@ -732,9 +732,10 @@ std::string matrixOrderEffect(const std::string& version, const std::string& cod
         "<RmMatrixVariable NAME=\"Mvp\" VARIABLE_SEMANTIC=\"ViewProjection\"" + values + "/>\n"
         "<RmMatrixVariable NAME=\"MvpT\" VARIABLE_SEMANTIC=\"ViewProjectionTranspose\"" + values + "/>\n"
         "<RmMatrixVariable NAME=\"S\" VARIABLE_SEMANTIC=\"\"" + values + "/>\n"
+        "<RmMatrixVariable NAME=\"Wld\" VARIABLE_SEMANTIC=\"World\"" + values + "/>\n"
         "<RmPass NAME=\"P\" PASS_INDEX=\"0\"><RmHLSLShader NAME=\"VS\" PIXEL_SHADER=\"FALSE\" TARGET=\"vs_2_0\" "
         "ENTRY_POINT=\"main\"><RmShaderConstant NAME=\"Mvp\"/><RmShaderConstant NAME=\"MvpT\"/><RmShaderConstant NAME=\"S\"/>"
-        "<RmShaderCode><![CDATA[\nfloat4x4 Mvp : register(c0);\nfloat4x4 MvpT;\nfloat4x4 S;\n"
+        "<RmShaderConstant NAME=\"Wld\"/><RmShaderCode><![CDATA[\nfloat4x4 Mvp : register(c0);\nfloat4x4 MvpT;\nfloat4x4 S; float4x4 Wld;\n"
         "float4 main(float4 p : POSITION) : POSITION {\n" + code + "\n}]]></RmShaderCode></RmHLSLShader></RmPass>\n");
     if (!version.empty()) text.replace(text.find("ACTIVE_EFFECT"), 0, "XML_VERSION=\"" + version + "\" ");
     return text;
@@ -746,33 +747,46 @@ std::string matrixOrderEffect(const std::string& version, const std::string& cod
 TEST(RfxImporter, TheHlslMatrixOrderFollowsWhatTheCodeMultiplies) {
     struct Case {
         const char* version;
-        const char* code;  // from line 12 of the file
+        const char* code;  // from line 13 of the file
         HlslMatrixOrder expected;
         const char* warning;  // empty: none
     };
     const Case cases[] = {
         {"RenderMonkey 1.71", "return mul(Mvp, p);", HlslMatrixOrder::ColumnVector,
-         "t.rfx:2: warning: <RmEffectWorkspace NAME=\"W\">: t.rfx:12 multiplies mul(Mvp, v) (1 such in the effect), where "
+         "t.rfx:2: warning: <RmEffectWorkspace NAME=\"W\">: t.rfx:13 multiplies mul(Mvp, p) (1 such in the effect), where "
          "RenderMonkey of XML_VERSION \"RenderMonkey 1.71\" passed its semantic matrices for mul(v, M): they are passed for "
          "mul(M, v), as the code asks (--rfx-matrices to choose)"},
         {"RenderMonkey 1.71", "return mul(float4(p.xyz, 1), (Mvp));", HlslMatrixOrder::RowVector, ""},
         {"RenderMonkey 1.5", "return mul(Mvp, p);", HlslMatrixOrder::ColumnVector, ""},
         {"RenderMonkey 1.5", "float4 q = mul(p, Mvp);\nreturn mul(q, Mvp);", HlslMatrixOrder::RowVector,
-         "t.rfx:12 multiplies mul(v, Mvp) (2 such in the effect), where RenderMonkey of XML_VERSION \"RenderMonkey 1.5\" passed "
+         "t.rfx:13 multiplies mul(p, Mvp) (2 such in the effect), where RenderMonkey of XML_VERSION \"RenderMonkey 1.5\" passed "
          "its semantic matrices for mul(M, v): they are passed for mul(v, M)"},
         // A transposed semantic, or transpose(), counts the other way round.
         {"RenderMonkey 1.71", "return mul(MvpT, p);", HlslMatrixOrder::RowVector, ""},
         {"RenderMonkey 1.71", "return mul(transpose(Mvp), p);", HlslMatrixOrder::RowVector, ""},
         {"RenderMonkey 1.5", "return mul(p, transpose(Mvp));", HlslMatrixOrder::ColumnVector, ""},
-        // A matrix on each side (a local one too), a stored matrix, no variable, or something on the
+        // A product of matrices whose order of transforms is unknown (World and a stored or local
+        // matrix, a transposed semantic), a stored matrix alone, no variable, or something on the
         // other side that is not known to be a vector says nothing.
-        {"RenderMonkey 1.5", "float4x4 W = S;\nreturn mul(mul(S, Mvp), p) + mul(Mvp, MvpT) + mul(p, S) + mul(p, Mvp[0]) + mul(W, Mvp) + "
-         "mul(2 * p, Mvp) + mul(unknown, Mvp);",
+        {"RenderMonkey 1.5", "float4x4 W = S;\nreturn mul(mul(Wld, S), p) + mul(Mvp, MvpT) + mul(p, S) + mul(p, Mvp[0]) + mul(W, Wld) + "
+         "mul(2 * p, Mvp) + mul(unknown, Mvp) + mul(MvpT, S);",
          HlslMatrixOrder::ColumnVector, ""},
-        {"RenderMonkey 1.71", "float4x4 W = S;\nreturn mul(Mvp, W) + mul((float4x4) S, Mvp);", HlslMatrixOrder::RowVector, ""},
+        {"RenderMonkey 1.71", "float4x4 W = S;\nreturn mul(Wld, W) + mul((float4x4) S, Wld) + mul(Mvp, MvpT) + mul(S, W);", HlslMatrixOrder::RowVector, ""},
+        // Nothing comes after the projection: a matrix ending in it stands last whatever the other
+        // (simpleCubeMapReflection-3, saved by 1.71: mul(view_proj_matrix, matWorld), matWorld stored).
+        {"RenderMonkey 1.71", "float4x4 m = mul(Mvp, S);\nreturn mul(m, p);", HlslMatrixOrder::ColumnVector,
+         "t.rfx:13 multiplies mul(Mvp, S) (1 such in the effect)"},
+        {"RenderMonkey 1.5", "float4x4 W = S;\nreturn mul(p, mul(W, Mvp));", HlslMatrixOrder::RowVector,
+         "t.rfx:14 multiplies mul(W, Mvp) (1 such in the effect)"},
+        // Two semantic matrices: the one applied later on the left is M·v's order (skyBox_11,
+        // saved by 1.71, writes m = mul(matViewProjection, matWorld); mul(m, Pos)).
+        {"RenderMonkey 1.71", "float4x4 m = mul(Mvp, Wld);\nreturn mul(m, p);", HlslMatrixOrder::ColumnVector,
+         "t.rfx:13 multiplies mul(Mvp, Wld) (1 such in the effect)"},
+        {"RenderMonkey 1.5", "float4x4 m = mul(Wld, Mvp);\nreturn mul(p, m);", HlslMatrixOrder::RowVector,
+         "t.rfx:13 multiplies mul(Wld, Mvp) (1 such in the effect)"},
         {"RenderMonkey 1.71", "float4 q = mul(Mvp, mul(S, p)) + mul(mul(p, S), Mvp);\nreturn mul(Mvp, p) + mul(p.xyzw, Mvp);",
          HlslMatrixOrder::RowVector,
-         "both ways round (mul(Mvp, v) at t.rfx:13, 1 such; mul(v, Mvp) at t.rfx:13, 1 such): they are passed for mul(v, M), "
+         "both ways round (mul(Mvp, p) at t.rfx:14, 1 such; mul(p.xyzw, Mvp) at t.rfx:14, 1 such): they are passed for mul(v, M), "
          "as RenderMonkey of XML_VERSION \"RenderMonkey 1.71\" did"},
         // Without a version the code decides, unwarned; with neither, the later versions' order, warned.
         {"", "return mul(Mvp, p);", HlslMatrixOrder::ColumnVector, ""},
@@ -822,7 +836,7 @@ TEST(RfxImporter, AFileWrittenForTheOtherMatrixOrderIsReadByItsCode) {
     ASSERT_EQ(ws->passes[0].shaders.size(), 2u);
     for (const ShaderSource& s : ws->passes[0].shaders) EXPECT_EQ(s.matrixOrder, HlslMatrixOrder::ColumnVector);
     const std::string said = formatAll(ws.diagnostics());
-    EXPECT_NE(said.find("d3d_matrix_order.rfx:34 multiplies mul(g_matViewProj, v) (1 such in the effect)"), std::string::npos)
+    EXPECT_NE(said.find("d3d_matrix_order.rfx:34 multiplies mul(g_matViewProj, float4(corner, 1)) (1 such in the effect)"), std::string::npos)
         << said;
 }
 

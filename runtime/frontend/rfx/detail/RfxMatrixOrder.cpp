@@ -3,6 +3,8 @@
 #include <cctype>
 #include <charconv>
 #include <string_view>
+#include <tuple>
+#include <utility>
 
 #include "frontend/rfx/detail/RfxDeclarations.h"
 #include "frontend/rfx/detail/RfxShaderCode.h"
@@ -36,11 +38,16 @@ std::optional<HlslMatrixOrder> versionOrder(const std::optional<std::string>& ve
     return major < 1 || (major == 1 && minor < 6) ? HlslMatrixOrder::ColumnVector : HlslMatrixOrder::RowVector;
 }
 
-const char* spelled(HlslMatrixOrder order) { return order == HlslMatrixOrder::ColumnVector ? "mul(M, v)" : "mul(v, M)"; }
-
-std::string written(const MatrixOrderEvidence::Use& use, HlslMatrixOrder order) {
-    return order == HlslMatrixOrder::ColumnVector ? "mul(" + use.matrix + ", v)" : "mul(v, " + use.matrix + ")";
+// The transforms a semantic matrix applies, as the stages a position goes through (0 world,
+// 1 view, 2 projection): first and last. Nullopt for an inverse, a transpose or another semantic.
+std::optional<std::pair<int, int>> stages(std::string_view semantic) {
+    for (const auto& [name, first, last] : {std::tuple{"World", 0, 0}, {"View", 1, 1}, {"Projection", 2, 2}, {"WorldView", 0, 1},
+                                            {"ViewProjection", 1, 2}, {"WorldViewProjection", 0, 2}})
+        if (semantic == name) return std::pair{first, last};
+    return std::nullopt;
 }
+
+const char* spelled(HlslMatrixOrder order) { return order == HlslMatrixOrder::ColumnVector ? "mul(M, v)" : "mul(v, M)"; }
 
 std::string where(const MatrixOrderEvidence::Use& use) { return use.where.file + ":" + std::to_string(use.where.line); }
 
@@ -70,7 +77,36 @@ MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleS
                 const MulOperandVariable first = mulOperandVariable(call.first), second = mulOperandVariable(call.second);
                 const Variable* a = matrixVariable(first);
                 const Variable* b = matrixVariable(second);
-                if ((a == nullptr) == (b == nullptr)) continue;  // no matrix, or one on each side
+                auto note = [&](bool columnVector, const Variable& m) {
+                    std::optional<MatrixOrderEvidence::Use>& use = columnVector ? evidence.columnVector : evidence.rowVector;
+                    if (!use) use = MatrixOrderEvidence::Use{{effect.file(), code->line + call.line - 1}, "mul(" + call.first + ", " + call.second + ")", m.name, 0};
+                    ++use->count;
+                };
+                auto span = [](const Variable* m, const MulOperandVariable& operand) -> std::optional<std::pair<int, int>> {
+                    std::optional<SemanticInfo> semantic = !m || m->semantic.empty() ? std::nullopt : findSemantic(m->semantic);
+                    if (!semantic || operand.transposed) return std::nullopt;
+                    return stages(semantic->name);
+                };
+                const auto left = span(a, first), right = span(b, second);
+                // Another matrix known not to project: stored, local, or a semantic before the projection.
+                auto beforeProjection = [](const Variable* m, const std::optional<std::pair<int, int>>& stages) {
+                    return stages ? stages->second < 2 : !m || m->semantic.empty();
+                };
+                const bool leftMatrix = a || mulOperandShape(call.first, declared) == MulOperandShape::Matrix;
+                const bool rightMatrix = b || mulOperandShape(call.second, declared) == MulOperandShape::Matrix;
+                if (leftMatrix && rightMatrix) {
+                    // A product of matrices: the one applied later stands on the left in M·v's order
+                    // (mul(ViewProjection, World)), on the right in v·M's. Known for two semantic
+                    // matrices; and nothing comes after a projection, so one ending in it
+                    // (Projection, ViewProjection, WorldViewProjection) stands last whatever the other
+                    // is (mul(view_proj_matrix, matWorld) with a stored world matrix).
+                    if (left && right && left->first > right->second) note(true, *a);
+                    else if (left && right && left->second < right->first) note(false, *b);
+                    else if (left && left->second == 2 && beforeProjection(b, right)) note(true, *a);
+                    else if (right && right->second == 2 && beforeProjection(a, left)) note(false, *b);
+                    continue;
+                }
+                if (!a && !b) continue;
                 // Only a vector on the other side says it: World on the left of a matrix is v·W·VP's
                 // order, on the left of a vector M·v's.
                 if (mulOperandShape(a ? call.second : call.first, declared) != MulOperandShape::Vector) continue;
@@ -79,9 +115,7 @@ MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleS
                 if (!semantic || semantic->type != UniformType::Mat4) continue;
                 bool columnVector = a != nullptr;
                 if (endsWithTranspose(semantic->name) != (a ? first : second).transposed) columnVector = !columnVector;
-                std::optional<MatrixOrderEvidence::Use>& use = columnVector ? evidence.columnVector : evidence.rowVector;
-                if (!use) use = MatrixOrderEvidence::Use{{effect.file(), code->line + call.line - 1}, m.name, 0};
-                ++use->count;
+                note(columnVector, m);
             }
         }
     }
@@ -97,8 +131,8 @@ HlslMatrixOrder hlslMatrixOrderOf(const RfxElement& workspace, const MatrixOrder
         const auto& c = *code.columnVector;
         const auto& r = *code.rowVector;
         workspace.warning("the effect's HLSL multiplies its semantic matrices both ways round (" +
-                          written(c, HlslMatrixOrder::ColumnVector) + " at " + where(c) + ", " + std::to_string(c.count) + " such; " +
-                          written(r, HlslMatrixOrder::RowVector) + " at " + where(r) + ", " + std::to_string(r.count) +
+                          c.call + " at " + where(c) + ", " + std::to_string(c.count) + " such; " +
+                          r.call + " at " + where(r) + ", " + std::to_string(r.count) +
                           " such): they are passed for " + spelled(order) +
                           (byVersion ? ", as RenderMonkey of XML_VERSION " + versionText + " did"
                                      : ", as RenderMonkey 1.6 and later did (XML_VERSION " + versionText + ")") +
@@ -109,7 +143,7 @@ HlslMatrixOrder hlslMatrixOrderOf(const RfxElement& workspace, const MatrixOrder
         const HlslMatrixOrder order = code.columnVector ? HlslMatrixOrder::ColumnVector : HlslMatrixOrder::RowVector;
         if (byVersion && *byVersion != order) {
             const auto& use = code.columnVector ? *code.columnVector : *code.rowVector;
-            workspace.warning(where(use) + " multiplies " + written(use, order) + " (" +
+            workspace.warning(where(use) + " multiplies " + use.call + " (" +
                               std::to_string(use.count) + " such in the effect), where RenderMonkey of XML_VERSION " + versionText +
                               " passed its semantic matrices for " + spelled(*byVersion) + ": they are passed for " + spelled(order) +
                               ", as the code asks (--rfx-matrices to choose)");

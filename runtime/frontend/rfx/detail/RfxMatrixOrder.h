@@ -3,8 +3,13 @@
 // ViewProjection…, which rmfx fills). First from the code: a mul() with such a matrix on one side
 // and a vector on the other (a constructor, a member or swizzle, or a variable declared as a
 // vector) says it, mul(M, v) for OpenGL's layout (M·v) and mul(v, M) for D3DX's (a matrix whose
-// semantic ends in Transpose, or inside transpose(), counts the other way); a product of two
-// matrices says nothing, since World stands on the left in v·W·VP and on the right in P·V·W·v. Where the code says nothing, or says both, the version that saved the file decides
+// semantic ends in Transpose, or inside transpose(), counts the other way). A product of matrices
+// says it by their order where the order of the transforms is known: the one applied later
+// (ViewProjection after World) stands on the left in M·v's order, mul(ViewProjection, World), and
+// on the right in v·M's; that is known for two semantic matrices, and for one ending in the
+// projection (nothing comes after it) against any other matrix (inverses and transposes say
+// nothing there). Otherwise a product says nothing: a stored World stands on the left in v·W·VP
+// and on the right in P·V·W·v. Where the code says nothing, or says both, the version that saved the file decides
 // (RmEffectWorkspace XML_VERSION="RenderMonkey 1.5"): up to 1.5 RenderMonkey passed matrices in
 // OpenGL's layout, so its HLSL wrote mul(view_proj_matrix, Pos); from 1.6 on it passed them as
 // D3DX does, and its template wrote mul(Input.Position, matViewProjection). Of the public files
@@ -23,6 +28,7 @@ namespace rmfx::rfx {
 struct MatrixOrderEvidence {
     struct Use {
         SourceLocation where;  // the line of the mul in the file
+        std::string call;      // as written: "mul(g_matViewProj, float4(modPos, 1))"
         std::string matrix;    // the semantic matrix's variable
         int count = 0;         // uses of this order
     };
