@@ -77,9 +77,9 @@ MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleS
                 const MulOperandVariable first = mulOperandVariable(call.first), second = mulOperandVariable(call.second);
                 const Variable* a = matrixVariable(first);
                 const Variable* b = matrixVariable(second);
-                auto note = [&](bool columnVector, const Variable& m) {
+                auto note = [&](bool columnVector) {
                     std::optional<MatrixOrderEvidence::Use>& use = columnVector ? evidence.columnVector : evidence.rowVector;
-                    if (!use) use = MatrixOrderEvidence::Use{{effect.file(), code->line + call.line - 1}, "mul(" + call.first + ", " + call.second + ")", m.name, 0};
+                    if (!use) use = MatrixOrderEvidence::Use{{effect.file(), code->line + call.line - 1}, "mul(" + call.first + ", " + call.second + ")", 0};
                     ++use->count;
                 };
                 auto span = [](const Variable* m, const MulOperandVariable& operand) -> std::optional<std::pair<int, int>> {
@@ -100,10 +100,10 @@ MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleS
                     // matrices; and nothing comes after a projection, so one ending in it
                     // (Projection, ViewProjection, WorldViewProjection) stands last whatever the other
                     // is (mul(view_proj_matrix, matWorld) with a stored world matrix).
-                    if (left && right && left->first > right->second) note(true, *a);
-                    else if (left && right && left->second < right->first) note(false, *b);
-                    else if (left && left->second == 2 && beforeProjection(b, right)) note(true, *a);
-                    else if (right && right->second == 2 && beforeProjection(a, left)) note(false, *b);
+                    if (left && right && left->first > right->second) note(true);
+                    else if (left && right && left->second < right->first) note(false);
+                    else if (left && left->second == 2 && beforeProjection(b, right)) note(true);
+                    else if (right && right->second == 2 && beforeProjection(a, left)) note(false);
                     continue;
                 }
                 if (!a && !b) continue;
@@ -115,7 +115,7 @@ MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleS
                 if (!semantic || semantic->type != UniformType::Mat4) continue;
                 bool columnVector = a != nullptr;
                 if (endsWithTranspose(semantic->name) != (a ? first : second).transposed) columnVector = !columnVector;
-                note(columnVector, m);
+                note(columnVector);
             }
         }
     }

@@ -29,7 +29,6 @@ struct MatrixOrderEvidence {
     struct Use {
         SourceLocation where;  // the line of the mul in the file
         std::string call;      // as written: "mul(g_matViewProj, float4(modPos, 1))"
-        std::string matrix;    // the semantic matrix's variable
         int count = 0;         // uses of this order
     };
     std::optional<Use> columnVector, rowVector;  // mul(M, v); mul(v, M)
