@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "core/IdentifierSearch.h"
 #include "frontend/shader/HlslBlankedCode.h"
 
 namespace rmfx {
@@ -10,8 +11,7 @@ namespace {
 
 constexpr size_t kLongestOperand = 256;
 
-bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
-bool identifierStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0 || c == '_'; }
+bool identifierStart(char c) { return isIdentifierChar(c) && std::isdigit(static_cast<unsigned char>(c)) == 0; }
 
 std::string_view trimmed(std::string_view s) {
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
@@ -22,25 +22,8 @@ std::string_view trimmed(std::string_view s) {
 bool isIdentifier(std::string_view s) {
     if (s.empty() || !identifierStart(s.front())) return false;
     for (char c : s)
-        if (!identifierChar(c)) return false;
+        if (!isIdentifierChar(c)) return false;
     return true;
-}
-
-// Where the bracket opened at `open` closes, or npos (never, or by the wrong kind of bracket).
-size_t closingOf(std::string_view s, size_t open) {
-    std::string expected;  // the closers the open brackets want, innermost last
-    for (size_t i = open; i < s.size(); ++i) {
-        const char c = s[i];
-        if (c == '(') expected += ')';
-        else if (c == '[') expected += ']';
-        else if (c == '{') expected += '}';
-        else if (c == ')' || c == ']' || c == '}') {
-            if (expected.empty() || expected.back() != c) return std::string_view::npos;
-            expected.pop_back();
-            if (expected.empty()) return i;
-        }
-    }
-    return std::string_view::npos;
 }
 
 // For each opening bracket, where it closes (npos: never, or by the wrong kind): one pass, so
@@ -66,6 +49,9 @@ std::vector<size_t> closers(std::string_view s) {
     return closes;
 }
 
+// Where the bracket opened at `open` of a short text (an operand) closes, or npos.
+size_t closingOf(std::string_view s, size_t open) { return closers(s)[open]; }
+
 }  // namespace
 
 std::vector<MulCall> mulCalls(const std::string& code) {
@@ -76,7 +62,7 @@ std::vector<MulCall> mulCalls(const std::string& code) {
     int line = 1;
     size_t counted = 0;  // newlines counted up to here
     for (size_t at = s.find("mul"); at != std::string_view::npos; at = s.find("mul", at + 3)) {
-        if (at > 0 && (identifierChar(s[at - 1]) || s[at - 1] == '.')) continue;
+        if (at > 0 && (isIdentifierChar(s[at - 1]) || s[at - 1] == '.')) continue;
         size_t open = at + 3;
         while (open < s.size() && std::isspace(static_cast<unsigned char>(s[open]))) ++open;
         if (open >= s.size() || s[open] != '(') continue;
@@ -167,12 +153,12 @@ std::map<std::string, MulOperandShape> declaredShapes(const std::string& code) {
     };
     size_t i = 0;
     while (i < s.size()) {
-        if (!identifierStart(s[i]) || (i > 0 && (identifierChar(s[i - 1]) || s[i - 1] == '.'))) {
+        if (!identifierStart(s[i]) || (i > 0 && (isIdentifierChar(s[i - 1]) || s[i - 1] == '.'))) {
             ++i;
             continue;
         }
         size_t end = i;
-        while (end < s.size() && identifierChar(s[end])) ++end;
+        while (end < s.size() && isIdentifierChar(s[end])) ++end;
         const MulOperandShape shape = typeShape(s.substr(i, end - i));
         i = end;
         if (shape == MulOperandShape::Unknown) continue;
@@ -187,7 +173,7 @@ std::map<std::string, MulOperandShape> declaredShapes(const std::string& code) {
         }
         if (at >= s.size() || !identifierStart(s[at])) continue;
         size_t nameEnd = at;
-        while (nameEnd < s.size() && identifierChar(s[nameEnd])) ++nameEnd;
+        while (nameEnd < s.size() && isIdentifierChar(s[nameEnd])) ++nameEnd;
         const size_t after = skipSpace(nameEnd);
         if (after >= s.size() || std::string_view(";,:=)[").find(s[after]) == std::string_view::npos) continue;
         const std::string name(s.substr(at, nameEnd - at));
@@ -210,7 +196,7 @@ MulOperandShape mulOperandShape(std::string_view operand, const std::map<std::st
     }
     // A constructor: a type name, then its arguments to the end.
     size_t name = 0;
-    while (name < s.size() && identifierChar(s[name])) ++name;
+    while (name < s.size() && isIdentifierChar(s[name])) ++name;
     if (name > 0 && name < s.size()) {
         size_t open = name;
         while (open < s.size() && std::isspace(static_cast<unsigned char>(s[open]))) ++open;
