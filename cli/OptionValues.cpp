@@ -77,9 +77,9 @@ ArgumentParser::TakeValue textureValue(std::vector<TextureArgument>& textures) {
 
 ArgumentParser::TakeValue rfxMatricesValue(std::optional<HlslMatrixOrder>& order) {
     return [&order](const std::string& value) -> std::string {
-        if (value == "row-vector") order = HlslMatrixOrder::RowVector;
-        else if (value == "column-vector") order = HlslMatrixOrder::ColumnVector;
-        else return "--rfx-matrices: expected row-vector (the HLSL writes mul(v, M)) or column-vector (mul(M, v)), got '" + value + "'";
+        std::optional<HlslMatrixOrder> parsed = parseHlslMatrixOrder(value);
+        if (!parsed) return "--rfx-matrices: expected row-vector (the HLSL writes mul(v, M)) or column-vector (mul(M, v)), got '" + value + "'";
+        order = *parsed;
         return "";
     };
 }

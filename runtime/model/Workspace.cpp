@@ -13,6 +13,16 @@ static auto* findByName(T& items, std::string_view name) {
     return static_cast<decltype(&items[0])>(nullptr);
 }
 
+const char* hlslMatrixOrderName(HlslMatrixOrder order) {
+    return order == HlslMatrixOrder::ColumnVector ? "column-vector" : "row-vector";
+}
+
+std::optional<HlslMatrixOrder> parseHlslMatrixOrder(std::string_view name) {
+    for (HlslMatrixOrder order : {HlslMatrixOrder::RowVector, HlslMatrixOrder::ColumnVector})
+        if (name == hlslMatrixOrderName(order)) return order;
+    return std::nullopt;
+}
+
 const Variable* Workspace::findVariable(std::string_view name) const { return findByName(variables, name); }
 Variable* Workspace::findVariable(std::string_view name) { return findByName(variables, name); }
 const Texture* Workspace::findTexture(std::string_view name) const { return findByName(textures, name); }

@@ -137,6 +137,9 @@ enum class HlslMatrixOrder {
     RowVector,     // mul(v, M): D3DX's convention, and RenderMonkey's from version 1.6 on
     ColumnVector,  // mul(M, v): RenderMonkey 1.5 and before, and every assembly shader (m4x4)
 };
+// "row-vector", "column-vector": the workspace's <shader matrices> and rmfx's --rfx-matrices.
+const char* hlslMatrixOrderName(HlslMatrixOrder order);
+std::optional<HlslMatrixOrder> parseHlslMatrixOrder(std::string_view name);
 
 // Shader code kept in the workspace file itself, which `#include "NAME"` finds before any file.
 struct CodeSnippet {

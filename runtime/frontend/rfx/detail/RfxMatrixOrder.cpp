@@ -1,6 +1,5 @@
 #include "frontend/rfx/detail/RfxMatrixOrder.h"
 
-#include <cctype>
 #include <charconv>
 #include <string_view>
 #include <tuple>
@@ -13,14 +12,6 @@
 
 namespace rmfx::rfx {
 namespace {
-
-bool endsWithTranspose(std::string_view semantic) {
-    constexpr std::string_view suffix = "transpose";
-    if (semantic.size() < suffix.size()) return false;
-    for (size_t i = 0; i < suffix.size(); ++i)
-        if (std::tolower(static_cast<unsigned char>(semantic[semantic.size() - suffix.size() + i])) != suffix[i]) return false;
-    return true;
-}
 
 // The version's order; nullopt when XML_VERSION is missing or unreadable.
 std::optional<HlslMatrixOrder> versionOrder(const std::optional<std::string>& version) {
@@ -114,7 +105,7 @@ MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleS
                 std::optional<SemanticInfo> semantic = m.semantic.empty() ? std::nullopt : findSemantic(m.semantic);
                 if (!semantic || semantic->type != UniformType::Mat4) continue;
                 bool columnVector = a != nullptr;
-                if (endsWithTranspose(semantic->name) != (a ? first : second).transposed) columnVector = !columnVector;
+                if (std::string_view(semantic->name).ends_with("Transpose") != (a ? first : second).transposed) columnVector = !columnVector;
                 note(columnVector);
             }
         }

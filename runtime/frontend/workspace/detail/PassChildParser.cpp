@@ -125,8 +125,8 @@ std::optional<ShaderSource> PassChildParser::parseShader(const XMLElement* e) {
                     .value_or(ShaderDialect::Glsl);
     s.entryPoint = r.string("entry").value_or("");
     s.profile = r.string("profile").value_or("");
-    s.matrixOrder = r.choice<HlslMatrixOrder>("matrices", {{"row-vector", HlslMatrixOrder::RowVector},
-                                                           {"column-vector", HlslMatrixOrder::ColumnVector}})
+    s.matrixOrder = r.choice<HlslMatrixOrder>("matrices", {{hlslMatrixOrderName(HlslMatrixOrder::RowVector), HlslMatrixOrder::RowVector},
+                                                           {hlslMatrixOrderName(HlslMatrixOrder::ColumnVector), HlslMatrixOrder::ColumnVector}})
                         .value_or(HlslMatrixOrder::RowVector);
     if (s.dialect != ShaderDialect::Hlsl && (r.has("entry") || r.has("profile")))
         r.error("attributes 'entry' and 'profile' apply to dialect=\"hlsl\"");
