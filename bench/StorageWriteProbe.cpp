@@ -25,13 +25,14 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <epoxy/gl.h>
 
 #include "bench/RoundFigures.h"
+#include "bench/WholeNumberArgument.h"
 #include "gl/GlContext.h"
 #include "gl/GlFullScreenTriangle.h"
 #include "gl/GlHandles.h"
@@ -92,22 +93,20 @@ std::string fragmentOf(const char* main, bool earlyTests) {
     return s + main;
 }
 
-int argumentAfter(int argc, char** argv, const char* name, int fallback) {
-    for (int i = 1; i + 1 < argc; ++i)
-        if (std::strcmp(argv[i], name) == 0) return std::max(1, std::atoi(argv[i + 1]));
-    return fallback;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    for (int i = 1; i < argc; i += 2)
-        if ((std::strcmp(argv[i], "--rounds") != 0 && std::strcmp(argv[i], "--frames") != 0) || i + 1 >= argc) {
-            std::fprintf(stderr, "usage: rmfx_bench_storage_writes [--rounds N] [--frames N]\n");
+    int rounds = 10, frames = 20;
+    for (int i = 1; i < argc; i += 2) {
+        const std::string option = argv[i];
+        std::optional<int> n = i + 1 < argc ? bench::wholeNumberArgument(argv[i + 1], 1, 1000) : std::nullopt;
+        if ((option != "--rounds" && option != "--frames") || !n) {
+            std::fprintf(stderr, "rmfx_bench_storage_writes: bad argument '%s %s'\nusage: rmfx_bench_storage_writes [--rounds N] [--frames N] (N from 1 to 1000)\n",
+                         option.c_str(), i + 1 < argc ? argv[i + 1] : "");
             return 2;
         }
-    const int rounds = argumentAfter(argc, argv, "--rounds", 10);
-    const int frames = argumentAfter(argc, argv, "--frames", 20);
+        (option == "--rounds" ? rounds : frames) = *n;
+    }
     auto context = GlContext::createHeadless();
     if (!context) {
         std::fprintf(stderr, "rmfx_bench_storage_writes: no headless GL context: %s\n", context.error().c_str());
