@@ -18,9 +18,12 @@ float logLuminance(float y) { return log(1.0 + y / LOG_DELTA); }
 float fromLogLuminance(float s) { return LOG_DELTA * exp(s); }  // delta * exp(mean): exp(mean(log(delta + Y)))
 float peakFromLogLuminance(float m) { return LOG_DELTA * (exp(m) - 1.0); }
 
-// A texel of the chain (mean, log of the peak), and what a chain pass writes.
+// A texel of the chain (mean, log of the peak), and what a chain pass writes. A chain in rgba32f
+// may carry a third statistic in b (hdr_lighting: the brightest channel, hdr_lum_initial.frag),
+// the largest over the footprint like the peak.
 vec2 logLevel(sampler2D level, ivec2 texel) { return texelFetch(level, texel, 0).rg; }
 vec4 storeLogLevel(float mean, float logPeak) { return vec4(mean, logPeak, 0.0, 1.0); }
+vec4 storeLogLevel(float mean, float logPeak, float largest) { return vec4(mean, logPeak, largest, 1.0); }
 
 // The reduction levels (64², 16², 4², 1²) partition the quarter image exactly: texel k of a level
 // n texels wide covers quarter texels [k * size / n, (k + 1) * size / n) (integer division), and
@@ -30,20 +33,22 @@ ivec2 footprintStart(ivec2 k, ivec2 levelSize, ivec2 quarterSize) { return k * q
 ivec2 footprintEnd(ivec2 k, ivec2 levelSize, ivec2 quarterSize) { return (k + 1) * quarterSize / levelSize; }
 
 // Texel k of a reduction level from the level 4x finer: the mean of the children's log-luminance
-// means weighted by how many quarter texels each covers, and the largest of their peaks.
-vec2 reduceLogLuminance(sampler2D finer, ivec2 k, ivec2 quarterSize) {
+// means weighted by how many quarter texels each covers, the largest of their peaks, and the
+// largest of their third statistics (b; chains that carry one keep it at least 0, as the peak).
+vec3 reduceLogLuminance(sampler2D finer, ivec2 k, ivec2 quarterSize) {
     ivec2 finerSize = textureSize(finer, 0);
-    float sum = 0.0, weight = 0.0, peak = 0.0;
+    float sum = 0.0, weight = 0.0, peak = 0.0, largest = 0.0;
     for (int y = 0; y < 4; ++y)
         for (int x = 0; x < 4; ++x) {
             ivec2 child = 4 * k + ivec2(x, y);
             ivec2 span = footprintEnd(child, finerSize, quarterSize) - footprintStart(child, finerSize, quarterSize);
             float w = float(span.x * span.y);
             if (w == 0.0) continue;
-            vec2 v = logLevel(finer, child);
+            vec3 v = texelFetch(finer, child, 0).rgb;
             sum += w * v.x;
             weight += w;
             peak = max(peak, v.y);
+            largest = max(largest, v.z);
         }
-    return vec2(weight > 0.0 ? sum / weight : 0.0, peak);
+    return vec3(weight > 0.0 ? sum / weight : 0.0, peak, largest);
 }

@@ -103,6 +103,15 @@ void GlContentSkip::plan(const Workspace& ws, const std::vector<GpuPass*>& sched
             written.insert(schedule[i]->target->name);
         }
         if (positions.empty()) continue;
+        // The gate is counted in its place where a scheduled pass writes it before the effect.
+        glm::bvec4 channels = e.sourceChannels;
+        if (GpuTarget* gate = e.gate.empty() ? nullptr : targets.find(e.gate))
+            for (size_t i = 0; i < positions.front(); ++i)
+                if (schedule[i]->target == gate) {
+                    source = gate;
+                    channels = e.gateChannels;
+                    active.gated = true;
+                }
         // Asked for by name (an empty list, every target, is the editor's thumbnails): exact bits.
         const auto readBack = std::find_if(written.begin(), written.end(), [&](const std::string& t) {
             return std::find(outputs.begin(), outputs.end(), t) != outputs.end();
@@ -126,12 +135,12 @@ void GlContentSkip::plan(const Workspace& ws, const std::vector<GpuPass*>& sched
             if (handed.target && (handed.readBack || !handed.readers.empty())) active.handedOn.push_back(std::move(handed));
         }
         auto probe = std::find_if(probes_.begin(), probes_.end(), [&](const Probe& p) {
-            return p.source == source && p.channels == e.sourceChannels;
+            return p.source == source && p.channels == channels;
         });
         if (probe == probes_.end()) {
             Probe fresh;
             fresh.source = source;
-            fresh.channels = e.sourceChannels;
+            fresh.channels = channels;
             for (QueryHandle& q : fresh.queries) q = createQuery(GL_ANY_SAMPLES_PASSED);
             probes_.push_back(std::move(fresh));
             probe = probes_.end() - 1;
@@ -402,6 +411,10 @@ const std::map<std::string, std::string>& GlContentSkip::skipped(bool wait) {
         glGetQueryObjectuiv(query, GL_QUERY_RESULT, &passed);
         if (passed)
             skipped_.erase(e.effect->name);
+        else if (e.gated)
+            skipped_[e.effect->name] = "its gate '" + e.effect->gate + "' holds no pixel with a non-zero " +
+                                       channelNames(e.effect->gateChannels) + " value, so its source '" + e.effect->source +
+                                       "' holds none either";
         else
             skipped_[e.effect->name] = "'" + e.effect->source + "' holds no pixel with a non-zero " +
                                        channelNames(e.effect->sourceChannels) + " value";

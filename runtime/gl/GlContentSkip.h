@@ -126,6 +126,7 @@ private:
     struct ActiveEffect {
         const Effect* effect = nullptr;
         size_t probe = 0;
+        bool gated = false;                   // the probe counts its gate, not its source
         size_t first = 0, last = 0;           // schedule positions of its first and last pass
         std::vector<HandedOn> handedOn;
     };

@@ -153,7 +153,9 @@ std::string explainFrame(const FrameExplanationInput& in) {
             else if (skipped != in.contentSkipped.end())
                 out << "  " << name << ": skipped by content: " << skipped->second << "\n";
             else
-                out << "  " << name << ": run: '" << e.source << "' holds a pixel it works on\n";
+                out << "  " << name << ": run: "
+                    << (e.gate.empty() ? "'" + e.source + "' holds a pixel it works on" : "its gate '" + e.gate + "' holds a non-zero pixel")
+                    << "\n";
         }
         for (const auto& [pass, effects] : in.drawnOnlyForEffects)
             if (in.contentSkip)

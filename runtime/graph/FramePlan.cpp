@@ -91,6 +91,7 @@ Result<FramePlan> planFramePasses(const Workspace& ws, const FramePlanOptions& o
     plan.prelude = effectPrelude(ws, plan.askedEffects);
     plan.request.effects = plan.askedEffects;
     plan.request.givenInputs = options.givenInputs;
+    plan.request.contentSkip = options.contentSkip;
     plan.request.outputs =
         options.outputs.empty() ? everyWrittenTarget(ws, plan.askedEffects, options.givenInputs) : options.outputs;
     std::vector<std::string> switched;

@@ -158,6 +158,15 @@ Result<PassGraph> buildPassGraph(const Workspace& ws, const FrameRequest& reques
             }
             missing.push_back({i, &s});
         }
+        if (request.contentSkip && node.effect && !node.effect->gate.empty()) {
+            int j = lastWriterBefore(g.nodes, node.effect->gate, i);
+            if (j >= 0) {
+                node.gate = node.effect->gate;
+                node.inputs.push_back(j);
+                inputWhy[static_cast<size_t>(i)].push_back("content skip counts " + inQuotes(node.gate) + " to decide whether effect " +
+                                                           inQuotes(node.effect->name) + " runs");
+            }
+        }
         if (node.loadsTarget) {
             int j = lastWriterBefore(g.nodes, node.target, i);
             if (j >= 0) {

@@ -37,6 +37,9 @@ struct PassNode {
     std::vector<int> inputs;        // earlier passes whose results it reads this frame
     std::vector<int> carried;       // passes whose results of the last frame it reads
     std::vector<std::string> skippedInputs;  // targets of effects that are off, which its shaders skip
+    // Its effect's <effect gate>, which content skip counts before the effect's first pass (the
+    // pass that writes it is an input); empty when there is none or content skip is off.
+    std::string gate;
 };
 
 // Why an <input> culls a pass: an image was given for an input that replaces the target the pass
@@ -53,6 +56,7 @@ struct FrameRequest {
     std::set<std::string> effects;        // effects asked for
     std::set<std::string> switchedOff;    // asked for, but switched off this frame
     std::set<std::string> givenInputs;    // <input>s an image was given for (rmfx render --input)
+    bool contentSkip = false;             // effects with a gate read it (FramePlanOptions::contentSkip)
 };
 
 struct PassGraph {

@@ -80,6 +80,7 @@ Result<TargetPlan> planTargets(const Workspace& ws, const std::vector<const Pass
                 touch(s.target, index);
             }
             touch(node.target, index);
+            if (!node.gate.empty()) touch(node.gate, index);  // counted before the effect's first pass
             const Pass& p = *node.pass;
             if (p.depth.test || p.depth.write || p.clear.depth)
                 if (int i = plan.find(node.target); i >= 0) plan.targets[static_cast<size_t>(i)].depth = true;

@@ -292,6 +292,13 @@ struct Effect {
     // the targets they hand to later passes are cleared to zero. Empty: always run.
     std::string source;
     glm::bvec4 sourceChannels{true, true, true, false};
+    // A cheaper test of the same (<effect source="bright" gate="glare_gate" gate-channels="r">): a
+    // target written before the source that is zero in these channels everywhere only where the
+    // source will be. Content skip then counts the gate's pixels instead of the source's, so the
+    // passes that write the source are skipped with the effect when only the effects read them.
+    // Empty: the source is counted.
+    std::string gate;
+    glm::bvec4 gateChannels{true, true, true, false};
     std::string description;
     SourceLocation where;
 };

@@ -166,6 +166,7 @@ private:
                                                 valueTypeName(v->value.type) + "; a switch is a bool, int or float");
             }
             if (!e.source.empty()) checkEffectSource(e, element);
+            if (!e.source.empty() && !e.gate.empty()) checkEffectGate(e, element);
         }
         if (ws_.output.effects)
             for (const std::string& name : *ws_.output.effects)
@@ -236,6 +237,42 @@ private:
                 break;
             }
         }
+    }
+
+    // <effect gate>: counted in place of the source, so it must be complete before the effect's
+    // first pass, and be neither the source nor written by the effect. Whether it is zero only where
+    // the source will be is the workspace's mathematics, as the source's is.
+    void checkEffectGate(const Effect& e, const std::string& element) {
+        if (!ws_.findTarget(e.gate)) {
+            error(e.where, element, "gate: no render target '" + e.gate + "' (" + ws_.describeTargets() + ")");
+            return;
+        }
+        if (e.gate == e.source) {
+            error(e.where, element, "gate '" + e.gate + "' is the source itself: leave 'gate' out to count the source");
+            return;
+        }
+        auto inEffect = [&](const Pass& p) { return std::find(e.passes.begin(), e.passes.end(), p.name) != e.passes.end(); };
+        const Pass* first = nullptr;
+        bool written = false;
+        for (const Pass& p : ws_.passes) {
+            if (!p.enabled || ws_.passTargetName(p) != e.gate) {
+                if (p.enabled && !first && inEffect(p)) first = &p;
+                continue;
+            }
+            if (inEffect(p)) {
+                error(e.where, element, "gate '" + e.gate + "' is written by pass '" + p.name +
+                                            "' of the effect itself; the gate is written before the effect, by passes outside it");
+                return;
+            }
+            if (first) {
+                error(e.where, element, "pass '" + p.name + "' writes the gate '" + e.gate + "' after pass '" + first->name +
+                                            "' of the effect: whether the effect contributes is decided before its first pass, "
+                                            "so the gate must be complete by then");
+                return;
+            }
+            written = true;
+        }
+        if (!written) error(e.where, element, "no pass writes the gate '" + e.gate + "' before the effect");
     }
 
     // An unknown semantic is no error: RenderMonkey knew a few rmfx does not fill.

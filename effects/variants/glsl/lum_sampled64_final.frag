@@ -7,6 +7,6 @@ uniform sampler2D Quarter;  // the downsampled image; only its size, which fixes
 out vec4 fragColor;
 
 void main() {
-    vec2 reduced = reduceLogLuminance(Finer, ivec2(0), textureSize(Quarter, 0));
+    vec2 reduced = reduceLogLuminance(Finer, ivec2(0), textureSize(Quarter, 0)).xy;
     fragColor = vec4(exp(reduced.x), reduced.y, 0.0, 1.0);
 }

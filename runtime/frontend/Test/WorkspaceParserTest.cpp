@@ -118,6 +118,27 @@ TEST(WorkspaceParser, AnEffectsSourceAndItsChannels) {
                           "rgba, a"}));
 }
 
+TEST(WorkspaceParser, AnEffectsGateAndItsChannels) {
+    Workspace ws = parsedOk(workspace({
+        "  <effect name=\"glow\" passes=\"last\" source=\"bright\" gate=\"bound\" gate-channels=\"r\"/>",
+    }));
+    ASSERT_EQ(ws.effects.size(), 1u);
+    EXPECT_EQ(ws.effects[0].gate, "bound");
+    EXPECT_EQ(ws.effects[0].gateChannels, glm::bvec4(true, false, false, false));
+    EXPECT_EQ(ws.effects[0].sourceChannels, glm::bvec4(true, true, true, false)) << "the source's own channels are unchanged";
+    Workspace plain = parsedOk(workspace({"  <effect name=\"glow\" passes=\"last\" source=\"bright\" gate=\"bound\"/>"}));
+    EXPECT_EQ(plain.effects[0].gateChannels, glm::bvec4(true, true, true, false)) << "red, green and blue by default";
+    EXPECT_TRUE(parsedOk(workspace({"  <effect name=\"glow\" passes=\"last\" source=\"bright\"/>"})).effects[0].gate.empty());
+    EXPECT_EQ(errorsOf(workspace({"  <effect name=\"glow\" passes=\"last\" gate=\"bound\"/>"})),
+              (Lines{at + "2: error: <effect name=\"glow\">: attribute 'gate' applies with 'source': it is a cheaper test of the source"}));
+    EXPECT_EQ(errorsOf(workspace({"  <effect name=\"glow\" passes=\"last\" source=\"b\" gate=\"\"/>"})),
+              (Lines{at + "2: error: <effect name=\"glow\">: attribute 'gate' names no target"}));
+    EXPECT_EQ(errorsOf(workspace({"  <effect name=\"glow\" passes=\"last\" source=\"b\" gate-channels=\"r\"/>"})),
+              (Lines{at + "2: error: <effect name=\"glow\">: attribute 'gate-channels' applies with 'gate'"}));
+    EXPECT_EQ(errorsOf(workspace({"  <effect name=\"glow\" passes=\"last\" source=\"b\" gate=\"g\" gate-channels=\"x\"/>"})),
+              (Lines{at + "2: error: <effect name=\"glow\">: attribute 'gate-channels': 'x' is not one of: r, rg, rgb, rgba, a"}));
+}
+
 TEST(WorkspaceParser, UnknownElementInPass) {
     auto d = errorsOf(workspace({
         "  <pass name=\"blur\">",

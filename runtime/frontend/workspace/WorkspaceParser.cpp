@@ -498,7 +498,7 @@ private:
     }
 
     std::optional<Effect> parseEffect(const XMLElement* e) {
-        ElementReader r(e, file_, diagnostics_, {"name", "passes", "switch", "source", "source-channels", "description"});
+        ElementReader r(e, file_, diagnostics_, {"name", "passes", "switch", "source", "source-channels", "gate", "gate-channels", "description"});
         auto name = r.identifier("name");
         if (!name) return std::nullopt;
         Effect effect;
@@ -515,13 +515,23 @@ private:
         effect.switches = nameList(r, "switch").value_or(std::vector<std::string>{});
         effect.source = r.string("source").value_or("");
         if (r.has("source") && effect.source.empty()) r.error("attribute 'source' names no target");
-        if (auto channels = r.choice<glm::bvec4>("source-channels", {{"r", {true, false, false, false}},
-                                                                     {"rg", {true, true, false, false}},
-                                                                     {"rgb", {true, true, true, false}},
-                                                                     {"rgba", {true, true, true, true}},
-                                                                     {"a", {false, false, false, true}}})) {
+        auto channelsOf = [&](const char* attribute) {
+            return r.choice<glm::bvec4>(attribute, {{"r", {true, false, false, false}},
+                                                    {"rg", {true, true, false, false}},
+                                                    {"rgb", {true, true, true, false}},
+                                                    {"rgba", {true, true, true, true}},
+                                                    {"a", {false, false, false, true}}});
+        };
+        if (auto channels = channelsOf("source-channels")) {
             if (effect.source.empty()) r.error("attribute 'source-channels' applies with 'source'");
             effect.sourceChannels = *channels;
+        }
+        effect.gate = r.string("gate").value_or("");
+        if (r.has("gate") && effect.gate.empty()) r.error("attribute 'gate' names no target");
+        if (!effect.gate.empty() && effect.source.empty()) r.error("attribute 'gate' applies with 'source': it is a cheaper test of the source");
+        if (auto channels = channelsOf("gate-channels")) {
+            if (effect.gate.empty()) r.error("attribute 'gate-channels' applies with 'gate'");
+            effect.gateChannels = *channels;
         }
         noChildren(e);
         return effect;

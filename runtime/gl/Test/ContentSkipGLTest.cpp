@@ -125,9 +125,10 @@ TEST_P(HdrLightingContentSkipGLTest, DimBrightAndAlternatingFramesAreBitIdentica
     const auto [encoding, decision] = GetParam();
     std::unique_ptr<Workspace> ws = effectWorkspace("hdr_lighting.xml", {{"HDR_Encoding", std::to_string(static_cast<int>(encoding))}});
     ASSERT_TRUE(ws);
-    // star_source, bloom's 4 passes and star's 25.
+    // bright_pass and star_source (which only the effects read), bloom's 4 passes and star's 25:
+    // the effects count their gate, which is written before the bright pass.
     expectAlternatingFramesBitIdentical(*ws, {"bloom", "star"}, std::string(hdrEncodingName(encoding)) + ", " + decisionName(decision),
-                                        decision, 30);
+                                        decision, 31);
 }
 
 INSTANTIATE_TEST_SUITE_P(Encodings, HdrLightingContentSkipGLTest,
@@ -409,6 +410,163 @@ TEST_F(GlowContentSkipGLTest, WhatASkippedEffectHandsOnIsClearedOnlyWhereSomethi
             }
         }
 }
+
+// <effect gate>: the glow workspace with a 1x1 gate, the scene's largest channel minus the
+// threshold, written before the bright pass. The gate is counted in place of the bright pass,
+// so that the bright pass (which only the effect reads) is left out with the effect.
+std::string glowWithAGate(const std::string& gateExpression = "max(largest - 1.0, 0.0)") {
+    std::string xml = kGlow;
+    auto replace = [&](const std::string& from, const std::string& to) {
+        const size_t at = xml.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        if (at != std::string::npos) xml.replace(at, from.size(), to);
+    };
+    replace(R"(  <target name="bright" format="rgba32f"/>)", R"(  <target name="bright" format="rgba32f"/>
+  <target name="gate" format="r32f" size="1x1"/>)");
+    replace(R"(  <pass name="bright_pass" target="bright">)", R"(  <pass name="gate_pass" target="gate"><sampler name="Scene" target="scene" filter="nearest"/><shader stage="fragment"><![CDATA[
+uniform sampler2D Scene;
+out vec4 c;
+void main() {
+    ivec2 size = textureSize(Scene, 0);
+    float largest = 0.0;
+    for (int y = 0; y < size.y; ++y)
+        for (int x = 0; x < size.x; ++x) {
+            vec3 v = texelFetch(Scene, ivec2(x, y), 0).rgb;
+            largest = any(isnan(v)) || any(isinf(v)) ? 3.0e38 : max(largest, max(v.r, max(v.g, v.b)));
+        }
+    c = vec4()" + gateExpression + R"(, 0.0, 0.0, 1.0);
+}
+]]></shader></pass>
+  <pass name="bright_pass" target="bright">)");
+    replace(R"(<effect name="glow" passes="glow_pass" source="bright"/>)",
+            R"(<effect name="glow" passes="glow_pass" source="bright" gate="gate" gate-channels="r"/>)");
+    return xml;
+}
+
+class GatedGlowContentSkipGLTest : public GlTest {
+protected:
+    Skipped frameWith(const std::string& xml, glm::ivec2 pixel, float value, int kind = 0, bool expectSame = true) {
+        std::unique_ptr<Workspace> ws = workspaceFromText(xml);
+        if (!ws) return {{"-", "no workspace"}};
+        on_ = executorFor(*ws, {37, 23}, {}, true, Decision::CpuWaits);
+        off_ = executorFor(*ws, {37, 23}, {}, false);
+        if (!on_ || !off_) return {{"-", "no executor"}};
+        for (GlExecutor* e : {on_.get(), off_.get()}) {
+            EXPECT_TRUE(e->setVariable("Pixel_X", Value::ofInt(pixel.x)));
+            EXPECT_TRUE(e->setVariable("Pixel_Y", Value::ofInt(pixel.y)));
+            EXPECT_TRUE(e->setVariable("Value", Value::ofFloat(value)));
+            EXPECT_TRUE(e->setVariable("Kind", Value::ofInt(kind)));
+        }
+        const std::string what = "pixel " + std::to_string(pixel.x) + "," + std::to_string(pixel.y) + " kind " +
+                                 std::to_string(kind) + " value " + std::to_string(value);
+        if (expectSame) {
+            expectSameFrame(*on_, *off_, 0.0f, what);
+        } else {
+            for (GlExecutor* e : {on_.get(), off_.get()}) EXPECT_TRUE(e->renderFrame({0.0f, 1.0f / 24.0f})) << what;
+        }
+        return on_->contentSkippedEffects();
+    }
+    std::unique_ptr<GlExecutor> on_, off_;
+};
+
+TEST_F(GatedGlowContentSkipGLTest, TheGateDecidesAndTheBrightPassIsLeftOutWithTheEffect) {
+    const std::string xml = glowWithAGate();
+    const float justAbove = std::nextafter(1.0f, 2.0f);
+    for (glm::ivec2 corner : {glm::ivec2(0, 0), glm::ivec2(36, 0), glm::ivec2(0, 22), glm::ivec2(36, 22)}) {
+        SCOPED_TRACE("corner " + std::to_string(corner.x) + "," + std::to_string(corner.y));
+        EXPECT_TRUE(frameWith(xml, corner, justAbove).empty());
+        Skipped at = frameWith(xml, corner, 1.0f);
+        ASSERT_EQ(at.count("glow"), 1u) << "exactly at the threshold the gate is 0";
+        EXPECT_EQ(at.at("glow"), "its gate 'gate' holds no pixel with a non-zero red value, so its source 'bright' holds none either");
+        // The bright pass and the glow pass, both left out by the CPU, which waited for the gate.
+        EXPECT_EQ(on_->passesNotIssuedByContentSkip(), 2);
+        EXPECT_EQ(on_->passesDrawnOnlyForEffects(), (std::map<std::string, std::set<std::string>>{{"bright_pass", {"glow"}}}));
+    }
+    EXPECT_TRUE(frameWith(xml, {18, 11}, 0.0f, 2).empty()) << "+Inf opens the gate";
+    EXPECT_TRUE(frameWith(xml, {18, 11}, 0.0f, 1).empty()) << "NaN opens the gate";
+}
+
+// What the gate holds is what decides: a gate written as 0 whatever the scene holds skips the
+// glow of a bright pixel, and the image then lacks it. (The mathematics of a gate is the
+// workspace's, as a source's is; this test shows the gate is what content skip counts.)
+TEST_F(GatedGlowContentSkipGLTest, AGateThatIsAlwaysZeroSkipsTheEffectEvenWhereTheSourceHoldsSomething) {
+    Skipped skipped = frameWith(glowWithAGate("0.0 * largest"), {18, 11}, 3.0f, 0, false);
+    EXPECT_EQ(skipped.count("glow"), 1u);
+    Image a = readBack(*on_, "output"), b = readBack(*off_, "output");
+    ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    EXPECT_NE(a.pixels, b.pixels) << "the glow of the bright pixel is missing where the gate says 0";
+}
+
+// hdr_lighting's gate (glsl/hdr_glare_gate.frag) bounds the bright pass from the brightest channel
+// of the quarter image that the luminance chain carries. One scene pixel in a corner of an odd-sized
+// image: bisecting its value finds the last value for which the bright pass (read back from a run
+// with content skip off) writes zero everywhere and the first for which it does not, a float
+// apart; just above, bloom and star must run; a little below, the gate must close; and every frame
+// must equal running everything. Adaptation is off, so that each frame is decided by its own image.
+class HdrLightingGateGLTest : public GlTest, public ::testing::WithParamInterface<HdrEncoding> {};
+
+TEST_P(HdrLightingGateGLTest, ACornerPixelJustAboveTheBrightPassKeepsBloomAndStar) {
+    std::unique_ptr<Workspace> ws = effectWorkspace(
+        "hdr_lighting.xml", {{"HDR_Encoding", std::to_string(static_cast<int>(GetParam()))}, {"Light_Adaptation", "false"}});
+    ASSERT_TRUE(ws);
+    const int w = 37, h = 23;
+    Image dim = blankHdrImage(w, h);
+    for (size_t i = 0; i < dim.pixels.size(); ++i) dim.pixels[i] = i % 4 == 3 ? 1.0f : 0.03f;
+    ScratchDir dir;
+    ASSERT_TRUE(writeImage(dir / "dim.exr", dim));
+    Result<SuppliedInputs> supplied = supplyInputs(*ws, {parseInputArgument((dir / "dim.exr").string())}, std::nullopt);
+    ASSERT_TRUE(supplied) << formatAll(supplied.diagnostics());
+    auto on = executorFor(*ws, {w, h}, supplied->given, true, Decision::CpuWaits);
+    ExecutorOptions options;
+    options.outputs = {"output", "bright"};
+    options.givenInputs = supplied->given;
+    options.contentSkip = false;
+    auto created = GlExecutor::create(std::make_shared<const Workspace>(*ws), {w, h}, options);
+    ASSERT_TRUE(on && created) << formatAll(created.diagnostics());
+    GlExecutor& off = **created;
+    for (glm::ivec2 corner : {glm::ivec2(0, 0), glm::ivec2(w - 1, h - 1)}) {
+        SCOPED_TRACE("corner " + std::to_string(corner.x) + "," + std::to_string(corner.y));
+        auto setPixel = [&](float value) {
+            auto image = std::make_shared<Image>(dim);
+            for (int c = 0; c < 3; ++c) image->at(corner.x, corner.y, c) = value;
+            EXPECT_TRUE(on->replaceInputImage("scene", image));
+            EXPECT_TRUE(off.replaceInputImage("scene", image));
+        };
+        // Whether the bright pass writes a non-zero red, green or blue anywhere, content skip off.
+        auto brightPasses = [&](float value) {
+            setPixel(value);
+            EXPECT_TRUE(off.renderFrame({0.0f, 1.0f / 24.0f}));
+            const Image bright = readBack(off, "bright");
+            for (size_t i = 0; i < bright.pixels.size(); ++i)
+                if (i % 4 != 3 && bright.pixels[i] != 0.0f) return true;
+            return false;
+        };
+        float below = 0.03f, above = 1.0e5f;
+        ASSERT_FALSE(brightPasses(below));
+        ASSERT_TRUE(brightPasses(above));
+        while (std::nextafter(below, above) < above) {
+            const float middle = below + (above - below) / 2.0f;
+            if (middle <= below || middle >= above) break;
+            (brightPasses(middle) ? above : below) = middle;
+        }
+        // Each frame with both executors, the outputs compared; returns what was skipped.
+        auto frame = [&](float value, const std::string& what) {
+            setPixel(value);
+            expectSameFrame(*on, off, 0.0f, what);
+            return on->contentSkippedEffects();
+        };
+        EXPECT_TRUE(frame(above, "just above: " + std::to_string(above)).empty()) << "the first value the bright pass passes";
+        frame(below, "just below: " + std::to_string(below));
+        const Skipped wellBelow = frame(below * 0.98f, "2 % below");
+        EXPECT_EQ(wellBelow.count("bloom"), 1u) << "2 % under the threshold the gate is closed";
+        EXPECT_EQ(wellBelow.count("star"), 1u);
+        EXPECT_EQ(on->passesNotIssuedByContentSkip(), 31) << "bright_pass, star_source, bloom's 4 and star's 25";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Encodings, HdrLightingGateGLTest,
+                         ::testing::Values(HdrEncoding::Float, HdrEncoding::Rgb9e5, HdrEncoding::Rgbe8),
+                         [](const auto& info) { return std::string(hdrEncodingName(info.param)); });
 
 // The health check reports what the passes of a frame wrote: a pass content skip leaves out
 // wrote nothing, though its target still holds what it wrote before (+Inf here, from a bright

@@ -72,6 +72,38 @@ TEST(FramePlan, PassesNoOutputNeedsAreCulledAndTheirTargetsGetNoMemory) {
     EXPECT_GE(targets.targets[static_cast<size_t>(targets.find("b"))].resource, 0);
 }
 
+// <effect gate>: the pass writing the gate is needed only where content skip counts it before
+// the effect (content skip on and the effect asked for); its target then lives until the effect.
+TEST(FramePlan, AnEffectsGateRunsOnlyWhereContentSkipCountsIt) {
+    auto ws = parse("  <target name=\"a\" format=\"rgba16f\"/>\n  <target name=\"b\" format=\"rgba16f\"/>\n"
+                    "  <target name=\"g\" format=\"r32f\" size=\"1x1\"/>\n"
+                    "  <effect name=\"glow\" passes=\"glow\" source=\"a\" gate=\"g\"/>\n" +
+                    passXml("scene", "a", {}) + passXml("gate", "g", {"a"}) + passXml("glow", "b", {"a"}) +
+                    passXml("final", "", {"a", "b"}));
+    ASSERT_TRUE(ws);
+    FramePlanOptions options = outputs({"output"});
+    auto on = planFrame(*ws, options, {8, 8}, declaredValues(*ws), kNoSizeLimit);
+    ASSERT_TRUE(on) << on.error();
+    EXPECT_EQ(scheduled(*ws, *on->variant({}).graph), (Names{"scene", "gate", "glow", "final"}));
+    const PassNode& glow = on->variant({}).graph->nodes[2];
+    EXPECT_EQ(glow.gate, "g");
+    EXPECT_EQ(on->variant({}).graph->nodes[1].why, "content skip counts 'g' to decide whether effect 'glow' runs");
+    const PlannedTarget& gate = on->targets.targets[static_cast<size_t>(on->targets.find("g"))];
+    EXPECT_EQ(gate.lastUse, 2) << "the gate lives until the effect's pass";
+
+    options.contentSkip = false;
+    auto off = planFrame(*ws, options, {8, 8}, declaredValues(*ws), kNoSizeLimit);
+    ASSERT_TRUE(off) << off.error();
+    EXPECT_EQ(scheduled(*ws, *off->variant({}).graph), (Names{"scene", "glow", "final"}));
+    EXPECT_TRUE(off->variant({}).graph->nodes[2].gate.empty());
+
+    options.contentSkip = true;
+    options.effects = std::vector<std::string>{};
+    auto none = planFrame(*ws, options, {8, 8}, declaredValues(*ws), kNoSizeLimit);
+    ASSERT_TRUE(none) << none.error();
+    EXPECT_EQ(scheduled(*ws, *none->variant({}).graph), (Names{"scene", "final"}));
+}
+
 TEST(FramePlan, WithNoOutputsNamedEveryWrittenTargetIsAnOutput) {
     auto ws = parse(effectWorkspace());
     ASSERT_TRUE(ws);

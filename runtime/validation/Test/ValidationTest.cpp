@@ -910,6 +910,56 @@ TEST(Validation, AnEffectsSourceIsCompleteBeforeItsFirstPass) {
                                         "the source must be complete by then"}));
 }
 
+// <effect gate>: counted in place of the source, so it must exist, differ from the source, be
+// written outside the effect and be complete before the effect's first pass.
+TEST(Validation, AnEffectsGateIsWrittenBeforeTheEffectByPassesOutsideIt) {
+    test::ScratchDir dir;
+    const std::string sampling = "    <shader stage=\"fragment\">uniform sampler2D S; out vec4 c; void main() { c = texture(S, vec2(0.5)); }</shader>";
+    auto reading = [&](const std::string& pass, const std::string& target) {
+        return "  <pass name=\"" + pass + "\" target=\"" + target + "\">\n    <sampler name=\"S\" target=\"src\"/>\n" + sampling +
+               "\n  </pass>";
+    };
+    auto l = load(dir, lines({
+                           "<workspace version=\"1\">",
+                           "  <target name=\"src\" format=\"rgba8\"/>",
+                           "  <target name=\"g\" format=\"r32f\" size=\"1x1\"/>",
+                           "  <target name=\"g2\" format=\"r32f\" size=\"1x1\"/>",
+                           "  <target name=\"g3\" format=\"r32f\" size=\"1x1\"/>",
+                           "  <target name=\"g4\" format=\"r32f\" size=\"1x1\"/>",
+                           "  <target name=\"a\" format=\"rgba8\"/>",
+                           "  <target name=\"b\" format=\"rgba8\"/>",
+                           "  <target name=\"c\" format=\"rgba8\"/>",
+                           "  <target name=\"d\" format=\"rgba8\"/>",
+                           "  <target name=\"e\" format=\"rgba8\"/>",
+                           "  <target name=\"f\" format=\"rgba8\"/>",
+                           "  <effect name=\"good\" passes=\"pa\" source=\"src\" gate=\"g\"/>",
+                           "  <effect name=\"unknown\" passes=\"pb\" source=\"src\" gate=\"nope\"/>",
+                           "  <effect name=\"same\" passes=\"pc\" source=\"src\" gate=\"src\"/>",
+                           "  <effect name=\"inside\" passes=\"pd inner\" source=\"src\" gate=\"g2\"/>",
+                           "  <effect name=\"late\" passes=\"pe\" source=\"src\" gate=\"g3\"/>",
+                           "  <effect name=\"unwritten\" passes=\"pf\" source=\"src\" gate=\"g4\"/>",
+                           "  <pass name=\"make\" target=\"src\">", kPlainShader, "  </pass>",
+                           "  <pass name=\"bound\" target=\"g\">", kPlainShader, "  </pass>",
+                           reading("pa", "a"), reading("pb", "b"), reading("pc", "c"), reading("pd", "d"),
+                           "  <pass name=\"inner\" target=\"g2\">", kPlainShader, "  </pass>",
+                           reading("pe", "e"),
+                           "  <pass name=\"after\" target=\"g3\">", kPlainShader, "  </pass>",
+                           reading("pf", "f"),
+                           "</workspace>",
+                       }));
+    EXPECT_EQ(l.errors,
+              (Lines{
+                  l.path + ":14: error: <effect name=\"unknown\">: gate: no render target 'nope' (it has: src, g, g2, g3, g4, a, b, "
+                           "c, d, e, f; the output is 'output')",
+                  l.path + ":15: error: <effect name=\"same\">: gate 'src' is the source itself: leave 'gate' out to count the source",
+                  l.path + ":16: error: <effect name=\"inside\">: gate 'g2' is written by pass 'inner' of the effect itself; the "
+                           "gate is written before the effect, by passes outside it",
+                  l.path + ":17: error: <effect name=\"late\">: pass 'after' writes the gate 'g3' after pass 'pe' of the effect: "
+                           "whether the effect contributes is decided before its first pass, so the gate must be complete by then",
+                  l.path + ":18: error: <effect name=\"unwritten\">: no pass writes the gate 'g4' before the effect",
+              }));
+}
+
 // hdr_lighting's bloom and star start from 'bright' through star_source, a blur of it outside
 // both: reading through a pass before the effect counts; through last frame's contents it does not.
 TEST(Validation, AnEffectMayReadItsSourceThroughPassesBeforeIt) {
