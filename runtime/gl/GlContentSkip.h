@@ -9,7 +9,9 @@
 // pass, under the inverted condition, the targets it hands to later passes (and those read back
 // after the frame) are cleared to zero, which is what running it would have left there, unless
 // what reads them is drawn compiled without the effect and samples none of them. A NaN or an
-// infinity is not zero: the effect runs on it.
+// infinity is not zero: the effect runs on it. An effect with a gate (<effect gate>) is decided by
+// counting the gate, written before the source, in the same way; the source's passes are then
+// feeders like any other.
 // Passes outside the effects that only they read, between the source and the effects (hdr_lighting's
 // star_source, the blur of the bright pass that bloom and star start from), are feeders: drawn
 // under the same condition, since where it fails nothing reads what they write.
