@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
@@ -550,6 +551,14 @@ TEST_P(HdrLightingGateGLTest, ACornerPixelJustAboveTheBrightPassKeepsBloomAndSta
         EXPECT_EQ(wellBelow.count("bloom"), 1u) << "2 % under the threshold the gate is closed";
         EXPECT_EQ(wellBelow.count("star"), 1u);
         EXPECT_EQ(on->passesNotIssuedByContentSkip(), 31) << "bright_pass, star_source, bloom's 4 and star's 25";
+        // NaN and infinity: the input pass makes them finite before the quarter image (today the
+        // bright pass then writes zero, and the gate closes); whatever it makes of them, the
+        // effects run exactly where the bright pass writes anything but zero (NaN included).
+        for (float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+            const bool passes = brightPasses(bad);
+            const Skipped skipped = frame(bad, std::isnan(bad) ? "NaN" : "+Inf");
+            EXPECT_EQ(skipped.empty(), passes) << (std::isnan(bad) ? "NaN" : "+Inf");
+        }
     }
 }
 
