@@ -180,8 +180,12 @@ TEST(HlslTranslator, SamplersNamedLikeGlslWordsKeepTheirNames) {
                                            }));
     EXPECT_EQ(names(uniforms), (std::vector<std::string>{"WorldViewProjection", "input2", "noise", "volume"}));
     for (const ActiveUniform& u : uniforms) {
-        if (u.name == "noise" || u.name == "input2") EXPECT_EQ(u.type, UniformType::Sampler2D) << u.name;
-        if (u.name == "volume") EXPECT_EQ(u.type, UniformType::Sampler3D);
+        if (u.name == "noise" || u.name == "input2") {
+            EXPECT_EQ(u.type, UniformType::Sampler2D) << u.name;
+        }
+        if (u.name == "volume") {
+            EXPECT_EQ(u.type, UniformType::Sampler3D);
+        }
     }
 }
 
