@@ -207,7 +207,11 @@ struct GlExecutor::Impl {
         gp.program = std::move(built.program);
         gp.initializedUniforms = built.initializedUniforms;
         if (!bindProgram(gp, d)) return false;
-        if (healthCheck && healthCheck->countsWhileDrawing(sharesItsTargetWithANeighbour(gp))) countOwnWrites(gp, built);
+        if (healthCheck) {
+            const int inputs = static_cast<int>(std::count_if(gp.samplers.begin(), gp.samplers.end(),
+                                                              [&](const SamplerSlot& slot) { return healthInputLabel(slot).has_value(); }));
+            if (healthCheck->countsWhileDrawing(sharesItsTargetWithANeighbour(gp), inputs)) countOwnWrites(gp, built);
+        }
         return true;
     }
 

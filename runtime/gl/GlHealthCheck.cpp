@@ -308,16 +308,17 @@ bool GlHealthCheck::notePass(size_t position, const std::string& pass, const std
     return true;
 }
 
-bool GlHealthCheck::countsWhileDrawing(bool sharesItsTarget) const {
+bool GlHealthCheck::countsWhileDrawing(bool sharesItsTarget, int inputs) const {
     switch (method_) {
         case HealthCheckMethod::WhileDrawing: return true;
         case HealthCheckMethod::AfterPass: return false;
         case HealthCheckMethod::Automatic: break;
     }
-    // A software rasteriser runs the counting code of every fragment, found or not, which costs it
-    // more than a screen over a target one full-screen pass wrote, and less than a screen of the
-    // whole target after each model drawn into it (docs/performance.md).
-    return !software_ || sharesItsTarget;
+    // A software rasteriser runs the counting code of every fragment, found or not: with many
+    // inputs to record that costs it more than a screen of the target after the pass, with few of
+    // them less than the screen and the wait before its batch, and always less than a screen of
+    // the whole target after each model drawn into it (docs/performance.md).
+    return !software_ || sharesItsTarget || inputs <= kSoftwareCountingInputs;
 }
 
 void GlHealthCheck::afterPass(size_t position, const std::string& pass, const std::string& target, unsigned texture,

@@ -39,8 +39,12 @@ public:
     // Whether a pass's program should be made to count what it writes. `sharesItsTarget`: the pass
     // before or after it writes the same target (hdr_lighting's scene, model by model), where each
     // inspection after a pass reads the whole target while counting runs only on the model's own
-    // fragments; Automatic counts in such passes on a software rasteriser and in every pass on a GPU.
-    bool countsWhileDrawing(bool sharesItsTarget) const;
+    // fragments. `inputs`: the 2D inputs its counting version would record. Automatic counts in
+    // every pass on a GPU; on a software rasteriser, which runs the counting code of every
+    // fragment, found or not, in passes that share their target or record at most
+    // kSoftwareCountingInputs inputs (each recorded input is a fetch and a store of every fragment).
+    bool countsWhileDrawing(bool sharesItsTarget, int inputs) const;
+    static constexpr int kSoftwareCountingInputs = 2;
 
     // A 2D texture a pass sampled: what the report calls it, its GL object and the texture unit the
     // pass bound it to.

@@ -69,6 +69,10 @@ std::string widened(const ColourOutput& output) {
 std::string appendix(const ColourOutput& output, const std::vector<std::string>& inputs, int binding, bool earlyTests) {
     std::string s = "\n#undef main\n";
     s += "layout(std430, binding = " + std::to_string(binding) + ") buffer rmfx_health_Buffer { int rmfx_health_words[]; };\n";
+    // The same words four at a time: a record's value and inputs each in one store (a software
+    // rasteriser runs every store of every fragment, taken or not; one of four words costs it a
+    // quarter of four of one).
+    s += "layout(std430, binding = " + std::to_string(binding) + ") buffer rmfx_health_Quads { ivec4 rmfx_health_quads[]; };\n";
     if (earlyTests) s += "layout(early_fragment_tests) in;\n";
     s += R"(uniform int rmfx_health_Slot;       // the pass's first entry: position times the kinds
 uniform int rmfx_health_Records;    // the first word of the records
@@ -77,9 +81,7 @@ uniform int rmfx_health_Channels;   // the target's; 0: it is not inspected
 uniform bool rmfx_health_Negatives;
 uniform float rmfx_health_Smallest; // a negative value of no larger magnitude is stored as -0
 uniform vec4 rmfx_health_Largest;   // at or above: stored at the format's largest or beyond; 0: none
-void rmfx_health_storeVec4(int at, vec4 v) {
-    for (int c = 0; c < 4; ++c) rmfx_health_words[at + c] = floatBitsToInt(v[c]);
-}
+void rmfx_health_storeVec4(int at, vec4 v) { rmfx_health_quads[at >> 2] = floatBitsToInt(v); }  // at: a multiple of 4
 // Counts the kinds in `kinds` (bit k: kind k) at `pixel`; a fragment that lowers a kind's first
 // pixel takes a record slot for it, and writes its value and inputs there.
 void rmfx_health_count(int rmfx_health_kinds, int rmfx_health_pixel, vec4 rmfx_health_value) {
@@ -105,16 +107,22 @@ void rmfx_health_count(int rmfx_health_kinds, int rmfx_health_pixel, vec4 rmfx_h
              ", clamp(ivec2(rmfx_health_centre * vec2(rmfx_health_size)), ivec2(0), rmfx_health_size - 1), 0));\n";
     s += "    }\n}\nvoid main() {\n    " + std::string(kRenamedMain) + "();\n    vec4 rmfx_health_written = " + widened(output) + ";\n";
     s += "    int rmfx_health_channels = min(rmfx_health_Channels, " + std::to_string(output.components) + ");\n";
-    s += R"(    int rmfx_health_kinds = 0;
-    for (int rmfx_health_c = 0; rmfx_health_c < rmfx_health_channels; ++rmfx_health_c) {
-        float rmfx_health_x = rmfx_health_written[rmfx_health_c];
-        if (isnan(rmfx_health_x)) rmfx_health_kinds |= 1;
-        else if (isinf(rmfx_health_x)) rmfx_health_kinds |= rmfx_health_x > 0.0 ? 2 : 4;
-        else {
-            if (rmfx_health_Negatives && rmfx_health_x < -rmfx_health_Smallest) rmfx_health_kinds |= 8;
-            if (rmfx_health_Largest[rmfx_health_c] > 0.0 && abs(rmfx_health_x) >= rmfx_health_Largest[rmfx_health_c]) rmfx_health_kinds |= 16;
-        }
-    }
+    // The kinds of all channels at once, on the bits (isnan and isinf may be compiled away), with
+    // no loop or branch: per channel inspected, NaN (1), +Inf (2), -Inf (4), and of finite values
+    // negative (8) and at the format's largest (16).
+    s += R"(    uvec4 rmfx_health_bits = floatBitsToUint(rmfx_health_written);
+    uvec4 rmfx_health_in = uvec4(lessThan(ivec4(0, 1, 2, 3), ivec4(rmfx_health_channels)));
+    uvec4 rmfx_health_special = rmfx_health_in & uvec4(equal(rmfx_health_bits & 0x7F800000u, uvec4(0x7F800000u)));
+    uvec4 rmfx_health_fraction = uvec4(notEqual(rmfx_health_bits & 0x007FFFFFu, uvec4(0u)));
+    uvec4 rmfx_health_sign = rmfx_health_bits >> 31u;
+    uvec4 rmfx_health_finite = rmfx_health_in & (1u - rmfx_health_special);
+    uvec4 rmfx_health_found = (rmfx_health_special & rmfx_health_fraction)
+        | ((rmfx_health_special & (1u - rmfx_health_fraction) & (1u - rmfx_health_sign)) << 1u)
+        | ((rmfx_health_special & (1u - rmfx_health_fraction) & rmfx_health_sign) << 2u)
+        | ((rmfx_health_finite & uint(rmfx_health_Negatives) & uvec4(lessThan(rmfx_health_written, vec4(-rmfx_health_Smallest)))) << 3u)
+        | ((rmfx_health_finite & uvec4(greaterThan(rmfx_health_Largest, vec4(0.0)))
+            & uvec4(greaterThanEqual(abs(rmfx_health_written), rmfx_health_Largest))) << 4u);
+    int rmfx_health_kinds = int(rmfx_health_found.x | rmfx_health_found.y | rmfx_health_found.z | rmfx_health_found.w);
     if (rmfx_health_kinds != 0) {
         int rmfx_health_pixel = int(gl_FragCoord.y) * rmfx_health_Size.x + int(gl_FragCoord.x);
         rmfx_health_count(rmfx_health_kinds, rmfx_health_pixel, rmfx_health_written);

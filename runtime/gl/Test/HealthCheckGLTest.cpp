@@ -664,12 +664,13 @@ TEST_P(HealthCheckGLTest, TheEdgesOfEachKindAreCountedExactly) {
 }
 
 // auto: on a GPU every pass that can counts what it writes (a pass that blends is inspected after
-// it ran); on a software rasteriser only a pass whose neighbour writes the same target ('first',
-// before 'second'), and the others are inspected after they ran. Both ways in one frame: 'first'
-// writes 1 and a NaN into 't', onto which 'second' adds -2.
+// it ran); on a software rasteriser a pass whose neighbour writes the same target ('first', before
+// 'second') or that records at most two inputs ('use'), and the others ('final', three inputs) are
+// inspected after they ran. Both ways in one frame: 'first' writes 1 and a NaN into 't', onto
+// which 'second' adds -2.
 class HealthCheckAutomaticGLTest : public GlTest {};
 
-TEST_F(HealthCheckAutomaticGLTest, ASoftwareRasteriserCountsWhileDrawingOnlyWherePassesShareATargetAGpuWhereverItCan) {
+TEST_F(HealthCheckAutomaticGLTest, ASoftwareRasteriserCountsWhileDrawingWherePassesShareATargetOrHaveFewInputsAGpuWhereverItCan) {
     const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     const bool software = currentContextIsSoftwareRasteriser();
     std::unique_ptr<Workspace> ws = workspaceFromText(R"(<workspace version="1" name="auto" size="9x7">
@@ -691,11 +692,17 @@ uniform sampler2D T;
 out vec4 c;
 void main() { c = abs(texelFetch(T, ivec2(gl_FragCoord.xy), 0)); }
 ]]></shader></pass>
-  <pass name="final"><sampler name="U" target="u" filter="nearest"/><shader stage="fragment"><![CDATA[
+  <pass name="final"><sampler name="U" target="u" filter="nearest"/><sampler name="T" target="t" filter="nearest"/>
+    <sampler name="V" target="u" filter="nearest"/><shader stage="fragment"><![CDATA[
 #version 450 core
 uniform sampler2D U;
+uniform sampler2D T;
+uniform sampler2D V;
 out vec4 c;
-void main() { c = texelFetch(U, ivec2(gl_FragCoord.xy), 0); }
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    c = texelFetch(U, p, 0) + 0.5 * texelFetch(T, p, 0) + 0.25 * texelFetch(V, p, 0);
+}
 ]]></shader></pass>
   <output format="rgba32f" transform="none"/>
 </workspace>
@@ -708,7 +715,7 @@ void main() { c = texelFetch(U, ivec2(gl_FragCoord.xy), 0); }
     std::map<std::string, bool> counted;
     for (const PassHealth& p : health->passes) counted[p.pass] = p.countedWhileDrawing;
     if (software) {
-        EXPECT_EQ(counted, (std::map<std::string, bool>{{"first", true}, {"second", false}, {"use", false}, {"final", false}}))
+        EXPECT_EQ(counted, (std::map<std::string, bool>{{"first", true}, {"second", false}, {"use", true}, {"final", false}}))
             << renderer;
     } else {
         EXPECT_EQ(counted, (std::map<std::string, bool>{{"first", true}, {"second", false}, {"use", true}, {"final", true}}))
