@@ -288,6 +288,29 @@ TEST(HlslTranslator, ErrorsAreLocatedAtTheHlslLine) {
     for (const Diagnostic& e : d) EXPECT_EQ(e.element, "<RmHLSLShader>");
 }
 
+// Real files carry comments in their authors' scripts (rosmontisu/AMD_RenderMonkey's RedShader.rfx,
+// saved by RenderMonkey 1.82, opens its vertex shader with a Korean block comment): UTF-8 in
+// comments translates, and an error after such lines is still reported at its own line.
+TEST(HlslTranslator, CommentsInOtherScriptsTranslateAndKeepErrorLines) {
+    const std::string comment = lines({
+        "/*",
+        "\xEC\xA0\x84\xEC\x97\xAD\xEB\xB3\x80\xEC\x88\x98 : \xEC\x9B\x94\xEB\x93\x9C\xED\x96\x89\xEB\xA0\xAC",  // 전역변수 : 월드행렬
+        "*/",
+    });
+    const std::string vertex = comment + "\n" + vertexShader;
+    const std::string pixel = "// \xEB\xB9\xA8\xEA\xB0\x84\xEC\x83\x89 (red)\n" + pixelShader;
+    EXPECT_EQ(names(linkPair(vertex, pixel)), (std::vector<std::string>{"WorldViewProjection", "baseMap", "gain", "tint"}));
+
+    ShaderInput input;
+    input.code = comment + "\n" + lines({"float4 tint;", "float4 main() : COLOR {", "    return undefinedThing * tint;", "}"});
+    input.start = {"RedShader.rfx", 40};
+    Diagnostics d;
+    PreprocessedShader hlsl = preprocessShader(input, d);
+    EXPECT_FALSE(glslOf(translateHlslStage(hlsl, {ShaderStage::Fragment, "main", "ps_2_0"}, {"RedShader.rfx", 39}, "<RmHLSLShader>"), d));
+    ASSERT_FALSE(d.empty());
+    EXPECT_EQ(d[0].where.line, 46) << formatAll(d);  // the comment (3 lines and a blank one), then the code's 3rd line
+}
+
 TEST(HlslTranslator, MissingEntryPointIsAnError) {
     Diagnostics d;
     EXPECT_FALSE(translate(pixelShader, ShaderStage::Fragment, d, "PixelMain"));
