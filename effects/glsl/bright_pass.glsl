@@ -28,7 +28,7 @@ float brightestChannel(vec3 c) { return all(isFiniteVec3(c)) ? max(c.r, max(c.g,
 // divide or fuse differently: a few ulps); a negative or non-finite scale, or a NaN or infinite
 // channel (or one as large as BRIGHTEST_NOT_FINITE), answers true.
 bool brightPassMayPass(float brightest, float key, float adaptedLuminance) {
-    float scale = key / (adaptedLuminance + 0.001);
+    float scale = exposureScale(key, adaptedLuminance);
     if (!(brightest < BRIGHTEST_NOT_FINITE) || !isFiniteFloat(scale) || scale < 0.0) return true;
     return brightest * scale * 1.001 > BRIGHT_PASS_THRESHOLD;
 }

@@ -26,7 +26,7 @@ void main() {
     } else if (Tone_Map_Operator == 2) {
         // 0: the image's largest luminance, scaled like every other, maps to white.
         float peak = texelFetch(Measured, ivec2(0), 0).g;
-        float white = White_Point > 0.0 ? White_Point : peak * (Middle_Gray / (adapted + 0.001));
+        float white = White_Point > 0.0 ? White_Point : peak * exposureScale(Middle_Gray, adapted);
         c = toneMapPhotographic(c, Middle_Gray, adapted, white);
     }
     // Quarter and eighth texels cover 4x4 and 8x8 scene pixels exactly (see hdr_filter.glsl).

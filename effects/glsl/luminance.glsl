@@ -10,7 +10,8 @@ float luminance(vec3 c) { return max(dot(c, LUMINANCE_WEIGHTS), 0.0); }
 // The reduction carries log(delta + Y) - log(delta) = log(1 + Y / delta) instead of log(delta + Y):
 // the same mean up to the constant log(delta), but never negative. The largest luminance travels
 // beside it the same way (log is monotonic, so the max of the logs is the log of the max). The
-// chain (r: mean, g: log of the peak) stays in rg32f whatever HDR_Encoding is: an absolute error e
+// chain (r: mean, g: log of the peak) stays in 32-bit floats (rg32f, or rgba32f with a third
+// statistic in b) whatever HDR_Encoding is: an absolute error e
 // of a log is a relative error e of Lavg or the peak, and the shared-exponent encodings would tie
 // the mean's error to the larger log of the peak (RGBE8: up to 2^-8 of ~16, 6%, per level).
 // It is read and written as plain floats: logLevel / storeLogLevel.
@@ -21,7 +22,7 @@ float peakFromLogLuminance(float m) { return LOG_DELTA * (exp(m) - 1.0); }
 // A texel of the chain (mean, log of the peak), and what a chain pass writes. A chain in rgba32f
 // may carry a third statistic in b (hdr_lighting: the brightest channel, hdr_lum_initial.frag),
 // the largest over the footprint like the peak.
-vec2 logLevel(sampler2D level, ivec2 texel) { return texelFetch(level, texel, 0).rg; }
+vec3 logLevel(sampler2D level, ivec2 texel) { return texelFetch(level, texel, 0).rgb; }
 vec4 storeLogLevel(float mean, float logPeak) { return vec4(mean, logPeak, 0.0, 1.0); }
 vec4 storeLogLevel(float mean, float logPeak, float largest) { return vec4(mean, logPeak, largest, 1.0); }
 
@@ -44,7 +45,7 @@ vec3 reduceLogLuminance(sampler2D finer, ivec2 k, ivec2 quarterSize) {
             ivec2 span = footprintEnd(child, finerSize, quarterSize) - footprintStart(child, finerSize, quarterSize);
             float w = float(span.x * span.y);
             if (w == 0.0) continue;
-            vec3 v = texelFetch(finer, child, 0).rgb;
+            vec3 v = logLevel(finer, child);
             sum += w * v.x;
             weight += w;
             peak = max(peak, v.y);

@@ -105,13 +105,13 @@ void GlContentSkip::plan(const Workspace& ws, const std::vector<GpuPass*>& sched
         if (positions.empty()) continue;
         // The gate is counted in its place where a scheduled pass writes it before the effect.
         glm::bvec4 channels = e.sourceChannels;
-        if (GpuTarget* gate = e.gate.empty() ? nullptr : targets.find(e.gate))
-            for (size_t i = 0; i < positions.front(); ++i)
-                if (schedule[i]->target == gate) {
-                    source = gate;
-                    channels = e.gateChannels;
-                    active.gated = true;
-                }
+        GpuTarget* gate = e.gate.empty() ? nullptr : targets.find(e.gate);
+        if (gate && std::any_of(schedule.begin(), schedule.begin() + static_cast<std::ptrdiff_t>(positions.front()),
+                                [&](const GpuPass* p) { return p->target == gate; })) {
+            source = gate;
+            channels = e.gateChannels;
+            active.gated = true;
+        }
         // Asked for by name (an empty list, every target, is the editor's thumbnails): exact bits.
         const auto readBack = std::find_if(written.begin(), written.end(), [&](const std::string& t) {
             return std::find(outputs.begin(), outputs.end(), t) != outputs.end();

@@ -208,9 +208,11 @@ struct GlExecutor::Impl {
         gp.initializedUniforms = built.initializedUniforms;
         if (!bindProgram(gp, d)) return false;
         if (healthCheck) {
-            const int inputs = static_cast<int>(std::count_if(gp.samplers.begin(), gp.samplers.end(),
-                                                              [&](const SamplerSlot& slot) { return healthInputLabel(slot).has_value(); }));
-            if (healthCheck->countsWhileDrawing(sharesItsTargetWithANeighbour(gp), inputs)) countOwnWrites(gp, built);
+            std::vector<std::string> inputs;  // the samplers its counting version would record
+            for (const SamplerSlot& slot : gp.samplers)
+                if (healthInputLabel(slot)) inputs.push_back(slot.sampler->uniform);
+            if (healthCheck->countsWhileDrawing(sharesItsTargetWithANeighbour(gp), static_cast<int>(inputs.size())))
+                countOwnWrites(gp, built, std::move(inputs));
         }
         return true;
     }
@@ -226,12 +228,10 @@ struct GlExecutor::Impl {
         return (it != runnable.begin() && writesIt(*std::prev(it))) || (std::next(it) != runnable.end() && writesIt(*std::next(it)));
     }
 
-    // The pass's program made to count what it writes (gl/HealthInstrumentation.h); where it
-    // cannot, it stays as built and the check inspects its target after it ran.
-    void countOwnWrites(GpuPass& gp, const PassGlProgram& built) {
-        std::vector<std::string> inputs;
-        for (const SamplerSlot& slot : gp.samplers)
-            if (healthInputLabel(slot)) inputs.push_back(slot.sampler->uniform);
+    // The pass's program made to count what it writes, recording the samplers `inputs`
+    // (gl/HealthInstrumentation.h); where it cannot, it stays as built and the check inspects its
+    // target after it ran.
+    void countOwnWrites(GpuPass& gp, const PassGlProgram& built, std::vector<std::string> inputs) {
         auto code = instrumentForHealth(*gp.pass, built.fragmentCode, gp.program.get(), inputs, healthCheck->bufferBinding());
         if (!code) {
             gp.whyNotCounting = code.error();

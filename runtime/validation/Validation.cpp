@@ -225,16 +225,22 @@ private:
         if (!samplesSource)
             error(e.where, element, "no pass of the effect reads its source '" + e.source +
                                         "', directly or through what passes before it make of it");
-        // The probe reads the source before the effect's first pass: every write must come before.
+        checkCompleteBeforeEffect(e, element, e.source, "source");
+    }
+
+    // Content skip counts `target` (the effect's source or gate) before the effect's first pass:
+    // every write of it must come before.
+    void checkCompleteBeforeEffect(const Effect& e, const std::string& element, const std::string& target, const std::string& role) {
+        auto inEffect = [&](const Pass& p) { return std::find(e.passes.begin(), e.passes.end(), p.name) != e.passes.end(); };
         const Pass* first = nullptr;
         for (const Pass& p : ws_.passes) {
             if (!p.enabled) continue;
             if (!first && inEffect(p)) first = &p;
-            if (first && !inEffect(p) && ws_.passTargetName(p) == e.source) {
-                error(e.where, element, "pass '" + p.name + "' writes the source '" + e.source + "' after pass '" +
+            if (first && !inEffect(p) && ws_.passTargetName(p) == target) {
+                error(e.where, element, "pass '" + p.name + "' writes the " + role + " '" + target + "' after pass '" +
                                             first->name + "' of the effect: whether the effect contributes is decided "
-                                            "before its first pass, so the source must be complete by then");
-                break;
+                                            "before its first pass, so the " + role + " must be complete by then");
+                return;
             }
         }
     }
@@ -251,28 +257,21 @@ private:
             error(e.where, element, "gate '" + e.gate + "' is the source itself: leave 'gate' out to count the source");
             return;
         }
-        auto inEffect = [&](const Pass& p) { return std::find(e.passes.begin(), e.passes.end(), p.name) != e.passes.end(); };
-        const Pass* first = nullptr;
         bool written = false;
         for (const Pass& p : ws_.passes) {
-            if (!p.enabled || ws_.passTargetName(p) != e.gate) {
-                if (p.enabled && !first && inEffect(p)) first = &p;
-                continue;
-            }
-            if (inEffect(p)) {
+            if (!p.enabled || ws_.passTargetName(p) != e.gate) continue;
+            if (std::find(e.passes.begin(), e.passes.end(), p.name) != e.passes.end()) {
                 error(e.where, element, "gate '" + e.gate + "' is written by pass '" + p.name +
                                             "' of the effect itself; the gate is written before the effect, by passes outside it");
                 return;
             }
-            if (first) {
-                error(e.where, element, "pass '" + p.name + "' writes the gate '" + e.gate + "' after pass '" + first->name +
-                                            "' of the effect: whether the effect contributes is decided before its first pass, "
-                                            "so the gate must be complete by then");
-                return;
-            }
             written = true;
         }
-        if (!written) error(e.where, element, "no pass writes the gate '" + e.gate + "' before the effect");
+        if (!written) {
+            error(e.where, element, "no pass writes the gate '" + e.gate + "' before the effect");
+            return;
+        }
+        checkCompleteBeforeEffect(e, element, e.gate, "gate");
     }
 
     // An unknown semantic is no error: RenderMonkey knew a few rmfx does not fill.

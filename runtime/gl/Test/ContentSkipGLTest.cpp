@@ -500,8 +500,7 @@ TEST_P(HdrLightingGateGLTest, ACornerPixelJustAboveTheBrightPassKeepsBloomAndSta
         "hdr_lighting.xml", {{"HDR_Encoding", std::to_string(static_cast<int>(GetParam()))}, {"Light_Adaptation", "false"}});
     ASSERT_TRUE(ws);
     const int w = 37, h = 23;
-    Image dim = blankHdrImage(w, h);
-    for (size_t i = 0; i < dim.pixels.size(); ++i) dim.pixels[i] = i % 4 == 3 ? 1.0f : 0.03f;
+    const Image dim = dimAndBright(w, h).dim;
     ScratchDir dir;
     ASSERT_TRUE(writeImage(dir / "dim.exr", dim));
     Result<SuppliedInputs> supplied = supplyInputs(*ws, {parseInputArgument((dir / "dim.exr").string())}, std::nullopt);
