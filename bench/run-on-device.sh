@@ -35,7 +35,7 @@ for d in /usr/local/nvidia/lib64 /usr/local/nvidia/lib; do [ -d "$d" ] && LD_LIB
 # The GL tests were built here with /work/main as their source folder and /work/main/build as the build.
 if [ "$root" != /work/main ]; then mkdir -p /work && ln -sfn "$root" /work/main; fi
 mkdir -p build/tests
-for p in rmfx rmfx-hlsl-worker rmfx_bench_effects rmfx_bench_health_check rmfx_bench_content_skip rmfx_bench_sequence; do
+for p in rmfx rmfx-hlsl-worker rmfx_bench_effects rmfx_bench_health_check rmfx_bench_content_skip rmfx_bench_sequence rmfx_bench_storage_writes; do
   [ -f "$bundle/bin/$p" ] && cp "$bundle/bin/$p" build/
 done
 cp "$bundle/bin/rmfx_gl_tests" build/tests/

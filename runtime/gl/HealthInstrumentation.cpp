@@ -1,6 +1,8 @@
 #include "gl/HealthInstrumentation.h"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 
 #include <epoxy/gl.h>
@@ -81,6 +83,7 @@ uniform int rmfx_health_Channels;   // the target's; 0: it is not inspected
 uniform bool rmfx_health_Negatives;
 uniform float rmfx_health_Smallest; // a negative value of no larger magnitude is stored as -0
 uniform vec4 rmfx_health_Largest;   // at or above: stored at the format's largest or beyond; 0: none
+uniform uvec4 rmfx_health_Below;    // a channel whose bits are below is none of the kinds (screenBelow)
 void rmfx_health_storeVec4(int at, vec4 v) { rmfx_health_quads[at >> 2] = floatBitsToInt(v); }  // at: a multiple of 4
 // Counts the kinds in `kinds` (bit k: kind k) at `pixel`; a fragment that lowers a kind's first
 // pixel takes a record slot for it, and writes its value and inputs there.
@@ -107,10 +110,13 @@ void rmfx_health_count(int rmfx_health_kinds, int rmfx_health_pixel, vec4 rmfx_h
              ", clamp(ivec2(rmfx_health_centre * vec2(rmfx_health_size)), ivec2(0), rmfx_health_size - 1), 0));\n";
     s += "    }\n}\nvoid main() {\n    " + std::string(kRenamedMain) + "();\n    vec4 rmfx_health_written = " + widened(output) + ";\n";
     s += "    int rmfx_health_channels = min(rmfx_health_Channels, " + std::to_string(output.components) + ");\n";
-    // The kinds of all channels at once, on the bits (isnan and isinf may be compiled away), with
-    // no loop or branch: per channel inspected, NaN (1), +Inf (2), -Inf (4), and of finite values
-    // negative (8) and at the format's largest (16).
+    // One comparison per channel screens a value (screenBelow); only a value it lets through gets
+    // its kinds, all channels at once, on the bits (isnan and isinf may be compiled away), with no
+    // loop: per channel inspected, NaN (1), +Inf (2), -Inf (4), and of finite values negative (8)
+    // and at the format's largest (16). Working out the kinds of every value cost an NVIDIA H100
+    // 16 % of hdr_lighting's frame, against 5 % for a cheaper test in its place (docs/performance.md).
     s += R"(    uvec4 rmfx_health_bits = floatBitsToUint(rmfx_health_written);
+    if (!any(greaterThanEqual(rmfx_health_bits, rmfx_health_Below))) return;
     uvec4 rmfx_health_in = uvec4(lessThan(ivec4(0, 1, 2, 3), ivec4(rmfx_health_channels)));
     uvec4 rmfx_health_special = rmfx_health_in & uvec4(equal(rmfx_health_bits & 0x7F800000u, uvec4(0x7F800000u)));
     uvec4 rmfx_health_fraction = uvec4(notEqual(rmfx_health_bits & 0x007FFFFFu, uvec4(0u)));
@@ -147,6 +153,19 @@ glm::vec4 largestWritten(TargetFormat format) {
         at[c] = std::nextafter(largest - step / 2.0f, largest);
     }
     return at;
+}
+
+// Per channel, the smallest bit pattern that may be one of the kinds: as unsigned integers the bits
+// of non-negative floats are in their order, and every negative value, -0 included, and every NaN
+// and infinity lie at or above 0x7F800000. So a channel's bits below this are none of the kinds;
+// at or above, the kinds are worked out exactly. A channel not inspected gets the largest pattern:
+// only that one (a NaN) goes on to the exact test, which leaves such a channel out.
+glm::uvec4 screenBelow(const FormatHealthLimits& limits, glm::vec4 largest) {
+    glm::uvec4 below(0xFFFFFFFFu);
+    if (!limits.inspected) return below;
+    for (int c = 0; c < limits.channels && c < 4; ++c)
+        below[c] = largest[c] > 0.0f ? std::bit_cast<std::uint32_t>(largest[c]) : 0x7F800000u;
+    return below;
 }
 
 }  // namespace
@@ -187,8 +206,9 @@ HealthUniforms findHealthUniforms(unsigned program) {
     u.negatives = glGetUniformLocation(program, "rmfx_health_Negatives");
     u.smallest = glGetUniformLocation(program, "rmfx_health_Smallest");
     u.largest = glGetUniformLocation(program, "rmfx_health_Largest");
+    u.below = glGetUniformLocation(program, "rmfx_health_Below");
     // The compiler drops what the added main() does not use: a target's channels always are.
-    u.found = u.slot >= 0 && u.size >= 0 && u.channels >= 0;
+    u.found = u.slot >= 0 && u.size >= 0 && u.channels >= 0 && u.below >= 0;
     return u;
 }
 
@@ -207,6 +227,8 @@ void setHealthUniforms(const HealthUniforms& u, size_t position, size_t capacity
     // Half floats round a magnitude up to 2^-25 (half their smallest subnormal) to zero.
     glUniform1f(u.smallest, half ? std::ldexp(1.0f, -25) : 0.0f);
     glUniform4f(u.largest, largest.x, largest.y, largest.z, largest.w);
+    const glm::uvec4 below = screenBelow(limits, largest);
+    glUniform4ui(u.below, below.x, below.y, below.z, below.w);
 }
 
 }  // namespace rmfx

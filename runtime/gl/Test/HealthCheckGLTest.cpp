@@ -389,6 +389,8 @@ void main() {
 // Counting while drawing sees the value the shader wrote, before the format rounds it: a half
 // target given 70000 (stored as 65504 or as +Inf, by the GPU) and 65490 (rounds to 65504) is at
 // its largest there; 65480 rounds to 65472 and is not; -1e-8 rounds to -0 and is not negative.
+// At the edge, 65488 (halfway, rounds to the even 65472) is not and the float after it is: the
+// screen before the kinds (HealthInstrumentation's screenBelow) lets that float through.
 TEST_P(HealthCheckGLTest, AHalfTargetIsJudgedByWhatItsFormatMakesOfTheWrittenValue) {
     if (GetParam() != HealthCheckMethod::WhileDrawing) GTEST_SKIP() << "the stored value is what after-pass sees";
     const std::string xml = R"(<workspace version="1" name="half">
@@ -397,8 +399,9 @@ TEST_P(HealthCheckGLTest, AHalfTargetIsJudgedByWhatItsFormatMakesOfTheWrittenVal
 #version 450 core
 out vec4 fragColor;
 void main() {
-    float x = gl_FragCoord.x < 1.0 ? 70000.0 : gl_FragCoord.x < 2.0 ? 65490.0 : 65480.0;
-    fragColor = vec4(x, -1e-8, 0.0, 1.0);
+    float x = gl_FragCoord.x < 1.0 ? 70000.0 : gl_FragCoord.x < 2.0 ? 65490.0 : gl_FragCoord.x < 3.0 ? 65480.0
+            : gl_FragCoord.x < 4.0 ? uintBitsToFloat(0x477FD000u) : uintBitsToFloat(0x477FD001u);
+    fragColor = vec4(x, gl_FragCoord.x < 3.0 ? -1e-8 : 0.0, 0.0, 1.0);  // the edge alone in its pixels
 }
 ]]></shader></pass>
   <pass name="final"><sampler name="s" target="h"/><shader stage="fragment"><![CDATA[
@@ -409,12 +412,12 @@ void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0) * 0.0; }
 ]]></shader></pass>
 </workspace>
 )";
-    GlRun run = runChecked(workspaceFromText(xml), {3, 2}, 1, GetParam());
+    GlRun run = runChecked(workspaceFromText(xml), {5, 2}, 1, GetParam());
     ASSERT_TRUE(run.exec) ;
     const FrameHealth* health = run.exec->frameHealth();
     ASSERT_TRUE(health);
     EXPECT_TRUE(health->passes[0].countedWhileDrawing);
-    EXPECT_EQ(health->passes[0].counts, (std::array<long long, healthKindCount>{0, 0, 0, 0, 4}));
+    EXPECT_EQ(health->passes[0].counts, (std::array<long long, healthKindCount>{0, 0, 0, 0, 3 * 2}));
     ASSERT_EQ(health->findings.size(), 1u);
     EXPECT_EQ(health->findings[0].pixel, glm::ivec2(0, 1));
     EXPECT_EQ(health->findings[0].value.x, 70000.0f);
