@@ -84,31 +84,52 @@ uniform bool rmfx_health_Negatives;
 uniform float rmfx_health_Smallest; // a negative value of no larger magnitude is stored as -0
 uniform vec4 rmfx_health_Largest;   // at or above: stored at the format's largest or beyond; 0: none
 uniform uvec4 rmfx_health_Below;    // a channel whose bits are below is none of the kinds (screenBelow)
-void rmfx_health_storeVec4(int at, vec4 v) { rmfx_health_quads[at >> 2] = floatBitsToInt(v); }  // at: a multiple of 4
-// Counts the kinds in `kinds` (bit k: kind k) at `pixel`; a fragment that lowers a kind's first
-// pixel takes a record slot for it, and writes its value and inputs there.
-void rmfx_health_count(int rmfx_health_kinds, int rmfx_health_pixel, vec4 rmfx_health_value) {
+// An input's texel at the fragment's centre, the texel its sampler would fetch there.
+vec4 rmfx_health_input(int rmfx_health_which) {
     vec2 rmfx_health_centre = (floor(gl_FragCoord.xy) + 0.5) / vec2(rmfx_health_Size);
     ivec2 rmfx_health_size;
-    for (int rmfx_health_kind = 0; rmfx_health_kind < )" + std::to_string(healthKindCount) + R"(; ++rmfx_health_kind) {
-        if ((rmfx_health_kinds & (1 << rmfx_health_kind)) == 0) continue;
-        int rmfx_health_entry = (rmfx_health_Slot + rmfx_health_kind) * )" + std::to_string(kHealthEntryWords) + R"(;
-        atomicAdd(rmfx_health_words[rmfx_health_entry], 1);
-        if (atomicMin(rmfx_health_words[rmfx_health_entry + 1], rmfx_health_pixel) <= rmfx_health_pixel) continue;
-        int rmfx_health_slot = atomicAdd(rmfx_health_words[rmfx_health_entry + 2], 1);
-        if (rmfx_health_slot >= )" + std::to_string(kHealthRecordSlots) + R"() continue;
-        int rmfx_health_record = rmfx_health_Records + ((rmfx_health_Slot + rmfx_health_kind) * )" +
-         std::to_string(kHealthRecordSlots) + " + rmfx_health_slot) * " + std::to_string(kHealthRecordWords) + R"(;
-        rmfx_health_words[rmfx_health_record] = rmfx_health_pixel;
-        rmfx_health_storeVec4(rmfx_health_record + 4, rmfx_health_value);
 )";
-    // Each input fetched and stored at once, never held: an array of the inputs' texels kept every
-    // fragment's registers for a path that almost none takes.
     for (size_t i = 0; i < inputs.size(); ++i)
-        s += "        rmfx_health_size = textureSize(" + inputs[i] + ", 0);\n        rmfx_health_storeVec4(rmfx_health_record + " +
-             std::to_string(8 + 4 * i) + ", texelFetch(" + inputs[i] +
-             ", clamp(ivec2(rmfx_health_centre * vec2(rmfx_health_size)), ivec2(0), rmfx_health_size - 1), 0));\n";
-    s += "    }\n}\nvoid main() {\n    " + std::string(kRenamedMain) + "();\n    vec4 rmfx_health_written = " + widened(output) + ";\n";
+        s += "    if (rmfx_health_which == " + std::to_string(i) + ") {\n        rmfx_health_size = textureSize(" + inputs[i] +
+             ", 0);\n        return texelFetch(" + inputs[i] +
+             ", clamp(ivec2(rmfx_health_centre * vec2(rmfx_health_size)), ivec2(0), rmfx_health_size - 1), 0);\n    }\n";
+    s += R"(    return vec4(0.0);
+}
+// Counts the kinds in `kinds` (bit k: kind k) at `pixel`; a fragment that lowers a kind's first
+// pixel takes a record slot for it, and writes its pixel, value and inputs there, a quad a step.
+// Each memory operation is written once, and each step goes through all three: a software
+// rasteriser runs every one written in the function for every group of fragments, found or not
+// (docs/performance.md).
+void rmfx_health_count(int rmfx_health_kinds, int rmfx_health_pixel, vec4 rmfx_health_value) {
+    int rmfx_health_left = rmfx_health_kinds;  // kinds not counted yet
+    int rmfx_health_kind = 0;
+    int rmfx_health_step = 0;  // 0: count the next kind; 1: take a record slot; 2 + q: store the record's quad q
+    int rmfx_health_record = 0;
+    while (rmfx_health_left != 0 || rmfx_health_step != 0) {
+        if (rmfx_health_step == 0) {
+            rmfx_health_kind = findLSB(rmfx_health_left);
+            rmfx_health_left &= rmfx_health_left - 1;
+        }
+        int rmfx_health_entry = (rmfx_health_Slot + rmfx_health_kind) * )" + std::to_string(kHealthEntryWords) + R"(;
+        int rmfx_health_added = 0;
+        if (rmfx_health_step < 2) rmfx_health_added = atomicAdd(rmfx_health_words[rmfx_health_entry + 2 * rmfx_health_step], 1);
+        if (rmfx_health_step == 0) {
+            rmfx_health_step = atomicMin(rmfx_health_words[rmfx_health_entry + 1], rmfx_health_pixel) > rmfx_health_pixel ? 1 : 0;
+        } else if (rmfx_health_step == 1) {
+            rmfx_health_record = rmfx_health_Records + ((rmfx_health_Slot + rmfx_health_kind) * )" +
+         std::to_string(kHealthRecordSlots) + " + rmfx_health_added) * " + std::to_string(kHealthRecordWords) + R"(;
+            rmfx_health_step = rmfx_health_added < )" + std::to_string(kHealthRecordSlots) + R"( ? 2 : 0;
+        } else {
+            int rmfx_health_quad = rmfx_health_step - 2;
+            ivec4 rmfx_health_stored = rmfx_health_quad == 0 ? ivec4(rmfx_health_pixel, 0, 0, 0)
+                : floatBitsToInt(rmfx_health_quad == 1 ? rmfx_health_value : rmfx_health_input(rmfx_health_quad - 2));
+            rmfx_health_quads[(rmfx_health_record >> 2) + rmfx_health_quad] = rmfx_health_stored;
+            rmfx_health_step = rmfx_health_quad < )" + std::to_string(1 + inputs.size()) + R"( ? rmfx_health_step + 1 : 0;
+        }
+    }
+}
+)";
+    s += "void main() {\n    " + std::string(kRenamedMain) + "();\n    vec4 rmfx_health_written = " + widened(output) + ";\n";
     s += "    int rmfx_health_channels = min(rmfx_health_Channels, " + std::to_string(output.components) + ");\n";
     // One comparison per channel screens a value (screenBelow); only a value it lets through gets
     // its kinds, all channels at once, on the bits (isnan and isinf may be compiled away), with no
