@@ -93,6 +93,9 @@ vec4 rmfx_health_input(int rmfx_health_which) {
         s += "    if (rmfx_health_which == " + std::to_string(i) + ") {\n        rmfx_health_size = textureSize(" + inputs[i] +
              ", 0);\n        return texelFetch(" + inputs[i] +
              ", clamp(ivec2(rmfx_health_centre * vec2(rmfx_health_size)), ivec2(0), rmfx_health_size - 1), 0);\n    }\n";
+    std::string lowestKind = std::to_string(healthKindCount - 1);
+    for (int k = healthKindCount - 2; k >= 0; --k)
+        lowestKind = "rmfx_health_lowest == " + std::to_string(1 << k) + " ? " + std::to_string(k) + " : " + lowestKind;
     s += R"(    return vec4(0.0);
 }
 // Counts the kinds in `kinds` (bit k: kind k) at `pixel`; a fragment that lowers a kind's first
@@ -106,9 +109,10 @@ void rmfx_health_count(int rmfx_health_kinds, int rmfx_health_pixel, vec4 rmfx_h
     int rmfx_health_step = 0;  // 0: count the next kind; 1: take a record slot; 2 + q: store the record's quad q
     int rmfx_health_record = 0;
     while (rmfx_health_left != 0 || rmfx_health_step != 0) {
-        if (rmfx_health_step == 0) {
-            rmfx_health_kind = findLSB(rmfx_health_left);
-            rmfx_health_left &= rmfx_health_left - 1;
+        if (rmfx_health_step == 0) {  // the lowest kind left (findLSB is GLSL 4.00)
+            int rmfx_health_lowest = rmfx_health_left & -rmfx_health_left;
+            rmfx_health_kind = )" + lowestKind + R"(;
+            rmfx_health_left ^= rmfx_health_lowest;
         }
         int rmfx_health_entry = (rmfx_health_Slot + rmfx_health_kind) * )" + std::to_string(kHealthEntryWords) + R"(;
         int rmfx_health_added = 0;

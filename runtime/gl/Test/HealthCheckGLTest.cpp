@@ -423,6 +423,53 @@ void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0) * 0.0; }
     EXPECT_EQ(health->findings[0].value.x, 70000.0f);
 }
 
+// GLSL 3.30, the oldest the counting code is added to, has no findLSB: the counting version of
+// such a pass compiles and counts each kind of a pixel that holds four (NaN, -Inf, a negative and
+// a value at half's largest), each with that pixel and the pass's input there.
+TEST_P(HealthCheckGLTest, AGlsl330PassCountsEachKindOfAPixelHoldingFour) {
+    if (GetParam() != HealthCheckMethod::WhileDrawing) GTEST_SKIP() << "counting while drawing only";
+    const std::string xml = R"(<workspace version="1" name="old">
+  <target name="ramp" format="rgba32f" scale="1"/>
+  <target name="h" format="rgba16f" scale="1"/>
+  <pass name="ramp" target="ramp"><shader stage="fragment"><![CDATA[
+#version 330 core
+out vec4 fragColor;
+void main() { fragColor = vec4(gl_FragCoord.xy, 0.0, 1.0); }
+]]></shader></pass>
+  <pass name="four" target="h"><sampler name="s" target="ramp" filter="nearest"/><shader stage="fragment"><![CDATA[
+#version 330 core
+uniform sampler2D s;
+out vec4 fragColor;
+void main() {
+    vec4 r = texture(s, gl_FragCoord.xy / vec2(textureSize(s, 0)));
+    fragColor = r.x == 1.5 && r.y == 0.5 ? vec4(uintBitsToFloat(0x7FC00000u), uintBitsToFloat(0xFF800000u), -2.0, 70000.0)
+                                         : vec4(1.0);
+}
+]]></shader></pass>
+  <pass name="final"><sampler name="t" target="h"/><shader stage="fragment"><![CDATA[
+#version 330 core
+uniform sampler2D t;
+out vec4 fragColor;
+void main() { fragColor = vec4(texelFetch(t, ivec2(gl_FragCoord.xy), 0).a * 0.0); }
+]]></shader></pass>
+</workspace>
+)";
+    GlRun run = runChecked(workspaceFromText(xml), {3, 2}, 1, GetParam());
+    ASSERT_TRUE(run.exec);
+    const FrameHealth* health = run.exec->frameHealth();
+    ASSERT_TRUE(health);
+    ASSERT_EQ(health->passes.size(), 3u);
+    EXPECT_TRUE(health->passes[1].countedWhileDrawing) << health->passes[1].whyNotWhileDrawing;
+    EXPECT_EQ(health->passes[1].counts, (std::array<long long, healthKindCount>{1, 0, 1, 1, 1}));
+    ASSERT_EQ(health->findings.size(), 4u);
+    for (const HealthFinding& f : health->findings) {
+        EXPECT_EQ(f.pass, "four");
+        EXPECT_EQ(f.pixel, glm::ivec2(1, 1)) << "GL's row 0 is the bottom one of two";
+        ASSERT_EQ(f.inputs.size(), 1u);
+        EXPECT_EQ(f.inputs[0].second, glm::vec4(1.5f, 0.5f, 0.0f, 1.0f));
+    }
+}
+
 // Every pixel of a 256x256 target NaN: the first pixel's value and inputs are kept although
 // thousands of fragments race to lower it (counted from the top, llvmpipe used up every record
 // slot: gl/HealthBuffer.h).
