@@ -98,7 +98,7 @@ void GlContentSkip::plan(const Workspace& ws, const std::vector<GpuPass*>& sched
         std::set<std::string> written;
         for (size_t i = 0; i < schedule.size(); ++i) {
             const std::string& pass = schedule[i]->pass->name;
-            if (std::find(e.passes.begin(), e.passes.end(), pass) == e.passes.end()) continue;
+            if (!e.hasPass(pass)) continue;
             positions.push_back(i);
             written.insert(schedule[i]->target->name);
         }

@@ -37,10 +37,15 @@ const Effect* Workspace::findEffect(std::string_view name) const {
     return nullptr;
 }
 
+bool Effect::hasPass(std::string_view passName) const {
+    for (const std::string& p : passes)
+        if (p == passName) return true;
+    return false;
+}
+
 const Effect* Workspace::effectOfPass(std::string_view passName) const {
     for (const Effect& e : effects)
-        for (const std::string& p : e.passes)
-            if (p == passName) return &e;
+        if (e.hasPass(passName)) return &e;
     return nullptr;
 }
 

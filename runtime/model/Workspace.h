@@ -301,6 +301,8 @@ struct Effect {
     glm::bvec4 gateChannels{true, true, true, false};
     std::string description;
     SourceLocation where;
+
+    bool hasPass(std::string_view passName) const;
 };
 
 struct Output {

@@ -180,7 +180,6 @@ private:
             error(e.where, element, "source: no render target '" + e.source + "' (" + ws_.describeTargets() + ")");
             return;
         }
-        auto inEffect = [&](const Pass& p) { return std::find(e.passes.begin(), e.passes.end(), p.name) != e.passes.end(); };
         std::set<std::string> previousFrame;  // targets some pass reads as the last frame left them
         for (const Pass& p : ws_.passes)
             for (const Sampler& s : p.samplers)
@@ -189,13 +188,13 @@ private:
         // (hdr_lighting's star_source, a blur of its source 'bright').
         std::set<std::string> fromSource{e.source};
         for (const Pass& p : ws_.passes) {
-            if (!p.enabled || inEffect(p)) continue;
+            if (!p.enabled || e.hasPass(p.name)) continue;
             for (const Sampler& s : p.samplers)
                 if (!s.previousFrame && fromSource.count(s.target)) fromSource.insert(ws_.passTargetName(p));
         }
         bool samplesSource = false;
         for (const Pass& p : ws_.passes) {
-            if (!p.enabled || !inEffect(p)) continue;
+            if (!p.enabled || !e.hasPass(p.name)) continue;
             const std::string written = ws_.passTargetName(p);
             if (written == e.source) {
                 error(e.where, element, "source '" + e.source + "' is written by pass '" + p.name +
@@ -215,7 +214,7 @@ private:
             // What it hands to later passes is cleared to zero when it is skipped: that is only
             // what running it gives when the effect alone writes the target.
             for (const Pass& other : ws_.passes)
-                if (other.enabled && !inEffect(other) && ws_.passTargetName(other) == written) {
+                if (other.enabled && !e.hasPass(other.name) && ws_.passTargetName(other) == written) {
                     error(e.where, element, "pass '" + p.name + "' writes '" + written + "', which pass '" + other.name +
                                                 "' outside the effect writes too: a skipped effect's targets are cleared "
                                                 "to zero, which would lose what '" + other.name + "' wrote");
@@ -231,12 +230,11 @@ private:
     // Content skip counts `target` (the effect's source or gate) before the effect's first pass:
     // every write of it must come before.
     void checkCompleteBeforeEffect(const Effect& e, const std::string& element, const std::string& target, const std::string& role) {
-        auto inEffect = [&](const Pass& p) { return std::find(e.passes.begin(), e.passes.end(), p.name) != e.passes.end(); };
         const Pass* first = nullptr;
         for (const Pass& p : ws_.passes) {
             if (!p.enabled) continue;
-            if (!first && inEffect(p)) first = &p;
-            if (first && !inEffect(p) && ws_.passTargetName(p) == target) {
+            if (!first && e.hasPass(p.name)) first = &p;
+            if (first && !e.hasPass(p.name) && ws_.passTargetName(p) == target) {
                 error(e.where, element, "pass '" + p.name + "' writes the " + role + " '" + target + "' after pass '" +
                                             first->name + "' of the effect: whether the effect contributes is decided "
                                             "before its first pass, so the " + role + " must be complete by then");
@@ -260,7 +258,7 @@ private:
         bool written = false;
         for (const Pass& p : ws_.passes) {
             if (!p.enabled || ws_.passTargetName(p) != e.gate) continue;
-            if (std::find(e.passes.begin(), e.passes.end(), p.name) != e.passes.end()) {
+            if (e.hasPass(p.name)) {
                 error(e.where, element, "gate '" + e.gate + "' is written by pass '" + p.name +
                                             "' of the effect itself; the gate is written before the effect, by passes outside it");
                 return;
