@@ -156,7 +156,7 @@ std::vector<size_t> matchingBrackets(const std::string& code) {
 // itself (a parameter, or a local: a name right after a word that can be a type), which hide a
 // global of that name there.
 struct BodyWords {
-    std::map<std::string, std::vector<size_t>, std::less<>> uses;
+    std::vector<std::pair<std::string_view, size_t>> uses;  // in order, viewing the code
     std::set<std::string, std::less<>> declared;
 };
 
@@ -177,7 +177,7 @@ BodyWords bodyWords(const std::string& code, const FunctionBody& body) {
         size_t j = i;
         while (j < body.close && isIdentifierChar(code[j])) ++j;
         const std::string_view word(code.data() + i, j - i);
-        out.uses[std::string(word)].push_back(i);
+        out.uses.emplace_back(word, i);
         if (previousEnd != std::string::npos && skipSpace(code, previousEnd, i) == i && !notTypes.count(previous) &&
             !std::isdigit(static_cast<unsigned char>(previous[0])))
             out.declared.insert(std::string(word));
@@ -258,25 +258,25 @@ HlslWritableGlobals giveWrittenGlobalsACopy(const std::string& source, const std
     if (!entry) return out;
 
     // Every step is linear in the code (or n log n): a file of thousands of globals and functions
-    // once took the fuzzer's 10 s, one search of the whole code per global and function.
-    std::vector<BodyWords> words;
-    words.reserve(bodies.size());
-    for (const FunctionBody& b : bodies) words.push_back(bodyWords(code, b));
+    // once took the fuzzer's 10 s, one search of the whole code per global and function, and
+    // 26 s, a lookup per global and function body.
     const std::vector<size_t> brackets = matchingBrackets(code);
     Assignments assignments(code, brackets);
-    // Per name, its uses in the bodies that do not declare one of their own, in order: looked up
-    // once per global, not once per global and body (thousands of each took the fuzzer 26 s).
+    // Per name, its uses in the bodies that do not declare one of their own, in order.
     struct Use {
         size_t at;
         size_t bodyClose;
     };
     std::map<std::string, std::vector<Use>, std::less<>> usesOutsideDeclarations;
-    for (size_t b = 0; b < bodies.size(); ++b)
-        for (const auto& [name, offsets] : words[b].uses)
-            if (!words[b].declared.count(name)) {
-                std::vector<Use>& uses = usesOutsideDeclarations[name];
-                for (size_t at : offsets) uses.push_back({at, bodies[b].close});
-            }
+    for (const FunctionBody& b : bodies) {
+        const BodyWords words = bodyWords(code, b);
+        for (const auto& [name, at] : words.uses) {
+            if (words.declared.count(name)) continue;
+            auto uses = usesOutsideDeclarations.find(name);
+            if (uses == usesOutsideDeclarations.end()) uses = usesOutsideDeclarations.emplace(std::string(name), std::vector<Use>{}).first;
+            uses->second.push_back({at, b.close});
+        }
+    }
     auto usesOf = [&](const std::string& name) -> const std::vector<Use>* {
         auto found = usesOutsideDeclarations.find(name);
         return found == usesOutsideDeclarations.end() ? nullptr : &found->second;
