@@ -6,14 +6,17 @@
 //   - no target holds a NaN or Inf;
 //   - every texel of the scene (the first target written from the sky) that the bad texels cannot
 //     reach is bit-identical to the render with those texels replaced by 0 (which texels they
-//     reach is found by a third render with them replaced by 1e30: a texel that differs there is
+//     reach is found by a third render with them replaced by +Inf: a texel that differs there is
 //     reachable), and they reach at most 5 % of it (the bilinear and mip footprints of 1 texel in
-//     1024), but some of it (they are in view);
+//     1024), but some of it (they are in view). The marker is +Inf, not a large finite value,
+//     because a texel in a filter's footprint at weight 0 still carries a NaN or an infinity on
+//     some GPUs (0 * Inf is NaN; an NVIDIA H200 reached 2 colour values a 1e30 marker did not),
+//     and must then count as reached;
 //   - every texel of every target lies between 0 and the zero-texel render's value (+1e-6
 //     relative for the order of float sums): a filtered sample that touched a bad texel becomes 0
 //     (NaN, ±Inf) or smaller (a negative weight), never larger, and every pass after it is
 //     monotonic (non-negative weights, thresholds that keep or drop, clamps). Downstream blurs
-//     spread the 1e30 markers too far for a mask, so only this bound is checked there.
+//     spread the markers too far for a mask, so only this bound is checked there.
 // auto_exposure divides by the average, which the bad texels lower, so only its scene follows the
 // rules above; its other targets must be finite.
 
@@ -90,7 +93,7 @@ TEST_F(SkyTextureHardCasesGLTest, BadTexelsAreSanitisedInTheFirstPassThatReadsTh
     const auto badFile = dir / "sky_bad.exr", zeroFile = dir / "sky_zero.exr", markerFile = dir / "sky_marker.exr";
     ASSERT_TRUE(writeImage(badFile, withGridTexels(sky.value(), badValue)).ok());
     ASSERT_TRUE(writeImage(zeroFile, withGridTexels(sky.value(), [](int, int) { return 0.0f; })).ok());
-    ASSERT_TRUE(writeImage(markerFile, withGridTexels(sky.value(), [](int, int) { return 1e30f; })).ok());
+    ASSERT_TRUE(writeImage(markerFile, withGridTexels(sky.value(), [](int, int) { return std::numeric_limits<float>::infinity(); })).ok());
     {  // the file keeps the bad values (float EXR)
         auto back = readImage(badFile);
         ASSERT_TRUE(back.ok());
