@@ -144,6 +144,21 @@ double maxRelativeDifference(const RefImage& a, const RefImage& b, double floor,
     return worst;
 }
 
+double maxDifferenceOverBound(const RefImage& a, const RefImage& b, double relative, double floor, const RefImage& allowance,
+                              int channels) {
+    if (a.width != b.width || a.height != b.height || allowance.width != b.width || allowance.height != b.height)
+        return std::numeric_limits<double>::infinity();
+    double worst = 0.0;
+    for (size_t i = 0; i < a.texels.size(); ++i)
+        for (int c = 0; c < channels; ++c) {
+            const double d = std::fabs(a.texels[i][c] - b.texels[i][c]) /
+                             (relative * std::max(std::fabs(b.texels[i][c]), floor) + allowance.texels[i][c]);
+            if (std::isnan(d)) return std::numeric_limits<double>::infinity();
+            worst = std::max(worst, d);
+        }
+    return worst;
+}
+
 double worstExcess(const RefImage& gl, const RefImage& ref, double relative, double absolute) {
     if (gl.width != ref.width || gl.height != ref.height) return INFINITY;
     double worst = -INFINITY;

@@ -79,5 +79,9 @@ double maxColorChannel(const RefImage& image);
 double maxAbsDifference(const RefImage& a, const RefImage& b, int channels = 4);
 // Largest per-channel |a − b| / max(|b|, floor).
 double maxRelativeDifference(const RefImage& a, const RefImage& b, double floor, int channels = 4);
+// Largest per-channel |a − b| / (relative · max(|b|, floor) + allowance[c]) over the first `channels`
+// channels, allowance an image of b's size: at most 1 when every texel is within its bound.
+double maxDifferenceOverBound(const RefImage& a, const RefImage& b, double relative, double floor, const RefImage& allowance,
+                              int channels = 4);
 
 }  // namespace rmfx::test

@@ -49,6 +49,39 @@ std::vector<RefImage> blurChain(const RefImage& scene, glm::ivec2 size, const st
     return levels;
 }
 
+std::vector<RefImage> blurChainFilteringBounds(const RefImage& scene, const std::vector<RefImage>& levels, glm::ivec2 size,
+                                               const std::vector<KernelTap>& kernel, double weightError) {
+    std::vector<RefImage> bounds;
+    const glm::dvec2 texel(1.0 / size.x, 1.0 / size.y);
+    for (size_t k = 0; k < levels.size(); ++k) {
+        const RefImage& source = k == 0 ? scene : levels[k - 1];
+        bounds.push_back(shadePixels(size.x, size.y, [&](glm::dvec2 uv) {
+            glm::dvec4 sum(0.0);
+            for (const KernelTap& t : kernel) {
+                const glm::dvec2 at = uv + t.offset * texel;
+                glm::dvec4 tap = 2.0 * weightError * bilinearFootprintRange(source, at);
+                if (k > 0) tap += sampleBilinear(bounds[k - 1], at);
+                sum += t.weight * tap;
+            }
+            return sum;
+        }));
+    }
+    return bounds;
+}
+
+RefImage glareCombineFilteringBound(const RefImage& level0, const RefImage& level1, const RefImage& level2,
+                                    const RefImage& bound0, const RefImage& bound1, const RefImage& bound2,
+                                    glm::dvec3 glowFactors, int width, int height, double weightError) {
+    const RefImage* levels[3] = {&level0, &level1, &level2};
+    const RefImage* bounds[3] = {&bound0, &bound1, &bound2};
+    return shadePixels(width, height, [&](glm::dvec2 uv) {
+        glm::dvec4 sum(0.0);
+        for (int j = 0; j < 3; ++j)
+            sum += glowFactors[j] * (2.0 * weightError * bilinearFootprintRange(*levels[j], uv) + sampleBilinear(*bounds[j], uv));
+        return glm::dvec4(glm::dvec3(sum), 0.0);
+    });
+}
+
 RefImage glareCombine(const RefImage& level0, const RefImage& level1, const RefImage& level2,
                       glm::dvec3 glowFactors, int width, int height, bool alpha64) {
     auto level = [alpha64](const RefImage& image, glm::dvec2 uv) {

@@ -38,10 +38,24 @@ RefImage blurPass(const RefImage& source, int width, int height, const std::vect
 std::vector<RefImage> blurChain(const RefImage& scene, glm::ivec2 size, const std::vector<KernelTap>& kernel,
                                 int passes, TargetRounding rounding);
 
+// What a context's bilinear filtering may add to each level of blurChain(scene, size, kernel, …)
+// (`levels`), per texel and channel, as an absolute bound: every tap's weights may be off by
+// `weightError` on each axis (tests/support/GlTestSupport.h: bilinearWeightError, about 1e-7 on
+// llvmpipe, up to 2^-9 with 8 bits of subtexel precision), which moves the tap by up to twice that
+// times the range of its footprint; the kernel's weights (non-negative, summing to 1) carry on
+// the bound of the level it reads.
+std::vector<RefImage> blurChainFilteringBounds(const RefImage& scene, const std::vector<RefImage>& levels, glm::ivec2 size,
+                                               const std::vector<KernelTap>& kernel, double weightError);
+
 // The composite at each pixel of a width x height screen: (Σ Glow_Factor_i · level_i.rgb, 1), the
 // levels sampled bilinearly; with `alpha64` each level is decoded from its alpha first. Not rounded.
 RefImage glareCombine(const RefImage& level0, const RefImage& level1, const RefImage& level2,
                       glm::dvec3 glowFactors, int width, int height, bool alpha64);
+
+// The same for glareCombine of three levels whose own bounds are `bounds` (not alpha64).
+RefImage glareCombineFilteringBound(const RefImage& level0, const RefImage& level1, const RefImage& level2,
+                                    const RefImage& bound0, const RefImage& bound1, const RefImage& bound2,
+                                    glm::dvec3 glowFactors, int width, int height, double weightError);
 
 // Centroid and per-axis variance (texel²) of one channel taken as a distribution.
 struct ImageMoments {

@@ -21,7 +21,6 @@ constexpr int kSize = 128;
 constexpr glm::ivec2 kQuarter{kSize / 4, kSize / 4};
 constexpr double kGlowFactor = 0.005;            // the workspaces' default
 const double kHalfUlp = std::ldexp(1.0, -10);    // an rgba16f step, relative (2^-11 each side)
-constexpr double kUnorm8Step = 1.0 / 255.0;
 constexpr double kRelativeFloor = 1e-4;          // keeps relative differences finite at 0
 
 // streak_XY_N runs XY (down-left, ...) from a light; its filter samples the opposite way.

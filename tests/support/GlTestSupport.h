@@ -100,6 +100,12 @@ Image blankHdrImage(int width, int height);
 // readBack as a float64 reference image (row 0 at the bottom).
 RefImage readRef(const GlRun& run, const std::string& target);
 
+// One step of an 8-bit normalised target, and how far a float-to-unorm conversion may land from the
+// exact value: Direct3D 10 and later allow 0.6 of a step and GPUs follow it (an NVIDIA H200 wrote 144
+// for 144.59), where llvmpipe rounds to nearest (half a step).
+inline constexpr double kUnorm8Step = 1.0 / 255.0;
+inline constexpr double kUnorm8Conversion = 0.6 * kUnorm8Step;
+
 // How far the current context's bilinear filtering takes a weight from the exact one: the largest
 // |v - f| over a float texture holding 0 and 1 in two texels, sampled at 1000 fractions f between
 // their centres. A rasteriser that filters in float32 (llvmpipe) gives about 1e-7; one with 8 bits

@@ -38,11 +38,6 @@
 namespace rmfx::test {
 namespace {
 
-constexpr double kUnorm8Step = 1.0 / 255.0;
-// How far an 8-bit output may lie from the exact value: Direct3D 10 and later let a float-to-unorm
-// conversion be off by 0.6 of a step, and GPUs follow it (an NVIDIA H200 wrote 144 for 144.59,
-// where llvmpipe rounds to nearest).
-constexpr double kUnorm8Conversion = 0.6 * kUnorm8Step;
 
 // docs/rendermonkey.md: light 0 is directional from the camera, position (0, 0, 1, 0) in eye space,
 // diffuse (1, 1, 1); the front material's diffuse is (0.8, 0.8, 0.8); gl_Color is white.
