@@ -104,10 +104,10 @@ struct HandWrittenShader5::State {
     }
 
     // A colour texture and its framebuffer, cleared to 0.
-    GLuint target(glm::ivec2 size, GLuint* texture, GLuint depth = 0) {
+    GLuint target(glm::ivec2 size, GLuint* texture, GLuint depth = 0, GLenum format = GL_RGBA16F) {
         GLuint t = 0, f = 0;
         glCreateTextures(GL_TEXTURE_2D, 1, &t);
-        glTextureStorage2D(t, 1, GL_RGBA16F, size.x, size.y);
+        glTextureStorage2D(t, 1, format, size.x, size.y);
         glCreateFramebuffers(1, &f);
         glNamedFramebufferTexture(f, GL_COLOR_ATTACHMENT0, t, 0);
         if (depth) glNamedFramebufferRenderbuffer(f, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
@@ -265,7 +265,8 @@ Result<std::unique_ptr<HandWrittenShader5>> HandWrittenShader5::create(const Wor
     }
     const GLuint skyAlpha64 = images[0], skyFloat = images[1], ghostMask = images[2];
 
-    // Targets: scene (with depth) and the screen at the viewport size, the rest at a quarter.
+    // Targets: scene (with depth) and the screen at the viewport size, the rest at a quarter; all
+    // rgba16f but the screen.
     glm::ivec2 quarter = (viewport + 3) / 4;
     v.inverseQuarterSize = 1.0f / glm::vec2(quarter);
     glCreateRenderbuffers(1, &s->sceneDepth);
@@ -279,7 +280,9 @@ Result<std::unique_ptr<HandWrittenShader5>> HandWrittenShader5::create(const Wor
         streak16Fb[i] = s->target(quarter, &streak16[i]);
     }
     for (int i = 0; i < 2; ++i) ghostFb[i] = s->target(quarter, &ghost[i]);
-    GLuint outputFb = s->target(viewport, &s->outputTexture);
+    // The screen in the format of shader_5's <output>: the combine's additive blend into a half-float
+    // screen rounds twice where the executor's rounds nowhere.
+    GLuint outputFb = s->target(viewport, &s->outputTexture, 0, GL_RGBA32F);
 
     const GLuint linear = s->sampler(GL_LINEAR), nearest = s->sampler(GL_NEAREST);
     s->fullscreen = std::make_unique<GlMesh>(makeFullscreenTriangle());

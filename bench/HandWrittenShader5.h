@@ -29,7 +29,7 @@ public:
     // Issues one frame's passes and returns without waiting for them to finish.
     void renderFrame();
 
-    unsigned outputTexture() const;  // rgba16f at the viewport size: the screen
+    unsigned outputTexture() const;  // rgba32f (shader_5's <output format>) at the viewport size: the screen
     int passCount() const;
 
     struct State;
