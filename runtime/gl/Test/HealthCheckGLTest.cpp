@@ -570,7 +570,7 @@ TEST_P(HealthCheckGLTest, HdrLightingAsShippedHasNoNanOrInfinity) {
 }
 
 // A NaN alone at each pixel of an odd-sized target in turn is found there, once (the check after a
-// pass screens the target a few pixels a fragment before it counts).
+// pass screens the target a few pixels a fragment before it counts), with its value.
 // A 5x3 rgba32f target that pass "lone" fills with 0.5, but for a NaN (in green) at the pixel
 // (At_X, At_Y) in GL's rows; an executor running it with the check by `method`.
 std::unique_ptr<GlExecutor> loneNanExecutor(HealthCheckMethod method) {
@@ -620,6 +620,12 @@ TEST_P(HealthCheckGLTest, ALoneNanIsFoundAtEveryPixel) {
             EXPECT_EQ(f.pass, "lone");
             EXPECT_EQ(f.count, 1) << x << "," << y;
             EXPECT_EQ(f.pixel, glm::ivec2(x, 3 - 1 - y)) << "reading coordinates";
+            // Recorded afresh each frame, though the frames take turns with the same buffers.
+            ASSERT_TRUE(f.recorded) << x << "," << y;
+            EXPECT_EQ(f.value.x, 0.5f);
+            EXPECT_TRUE(std::isnan(f.value.y));
+            EXPECT_EQ(f.value.z, 0.5f);
+            EXPECT_EQ(f.value.w, 1.0f);
         }
 }
 
