@@ -38,7 +38,6 @@
 namespace rmfx::test {
 namespace {
 
-
 // docs/rendermonkey.md: light 0 is directional from the camera, position (0, 0, 1, 0) in eye space,
 // diffuse (1, 1, 1); the front material's diffuse is (0.8, 0.8, 0.8); gl_Color is white.
 const glm::dvec3 kLightPositionEye(0.0, 0.0, 1.0);
