@@ -6,6 +6,8 @@
 // with its distribution-free interval (core/MedianInterval.h), says far more than a ratio of two
 // medians measured seconds apart.
 
+#include <array>
+#include <cstddef>
 #include <cstdio>
 #include <functional>
 #include <string>
@@ -16,17 +18,25 @@
 namespace rmfx::bench {
 
 // `frame(executor, pair)` renders one frame of executor 0 (A) or 1 (B) for pair `pair` and
-// returns its wall-clock milliseconds. Returns A / B of each pair.
-inline std::vector<double> pairedRatios(int pairs, const std::function<double(int executor, int pair)>& frame) {
-    std::vector<double> ratios;
+// returns N measures of it (its wall-clock milliseconds, its CPU time, …). Returns A / B of each
+// pair, for each measure.
+template <size_t N>
+std::array<std::vector<double>, N> pairedRatiosOf(int pairs, const std::function<std::array<double, N>(int executor, int pair)>& frame) {
+    std::array<std::vector<double>, N> ratios;
     for (int i = 0; i < pairs; ++i) {
-        double ms[2] = {0.0, 0.0};
+        std::array<double, N> measures[2];
         const int first = i % 2;
-        ms[first] = frame(first, i);
-        ms[1 - first] = frame(1 - first, i);
-        if (ms[1] > 0.0) ratios.push_back(ms[0] / ms[1]);
+        measures[first] = frame(first, i);
+        measures[1 - first] = frame(1 - first, i);
+        for (size_t k = 0; k < N; ++k)
+            if (measures[1][k] > 0.0) ratios[k].push_back(measures[0][k] / measures[1][k]);
     }
     return ratios;
+}
+
+// The same with one measure, the wall-clock milliseconds `frame` returns.
+inline std::vector<double> pairedRatios(int pairs, const std::function<double(int executor, int pair)>& frame) {
+    return pairedRatiosOf<1>(pairs, [&](int executor, int pair) { return std::array<double, 1>{frame(executor, pair)}; })[0];
 }
 
 // "1.043 (1.031 to 1.055)": the median ratio and its 95 % interval; "-" without pairs.

@@ -30,4 +30,13 @@ inline double threadCpuMilliseconds() {
     return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
 }
 
+// The whole process's CPU time, every thread's. On a software rasteriser (llvmpipe) its threads are
+// the GPU, so a frame's share of this is the work the frame took, whatever else the machine ran
+// meanwhile; on a GPU it is the driver's and rmfx's side only.
+inline double processCpuMilliseconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
+}
+
 }  // namespace rmfx::bench
