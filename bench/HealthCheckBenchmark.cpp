@@ -6,12 +6,14 @@
 // Four executors: the check off, the check inspecting each target after its pass (after-pass),
 // the passes counting what they write (while-drawing, gl/HealthInstrumentation.h), and the
 // default (auto: while-drawing on a GPU; on a software rasteriser while-drawing in the passes that
-// share their target with a neighbour, the scene's seven, and after-pass in the others).
+// share their target with a neighbour, the scene's seven, and in those that record at most two
+// inputs, after-pass in the others).
 // Printed: each round's medians and ratios against off, then the median ratios over the rounds and
 // their spread, the GPU time of a frame and of each pass (timer queries). The target: the
 // check costs under 10 % of the frame at 512x512. Then each method's ratio against off again from
 // --pairs pairs of adjacent frames (bench/PairedFrames.h), the median with its 95 % interval: on a
-// noisy machine the tighter figure.
+// noisy machine the tighter figure; and the same frames' process CPU time, every thread's, which on
+// llvmpipe is the work a frame took, whatever else the machine was running.
 //
 //   rmfx_bench_health_check [--size WxH] [--rounds N] [--frames N] [--pairs N] [--workspace FILE]
 
