@@ -29,14 +29,7 @@ glm::dvec4 fetchClamped(const RefImage& image, int x, int y) {
     return image.at(std::clamp(x, 0, image.width - 1), std::clamp(y, 0, image.height - 1));
 }
 
-namespace {
-
-struct Footprint {
-    glm::dvec4 texels[4];  // (i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1)
-    double fx, fy;
-};
-
-Footprint bilinearFootprint(const RefImage& image, glm::dvec2 uv) {
+BilinearFootprint bilinearFootprint(const RefImage& image, glm::dvec2 uv) {
     double x = uv.x * image.width - 0.5, y = uv.y * image.height - 0.5;
     double x0 = std::floor(x), y0 = std::floor(y);
     int i = static_cast<int>(x0), j = static_cast<int>(y0);
@@ -45,17 +38,15 @@ Footprint bilinearFootprint(const RefImage& image, glm::dvec2 uv) {
             x - x0, y - y0};
 }
 
-}  // namespace
-
 glm::dvec4 sampleBilinear(const RefImage& image, glm::dvec2 uv) {
-    Footprint f = bilinearFootprint(image, uv);
+    BilinearFootprint f = bilinearFootprint(image, uv);
     glm::dvec4 bottom = glm::mix(f.texels[0], f.texels[1], f.fx);
     glm::dvec4 top = glm::mix(f.texels[2], f.texels[3], f.fx);
     return glm::mix(bottom, top, f.fy);
 }
 
 glm::dvec4 bilinearFootprintRange(const RefImage& image, glm::dvec2 uv) {
-    Footprint f = bilinearFootprint(image, uv);
+    BilinearFootprint f = bilinearFootprint(image, uv);
     glm::dvec4 low = f.texels[0], high = f.texels[0];
     for (const glm::dvec4& t : f.texels) {
         low = glm::min(low, t);

@@ -40,6 +40,13 @@ double worstExcess(const RefImage& gl, const RefImage& ref, double relative, dou
 // Texel fetch with clamp-to-edge addressing.
 glm::dvec4 fetchClamped(const RefImage& image, int x, int y);
 
+// The four texels GL_LINEAR with GL_CLAMP_TO_EDGE blends at uv, and the fractions it blends them by.
+struct BilinearFootprint {
+    glm::dvec4 texels[4];  // (i, j), (i + 1, j), (i, j + 1), (i + 1, j + 1)
+    double fx, fy;
+};
+BilinearFootprint bilinearFootprint(const RefImage& image, glm::dvec2 uv);
+
 // GL_LINEAR / GL_NEAREST lookups with GL_CLAMP_TO_EDGE, texel centres at (i + 0.5) / size.
 glm::dvec4 sampleBilinear(const RefImage& image, glm::dvec2 uv);
 glm::dvec4 sampleNearest(const RefImage& image, glm::dvec2 uv);

@@ -61,13 +61,9 @@ TEST(GlareReferenceTest, BlurPassClampsAtTheBorders) {
 // A GPU's bilinear filter with 8 bits of subtexel precision: each fraction rounded to a 1/256 step,
 // at most 2^-9 from the exact one.
 glm::dvec4 sampleBilinearEightBitWeights(const RefImage& image, glm::dvec2 uv) {
-    const double x = uv.x * image.width - 0.5, y = uv.y * image.height - 0.5;
-    const double x0 = std::floor(x), y0 = std::floor(y);
-    const int i = static_cast<int>(x0), j = static_cast<int>(y0);
-    const double fx = std::round((x - x0) * 256.0) / 256.0, fy = std::round((y - y0) * 256.0) / 256.0;
-    const glm::dvec4 bottom = glm::mix(fetchClamped(image, i, j), fetchClamped(image, i + 1, j), fx);
-    const glm::dvec4 top = glm::mix(fetchClamped(image, i, j + 1), fetchClamped(image, i + 1, j + 1), fx);
-    return glm::mix(bottom, top, fy);
+    const BilinearFootprint f = bilinearFootprint(image, uv);
+    const double fx = std::round(f.fx * 256.0) / 256.0, fy = std::round(f.fy * 256.0) / 256.0;
+    return glm::mix(glm::mix(f.texels[0], f.texels[1], fx), glm::mix(f.texels[2], f.texels[3], fx), fy);
 }
 
 // blurChainFilteringBounds holds, texel by texel, what such a filter does to a chain of blurs of a
