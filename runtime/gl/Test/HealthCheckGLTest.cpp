@@ -89,6 +89,29 @@ GlRun runChecked(std::unique_ptr<Workspace> ws, glm::ivec2 size, int frames = 1,
     return runWorkspace(std::move(ws), {size, frames, 1.0f / 60.0f}, options);
 }
 
+// A workspace of three passes around the pass a test is about: `ramp` writes each pixel's centre
+// (gl_FragCoord.xy, 0, 1) into target 'a' of `rampFormat`; `pass`, a <pass> element, reads 'a' and
+// writes 't' of `format`; `final` reads 't', so that it is drawn.
+std::string aroundRamp(const std::string& rampFormat, const std::string& format, const std::string& pass) {
+    return R"(<workspace version="1" name="ramp">
+  <target name="a" format=")" + rampFormat + R"(" scale="1"/>
+  <target name="t" format=")" + format + R"(" scale="1"/>
+  <pass name="ramp" target="a"><shader stage="fragment"><![CDATA[
+#version 450 core
+out vec4 fragColor;
+void main() { fragColor = vec4(gl_FragCoord.xy, 0.0, 1.0); }
+]]></shader></pass>
+)" + pass + R"(
+  <pass name="final"><sampler name="s" target="t"/><shader stage="fragment"><![CDATA[
+#version 450 core
+uniform sampler2D s;
+out vec4 fragColor;
+void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0) * 0.0 + 0.5; }
+]]></shader></pass>
+</workspace>
+)";
+}
+
 // The kinds a texel holds, as the check defines them for a format.
 std::array<bool, healthKindCount> kindsOf(const glm::dvec4& v, const FormatHealthLimits& limits) {
     std::array<bool, healthKindCount> kinds{};
@@ -428,15 +451,8 @@ void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0) * 0.0; }
 // a value at half's largest), each with that pixel and the pass's input there.
 TEST_P(HealthCheckGLTest, AGlsl330PassCountsEachKindOfAPixelHoldingFour) {
     if (GetParam() != HealthCheckMethod::WhileDrawing) GTEST_SKIP() << "counting while drawing only";
-    const std::string xml = R"(<workspace version="1" name="old">
-  <target name="ramp" format="rgba32f" scale="1"/>
-  <target name="h" format="rgba16f" scale="1"/>
-  <pass name="ramp" target="ramp"><shader stage="fragment"><![CDATA[
-#version 330 core
-out vec4 fragColor;
-void main() { fragColor = vec4(gl_FragCoord.xy, 0.0, 1.0); }
-]]></shader></pass>
-  <pass name="four" target="h"><sampler name="s" target="ramp" filter="nearest"/><shader stage="fragment"><![CDATA[
+    // The ramp and the final pass are GLSL 4.50; only "four" is 3.30.
+    const std::string xml = aroundRamp("rgba32f", "rgba16f", R"(  <pass name="four" target="t"><sampler name="s" target="a" filter="nearest"/><shader stage="fragment"><![CDATA[
 #version 330 core
 uniform sampler2D s;
 out vec4 fragColor;
@@ -445,15 +461,7 @@ void main() {
     fragColor = r.x == 1.5 && r.y == 0.5 ? vec4(uintBitsToFloat(0x7FC00000u), uintBitsToFloat(0xFF800000u), -2.0, 70000.0)
                                          : vec4(1.0);
 }
-]]></shader></pass>
-  <pass name="final"><sampler name="t" target="h"/><shader stage="fragment"><![CDATA[
-#version 330 core
-uniform sampler2D t;
-out vec4 fragColor;
-void main() { fragColor = vec4(texelFetch(t, ivec2(gl_FragCoord.xy), 0).a * 0.0); }
-]]></shader></pass>
-</workspace>
-)";
+]]></shader></pass>)");
     GlRun run = runChecked(workspaceFromText(xml), {3, 2}, 1, GetParam());
     ASSERT_TRUE(run.exec);
     const FrameHealth* health = run.exec->frameHealth();
@@ -474,28 +482,12 @@ void main() { fragColor = vec4(texelFetch(t, ivec2(gl_FragCoord.xy), 0).a * 0.0)
 // thousands of fragments race to lower it (counted from the top, llvmpipe used up every record
 // slot: gl/HealthBuffer.h).
 TEST_P(HealthCheckGLTest, TheFirstPixelOfAWholeTargetOfNanIsRecorded) {
-    const std::string xml = R"(<workspace version="1" name="all">
-  <target name="a" format="rgba16f" scale="1"/>
-  <target name="t" format="rgba32f" scale="1"/>
-  <pass name="ramp" target="a"><shader stage="fragment"><![CDATA[
-#version 450 core
-out vec4 fragColor;
-void main() { fragColor = vec4(gl_FragCoord.xy, 0.0, 1.0); }
-]]></shader></pass>
-  <pass name="poison" target="t"><sampler name="s" target="a"/><shader stage="fragment"><![CDATA[
+    const std::string xml = aroundRamp("rgba16f", "rgba32f", R"(  <pass name="poison" target="t"><sampler name="s" target="a"/><shader stage="fragment"><![CDATA[
 #version 450 core
 uniform sampler2D s;
 out vec4 fragColor;
 void main() { fragColor = vec4(uintBitsToFloat(0x7fc00000u), texelFetch(s, ivec2(gl_FragCoord.xy), 0).xy, 1.0); }
-]]></shader></pass>
-  <pass name="final"><sampler name="s" target="t"/><shader stage="fragment"><![CDATA[
-#version 450 core
-uniform sampler2D s;
-out vec4 fragColor;
-void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0) * 0.0 + 0.5; }
-]]></shader></pass>
-</workspace>
-)";
+]]></shader></pass>)");
     GlRun run = runChecked(workspaceFromText(xml), {256, 256}, 1, GetParam());
     ASSERT_TRUE(run.exec) ;
     const FrameHealth* health = run.exec->frameHealth();
@@ -516,15 +508,7 @@ void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0) * 0.0 + 0.5; 
 // called `written` (names the added code once used for its own) still count while drawing, and
 // the input is recorded.
 TEST_P(HealthCheckGLTest, NamesInThePassDoNotClashWithTheCountingCode) {
-    const std::string xml = R"(<workspace version="1" name="names">
-  <target name="a" format="rgba32f" scale="1"/>
-  <target name="t" format="rgba32f" scale="1"/>
-  <pass name="ramp" target="a"><shader stage="fragment"><![CDATA[
-#version 450 core
-out vec4 fragColor;
-void main() { fragColor = vec4(gl_FragCoord.xy, 0.0, 1.0); }
-]]></shader></pass>
-  <pass name="poison" target="t"><sampler name="size" target="a" filter="nearest"/><shader stage="fragment"><![CDATA[
+    const std::string xml = aroundRamp("rgba32f", "rgba32f", R"(  <pass name="poison" target="t"><sampler name="size" target="a" filter="nearest"/><shader stage="fragment"><![CDATA[
 #version 450 core
 uniform sampler2D size;
 out vec4 written;
@@ -532,15 +516,7 @@ void main() {
     vec4 record = texelFetch(size, ivec2(gl_FragCoord.xy), 0);
     written = vec4(record.x > 2.0 ? uintBitsToFloat(0x7fc00000u) : 0.0, record.yzw);
 }
-]]></shader></pass>
-  <pass name="final"><sampler name="s" target="t"/><shader stage="fragment"><![CDATA[
-#version 450 core
-uniform sampler2D s;
-out vec4 fragColor;
-void main() { fragColor = texelFetch(s, ivec2(gl_FragCoord.xy), 0) * 0.0 + 0.5; }
-]]></shader></pass>
-</workspace>
-)";
+]]></shader></pass>)");
     GlRun run = runChecked(workspaceFromText(xml), {5, 3}, 1, GetParam());
     ASSERT_TRUE(run.exec);
     const FrameHealth* health = run.exec->frameHealth();
