@@ -14,6 +14,7 @@ namespace rmfx {
 namespace {
 
 constexpr const char* kRenamedMain = "rmfx_health_pass_main";
+constexpr std::uint32_t kInfinityBits = 0x7F800000u;
 
 // The fragment output at location 0: its name and how many float components it has.
 struct ColourOutput {
@@ -80,10 +81,10 @@ std::string appendix(const ColourOutput& output, const std::vector<std::string>&
 uniform int rmfx_health_Records;    // the first word of the records
 uniform ivec2 rmfx_health_Size;     // of the target
 uniform int rmfx_health_Channels;   // the target's; 0: it is not inspected
-uniform bool rmfx_health_Negatives;
-uniform float rmfx_health_Smallest; // a negative value of no larger magnitude is stored as -0
-uniform vec4 rmfx_health_Largest;   // at or above: stored at the format's largest or beyond; 0: none
-uniform uvec4 rmfx_health_Below;    // a channel whose bits are below is none of the kinds (screenBelow)
+uniform uint rmfx_health_NegativeAbove; // the magnitude's bits above which a negative value is one
+// A channel whose bits are below is none of the kinds (screenBelow); in a channel inspected, the
+// bits of the smallest magnitude stored at the format's largest or beyond (+Inf's where it has none).
+uniform uvec4 rmfx_health_Below;
 // An input's texel at the fragment's centre, the texel its sampler would fetch there.
 vec4 rmfx_health_input(int rmfx_health_which) {
     vec2 rmfx_health_centre = (floor(gl_FragCoord.xy) + 0.5) / vec2(rmfx_health_Size);
@@ -98,17 +99,31 @@ vec4 rmfx_health_input(int rmfx_health_which) {
         lowestKind = "rmfx_health_lowest == " + std::to_string(1 << k) + " ? " + std::to_string(k) + " : " + lowestKind;
     s += R"(    return vec4(0.0);
 }
-// Counts the kinds in `kinds` (bit k: kind k) at `pixel`; a fragment that lowers a kind's first
-// pixel takes a record slot for it, and writes its pixel, value and inputs there, a quad a step.
-// Each memory operation is written once, and each step goes through all three: a software
-// rasteriser runs every one written in the function for every group of fragments, found or not
-// (docs/performance.md).
-void rmfx_health_count(int rmfx_health_kinds, int rmfx_health_pixel, vec4 rmfx_health_value) {
-    int rmfx_health_left = rmfx_health_kinds;  // kinds not counted yet
+// Works out, one channel a step, the kinds `bits` (the pixel's value as written) holds, on the bits:
+// NaN (1), +Inf (2), -Inf (4), and of finite values negative (8) and at the format's largest (16);
+// then counts each kind at `pixel`. A fragment that lowers a kind's first pixel takes a record slot
+// for it, and writes its pixel, value and inputs there, a quad a step. Each memory operation and
+// the kinds' code are written once, and each step goes through them: a software rasteriser runs
+// everything written in the function once for every group of fragments, found or not
+// (docs/performance.md), so the kinds of one channel cost it a quarter of the four's.
+void rmfx_health_count(uvec4 rmfx_health_bits, int rmfx_health_channels, int rmfx_health_pixel) {
+    int rmfx_health_channel = 0;  // the next channel to work out
+    int rmfx_health_left = 0;     // kinds found and not counted yet
     int rmfx_health_kind = 0;
     int rmfx_health_step = 0;  // 0: count the next kind; 1: take a record slot; 2 + q: store the record's quad q
     int rmfx_health_record = 0;
-    while (rmfx_health_left != 0 || rmfx_health_step != 0) {
+    while (rmfx_health_channel < rmfx_health_channels || rmfx_health_left != 0 || rmfx_health_step != 0) {
+        if (rmfx_health_channel < rmfx_health_channels) {
+            uint rmfx_health_of = rmfx_health_bits[rmfx_health_channel];
+            uint rmfx_health_magnitude = rmfx_health_of & 0x7FFFFFFFu;
+            uint rmfx_health_sign = rmfx_health_of >> 31u;
+            rmfx_health_left |= rmfx_health_magnitude > 0x7F800000u ? 1
+                : rmfx_health_magnitude == 0x7F800000u ? 2 << rmfx_health_sign
+                : (rmfx_health_sign != 0u && rmfx_health_magnitude > rmfx_health_NegativeAbove ? 8 : 0)
+                  | (rmfx_health_magnitude >= rmfx_health_Below[rmfx_health_channel] ? 16 : 0);
+            ++rmfx_health_channel;
+            continue;
+        }
         if (rmfx_health_step == 0) {  // the lowest kind left (findLSB is GLSL 4.00)
             int rmfx_health_lowest = rmfx_health_left & -rmfx_health_left;
             rmfx_health_kind = )" + lowestKind + R"(;
@@ -126,38 +141,21 @@ void rmfx_health_count(int rmfx_health_kinds, int rmfx_health_pixel, vec4 rmfx_h
         } else {
             int rmfx_health_quad = rmfx_health_step - 2;
             ivec4 rmfx_health_stored = rmfx_health_quad == 0 ? ivec4(rmfx_health_pixel, 0, 0, 0)
-                : floatBitsToInt(rmfx_health_quad == 1 ? rmfx_health_value : rmfx_health_input(rmfx_health_quad - 2));
+                : rmfx_health_quad == 1 ? ivec4(rmfx_health_bits) : floatBitsToInt(rmfx_health_input(rmfx_health_quad - 2));
             rmfx_health_quads[(rmfx_health_record >> 2) + rmfx_health_quad] = rmfx_health_stored;
             rmfx_health_step = rmfx_health_quad < )" + std::to_string(1 + inputs.size()) + R"( ? rmfx_health_step + 1 : 0;
         }
     }
 }
 )";
-    s += "void main() {\n    " + std::string(kRenamedMain) + "();\n    vec4 rmfx_health_written = " + widened(output) + ";\n";
-    s += "    int rmfx_health_channels = min(rmfx_health_Channels, " + std::to_string(output.components) + ");\n";
-    // One comparison per channel screens a value (screenBelow); only a value it lets through gets
-    // its kinds, all channels at once, on the bits (isnan and isinf may be compiled away), with no
-    // loop: per channel inspected, NaN (1), +Inf (2), -Inf (4), and of finite values negative (8)
-    // and at the format's largest (16). Working out the kinds of every value cost an NVIDIA H100
-    // 16 % of hdr_lighting's frame, against 5 % for a cheaper test in its place (docs/performance.md).
-    s += R"(    uvec4 rmfx_health_bits = floatBitsToUint(rmfx_health_written);
-    if (!any(greaterThanEqual(rmfx_health_bits, rmfx_health_Below))) return;
-    uvec4 rmfx_health_in = uvec4(lessThan(ivec4(0, 1, 2, 3), ivec4(rmfx_health_channels)));
-    uvec4 rmfx_health_special = rmfx_health_in & uvec4(equal(rmfx_health_bits & 0x7F800000u, uvec4(0x7F800000u)));
-    uvec4 rmfx_health_fraction = uvec4(notEqual(rmfx_health_bits & 0x007FFFFFu, uvec4(0u)));
-    uvec4 rmfx_health_sign = rmfx_health_bits >> 31u;
-    uvec4 rmfx_health_finite = rmfx_health_in & (1u - rmfx_health_special);
-    uvec4 rmfx_health_found = (rmfx_health_special & rmfx_health_fraction)
-        | ((rmfx_health_special & (1u - rmfx_health_fraction) & (1u - rmfx_health_sign)) << 1u)
-        | ((rmfx_health_special & (1u - rmfx_health_fraction) & rmfx_health_sign) << 2u)
-        | ((rmfx_health_finite & uint(rmfx_health_Negatives) & uvec4(lessThan(rmfx_health_written, vec4(-rmfx_health_Smallest)))) << 3u)
-        | ((rmfx_health_finite & uvec4(greaterThan(rmfx_health_Largest, vec4(0.0)))
-            & uvec4(greaterThanEqual(abs(rmfx_health_written), rmfx_health_Largest))) << 4u);
-    int rmfx_health_kinds = int(rmfx_health_found.x | rmfx_health_found.y | rmfx_health_found.z | rmfx_health_found.w);
-    if (rmfx_health_kinds != 0) {
-        int rmfx_health_pixel = int(gl_FragCoord.y) * rmfx_health_Size.x + int(gl_FragCoord.x);
-        rmfx_health_count(rmfx_health_kinds, rmfx_health_pixel, rmfx_health_written);
-    }
+    s += "void main() {\n    " + std::string(kRenamedMain) + "();\n";
+    // One comparison per channel screens a value (screenBelow): on a GPU only a value it lets
+    // through goes on to the kinds. Working out the kinds of every value cost an NVIDIA H100 16 % of
+    // hdr_lighting's frame, against 5 % for a cheaper test in its place (docs/performance.md).
+    s += "    uvec4 rmfx_health_bits = floatBitsToUint(" + widened(output) + ");\n";
+    s += R"(    if (!any(greaterThanEqual(rmfx_health_bits, rmfx_health_Below))) return;
+    rmfx_health_count(rmfx_health_bits, min(rmfx_health_Channels, )" + std::to_string(output.components) +
+         R"(), int(gl_FragCoord.y) * rmfx_health_Size.x + int(gl_FragCoord.x));
 }
 )";
     return s;
@@ -183,13 +181,14 @@ glm::vec4 largestWritten(TargetFormat format) {
 // Per channel, the smallest bit pattern that may be one of the kinds: as unsigned integers the bits
 // of non-negative floats are in their order, and every negative value, -0 included, and every NaN
 // and infinity lie at or above 0x7F800000. So a channel's bits below this are none of the kinds;
-// at or above, the kinds are worked out exactly. A channel not inspected gets the largest pattern:
-// only that one (a NaN) goes on to the exact test, which leaves such a channel out.
+// at or above, the kinds are worked out exactly, and the same bits mark the format's largest. A
+// channel not inspected gets the largest pattern: only that one (a NaN) goes on to the exact
+// test, which leaves such a channel out.
 glm::uvec4 screenBelow(const FormatHealthLimits& limits, glm::vec4 largest) {
     glm::uvec4 below(0xFFFFFFFFu);
     if (!limits.inspected) return below;
     for (int c = 0; c < limits.channels && c < 4; ++c)
-        below[c] = largest[c] > 0.0f ? std::bit_cast<std::uint32_t>(largest[c]) : 0x7F800000u;
+        below[c] = largest[c] > 0.0f ? std::bit_cast<std::uint32_t>(largest[c]) : kInfinityBits;
     return below;
 }
 
@@ -228,9 +227,7 @@ HealthUniforms findHealthUniforms(unsigned program) {
     u.records = glGetUniformLocation(program, "rmfx_health_Records");
     u.size = glGetUniformLocation(program, "rmfx_health_Size");
     u.channels = glGetUniformLocation(program, "rmfx_health_Channels");
-    u.negatives = glGetUniformLocation(program, "rmfx_health_Negatives");
-    u.smallest = glGetUniformLocation(program, "rmfx_health_Smallest");
-    u.largest = glGetUniformLocation(program, "rmfx_health_Largest");
+    u.negativeAbove = glGetUniformLocation(program, "rmfx_health_NegativeAbove");
     u.below = glGetUniformLocation(program, "rmfx_health_Below");
     // The compiler drops what the added main() does not use: a target's channels always are.
     u.found = u.slot >= 0 && u.size >= 0 && u.channels >= 0 && u.below >= 0;
@@ -243,16 +240,15 @@ void setHealthUniforms(const HealthUniforms& u, size_t position, size_t capacity
     u.set = values;
     const FormatHealthLimits limits = formatHealthLimits(format);
     const bool half = format == TargetFormat::RGBA16F || format == TargetFormat::RG16F || format == TargetFormat::R16F;
-    const glm::vec4 largest = largestWritten(format);
     glUniform1i(u.slot, static_cast<GLint>(position * healthKindCount));
     glUniform1i(u.records, static_cast<GLint>(healthRecordsBase(capacity)));
     glUniform2i(u.size, size.x, size.y);
     glUniform1i(u.channels, limits.inspected ? limits.channels : 0);
-    glUniform1i(u.negatives, limits.holdsNegatives ? 1 : 0);
-    // Half floats round a magnitude up to 2^-25 (half their smallest subnormal) to zero.
-    glUniform1f(u.smallest, half ? std::ldexp(1.0f, -25) : 0.0f);
-    glUniform4f(u.largest, largest.x, largest.y, largest.z, largest.w);
-    const glm::uvec4 below = screenBelow(limits, largest);
+    // A negative magnitude above this is stored as a negative value: half floats round one up to
+    // 2^-25 (half their smallest subnormal) to zero. Where the format holds none, no finite one is.
+    const float smallest = half ? std::ldexp(1.0f, -25) : 0.0f;
+    glUniform1ui(u.negativeAbove, limits.holdsNegatives ? std::bit_cast<std::uint32_t>(smallest) : kInfinityBits);
+    const glm::uvec4 below = screenBelow(limits, largestWritten(format));
     glUniform4ui(u.below, below.x, below.y, below.z, below.w);
 }
 

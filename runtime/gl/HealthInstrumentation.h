@@ -35,7 +35,7 @@ Result<std::string> instrumentForHealth(const Pass& pass, const std::string& fra
 // the program lacks any of them. Uniforms named rmfx_health_* are never workspace variables.
 struct HealthUniforms {
     bool found = false;
-    int slot = -1, records = -1, size = -1, channels = -1, negatives = -1, smallest = -1, largest = -1, below = -1;
+    int slot = -1, records = -1, size = -1, channels = -1, negativeAbove = -1, below = -1;
     // What they were last set to: a pass draws the same way frame after frame, and each uniform
     // call is CPU time in a frame that a GPU may finish sooner.
     struct Values {
