@@ -1,6 +1,5 @@
 // writeImage (declared in ImageIO.h): format by extension, display transform and quantisation.
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -8,8 +7,12 @@
 #include <string>
 #include <vector>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
+#include "io/file/AtomicFile.h"
+#include "io/file/OutputPath.h"
+#include "io/image/ImageOutputPath.h"
 #include "io/image/ImageFileError.h"
 #include "io/image/ImageIO.h"
 
@@ -19,24 +22,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-enum class Container { Exr, Rgbe, Png, Jpeg, Tga, Bmp };
-
 struct Target {
-    Container container;
+    ImageContainer container;
     bool integer;
 };
 
 std::optional<Target> targetFor(const fs::path& file) {
-    std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (ext == ".exr") return Target{Container::Exr, false};
-    if (ext == ".hdr") return Target{Container::Rgbe, false};
-    if (ext == ".png") return Target{Container::Png, true};
-    if (ext == ".jpg" || ext == ".jpeg") return Target{Container::Jpeg, true};
-    if (ext == ".tga") return Target{Container::Tga, true};
-    if (ext == ".bmp") return Target{Container::Bmp, true};
-    return std::nullopt;
+    const std::optional<ImageContainer> container = imageContainerFor(file);
+    if (!container) return std::nullopt;
+    return Target{*container, *container != ImageContainer::Exr && *container != ImageContainer::Rgbe};
 }
 
 bool hasAlpha(int channels) { return channels == 2 || channels == 4; }
@@ -44,8 +38,8 @@ bool hasAlpha(int channels) { return channels == 2 || channels == 4; }
 // Channel counts a container cannot store are adapted: Radiance files hold RGB only (grey is
 // replicated, alpha dropped); JPEG drops alpha, and so do the other integer formats when asked to.
 int storedChannels(const Target& target, int channels, bool integerOpaque) {
-    if (target.container == Container::Rgbe) return 3;
-    if ((target.container == Container::Jpeg || (target.integer && integerOpaque)) && hasAlpha(channels)) return channels - 1;
+    if (target.container == ImageContainer::Rgbe) return 3;
+    if ((target.container == ImageContainer::Jpeg || (target.integer && integerOpaque)) && hasAlpha(channels)) return channels - 1;
     return channels;
 }
 
@@ -95,8 +89,7 @@ Result<void> writeImage(const fs::path& file, const Image& image, DisplayTransfo
 Result<void> writeImage(const fs::path& file, const Image& image, const WriteOptions& options) {
     const std::optional<Target> target = targetFor(file);
     if (!target)
-        return imageFileError(file, "unknown image file extension '" + file.extension().string() +
-                                   "' (known: .exr .hdr .png .jpg .jpeg .tga .bmp)");
+        return Error{checkImageOutputPath(file).error()};
     if (image.width <= 0 || image.height <= 0 || image.channels < 1 || image.channels > 4 ||
         image.pixels.size() != size_t(image.width) * image.height * image.channels)
         return imageFileError(file, "cannot write an empty or inconsistent image (" +
@@ -105,19 +98,16 @@ Result<void> writeImage(const fs::path& file, const Image& image, const WriteOpt
                                    std::to_string(image.pixels.size()) + " values)");
     if (options.pngBits != 8 && options.pngBits != 16)
         return imageFileError(file, "PNG bits per channel must be 8 or 16, not " + std::to_string(options.pngBits));
-    const fs::path folder = file.parent_path();
-    std::error_code ec;
-    if (!folder.empty() && !fs::is_directory(folder, ec))
-        return imageFileError(file, "folder '" + folder.string() + "' does not exist");
+    if (Result<void> usable = checkOutputFile(file); !usable) return Error{usable.error()};
 
     const int stored = storedChannels(*target, image.channels, options.integerOpaque);
     const std::vector<int> map = channelMap(image.channels, stored);
-    const bool sixteen = target->container == Container::Png && options.pngBits == 16;
+    const bool sixteen = target->container == ImageContainer::Png && options.pngBits == 16;
 
     OIIO::TypeDesc format = OIIO::TypeDesc::FLOAT;
     if (target->integer)
         format = sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8;
-    else if (target->container == Container::Exr && options.exrHalf)
+    else if (target->container == ImageContainer::Exr && options.exrHalf)
         format = OIIO::TypeDesc::HALF;
     OIIO::ImageSpec spec(image.width, image.height, stored, format);
     if (hasAlpha(stored)) {
@@ -129,14 +119,20 @@ Result<void> writeImage(const fs::path& file, const Image& image, const WriteOpt
         spec.attribute("oiio:ColorSpace", "sRGB");
     else if (!target->integer)
         spec.attribute("oiio:ColorSpace", "Linear");
-    if (target->container == Container::Jpeg)
+    if (target->container == ImageContainer::Jpeg)
         spec.attribute("CompressionQuality", 95);
 
+    // Encoded in memory, then put in place whole by one rename: a full disk, a file-size limit
+    // or a crash leaves the previous file as it was, never a part of the new one.
     auto out = OIIO::ImageOutput::create(file.string());
     if (!out)
         return imageFileError(file, "no writer: " + oneLine(OIIO::geterror()));
+    std::vector<unsigned char> encoded;
+    OIIO::Filesystem::IOVecOutput memory(encoded);
+    void* proxy = &memory;
+    spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
     if (!out->open(file.string(), spec))
-        return imageFileError(file, "cannot open for writing: " + oneLine(out->geterror()));
+        return imageFileError(file, "cannot encode: " + oneLine(out->geterror()));
 
     bool ok = false;
     if (!target->integer) {
@@ -150,9 +146,11 @@ Result<void> writeImage(const fs::path& file, const Image& image, const WriteOpt
         ok = out->write_image(OIIO::TypeDesc::UINT8, data.data());
     }
     if (!ok)
-        return imageFileError(file, "cannot write pixels: " + oneLine(out->geterror()));
+        return imageFileError(file, "cannot encode the pixels: " + oneLine(out->geterror()));
     if (!out->close())
-        return imageFileError(file, "cannot finish writing: " + oneLine(out->geterror()));
+        return imageFileError(file, "cannot finish encoding: " + oneLine(out->geterror()));
+    const std::string_view bytes(reinterpret_cast<const char*>(encoded.data()), encoded.size());
+    if (Result<void> written = writeFileAtomically(file, bytes, false); !written) return Error{written.error()};
     return {};
 }
 

@@ -1,5 +1,7 @@
 #include "io/xml/JUnitReport.h"
 
+#include "io/file/AtomicFile.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -72,11 +74,7 @@ Result<void> writeJUnit(const std::filesystem::path& file, const JUnitTestSuite&
     std::error_code ec;
     if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
     if (ec) return Error{file.string() + ": cannot create the folder: " + ec.message()};
-    std::ofstream out(file, std::ios::binary);
-    out << formatJUnit(suite);
-    out.close();
-    if (!out) return Error{file.string() + ": cannot write the file"};
-    return {};
+    return writeFileAtomically(file, formatJUnit(suite), false);
 }
 
 }  // namespace rmfx
