@@ -326,7 +326,7 @@ TEST(Sandbox, RefusesDotDotLeadingOutOfTheWorkspaceFolder) {
     EXPECT_EQ(errors(l), (Lines{ws.string() + ":2: error: <texture name=\"t\">: image file '..\\secret.png' leads outside "
                                               "the sandbox: it is " + (dir / "secret.png").string() +
                                               ", and the sandbox allows only the workspace folder " + (dir / "ws").string() +
-                                              " (give its folder with --media DIR, or run without --sandbox)"}));
+                                              " (give its folder with --media DIR, or run with --no-sandbox)"}));
     // The person running rmfx may allow the folder.
     EXPECT_TRUE(load(ws, sandbox({dir.path()})).ok());
 }
@@ -342,7 +342,7 @@ TEST(Sandbox, RefusesAbsolutePaths) {
                                 "' leads outside the sandbox: it is " + secret.string() +
                                 ", and the sandbox allows only the workspace folder " + (dir / "ws").string() +
                                 " and the media folder " + (dir / "media").string() +
-                                " (give its folder with --media DIR, or run without --sandbox)"}));
+                                " (give its folder with --media DIR, or run with --no-sandbox)"}));
     EXPECT_TRUE(load(ws, sandbox({dir / "outside"})).ok());
 }
 
@@ -367,7 +367,7 @@ TEST(Sandbox, RefusesSymbolicLinksLeadingOutForEveryKindOfFile) {
     EXPECT_TRUE(load(ws).ok());
     Result<Workspace> l = load(ws, sandbox());
     const std::string allowed = ", and the sandbox allows only the workspace folder " + (dir / "ws").string() +
-                                " (give its folder with --media DIR, or run without --sandbox)";
+                                " (give its folder with --media DIR, or run with --no-sandbox)";
     EXPECT_EQ(errors(l), (Lines{
                              ws.string() + ":2: error: <texture name=\"t\">: image file 'link.png' leads outside the "
                                            "sandbox through a symbolic link: it is " +
@@ -410,7 +410,7 @@ TEST(Sandbox, AllowsAnIncludeRootOnlyInsideAnAllowedFolder) {
     EXPECT_EQ(errors(l), (Lines{ws.string() + ":1: error: <workspace include-root>: include-root " +
                                 (dir / "lib").string() + " (" + (dir / "lib").string() +
                                 ") lies outside the sandbox, which allows only the workspace folder " +
-                                (dir / "lib/variants").string() + " (give it with --media DIR, or run without --sandbox)"}));
+                                (dir / "lib/variants").string() + " (give it with --media DIR, or run with --no-sandbox)"}));
     EXPECT_TRUE(load(ws, sandbox({dir / "lib"})).ok());
 }
 

@@ -10,6 +10,7 @@
 
 #include "io/image/DdsBlockVolume.h"
 #include "io/image/ImageFileError.h"
+#include "io/image/ImageMemoryLimit.h"
 
 namespace rmfx {
 
@@ -61,6 +62,8 @@ Result<Image> readImageFile(const fs::path& file, Dimensions dimensions) {
         int64_t(spec.width) * spec.height * depth > kMaxPixels)
         return imageFileError(file, "image too large (" + std::to_string(spec.width) + "x" +
                                    std::to_string(spec.height) + (depth > 1 ? "x" + std::to_string(depth) : "") + ")");
+    if (Result<void> memory = checkImageMemory(file, spec.width, spec.height, depth, std::min(spec.nchannels, 4)); !memory)
+        return Error{memory.error()};
     if (dimensions == Dimensions::Flat && depth > 1)
         return imageFileError(file, "a volume image (" + std::to_string(depth) +
                                    " slices): it can only be a volume texture (<volume>, RenderMonkey's Rm3DTextureVariable)");

@@ -13,6 +13,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "io/image/ImageFileError.h"
+#include "io/image/ImageMemoryLimit.h"
 #include "io/image/ImageIO.h"
 
 namespace rmfx {
@@ -336,6 +337,11 @@ Result<InputImage> readInputImage(const fs::path& file, const std::string& layer
     const Part& part = (*parts)[size_t(layer.part)];
     const OIIO::ImageSpec& spec = part.spec;
     if (Result<void> size = checkSize(file, spec, maxSide); !size) return Error{size.error()};
+    // Held as RGBA float, whatever the file stores.
+    if (Result<void> memory = checkImageMemory(file, std::max(spec.width, spec.full_width),
+                                               std::max(spec.height, spec.full_height), 1, 4);
+        !memory)
+        return Error{memory.error()};
 
     InputImage input;
     input.layer = layer.name;

@@ -1,6 +1,10 @@
 #include "io/media/MediaArguments.h"
 
+#include <cstdint>
+#include <cstdlib>
 #include <filesystem>
+
+#include "io/image/ImageMemoryLimit.h"
 
 namespace rmfx {
 
@@ -21,6 +25,16 @@ std::optional<std::string> takeMediaArgument(const std::vector<std::string>& arg
         if (value == "error") media.missing = MissingMedia::Error;
         else if (value == "placeholder") media.missing = MissingMedia::Placeholder;
         else return "--missing-media: '" + value + "' is neither 'error' nor 'placeholder'";
+        return "";
+    }
+    if (arg == "--max-image-memory") {
+        if (i + 1 >= args.size()) return "--max-image-memory needs MiB";
+        const std::string& value = args[++i];
+        char* end = nullptr;
+        const double mib = std::strtod(value.c_str(), &end);
+        if (value.empty() || *end || !(mib >= 1.0 && mib <= 1048576.0))
+            return "--max-image-memory: expected MiB a decoded image may take, 1 to 1048576, got '" + value + "'";
+        setImageMemoryLimit(static_cast<std::uint64_t>(mib * 1048576.0));
         return "";
     }
     if (arg != "--media") return std::nullopt;

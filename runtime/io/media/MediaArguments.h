@@ -6,6 +6,9 @@
 //   --missing-media error|placeholder
 //                  what a texture or model found nowhere becomes: an error (the default), or a
 //                  stand-in with a warning (MissingMedia::Placeholder)
+//   --max-image-memory MiB
+//                  the most memory one decoded image may take (io/image/ImageMemoryLimit.h), for
+//                  the whole run: an image over it is refused from its header
 
 #include <optional>
 #include <string>

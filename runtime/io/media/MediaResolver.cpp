@@ -156,7 +156,7 @@ MediaResolver::Found MediaResolver::checked(fs::path file, const fs::path& opene
     return {std::nullopt, noun + " " + quoted(reference) + " leads outside the sandbox" +
                               (throughLink ? " through a symbolic link" : "") + ": it is " + real.string() +
                               ", and the sandbox allows only " + describeRoots() +
-                              " (give its folder with --media DIR, or run without --sandbox)"};
+                              " (give its folder with --media DIR, or run with --no-sandbox)"};
 }
 
 const std::multimap<std::string, fs::path>& MediaResolver::indexOf(const fs::path& folder) {
@@ -339,7 +339,7 @@ Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options, c
         out.push_back({Diagnostic::Severity::Error, ws.includeRootWhere, "<workspace include-root>",
                        "include-root " + ws.includeRoot.string() + " (" + resolved(ws.includeRoot).string() +
                            ") lies outside the sandbox, which allows only " + resolver.describeRoots() +
-                           " (give it with --media DIR, or run without --sandbox)"});
+                           " (give it with --media DIR, or run with --no-sandbox)"});
     return out;
 }
 
