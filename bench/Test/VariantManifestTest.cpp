@@ -89,7 +89,7 @@ TEST(VariantManifest, ErrorsNameFileLineAndElement) {
               "m.xml:2: error: unknown element <stages> in <bench-variants> (expected <scene> or <stage>)\n"
               "m.xml:1: error: <bench-variants>: no <stage>: the manifest names nothing to measure\n");
     EXPECT_EQ(formatAll(parseVariantManifestFile("no/such/variants.xml").diagnostics()),
-              "no/such/variants.xml: error: cannot open the file\n");
+              "no/such/variants.xml: error: the file does not exist\n");
 }
 
 StageSpec stageOf(const std::string& axes) {

@@ -557,7 +557,7 @@ TEST_F(CliReplayGLTest, InvalidManifestOrArgumentsExitWith1) {
     EXPECT_EQ(value.err, "rmfx replay: --junit needs a value\n");
     CommandResult missing = runRmfx("replay nothere.xml", dir.path());
     EXPECT_EQ(missing.status, 1);
-    EXPECT_EQ(missing.err, "nothere.xml: error: cannot open the file\n");
+    EXPECT_EQ(missing.err, "nothere.xml: error: the file does not exist\n");
 }
 
 TEST_F(CliReplayGLTest, QuietPrintsOnlyFailingCases) {

@@ -387,7 +387,7 @@ TEST(ReplayManifest, ReadsFilesAndResolvesInTheirFolder) {
 
     Result<ReplayManifest> missing = parseReplayManifestFile(dir / "none.xml");
     EXPECT_FALSE(missing.ok());
-    EXPECT_EQ(formatAll(missing.diagnostics()), (dir / "none.xml").string() + ": error: cannot open the file\n");
+    EXPECT_EQ(formatAll(missing.diagnostics()), (dir / "none.xml").string() + ": error: the file does not exist\n");
 }
 
 }  // namespace

@@ -467,7 +467,7 @@ TEST(WorkspaceParser, NoPassIsAnErrorOnTheWorkspaceElement) {
 
 TEST(WorkspaceParser, MissingFileCannotBeOpened) {
     Result<Workspace> p = parseWorkspaceFile("no/such/workspace.xml");
-    EXPECT_EQ(formatted(p.diagnostics()), (Lines{"no/such/workspace.xml: error: cannot open the file"}));
+    EXPECT_EQ(formatted(p.diagnostics()), (Lines{"no/such/workspace.xml: error: the file does not exist"}));
 }
 
 // ---- the model ----

@@ -101,7 +101,7 @@ TEST(XmlDocumentParser, AFileThatCannotBeOpenedIsOneError) {
     });
     EXPECT_FALSE(r.ok());
     EXPECT_FALSE(parsed);
-    EXPECT_EQ(formatted(r.diagnostics()), (Lines{"no/such/list.xml: error: cannot open the file"}));
+    EXPECT_EQ(formatted(r.diagnostics()), (Lines{"no/such/list.xml: error: the file does not exist"}));
 }
 
 TEST(XmlDocumentParser, RelativeReferencesResolveInTheFilesFolder) {

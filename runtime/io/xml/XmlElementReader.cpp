@@ -2,6 +2,8 @@
 
 #include <cctype>
 #include <cmath>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -174,9 +176,18 @@ const XMLElement* parseDocument(tinyxml2::XMLDocument& doc, const std::string& t
 }
 
 Result<std::string> readTextFile(const std::filesystem::path& path) {
+    auto failure = [&](std::string why) {
+        return Result<std::string>::failure({{Diagnostic::Severity::Error, {path.string(), 0}, "", std::move(why)}});
+    };
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (status.type() == std::filesystem::file_type::not_found) return failure("the file does not exist");
+    if (status.type() == std::filesystem::file_type::directory) return failure("it is a folder, not a file");
     std::ifstream in(path, std::ios::binary);
-    if (!in)
-        return Result<std::string>::failure({{Diagnostic::Severity::Error, {path.string(), 0}, "", "cannot open the file"}});
+    if (!in) {
+        const int error = errno;
+        return failure(std::string("cannot open the file") + (error ? std::string(": ") + std::strerror(error) : ""));
+    }
     std::stringstream buffer;
     buffer << in.rdbuf();
     return buffer.str();

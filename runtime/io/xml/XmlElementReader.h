@@ -92,7 +92,8 @@ std::optional<std::pair<int, int>> parseSize(const std::string& text);
 const XMLElement* parseDocument(tinyxml2::XMLDocument& doc, const std::string& text, const std::string& file,
                                 const char* rootName, Diagnostics& diagnostics);
 
-// A whole file as text; or one error, "cannot open the file", at the file.
+// A whole file as text; or one error at the file: "the file does not exist", "it is a folder, not a
+// file", or "cannot open the file: REASON".
 Result<std::string> readTextFile(const std::filesystem::path& path);
 
 }  // namespace rmfx::xml
