@@ -56,6 +56,11 @@ struct Texture {
     ColorSpace colorSpace = ColorSpace::Linear;
     bool mipmaps = true;
     int faceSize = 0;  // equirect → cube face size; 0: image height / 2
+    // read-when="VARIABLE=VALUE": the passes sample this texture only while the variable has that
+    // value (a shader's own branch, which rmfx cannot see); a --texture given for it otherwise is
+    // said to have no effect, naming the setting that would give it one. Empty: always read.
+    std::string readWhenVariable;
+    std::string readWhenValue;
     // An <input>'s texture has no files: its image is supplied at run time (rmfx render --input),
     // decoded to linear RGBA at the size it is used at.
     std::shared_ptr<const Image> supplied;

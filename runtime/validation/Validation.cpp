@@ -21,6 +21,7 @@ public:
     void run() {
         checkUniqueNames();
         checkTargets();
+        checkTextureReadConditions();
         checkInputs();
         checkOutput();
         checkEffects();
@@ -82,6 +83,22 @@ private:
             if (!t.scaleVariable.empty())
                 checkChoiceVariable(t, "scale-by", t.scaleVariable, t.scales.size(), "scale",
                                     selectTargetSize(t, valueOf(t.scaleVariable)).has_value());
+        }
+    }
+
+    // read-when="VARIABLE=VALUE": a declared variable, and a value of its type.
+    void checkTextureReadConditions() {
+        for (const Texture& t : ws_.textures) {
+            if (t.readWhenVariable.empty()) continue;
+            const std::string element = "<" + std::string(textureElementName(t.kind)) + " name=\"" + t.name + "\">";
+            const Variable* v = ws_.findVariable(t.readWhenVariable);
+            if (!v) {
+                error(t.where, element, "read-when names '" + t.readWhenVariable + "', which is not a declared variable");
+                continue;
+            }
+            if (Result<Value> value = parseValue(v->value.type, t.readWhenValue); !value)
+                error(t.where, element, "read-when: '" + t.readWhenValue + "' is not a value of " + typeWithWidth(v->value.type) +
+                                            " variable '" + v->name + "' (" + at(v->where) + "): " + value.error());
         }
     }
 

@@ -260,8 +260,8 @@ private:
     std::optional<Texture> parseTexture(const XMLElement* e) {
         bool cube = std::string_view(e->Name()) == "cubemap";
         ElementReader r(e, file_, diagnostics_,
-                        cube ? std::initializer_list<const char*>{"name", "file", "layout", "colorspace", "mipmaps", "face-size"}
-                             : std::initializer_list<const char*>{"name", "file", "colorspace", "mipmaps"});
+                        cube ? std::initializer_list<const char*>{"name", "file", "layout", "colorspace", "mipmaps", "face-size", "read-when"}
+                             : std::initializer_list<const char*>{"name", "file", "colorspace", "mipmaps", "read-when"});
         Texture t;
         t.where = r.where();
         t.kind = cube ? TextureKind::Cube : std::string_view(e->Name()) == "volume" ? TextureKind::Volume : TextureKind::Texture2D;
@@ -269,6 +269,15 @@ private:
         if (auto cs = r.choice<ColorSpace>("colorspace", {{"linear", ColorSpace::Linear}, {"srgb", ColorSpace::Srgb}}))
             t.colorSpace = *cs;
         t.mipmaps = r.boolean("mipmaps").value_or(true);
+        if (auto when = r.string("read-when")) {
+            const size_t equals = when->find('=');
+            if (equals == std::string::npos || equals == 0 || equals + 1 == when->size())
+                r.error("attribute 'read-when' is VARIABLE=VALUE (read-when=\"Environment_Format=1\"), got '" + *when + "'");
+            else {
+                t.readWhenVariable = when->substr(0, equals);
+                t.readWhenValue = when->substr(equals + 1);
+            }
+        }
         if (!cube) {
             auto file = r.string("file", true);
             noChildren(e);
