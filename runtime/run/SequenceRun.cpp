@@ -70,6 +70,8 @@ Result<SequenceTimes> renderSequence(const Workspace& source, const SequenceSett
         return runError("-o " + settings.outputPattern,
                         "a sequence is written to a pattern such as out/frame.%04d.png (" + output.error() + ")");
     if (!(settings.fps > 0.0)) return runError("--fps", "must be above 0");
+    if (settings.deltaTime && !(*settings.deltaTime >= 0.0)) return runError("--dt", "must be 0 or more");
+    if (settings.preroll < 0) return runError("--preroll", "must be 0 or more");
 
     // The first frame goes through supplyInputs with the static images: it picks the input, sets
     // the viewport and says how each file was decoded.
@@ -98,7 +100,7 @@ Result<SequenceTimes> renderSequence(const Workspace& source, const SequenceSett
     SequenceTimes times;
     times.frames = static_cast<int>(frames->size());
     times.read = firstReadSeconds;
-    const float dt = static_cast<float>(1.0 / settings.fps);
+    const float dt = static_cast<float>(settings.deltaTime.value_or(1.0 / settings.fps));
     const std::launch policy = settings.overlap ? std::launch::async : std::launch::deferred;
     std::future<ReadFrame> next;
     std::future<WrittenFrame> writing;
@@ -121,6 +123,15 @@ Result<SequenceTimes> renderSequence(const Workspace& source, const SequenceSett
     };
     std::optional<FrameWatchdog> watchdog;
     if (settings.frameBudgetSeconds > 0) watchdog.emplace(settings.frameBudgetSeconds, settings.onFrameBudget);
+    for (int p = 0; p < settings.preroll; ++p) {
+        const std::string label = "pre-roll frame " + std::to_string(p + 1) + " of " + std::to_string(settings.preroll);
+        Clock::time_point renderStart = Clock::now();
+        if (watchdog) watchdog->arm(label + " of " + ws.path.string());
+        Result<void> rendered = executor->renderFrame({static_cast<float>(p - settings.preroll) * dt, dt});
+        if (watchdog) watchdog->disarm();
+        if (!rendered) return fail(label + ": " + rendered.error());
+        times.render += secondsSince(renderStart);
+    }
     for (size_t k = 0; k < frames->size(); ++k) {
         const SequenceFrame& frame = (*frames)[k];
         const std::string frameLabel = "frame " + std::to_string(frame.frame) + " (" + frame.path.string() + ")";

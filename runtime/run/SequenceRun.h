@@ -26,6 +26,12 @@ struct SequenceSettings {
     std::string target;         // what is written; empty: the workspace's output
     WriteOptions write;
     double fps = 24.0;
+    // The step between frames; none: 1 / fps.
+    std::optional<double> deltaTime;
+    // Frames rendered from the first image before the first one written, so that light
+    // adaptation and every frame="previous" target start settled on the shot (time runs from
+    // -preroll · dt, so the written frames keep their times).
+    int preroll = 0;
     std::optional<glm::ivec2> size;  // the viewport; none: the first frame's size
     // Read the next image and write the last while the GPU renders (off: one after the other,
     // for the benchmark's comparison).
