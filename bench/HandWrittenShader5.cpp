@@ -378,7 +378,8 @@ void HandWrittenShader5::renderFrame() {
     v.cameraPosition = s.camera.position();
 
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE);
+    // As shader_5.xml's combine: colour added, the screen's alpha kept.
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE, GL_ZERO, GL_ONE);
     glBlendEquation(GL_FUNC_ADD);
     glDepthFunc(GL_LESS);
     glCullFace(GL_BACK);

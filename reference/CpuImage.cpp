@@ -108,7 +108,7 @@ RefImage decodedAlpha64(const RefImage& image) {
 RefImage blendedAdditive(const RefImage& dst, const RefImage& src) {
     RefImage out = dst;
     for (size_t i = 0; i < out.texels.size() && i < src.texels.size(); ++i)
-        out.texels[i] += src.texels[i] * src.texels[i].a;
+        out.texels[i] += glm::dvec4(glm::dvec3(src.texels[i]) * src.texels[i].a, 0.0);
     return out;
 }
 

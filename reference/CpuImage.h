@@ -75,8 +75,9 @@ glm::dvec4 encodeAlpha64(glm::dvec3 rgb, double multiplier);
 glm::dvec3 decodeAlpha64(glm::dvec4 encoded);
 RefImage decodedAlpha64(const RefImage& image);
 
-// dst + src · src.a on every channel, what <blend mode="custom" src="src-alpha" dst="one"/>
-// writes (sizes must match). Not rounded.
+// dst.rgb + src.rgb · src.a with dst's alpha kept, what the effects' additive combines write:
+// <blend mode="custom" src="src-alpha" dst="one" src-alpha="zero" dst-alpha="one"/> (sizes must
+// match). Not rounded.
 RefImage blendedAdditive(const RefImage& dst, const RefImage& src);
 
 // The largest r, g or b of any texel.
