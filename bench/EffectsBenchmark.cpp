@@ -41,6 +41,7 @@
 #include "core/Percentile.h"
 #include "gl/GlContext.h"
 #include "gl/GlExecutor.h"
+#include "io/file/AtomicFile.h"
 #include "validation/WorkspaceLoader.h"
 
 namespace {
@@ -460,10 +461,8 @@ int main(int argc, char** argv) {
     std::string summary = markdownSummary(reporter.runs, machine);
     std::printf("\n%s", summary.c_str());
     if (!markdownFile.empty()) {
-        std::ofstream out(markdownFile);
-        out << summary;
-        if (!out) {
-            std::fprintf(stderr, "cannot write %s\n", markdownFile.c_str());
+        if (Result<void> written = writeFileAtomically(markdownFile, summary, false); !written) {
+            std::fprintf(stderr, "%s\n", written.error().c_str());
             return 1;
         }
     }

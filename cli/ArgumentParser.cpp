@@ -14,9 +14,16 @@ ArgumentParser& ArgumentParser::option(std::initializer_list<const char*> names,
     return *this;
 }
 
-ArgumentParser& ArgumentParser::own(TakeOwn take) {
+ArgumentParser& ArgumentParser::own(TakeOwn take, std::initializer_list<const char*> names) {
     own_.push_back(std::move(take));
+    ownNames_.insert(ownNames_.end(), names.begin(), names.end());
     return *this;
+}
+
+std::vector<std::string> ArgumentParser::names() const {
+    std::vector<std::string> out = ownNames_;
+    for (const Named& n : named_) out.insert(out.end(), n.names.begin(), n.names.end());
+    return out;
 }
 
 ArgumentParser& ArgumentParser::positional(TakeValue take) {

@@ -26,8 +26,9 @@ public:
     enum class EmptyValue { Refused, Allowed };
     ArgumentParser& option(std::initializer_list<const char*> names, TakeValue take,
                            EmptyValue emptyValue = EmptyValue::Refused);
-    // Arguments the handler recognises itself; handlers are asked first, in the order given.
-    ArgumentParser& own(TakeOwn take);
+    // Arguments the handler recognises itself (`names`, for names()); handlers are asked first,
+    // in the order given.
+    ArgumentParser& own(TakeOwn take, std::initializer_list<const char*> names = {});
     // Every argument that does not start with '-' (an empty one included).
     ArgumentParser& positional(TakeValue take);
     // What follows "unknown option 'X'" in that message; default " (see rmfx --help)".
@@ -35,6 +36,9 @@ public:
 
     // Takes every argument in order; "" when all were fine, else the first message.
     std::string parse(const std::vector<std::string>& args) const;
+
+    // Every option and flag name the parser takes, in the order declared (rmfx --options).
+    std::vector<std::string> names() const;
 
 private:
     struct Named {
@@ -48,6 +52,7 @@ private:
 
     std::vector<Named> named_;
     std::vector<TakeOwn> own_;
+    std::vector<std::string> ownNames_;
     TakeValue positional_;
     std::string unknownHint_ = " (see rmfx --help)";
 };

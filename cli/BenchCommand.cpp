@@ -21,7 +21,10 @@
 #include "bench/accuracy/VariantRun.h"
 #include "cli/ArgumentParser.h"
 #include "cli/Commands.h"
+#include "cli/OptionValues.h"
 #include "gl/GlContext.h"
+#include "io/file/AtomicFile.h"
+#include "io/file/OutputPath.h"
 #include "io/image/ImageIO.h"
 #include "io/media/MediaArguments.h"
 #include "io/xml/XmlElementReader.h"
@@ -48,7 +51,8 @@ struct BenchArguments {
     WorkspaceLoadOptions load;  // --media, --sandbox
 };
 
-std::optional<BenchArguments> parseArguments(const std::vector<std::string>& args) {
+// With `names`, fills it with the parser's option names and parses nothing.
+std::optional<BenchArguments> parseArguments(const std::vector<std::string>& args, std::vector<std::string>* names = nullptr) {
     BenchArguments a;
     bool manifestGiven = false;
     auto count = [](const std::string& text, int low, int& out) {
@@ -59,7 +63,7 @@ std::optional<BenchArguments> parseArguments(const std::vector<std::string>& arg
         return true;
     };
     ArgumentParser parser;
-    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, a.load.media); })
+    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, a.load.media); }, kMediaOptionNames)
         .option({"--input"}, [&](const std::string& value) { a.inputs.push_back(value); return ""; })
         .option({"--size"}, [&](const std::string& value) -> std::string {
             auto size = xml::parseSize(value);
@@ -94,6 +98,10 @@ std::optional<BenchArguments> parseArguments(const std::vector<std::string>& arg
             manifestGiven = true;
             return "";
         });
+    if (names) {
+        *names = parser.names();
+        return std::nullopt;
+    }
     if (std::string message = parser.parse(args); !message.empty()) {
         std::cerr << "rmfx bench: " << message << "\n";
         return std::nullopt;
@@ -247,10 +255,9 @@ std::string commandLine(const std::vector<std::string>& args) {
 }
 
 bool writeText(const fs::path& file, const std::string& text) {
-    std::ofstream out(file, std::ios::binary);
-    out << text;
-    if (!out) std::cerr << "rmfx bench: cannot write " << file.string() << "\n";
-    return static_cast<bool>(out);
+    Result<void> written = writeFileAtomically(file, text, false);
+    if (!written) std::cerr << "rmfx bench: " << written.error() << "\n";
+    return written.ok();
 }
 
 std::string sizesOf(const std::vector<BenchInput>& inputs) {
@@ -263,6 +270,12 @@ std::string sizesOf(const std::vector<BenchInput>& inputs) {
 }
 
 }  // namespace
+
+std::vector<std::string> benchOptionNames() {
+    std::vector<std::string> names;
+    (void)parseArguments({}, &names);
+    return names;
+}
 
 int benchCommand(const std::vector<std::string>& args) {
     auto a = parseArguments(args);
@@ -282,6 +295,10 @@ int benchCommand(const std::vector<std::string>& args) {
             std::cerr << "rmfx bench: input '" << file.stem().string() << "': " << file.string() << ": no such file\n";
             return 1;
         }
+    if (Result<void> usable = checkOutputFolder(a->out); !usable) {
+        std::cerr << "rmfx bench: --out: " << usable.error() << "\n";
+        return 1;
+    }
 
     // One context for every stage, so that their timings compare: compatibility when any asks for it.
     GlProfile profile = GlProfile::Core;

@@ -13,4 +13,12 @@ int editCommand(const std::vector<std::string>& args);
 int benchCommand(const std::vector<std::string>& args);
 int listCommand(const std::vector<std::string>& args);
 
+// The option and flag names each command's parser takes (-o, --output, --size, … for render).
+std::vector<std::string> renderOptionNames();
+std::vector<std::string> validateOptionNames();
+std::vector<std::string> replayOptionNames();
+std::vector<std::string> editOptionNames();
+std::vector<std::string> benchOptionNames();
+std::vector<std::string> listOptionNames();
+
 }  // namespace rmfx::cli

@@ -8,6 +8,15 @@
 
 namespace rmfx::cli {
 
+std::vector<std::string> editOptionNames() {
+    std::vector<std::string> names;
+#ifdef RMFX_HAVE_EDITOR
+    std::string error;
+    (void)editor::parseEditorOptions({}, &error, &names);
+#endif
+    return names;
+}
+
 int editCommand(const std::vector<std::string>& args) {
 #ifdef RMFX_HAVE_EDITOR
     std::string error;

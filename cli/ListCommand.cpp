@@ -8,6 +8,7 @@
 
 #include "cli/ArgumentParser.h"
 #include "cli/Commands.h"
+#include "cli/OptionValues.h"
 #include "core/IdentifierSearch.h"
 #include "frontend/rfx/RfxImporter.h"
 #include "io/media/MediaArguments.h"
@@ -166,12 +167,24 @@ void describeWorkspace(std::ostream& out, const Workspace& ws, const MediaOption
 
 }  // namespace
 
+ArgumentParser listParser(std::vector<std::string>& files, MediaOptions& media) {
+    ArgumentParser parser;
+    parser.positional([&](const std::string& file) { files.push_back(file); return ""; });
+    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, media); },
+               kMediaOptionNames);
+    return parser;
+}
+
+std::vector<std::string> listOptionNames() {
+    std::vector<std::string> files;
+    MediaOptions media;
+    return listParser(files, media).names();
+}
+
 int listCommand(const std::vector<std::string>& args) {
     std::vector<std::string> files;
     MediaOptions media;
-    ArgumentParser parser;
-    parser.positional([&](const std::string& file) { files.push_back(file); return ""; });
-    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, media); });
+    ArgumentParser parser = listParser(files, media);
     if (std::string error = parser.parse(args); !error.empty() || files.size() != 1) {
         std::cerr << "rmfx list: " << (error.empty() ? "" : error + "; ")
                   << "usage: rmfx list FILE.rfx [--media DIR ...] [--missing-media error|placeholder]\n";

@@ -16,6 +16,10 @@
 
 namespace rmfx::cli {
 
+// The names takeMediaArgument (io/media/MediaArguments.h) takes, for ArgumentParser::own.
+inline const std::initializer_list<const char*> kMediaOptionNames{"--media", "--sandbox", "--no-sandbox", "--missing-media",
+                                                                  "--max-image-memory"};
+
 // --size WIDTHxHEIGHT, each side from 1 to 16384.
 ArgumentParser::TakeValue sizeValue(glm::ivec2& size);
 // --frames N, from 1 to 1000000.

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 #include <optional>
+#include <set>
 
 #include "cli/ArgumentParser.h"
 #include "cli/Commands.h"
@@ -15,6 +16,7 @@
 #include "gl/GlContext.h"
 #include "graph/FrameExplanation.h"
 #include "io/image/ImageIO.h"
+#include "io/image/ImageOutputPath.h"
 #include "io/media/ImageSequence.h"
 #include "io/media/MediaArguments.h"
 #include "model/EffectSelection.h"
@@ -22,6 +24,7 @@
 #include "run/SequenceRun.h"
 #include "validation/ImageInputs.h"
 #include "validation/TextureArguments.h"
+#include "validation/UnreadArguments.h"
 #include "validation/WorkspaceLoader.h"
 
 namespace rmfx::cli {
@@ -44,18 +47,30 @@ struct RenderArguments {
     ExecutorOptions executor;
     std::vector<InputArgument> inputs;  // --input [NAME=]FILE
     double fps = 24.0;                  // a sequence's frame rate: dt = 1 / fps
+    bool fpsGiven = false;
+    bool dtGiven = false;
+    int preroll = 0;                    // a sequence's frames of its first image before the first output
 };
 
-std::optional<RenderArguments> parseArguments(const std::vector<std::string>& args) {
+// With `names`, fills it with the parser's option names and parses nothing.
+std::optional<RenderArguments> parseArguments(const std::vector<std::string>& args, std::vector<std::string>* names = nullptr) {
     RenderArguments a;
     a.run.frameBudgetSeconds = kDefaultFrameBudgetSeconds;
     using Empty = ArgumentParser::EmptyValue;
     ArgumentParser parser;
-    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, a.load.media); })
+    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, a.load.media); }, kMediaOptionNames)
         .option({"-o", "--output"}, [&](const std::string& value) { a.output = value; return ""; }, Empty::Allowed)
         .option({"--size"}, sizeValue(a.run.size), Empty::Allowed)
         .option({"--frames"}, frameCountValue(a.run.frames), Empty::Allowed)
-        .option({"--dt"}, secondsValue(a.run.deltaTime), Empty::Allowed)
+        .option({"--dt"}, secondsValue(a.run.deltaTime, &a.dtGiven), Empty::Allowed)
+        .option({"--preroll"}, [&](const std::string& value) -> std::string {
+            char* end = nullptr;
+            const long n = std::strtol(value.c_str(), &end, 10);
+            if (value.empty() || *end || n < 0 || n > 100000)
+                return "--preroll: expected a count of frames from 0 to 100000, got '" + value + "'";
+            a.preroll = static_cast<int>(n);
+            return "";
+        })
         .option({"--set"}, overrideValue(a.overrides), Empty::Allowed)
         .option({"--fps"}, [&](const std::string& value) -> std::string {
             char* end = nullptr;
@@ -63,6 +78,7 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
             if (value.empty() || *end || !std::isfinite(fps) || fps <= 0 || fps > 10000)
                 return "--fps: expected frames per second above 0, got '" + value + "'";
             a.fps = fps;
+            a.fpsGiven = true;
             return "";
         })
         .option({"--input"}, inputValue(a.inputs))
@@ -119,11 +135,22 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
             a.workspace = arg;
             return "";
         });
+    if (names) {
+        *names = parser.names();
+        return std::nullopt;
+    }
     if (std::string message = parser.parse(args); !message.empty()) {
         std::cerr << "rmfx render: " << message << "\n";
         return std::nullopt;
     }
     return a;
+}
+
+// A sequence's output pattern: one frame-number field, a known extension, a folder that takes files.
+Result<void> checkSequenceOutput(const std::string& pattern) {
+    Result<FramePattern> parsed = parseFramePattern(pattern);
+    if (!parsed) return Error{"a sequence is written to a pattern such as out/frame.%04d.png (" + parsed.error() + ")"};
+    return checkImageOutputPath(parsed->fileName(0));
 }
 
 // "[=======>      ] 12/30 frames, 4.1 fps, 4 s left" rewritten in place on a terminal; a plain
@@ -201,8 +228,17 @@ int renderSequenceCommand(const RenderArguments& a, const Workspace& ws) {
                   << " is a sequence: name the output frames with a pattern too (-o out/frame.%04d.png)\n";
         return 1;
     }
+    if (Result<void> usable = checkSequenceOutput(*a.output); !usable) {
+        std::cerr << "rmfx render: -o " << *a.output << ": " << usable.error() << "\n";
+        return 1;
+    }
     if (a.run.frames != 1) {
-        std::cerr << "rmfx render: --frames does not apply to a sequence: it renders one frame per image\n";
+        std::cerr << "rmfx render: --frames does not apply to a sequence: it renders one frame per image "
+                     "(--preroll N renders N frames of the first image before the first output)\n";
+        return 1;
+    }
+    if (a.fpsGiven && a.dtGiven) {
+        std::cerr << "rmfx render: --fps and --dt both set a sequence's time step (dt = 1 / fps): give one\n";
         return 1;
     }
     SequenceSettings settings;
@@ -216,6 +252,8 @@ int renderSequenceCommand(const RenderArguments& a, const Workspace& ws) {
     settings.target = a.target.value_or("");
     settings.write.transform = a.transform.value_or(a.target ? DisplayTransform::None : ws.output.transform);
     settings.fps = a.fps;
+    if (a.dtGiven) settings.deltaTime = a.run.deltaTime;
+    settings.preroll = a.preroll;
     if (a.run.size != glm::ivec2(0)) settings.size = a.run.size;
     auto context = GlContext::createHeadless(ws.profile);
     if (!context) {
@@ -243,9 +281,23 @@ int renderSequenceCommand(const RenderArguments& a, const Workspace& ws) {
 
 }  // namespace
 
+std::vector<std::string> renderOptionNames() {
+    std::vector<std::string> names;
+    (void)parseArguments({}, &names);
+    return names;
+}
+
 int renderCommand(const std::vector<std::string>& args) {
     auto a = parseArguments(args);
     if (!a) return 1;
+    // A given output is checked before anything is loaded; the default one (the workspace's
+    // name) once it is known, still before any frame renders.
+    if (a->output && !isSequencePattern(*a->output)) {
+        if (Result<void> usable = checkImageOutputPath(*a->output); !usable) {
+            std::cerr << "rmfx render: -o: " << usable.error() << "\n";
+            return 1;
+        }
+    }
     if (!a->workspace && !a->load.effect.empty()) {
         std::cerr << "rmfx render: --effect chooses an effect of a RenderMonkey .rfx file; name the file\n";
         return 1;
@@ -268,7 +320,26 @@ int renderCommand(const std::vector<std::string>& args) {
         std::cerr << "rmfx render: --check inspects a single run; for a sequence, check a frame of it on its own\n";
         return 1;
     }
+    if (Result<std::set<std::string>> effects = selectEffects(ws, a->executor.effects); !effects) {
+        std::cerr << "rmfx render: --effects: " << effects.error() << "\n";
+        return 1;
+    }
+    if (!a->quiet) {
+        FramePlanOptions planned = a->executor;
+        for (const InputArgument& given : a->inputs)
+            planned.givenInputs.insert(!given.name.empty() ? given.name : ws.inputs.size() == 1 ? ws.inputs.front().name : "");
+        std::cerr << formatAll(unreadArgumentWarnings(ws, planned, a->load.textures, a->inputs));
+    }
     if (sequence) return renderSequenceCommand(*a, ws);
+    if (a->preroll > 0) {
+        std::cerr << "rmfx render: --preroll is for sequences (an --input frame pattern); a single render "
+                     "runs --frames N frames and writes the last\n";
+        return 1;
+    }
+    if (a->fpsGiven) {
+        std::cerr << "rmfx render: --fps is a sequence's frame rate; a single render steps by --dt\n";
+        return 1;
+    }
     if (!a->inputs.empty()) {
         const bool sized = a->run.size != glm::ivec2(0);
         Result<SuppliedInputs> supplied = supplyInputs(ws, a->inputs, sized ? std::optional(a->run.size) : std::nullopt);
@@ -287,6 +358,15 @@ int renderCommand(const std::vector<std::string>& args) {
         return 1;
     }
     std::string output = a->output.value_or(ws.name + ".png");
+    if (isSequencePattern(output)) {
+        std::cerr << "rmfx render: -o " << output << " is a frame pattern, but no --input is a sequence\n";
+        return 1;
+    }
+    const bool writes = a->output || !a->explain;  // --explain alone writes no image
+    if (Result<void> usable = checkImageOutputPath(output); writes && !usable) {
+        std::cerr << "rmfx render: -o: " << usable.error() << "\n";
+        return 1;
+    }
     a->executor.outputs = {targetName};
 
     auto context = GlContext::createHeadless(ws.profile);

@@ -12,9 +12,11 @@
 
 #include "cli/ArgumentParser.h"
 #include "cli/Commands.h"
+#include "cli/OptionValues.h"
 #include "core/FrameWatchdog.h"
 #include "frontend/replay/ReplayManifest.h"
 #include "gl/GlContext.h"
+#include "io/file/OutputPath.h"
 #include "io/image/ImageIO.h"
 #include "io/media/MediaArguments.h"
 #include "io/xml/JUnitReport.h"
@@ -41,7 +43,8 @@ struct ReplayArguments {
     MissingMedia missing = MissingMedia::Error;  // --missing-media
 };
 
-std::optional<ReplayArguments> parseArguments(const std::vector<std::string>& args) {
+// With `names`, fills it with the parser's option names and parses nothing.
+std::optional<ReplayArguments> parseArguments(const std::vector<std::string>& args, std::vector<std::string>* names = nullptr) {
     ReplayArguments a;
     auto fail = [](const std::string& message) -> std::optional<ReplayArguments> {
         std::cerr << "rmfx replay: " << message << "\n";
@@ -58,7 +61,7 @@ std::optional<ReplayArguments> parseArguments(const std::vector<std::string>& ar
                   else a.sandbox = media.sandbox;
               }
               return taken;
-          })
+          }, kMediaOptionNames)
         .option({"--out"}, [&](const std::string& value) { a.out = value; return ""; })
         .option({"--junit"}, [&](const std::string& value) { a.junit = value; return ""; })
         .option({"--report"}, [&](const std::string& value) { a.report = value; return ""; })
@@ -78,6 +81,10 @@ std::optional<ReplayArguments> parseArguments(const std::vector<std::string>& ar
             a.manifest = arg;
             return "";
         });
+    if (names) {
+        *names = parser.names();
+        return std::nullopt;
+    }
     if (std::string message = parser.parse(args); !message.empty()) return fail(message);
     if (!a.manifest) return fail("name a manifest file (see rmfx --help and docs/replay.md)");
     if (a.report && a.update)
@@ -315,9 +322,31 @@ private:
 
 }  // namespace
 
+std::vector<std::string> replayOptionNames() {
+    std::vector<std::string> names;
+    (void)parseArguments({}, &names);
+    return names;
+}
+
 int replayCommand(const std::vector<std::string>& args) {
     auto a = parseArguments(args);
     if (!a) return 1;
+    // Where the results go is checked before any case renders. The JUnit report's folder is
+    // created when missing, as --out and --report are.
+    auto junitUsable = [&]() -> Result<void> {
+        if (!a->junit) return {};
+        std::error_code ec;
+        if (fs::is_directory(*a->junit, ec)) return Error{"'" + a->junit->string() + "' is a folder, not a file"};
+        return checkOutputFolder(a->junit->has_parent_path() ? a->junit->parent_path() : fs::path("."));
+    };
+    for (auto [option, usable] : {std::pair{"--out", checkOutputFolder(a->out)},
+                                  std::pair{"--junit", junitUsable()},
+                                  std::pair{"--report", a->report ? checkOutputFolder(*a->report) : Result<void>()}}) {
+        if (!usable) {
+            std::cerr << "rmfx replay: " << option << ": " << usable.error() << "\n";
+            return 1;
+        }
+    }
     Result<ReplayManifest> parsed = parseReplayManifestFile(*a->manifest);
     std::cerr << formatAll(parsed.diagnostics());
     if (!parsed) return 1;

@@ -12,22 +12,42 @@ static std::string counted(size_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
+namespace {
+
+struct ValidateArguments {
+    WorkspaceLoadOptions load;
+    std::vector<std::string> paths;
+};
+
+ArgumentParser validateParser(ValidateArguments& a) {
+    ArgumentParser parser;
+    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, a.load.media); },
+               kMediaOptionNames)
+        .option({"--effect"}, [&](const std::string& value) { a.load.effect = value; return ""; },
+                ArgumentParser::EmptyValue::Allowed)
+        .option({"--rfx-matrices"}, rfxMatricesValue(a.load.rfxMatrices))
+        .positional([&](const std::string& path) { a.paths.push_back(path); return ""; })
+        .unknownOptionHint("");
+    return parser;
+}
+
+}  // namespace
+
+std::vector<std::string> validateOptionNames() {
+    ValidateArguments a;
+    return validateParser(a).names();
+}
+
 int validateCommand(const std::vector<std::string>& args) {
     if (args.empty()) {
         std::cerr << "rmfx validate: name one or more workspace files\n";
         return 1;
     }
     ValidationOptions options;
-    WorkspaceLoadOptions load;
-    std::vector<std::string> paths;
-    ArgumentParser parser;
-    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, load.media); })
-        .option({"--effect"}, [&](const std::string& value) { load.effect = value; return ""; },
-                ArgumentParser::EmptyValue::Allowed)
-        .option({"--rfx-matrices"}, rfxMatricesValue(load.rfxMatrices))
-        .positional([&](const std::string& path) { paths.push_back(path); return ""; })
-        .unknownOptionHint("");
-    if (std::string message = parser.parse(args); !message.empty()) {
+    ValidateArguments a;
+    const WorkspaceLoadOptions& load = a.load;
+    const std::vector<std::string>& paths = a.paths;
+    if (std::string message = validateParser(a).parse(args); !message.empty()) {
         std::cerr << "rmfx validate: " << message << "\n";
         return 1;
     }

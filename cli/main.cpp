@@ -1,8 +1,12 @@
 // rmfx command line: renders, validates and replays workspaces through the runtime library only.
 
+#include <algorithm>
+#include <cctype>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -25,6 +29,8 @@ usage:
   rmfx bench [MANIFEST] [options]     measure each variant of the stages (default manifest
                                       bench/variants.xml): GPU time and error against a float64
                                       ideal; CSV, JSON, SVG plot, table (docs/accuracy-vs-time.md)
+  rmfx COMMAND --help                 that command's usage and options
+  rmfx --options                      every command's options, one "COMMAND OPTION" a line
   rmfx --help | --version
 
 WORKSPACE is an rmfx workspace file (docs/workspace-format.md) or a RenderMonkey .rfx file
@@ -45,7 +51,8 @@ render options:
                          output's display transform (default: WORKSPACE-NAME.png)
   --size WxH             viewport size (default: the workspace's size attribute, else 512x512)
   --frames N             frames to render before writing (default 1)
-  --dt SECONDS           fixed time step between frames (default 1/60)
+  --dt SECONDS           fixed time step between frames (default 1/60; a sequence's, instead of
+                         --fps)
   --set NAME=VALUE       override a variable (repeatable), e.g. --set Exposure_Level=2
                          or --set Sun_Direction="0 1 0"
   --input [NAME=]FILE[:layer]
@@ -54,6 +61,9 @@ render options:
                          --size; an EXR part or layer after ':'. A frame pattern
                          (shot/f.%04d.exr, f.####.exr) runs the sequence, one output per frame
   --fps N                a sequence's frame rate: dt = 1/N (default 24)
+  --preroll N            a sequence: render N frames of its first image before the first output,
+                         so light adaptation and frame="previous" targets start settled on the
+                         shot instead of fading in (default 0)
   --texture NAME=FILE    replace a texture's file for this run (repeatable), .rfx too; a cube
                          map takes one image (2:1 longitude/latitude, 4:3 or 3:4 cross, DDS)
                          or six faces: NAME=px,nx,py,ny,pz,nz
@@ -141,6 +151,8 @@ file options (render, validate, edit, bench, replay; --media and --missing-media
                          folder and the --media folders ("..", absolute paths, symbolic links)
   --no-sandbox           no sandbox: the default, except for replay, which sandboxes unless told
                          so here or by its manifest (<replay sandbox="false">)
+  --max-image-memory MiB the most memory one image may take decoded (4 floats a pixel; default
+                         2048): a larger one is refused from its header, before it is read
   --missing-media error|placeholder
                          a texture or model found nowhere: an error (default), or a stand-in with
                          a warning: a magenta and grey checker, the built-in mesh its file name
@@ -154,11 +166,82 @@ are invalid, 2 no GL context. bench: 0 success, 1 invalid manifest, arguments, i
 2 no GL context or a variant failed to render.
 )";
 
+const char* const commands[] = {"render", "validate", "list", "replay", "edit", "bench"};
+
+std::vector<std::string> commandOptions(const std::string& command) {
+    using namespace rmfx::cli;
+    if (command == "render") return renderOptionNames();
+    if (command == "validate") return validateOptionNames();
+    if (command == "list") return listOptionNames();
+    if (command == "replay") return replayOptionNames();
+    if (command == "edit") return editOptionNames();
+    if (command == "bench") return benchOptionNames();
+    return {};
+}
+
+bool isCommand(const std::string& name) {
+    return std::find(std::begin(commands), std::end(commands), name) != std::end(commands);
+}
+
+// Whether a usage paragraph's first line ("render options:", "file options (render, …):")
+// names `command` as a word.
+bool headingNames(const std::string& heading, const std::string& command) {
+    for (size_t at = heading.find(command); at != std::string::npos; at = heading.find(command, at + 1)) {
+        const bool startsWord = at == 0 || !std::isalpha(static_cast<unsigned char>(heading[at - 1]));
+        const size_t end = at + command.size();
+        const bool endsWord = end >= heading.size() || !std::isalpha(static_cast<unsigned char>(heading[end]));
+        if (startsWord && endsWord) return true;
+    }
+    return false;
+}
+
+// rmfx COMMAND --help: the command's line of the overview, then every paragraph of options whose
+// heading names the command, and the exit statuses.
+std::string commandUsage(const std::string& command) {
+    const std::string text = usage;
+    std::vector<std::string> paragraphs;
+    for (size_t start = 0; start < text.size();) {
+        size_t end = text.find("\n\n", start);
+        if (end == std::string::npos) end = text.size();
+        paragraphs.push_back(text.substr(start, end - start));
+        start = end + 2;
+    }
+    std::string out = "usage:\n";
+    const std::string overview = paragraphs.size() > 1 ? paragraphs[1] : "";
+    bool inCommand = false;
+    for (size_t start = 0; start < overview.size();) {
+        size_t end = overview.find('\n', start);
+        if (end == std::string::npos) end = overview.size();
+        const std::string line = overview.substr(start, end - start);
+        if (line.rfind("  rmfx ", 0) == 0) inCommand = line.rfind("  rmfx " + command + " ", 0) == 0;
+        if (inCommand) out += line + "\n";
+        start = end + 1;
+    }
+    for (size_t i = 2; i < paragraphs.size(); ++i) {
+        const std::string heading = paragraphs[i].substr(0, paragraphs[i].find('\n'));
+        if (heading.rfind("exit status", 0) == 0 || (heading.find("option") != std::string::npos && headingNames(heading, command)))
+            out += "\n" + paragraphs[i] + "\n";
+    }
+    return out;
+}
+
+bool asksForHelp(const std::vector<std::string>& args) {
+    return std::any_of(args.begin(), args.end(), [](const std::string& a) { return a == "--help" || a == "-h"; });
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    // A file-size limit (ulimit -f) then makes a write fail with EFBIG, which the atomic writes
+    // report and clean up after, instead of killing the process with a half-written file beside
+    // the output.
+    std::signal(SIGXFSZ, SIG_IGN);
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+        if (args.size() > 1 && isCommand(args[1])) {
+            std::fputs(commandUsage(args[1]).c_str(), stdout);
+            return 0;
+        }
         std::fputs(usage, args.empty() ? stderr : stdout);
         return args.empty() ? 1 : 0;
     }
@@ -166,8 +249,18 @@ int main(int argc, char** argv) {
         std::puts("rmfx 0.1.0 (workspace format 1)");
         return 0;
     }
+    if (args[0] == "--options") {
+        for (const char* option : {"--help", "--version", "--options"}) std::printf("rmfx %s\n", option);
+        for (const char* command : commands)
+            for (const std::string& option : commandOptions(command)) std::printf("%s %s\n", command, option.c_str());
+        return 0;
+    }
     std::string command = args[0];
     args.erase(args.begin());
+    if (isCommand(command) && asksForHelp(args)) {
+        std::fputs(commandUsage(command).c_str(), stdout);
+        return 0;
+    }
     if (command == "render") return rmfx::cli::renderCommand(args);
     if (command == "validate") return rmfx::cli::validateCommand(args);
     if (command == "replay") return rmfx::cli::replayCommand(args);

@@ -4,11 +4,13 @@
 
 #include "cli/ArgumentParser.h"
 #include "cli/OptionValues.h"
+#include "io/image/ImageOutputPath.h"
 #include "io/media/MediaArguments.h"
 
 namespace rmfx::editor {
 
-std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& args, std::string* error) {
+std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& args, std::string* error,
+                                                 std::vector<std::string>* names) {
     EditorOptions o;
     bool haveWorkspace = false, dtGiven = false;
     auto fail = [&](const std::string& message) -> std::optional<EditorOptions> {
@@ -17,7 +19,7 @@ std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& 
     };
     using Empty = cli::ArgumentParser::EmptyValue;
     cli::ArgumentParser parser;
-    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, o.media); })
+    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, o.media); }, cli::kMediaOptionNames)
         .option({"--size"}, cli::sizeValue(o.size), Empty::Allowed)
         .option({"--set"}, cli::overrideValue(o.overrides), Empty::Allowed)
         .option({"--frames"}, cli::frameCountValue(o.frames), Empty::Allowed)
@@ -45,6 +47,10 @@ std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& 
             haveWorkspace = true;
             return "";
         });
+    if (names) {
+        *names = parser.names();
+        return std::nullopt;
+    }
     if (std::string message = parser.parse(args); !message.empty()) return fail(message);
     if (!haveWorkspace) return fail("which workspace? usage: rmfx edit WORKSPACE [options]");
     if ((o.screenshot || o.outputScreenshot) && !o.frames)
@@ -52,6 +58,9 @@ std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& 
     if (o.split && o.inputs.empty())
         return fail("--split shows the input image beside the output: give the image with --input FILE");
     if (dtGiven && !o.frames) return fail("--dt sets the step of --frames runs; interactive runs follow the clock");
+    for (auto [option, file] : {std::pair{"--screenshot", o.screenshot}, std::pair{"--output-screenshot", o.outputScreenshot}})
+        if (file)
+            if (Result<void> usable = checkImageOutputPath(*file); !usable) return fail(std::string(option) + ": " + usable.error());
     return o;
 }
 

@@ -37,6 +37,8 @@ struct EditorOptions {
 };
 
 // On an error returns nullopt and sets *error to a sentence naming the option.
-std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& args, std::string* error);
+// With `names`, fills it with the parser's option names and parses nothing.
+std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& args, std::string* error,
+                                                std::vector<std::string>* names = nullptr);
 
 }  // namespace rmfx::editor

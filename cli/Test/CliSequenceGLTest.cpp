@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "io/image/ImageIO.h"
+#include "reference/HdrLightingReference.h"
 #include "tests/support/GlTestSupport.h"
 #include "tests/support/TestSupport.h"
 
@@ -158,6 +159,92 @@ void main() { c = texelFetch(Frame, ivec2(gl_FragCoord.xy), 0) * texelFetch(Gain
                                 dir.path());
     EXPECT_EQ(two.status, 1);
     EXPECT_NE(two.err.find("one --input may be a sequence"), std::string::npos) << two.err;
+}
+
+// --preroll N: N frames of the first image before the first output, time running from -N dt, so
+// the first output holds what N + 1 frames of the first image accumulate, and every later frame
+// adds its own on top: sum after output k = (N + 1) image(1) dt + Σ_{j=2..k} image(j) dt.
+TEST_F(CliSequenceGLTest, PrerollRendersTheFirstImageBeforeTheFirstOutput) {
+    ScratchDir dir;
+    dir.write("acc.xml", kAccumulate);
+    writeFrames(dir, {1, 2, 3});
+    CommandResult cli = runRmfx("render acc.xml --input frame=shot/f.%04d.exr --fps 8 --preroll 5 -o out.%04d.exr", dir.path());
+    ASSERT_EQ(cli.status, 0) << cli.err;
+    const double dt = 1.0 / 8.0;
+    for (int k = 1; k <= 3; ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "out.%04d.exr", k);
+        Result<Image> out = readImage(dir / name);
+        ASSERT_TRUE(out.ok()) << out.error();
+        for (int y = 0; y < 3; ++y)
+            for (int x = 0; x < 5; ++x) {
+                double expected = 6 * (1 + 0.1 * x + 0.01 * y) * dt;
+                for (int j = 2; j <= k; ++j) expected += (j + 0.1 * x + 0.01 * y) * dt;
+                EXPECT_NEAR(out->at(x, y, 0), expected, 1e-6 * expected) << name << " pixel " << x << "," << y;
+            }
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.0000.exr"));
+}
+
+// --dt sets a sequence's step (as 1 / --fps does); both at once is refused, never one ignored.
+TEST_F(CliSequenceGLTest, DtIsTheStepOfASequenceAndCannotBeGivenWithFps) {
+    ScratchDir dir;
+    dir.write("acc.xml", kAccumulate);
+    writeFrames(dir, {1, 2});
+    CommandResult cli = runRmfx("render acc.xml --input frame=shot/f.%04d.exr --dt 0.5 -o out.%04d.exr", dir.path());
+    ASSERT_EQ(cli.status, 0) << cli.err;
+    Result<Image> second = readImage(dir / "out.0002.exr");
+    ASSERT_TRUE(second.ok()) << second.error();
+    EXPECT_NEAR(second->at(4, 2, 0), (1.42 + 2.42) * 0.5, 1e-6);
+
+    CommandResult both = runRmfx("render acc.xml --input frame=shot/f.%04d.exr --dt 0.5 --fps 2 -o both.%04d.exr", dir.path());
+    EXPECT_EQ(both.status, 1);
+    EXPECT_NE(both.err.find("--fps and --dt both set a sequence's time step"), std::string::npos) << both.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "both.0001.exr"));
+
+    CommandResult single = runRmfx("render acc.xml --input frame=shot/f.0001.exr --preroll 3 -o single.exr", dir.path());
+    EXPECT_EQ(single.status, 1);
+    EXPECT_NE(single.err.find("--preroll is for sequences"), std::string::npos) << single.err;
+}
+
+// hdr_lighting's adaptation starts from 1.0; with --preroll N the first output has adapted for
+// N + 1 frames of the first image, as the float64 closed form says (the tolerance as in
+// HdrLightingGLTest.AdaptationConvergesToTheMeasuredLuminance).
+TEST_F(CliSequenceGLTest, PrerollStartsHdrLightingAdaptedToTheFirstImage) {
+    ScratchDir dir;
+    std::filesystem::create_directories(dir / "shot");
+    for (int k = 1; k <= 2; ++k) {
+        Image grey = blankHdrImage(16, 16);
+        for (float& v : grey.pixels) v = 0.05f;
+        char name[32];
+        std::snprintf(name, sizeof name, "shot/g.%04d.exr", k);
+        ASSERT_TRUE(writeImage(dir / name, grey).ok());
+    }
+    const std::string workspace = shellQuoted(sourceDir() / "effects" / "hdr_lighting.xml");
+    const double measured = 0.05 + hdr::kLogDelta;  // Lavg of a uniform image is Y + delta
+    for (int preroll : {0, 9}) {
+        const std::string out = "adapted" + std::to_string(preroll) + ".%04d.exr";
+        CommandResult cli = runRmfx("render " + workspace + " --input shot/g.%04d.exr --dt 0.1 --preroll " +
+                                        std::to_string(preroll) + " --target adapted -o " + out, dir.path());
+        ASSERT_EQ(cli.status, 0) << cli.err;
+        Result<Image> first = readImage(dir / ("adapted" + std::to_string(preroll) + ".0001.exr"));
+        ASSERT_TRUE(first.ok()) << first.error();
+        const double expected = hdr::adaptedAfter(1.0, measured, (preroll + 1) * 0.1);
+        EXPECT_NEAR(first->at(0, 0, 0), expected, 2e-5 * (1.0 - measured) + 1e-4 * measured) << "preroll " << preroll;
+    }
+}
+
+// Where the frames go is checked before the first one renders: exit status 1, no progress line.
+TEST_F(CliSequenceGLTest, AnOutputPatternThatCannotBeWrittenFailsBeforeTheFirstFrame) {
+    ScratchDir dir;
+    dir.write("acc.xml", kAccumulate);
+    writeFrames(dir, {1, 2});
+    for (const char* pattern : {"missing/out.%04d.exr", "out.%04d.xyz", "out.%4d.exr"}) {
+        CommandResult cli = runRmfx(std::string("render acc.xml --input frame=shot/f.%04d.exr -o ") + pattern, dir.path());
+        EXPECT_EQ(cli.status, 1) << pattern << ": " << cli.err;
+        EXPECT_NE(cli.err.find(std::string("rmfx render: -o ") + pattern + ": "), std::string::npos) << cli.err;
+        EXPECT_EQ(cli.err.find("frames,"), std::string::npos) << "a frame rendered first: " << cli.err;
+    }
 }
 
 }  // namespace

@@ -1,8 +1,10 @@
 #include "tests/support/TestSupport.h"
 
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -47,6 +49,36 @@ CommandResult runRmfx(const std::string& arguments, const std::filesystem::path&
     result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     result.out = readText(out);
     result.err = readText(err);
+    std::filesystem::remove(out);
+    std::filesystem::remove(err);
+    return result;
+}
+
+CommandResult runRmfxWithFileSizeLimit(const std::string& arguments, const std::filesystem::path& folder,
+                                       long fileSizeLimit) {
+    std::filesystem::path binary = binaryDir() / "rmfx";
+    // Outside the folder, so that the limit's own failures do not land among the outputs; the
+    // messages are short, well under any limit a test sets.
+    std::filesystem::path out = folder.parent_path() / (folder.filename().string() + ".stdout.txt");
+    std::filesystem::path err = folder.parent_path() / (folder.filename().string() + ".stderr.txt");
+    std::string command = "cd " + shellQuoted(folder) + " && exec " + shellQuoted(binary) + " " + arguments + " >" +
+                          shellQuoted(out) + " 2>" + shellQuoted(err);
+    CommandResult result;
+    pid_t child = ::fork();
+    if (child == 0) {
+        struct rlimit limit {static_cast<rlim_t>(fileSizeLimit), static_cast<rlim_t>(fileSizeLimit)};
+        ::setrlimit(RLIMIT_FSIZE, &limit);
+        ::signal(SIGXFSZ, SIG_DFL);
+        ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    int status = 0;
+    EXPECT_GT(child, 0) << "fork failed";
+    if (child > 0) ::waitpid(child, &status, 0);
+    result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = readText(out);
+    result.err = readText(err);
+    if (WIFSIGNALED(status)) result.err += "\n(killed by signal " + std::to_string(WTERMSIG(status)) + ")";
     std::filesystem::remove(out);
     std::filesystem::remove(err);
     return result;

@@ -37,6 +37,11 @@ struct CommandResult {
 // `folder`.
 CommandResult runRmfx(const std::string& arguments, const std::filesystem::path& folder,
                       const std::string& environment = "");
+// The same under a file-size limit (RLIMIT_FSIZE, as `ulimit -f` sets it): a write past
+// `fileSizeLimit` bytes fails, as on a full disk. SIGXFSZ keeps its default action, so a program
+// that does not handle the limit is killed (status -1).
+CommandResult runRmfxWithFileSizeLimit(const std::string& arguments, const std::filesystem::path& folder,
+                                       long fileSizeLimit);
 
 // A fresh, empty folder under the build tree, named after the running test; removed on destruction.
 class ScratchDir {
