@@ -6,7 +6,7 @@
 namespace rmfx {
 namespace {
 
-// "pass 'a' (culled: disabled), pass 'b' (…)": the passes that sample `texture` and why each
+// "pass 'a': culled: disabled, enabled="false"; pass 'b': …": the passes that sample `texture` and why each
 // does not run in any graph of the plan; "" when none samples it.
 std::string samplingPasses(const Workspace& ws, const FramePlan& plan, const std::string& texture) {
     const PassGraph* graph = plan.allGraphs().empty() ? nullptr : plan.allGraphs().front();
@@ -15,10 +15,10 @@ std::string samplingPasses(const Workspace& ws, const FramePlan& plan, const std
         bool samples = false;
         for (const Sampler& s : ws.passes[i].samplers) samples = samples || s.texture == texture;
         if (!samples) continue;
-        out += (out.empty() ? "" : ", ") + std::string("pass '") + ws.passes[i].name + "'";
+        out += (out.empty() ? "" : "; ") + std::string("pass '") + ws.passes[i].name + "'";
         if (graph && i < graph->nodes.size()) {
             const PassNode& node = graph->nodes[i];
-            out += " (" + std::string(passFateName(node.fate)) + (node.why.empty() ? "" : ": " + node.why) + ")";
+            out += ": " + std::string(passFateName(node.fate)) + (node.why.empty() ? "" : ", " + node.why);
         }
     }
     return out;
@@ -44,7 +44,7 @@ Diagnostics unreadArgumentWarnings(const Workspace& ws, const FramePlanOptions& 
         if (!sampled.count(t.name)) {
             const std::string passes = samplingPasses(ws, *plan, t.name);
             out.push_back(warningAbout(ws, argument, "no pass that runs samples texture '" + t.name + "', so the file changes nothing" +
-                                                         (passes.empty() ? " (no pass samples it)" : " (" + passes + ")")));
+                                                         (passes.empty() ? "; no pass samples it" : "; " + passes)));
             continue;
         }
         const Texture* texture = ws.findTexture(t.name);
@@ -63,7 +63,7 @@ Diagnostics unreadArgumentWarnings(const Workspace& ws, const FramePlanOptions& 
         if (name.empty() || sampled.count(name)) continue;
         const std::string passes = samplingPasses(ws, *plan, name);
         out.push_back(warningAbout(ws, "--input " + input.text, "no pass that runs samples input '" + name + "', so the image changes nothing" +
-                                                                    (passes.empty() ? " (no pass samples it)" : " (" + passes + ")")));
+                                                                    (passes.empty() ? "; no pass samples it" : "; " + passes)));
     }
     return out;
 }
