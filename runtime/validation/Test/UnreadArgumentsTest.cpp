@@ -87,5 +87,34 @@ TEST(UnreadArguments, ReadWhenNamesADeclaredVariableAndAValueOfItsType) {
     }
 }
 
+// An --input that replaces the target a texture's pass draws culls that pass: the texture
+// given with it changes nothing (shader_1's sky with --input).
+TEST(UnreadArguments, ATextureOnlyTheReplacedPassesSampleIsUnread) {
+    test::ScratchDir dir;
+    const auto file = dir.write("w.xml", test::lines({
+        R"(<workspace version="1" name="w" size="4x4">)",
+        R"(  <texture name="Sky" file="a.png"/>)",
+        R"(  <target name="scene" format="rgba16f"/>)",
+        R"(  <input name="photo" replaces="scene"/>)",
+        R"(  <pass name="sky" target="scene"><sampler name="S" texture="Sky"/>)",
+        R"(    <shader stage="fragment">uniform sampler2D S; out vec4 c; void main() { c = texture(S, vec2(0)); }</shader></pass>)",
+        R"(  <pass name="from_photo" target="scene"><sampler name="P" texture="photo"/>)",
+        R"(    <shader stage="fragment">uniform sampler2D P; out vec4 c; void main() { c = texture(P, vec2(0)); }</shader></pass>)",
+        R"(  <pass name="screen"><sampler name="T" target="scene"/>)",
+        R"(    <shader stage="fragment">uniform sampler2D T; out vec4 c; void main() { c = texture(T, vec2(0)); }</shader></pass>)",
+        R"(</workspace>)",
+    }));
+    Result<Workspace> ws = loadWorkspace(file, {}, withPlaceholders());
+    ASSERT_TRUE(ws.ok()) << formatAll(ws.diagnostics());
+    const std::vector<TextureArgument> sky{{"Sky", {"x.exr"}, "Sky=x.exr"}};
+    FramePlanOptions options;
+    EXPECT_EQ(formatted(unreadArgumentWarnings(*ws, options, sky, {})), Lines{});
+    options.givenInputs = {"photo"};
+    EXPECT_EQ(formatted(unreadArgumentWarnings(*ws, options, sky, {{"", "p.exr", "", "p.exr"}})),
+              (Lines{file.string() + ": warning: --texture Sky=x.exr: no pass that runs samples texture 'Sky', so the file "
+                                     "changes nothing; pass 'sky': culled: input given, 'scene' comes from the image given "
+                                     "for input 'photo'"}));
+}
+
 }  // namespace
 }  // namespace rmfx
