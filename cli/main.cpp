@@ -158,8 +158,9 @@ file options (render, validate, edit, bench, replay; --media and --missing-media
                          a warning: a magenta and grey checker, the built-in mesh its file name
                          names (teapot, sphere, torus, quad, plane) or a cube (also on list)
 
-exit status: render, validate, edit: 0 success, 1 invalid workspace or arguments, 2 rendering or
-GL failure (edit: also no window, or an rmfx built without the editor), 3 a frame past its
+exit status: render, validate, edit: 0 success, 1 invalid workspace or arguments (an output
+that cannot be written or an unknown effect included, found before anything renders), 2 rendering,
+GL or write failure (edit: also no window, or an rmfx built without the editor), 3 a frame past its
 budget, 4 (render --check) NaN or an infinity in a target. replay: 0 every case
 passed, 1 a case failed (comparison, workspace or rendering error) or the manifest or arguments
 are invalid, 2 no GL context. bench: 0 success, 1 invalid manifest, arguments, input or workspace,
