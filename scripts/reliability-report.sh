@@ -53,10 +53,11 @@ Malformed workspaces and manifests|^(WorkspaceParser|Validation|ReplayManifest|D
 RenderMonkey .rfx files|^Rfx
 Fuzzer findings kept as regression inputs|^FuzzRegression
 Numerical hard cases (NaN, Inf, 1e6, 1x1, 1921x1081, dt 0/1000)|HardCases
-Limits before allocation (targets, memory, lying image headers)|^(ResourceLimits|ImageIO\.(TruncatedFilesFail|GarbageHeaderFails|RejectsAbsurdSizesBeforeReading))
+Limits before allocation (targets, memory, lying image headers)|^(ResourceLimits|ImageMemoryLimit|ImageIO\.(TruncatedFilesFail|GarbageHeaderFails|RejectsAbsurdSizesBeforeReading))
 File references and the sandbox|^(MediaResolver|Sandbox|Dds)
 Shaders that hang or spin|^(FrameWatchdog|FrameBudget)
 Saves interrupted or failing|^(AtomicSave|AtomicFile|VariableValueWriter)
+Outputs written whole or not at all, checked before the work|^(OutputPath|ImageOutputPath|ImageWrite|CliOutputs)
 Whole suite|.
 EOF
   echo
