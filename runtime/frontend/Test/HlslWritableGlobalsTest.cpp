@@ -94,6 +94,51 @@ TEST(HlslWritableGlobals, WhatDeclaresTheNameItselfIsLeftAlone) {
     EXPECT_EQ(out.code, code);
 }
 
+// ATI's SpotlightWithBump: a global `lightDir` beside an output struct's member of the same name.
+// `Out.lightDir.x = …` writes the member; the global is neither copied nor renamed, and where the
+// global itself is written, its member namesake keeps its name.
+TEST(HlslWritableGlobals, AMemberNamedLikeAGlobalIsTheMember) {
+    const std::string members = lines({
+        "float4 lightDir;",
+        "struct VS_OUTPUT { float4 Pos : POSITION; float3 lightDir : TEXCOORD0; };",
+        "VS_OUTPUT main(float4 Pos : POSITION) {",
+        "    VS_OUTPUT Out;",
+        "    Out.Pos = Pos;",
+        "    Out.lightDir.x = dot(lightDir.xyz, Pos.xyz);",
+        "    Out . lightDir.yz = lightDir.yz;",
+        "    return Out;",
+        "}",
+    });
+    HlslWritableGlobals untouched = giveWrittenGlobalsACopy(members, "main");
+    EXPECT_EQ(untouched.written, std::vector<std::string>{});
+    EXPECT_EQ(untouched.code, members);
+
+    const std::string both = lines({
+        "float4 lightDir;",
+        "struct VS_OUTPUT { float4 Pos : POSITION; float3 lightDir : TEXCOORD0; };",
+        "VS_OUTPUT main(float4 Pos : POSITION) {",
+        "    VS_OUTPUT Out;",
+        "    lightDir.w = 0.5;",
+        "    Out.lightDir = lightDir.xyz;",
+        "    Out.Pos = Pos * 1.5;",
+        "    return Out;",
+        "}",
+    });
+    HlslWritableGlobals copied = giveWrittenGlobalsACopy(both, "main");
+    EXPECT_EQ(copied.written, std::vector<std::string>{"lightDir"});
+    EXPECT_EQ(copied.code, lines({
+                               "float4 lightDir; static float4 rm_writable_lightDir;",
+                               "struct VS_OUTPUT { float4 Pos : POSITION; float3 lightDir : TEXCOORD0; };",
+                               "VS_OUTPUT main(float4 Pos : POSITION) { rm_writable_lightDir = lightDir;",
+                               "    VS_OUTPUT Out;",
+                               "    rm_writable_lightDir.w = 0.5;",
+                               "    Out.lightDir = rm_writable_lightDir.xyz;",
+                               "    Out.Pos = Pos * 1.5;",
+                               "    return Out;",
+                               "}",
+                           }));
+}
+
 TEST(HlslWritableGlobals, WithoutTheEntryPointNothingChanges) {
     const std::string code = "float g;\nfloat4 ps() : COLOR0 { g = 1; return g; }\n";
     EXPECT_EQ(giveWrittenGlobalsACopy(code, "main").code, code);

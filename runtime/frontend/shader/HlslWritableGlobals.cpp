@@ -152,8 +152,9 @@ std::vector<size_t> matchingBrackets(const std::string& code) {
     return match;
 }
 
-// One function body's identifiers: each occurrence's offset, and the names the function declares
-// itself (a parameter, or a local: a name right after a word that can be a type), which hide a
+// One function body's identifiers: each occurrence's offset (a member after '.' is not one:
+// `Out.lightDir.x = …` writes the output struct's member, not a global named lightDir, as in ATI's
+// SpotlightWithBump), and the names the function declares itself (a parameter, or a local: a name right after a word that can be a type), which hide a
 // global of that name there.
 struct BodyWords {
     std::vector<std::pair<std::string_view, size_t>> uses;  // in order, viewing the code
@@ -177,7 +178,10 @@ BodyWords bodyWords(const std::string& code, const FunctionBody& body) {
         size_t j = i;
         while (j < body.close && isIdentifierChar(code[j])) ++j;
         const std::string_view word(code.data() + i, j - i);
-        out.uses.emplace_back(word, i);
+        size_t before = i;
+        while (before > body.open + 1 && std::isspace(static_cast<unsigned char>(code[before - 1]))) --before;
+        const bool member = code[before - 1] == '.' && !std::isdigit(static_cast<unsigned char>(word[0]));
+        if (!member) out.uses.emplace_back(word, i);
         if (previousEnd != std::string::npos && skipSpace(code, previousEnd, i) == i && !notTypes.count(previous) &&
             !std::isdigit(static_cast<unsigned char>(previous[0])))
             out.declared.insert(std::string(word));
