@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "frontend/workspace/VariableValueWriter.h"
+#include "model/OrbitCamera.h"
 #include "tests/support/TestSupport.h"
 #include "validation/WorkspaceLoader.h"
 
@@ -1203,6 +1204,47 @@ TEST(RfxImporter, CameraReferencesPickAPassesCamera) {
                   .find("t.rfx:9: warning: <RmCameraReference NAME=\"Nowhere\">: the effect has no <RmCamera NAME=\"Nowhere\">"),
               std::string::npos)
         << formatAll(ws.diagnostics());
+}
+
+// RenderMonkey's viewer stored FOVs past 180 degrees (its zoom went there) and D3DX's
+// PerspectiveFovLH used them as they were: y scale cot(FOV / 2) < 0, so FOV 200 shows what FOV
+// 160 shows, turned 180 degrees. Checked against that formula in double for a point in view.
+TEST(RfxImporter, AFovPast180DegreesTurnsThePictureAsD3dxDid) {
+    auto effect = [](const std::string& fov) {
+        return "<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\" ACTIVE_EFFECT=\"W.E\">\n<RmDirectXEffect NAME=\"E\" API=\"D3D\">\n"
+               "<RmCamera NAME=\"C\" CAMERA_POSITION_X=\"0\" CAMERA_POSITION_Y=\"0\" CAMERA_POSITION_Z=\"-10\" "
+               "LOOK_AT_VECTOR_X=\"0\" LOOK_AT_VECTOR_Y=\"0\" LOOK_AT_VECTOR_Z=\"0\" UP_VECTOR_X=\"0\" UP_VECTOR_Y=\"1\" "
+               "UP_VECTOR_Z=\"0\" FOV=\"" + fov + "\" NEAR_CLIP_PLANE=\"1\" FAR_CLIP_PLANE=\"100\"/>\n" +
+               d3dStatePass(0, "") + "</RmDirectXEffect>\n</RmEffectWorkspace>\n</RENDER_MONKEY>\n";
+    };
+    Result<Workspace> wide = importRfxText(effect("200"), "t.rfx", ".", {""});
+    ASSERT_TRUE(wide) << formatAll(wide.diagnostics());
+    EXPECT_FLOAT_EQ(wide->camera.fovYDegrees, 200.0f);
+    const double aspect = 1.5, pi = std::acos(-1.0);
+    const glm::mat4 projection = OrbitCamera(wide->camera).projection(static_cast<float>(aspect));
+    const double yScale = 1.0 / std::tan(200.0 / 2.0 * pi / 180.0);  // D3DX: cot(fovY / 2)
+    EXPECT_LT(yScale, 0.0);
+    EXPECT_NEAR(projection[1][1], yScale, 1e-6 * std::abs(yScale));
+    EXPECT_NEAR(projection[0][0], yScale / aspect, 1e-6 * std::abs(yScale));
+    // The same point through FOV 160: x and y negated.
+    Result<Workspace> narrow = importRfxText(effect("160"), "t.rfx", ".", {""});
+    ASSERT_TRUE(narrow) << formatAll(narrow.diagnostics());
+    const glm::vec4 point(1.0f, 0.5f, 0.0f, 1.0f);
+    auto ndc = [&](const Workspace& ws) {
+        const OrbitCamera camera(ws.camera);
+        const glm::vec4 clip = camera.projection(static_cast<float>(aspect)) * camera.view() * point;
+        return glm::vec2(clip) / clip.w;
+    };
+    EXPECT_NEAR(ndc(*wide).x, -ndc(*narrow).x, 1e-5);
+    EXPECT_NEAR(ndc(*wide).y, -ndc(*narrow).y, 1e-5);
+    EXPECT_GT(std::abs(ndc(*narrow).x), 0.01f);
+
+    for (const std::string bad : {"180", "360", "0", "-20"}) {
+        Result<Workspace> refused = importRfxText(effect(bad), "t.rfx", ".", {""});
+        EXPECT_FALSE(refused) << bad;
+        EXPECT_NE(formatAll(refused.diagnostics()).find("is not an angle in (0, 360) degrees other than 180"), std::string::npos)
+            << formatAll(refused.diagnostics());
+    }
 }
 
 }  // namespace rmfx

@@ -87,7 +87,8 @@ std::optional<OrbitCameraSettings> fromStoredView(const Variable& view, const Sp
 // RenderMonkey's default 200 units and 45°). Full-screen quads keep their size.
 void sizeStandInsToTheCamera(Workspace& ws) {
     const OrbitCamera camera(ws.camera);
-    const double halfHeightPerDistance = std::tan(ws.camera.fovYDegrees * 0.5 * std::numbers::pi / 180.0);
+    // |tan|: past 180 degrees the view is turned round at 360 - FOV (RfxCamera.cpp).
+    const double halfHeightPerDistance = std::abs(std::tan(ws.camera.fovYDegrees * 0.5 * std::numbers::pi / 180.0));
     for (Pass& pass : ws.passes) {
         DrawCall& draw = pass.draw;
         if (!draw.standIn || !draw.mesh || *draw.mesh == BuiltinMesh::Quad || *draw.mesh == BuiltinMesh::FullscreenTriangle)

@@ -28,9 +28,12 @@ OrbitCameraSettings orbitFromRmCamera(const RfxElement& camera) {
     s = *looking;
     if (glm::length(up - glm::normalize(position - lookAt) * glm::dot(up, glm::normalize(position - lookAt))) <= 1e-4f)
         camera.warning("UP_VECTOR lies along the viewing direction: it says nothing of the roll, which stays 0");
+    // RenderMonkey's viewer stored whatever angle its zoom reached, past 180 degrees too, and D3DX
+    // used it as it was: cot(FOV / 2) < 0 turns the picture 180 degrees, at 360 - FOV. 180 (a
+    // scale of 0) and 360 (an infinite one) draw nothing.
     if (auto fov = camera.number("FOV")) {
-        if (*fov > 0 && *fov < 180) s.fovYDegrees = *fov;
-        else camera.error("FOV " + std::to_string(*fov) + " is not an angle in (0, 180) degrees");
+        if (*fov > 0 && *fov < 360 && *fov != 180) s.fovYDegrees = *fov;
+        else camera.error("FOV " + std::to_string(*fov) + " is not an angle in (0, 360) degrees other than 180");
     }
     auto nearPlane = camera.number("NEAR_CLIP_PLANE"), farPlane = camera.number("FAR_CLIP_PLANE");
     if (nearPlane && farPlane) {
