@@ -322,6 +322,27 @@ float4 main(float2 uv : TEXCOORD0) : COLOR {
         expectNear(pixel(out, x, 2), {0.125 + 0.375 + 0.625, 0.25 + 0.5 + 0.75, 0.75, 6.0 + 3.0}, 1e-6, "pixel " + std::to_string(x));
 }
 
+// fxc accepted a constructor as an assignment's target (ATI's Iridescent Butterfly:
+// `float4(vNormal, fGloss) = tex2D(…)`): the value's components go to the names in order.
+TEST_F(HlslGLTest, AConstructorAssignedToSplitsTheValueAmongItsNamesAsFxcDid) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x4">
+  <target name="out" format="rgba32f" size="4x4"/>
+  <pass name="hlsl" target="out">
+    <shader stage="fragment"><![CDATA[
+float4 main(float2 uv : TEXCOORD0) : COLOR {
+    float3 vNormal, baseColor;
+    float  fGloss;
+    float4(vNormal, fGloss) = float4(0.125, 0.25, 0.375, 0.5);
+    return float4(fGloss, vNormal.zyx);
+}
+]]></shader>
+  </pass>
+</workspace>)";
+    RefImage out = renderOut(xml);
+    ASSERT_EQ(out.width, 4);
+    expectNear(pixel(out, 1, 2), {0.5, 0.375, 0.25, 0.125}, 0.0, "pixel");
+}
+
 // A constant's default may be an expression and an array (tdm1223's Blur.rfx: a Gaussian kernel
 // `float4 gaussFilter[7] = { 0.0, -3.0, 0.0, 1.0/64.0, … }` and `float texScaler = 1.0/2048.0;`):
 // fxc folded them, and they hold while no variable feeds the constant.

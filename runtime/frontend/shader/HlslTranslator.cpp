@@ -12,6 +12,7 @@
 #include "core/IdentifierSearch.h"
 #include "frontend/shader/BracketNesting.h"
 #include "frontend/shader/HlslBraceElision.h"
+#include "frontend/shader/HlslConstructorAssignments.h"
 #include "frontend/shader/HlslSamplerTypes.h"
 #include "frontend/shader/HlslWritableGlobals.h"
 #include "frontend/shader/GlslFloatLiteral.h"
@@ -252,9 +253,9 @@ Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const
     // The preprocessor puts a GLSL #version first; HLSL has none. Blank it, keeping the line count.
     std::string code = hlsl.code;
     if (code.rfind("#version", 0) == 0) code.erase(0, code.find('\n'));
-    // What fxc accepted and glslang does not, written out: brace elision, untyped samplers, writes
-    // to globals.
-    code = typeGenericSamplers(nestFlatArrayInitializers(code));
+    // What fxc accepted and glslang does not, written out: brace elision, untyped samplers,
+    // constructors assigned to, writes to globals.
+    code = writeOutConstructorAssignments(typeGenericSamplers(nestFlatArrayInitializers(code))).code;
     std::string entry = stage.entryPoint.empty() ? "main" : stage.entryPoint;
     HlslWritableGlobals writable = giveWrittenGlobalsACopy(code, entry);
     code = std::move(writable.code);
