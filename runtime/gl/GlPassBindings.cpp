@@ -138,7 +138,7 @@ Result<void> bindUniforms(GpuPass& gp, const UniformSources& sources) {
         UniformSource source = resolveUniform(sources.ws, pass, name);
         if (std::holds_alternative<Unbound>(source) && gp.initializedUniforms.count(name)) continue;
         if (unboundUniformIsZero(pass, source, type)) continue;  // validation warned: GL's initial zero stays
-        if (std::string why = bindingMismatch(sources.ws, source, name, type, active.arraySize); !why.empty()) {
+        if (std::string why = bindingMismatch(sources.ws, pass, source, name, type, active.arraySize); !why.empty()) {
             error(pass.where, passLabel(pass), why);
             continue;
         }

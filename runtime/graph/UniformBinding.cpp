@@ -21,13 +21,54 @@ UniformSource resolveUniform(const Workspace& ws, const Pass& pass, const std::s
     return Unbound{};
 }
 
-static std::string where(const SourceLocation& at) { return at.file + ":" + std::to_string(at.line); }
+namespace {
+std::string where(const SourceLocation& at) { return at.file + ":" + std::to_string(at.line); }
+}  // namespace
 
-std::string bindingMismatch(const Workspace& ws, const UniformSource& source, const std::string& uniform,
+namespace {
+
+bool hasHlsl(const Pass& pass) {
+    return std::any_of(pass.shaders.begin(), pass.shaders.end(), [](const ShaderSource& s) { return s.dialect == ShaderDialect::Hlsl; });
+}
+
+int floatComponents(UniformType type) {
+    switch (type) {
+        case UniformType::Float: return 1;
+        case UniformType::Vec2: return 2;
+        case UniformType::Vec3: return 3;
+        case UniformType::Vec4: return 4;
+        default: return 0;
+    }
+}
+
+int floatComponents(ValueType type) {
+    switch (type) {
+        case ValueType::Float: return 1;
+        case ValueType::Vec2: return 2;
+        case ValueType::Vec3:
+        case ValueType::Color3: return 3;
+        case ValueType::Vec4:
+        case ValueType::Color4: return 4;
+        default: return 0;
+    }
+}
+
+// A Direct3D constant register is four floats: a wider float variable set it whole, and the
+// shader read as many as its constant declared.
+bool registerTakesFirstComponents(UniformType uniform, ValueType variable) {
+    const int wanted = floatComponents(uniform), given = floatComponents(variable);
+    return wanted > 0 && given > wanted;
+}
+
+}  // namespace
+
+std::string bindingMismatch(const Workspace& ws, const Pass& pass, const UniformSource& source, const std::string& uniform,
                             UniformType type, int arraySize) {
     std::string declared = "uniform '" + uniform + "' is declared " + uniformTypeName(type) +
                            (arraySize > 1 ? "[" + std::to_string(arraySize) + "]" : "");
-    if (arraySize > 1) return declared + ", but arrays cannot be bound to variables";
+    const bool direct3d = hasHlsl(pass);
+    const bool fedByValue = std::holds_alternative<BoundVariable>(source) || std::holds_alternative<BoundConstant>(source);
+    if (arraySize > 1 && !(direct3d && fedByValue)) return declared + ", but arrays cannot be bound to variables";
     if (const auto* s = std::get_if<BoundSampler>(&source)) {
         TextureKind kind = TextureKind::Texture2D;
         if (!s->sampler->texture.empty())
@@ -42,7 +83,7 @@ std::string bindingMismatch(const Workspace& ws, const UniformSource& source, co
                                               : "a 2D image and needs sampler2D");
     }
     auto variableMismatch = [&](const Variable& v, const char* kind) -> std::string {
-        if (uniformAccepts(type, v.value.type)) return {};
+        if (uniformAccepts(type, v.value.type) || (direct3d && registerTakesFirstComponents(type, v.value.type))) return {};
         return declared + ", but " + kind + " '" + v.name + "' (" + where(v.where) + ") is a " +
                valueTypeName(v.value.type) + " (binds to GLSL " + glslTypeName(v.value.type) + ")";
     };

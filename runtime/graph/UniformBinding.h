@@ -29,7 +29,11 @@ UniformSource resolveUniform(const Workspace& ws, const Pass& pass, const std::s
 bool unboundUniformIsZero(const Pass& pass, const UniformSource& source, UniformType type);
 
 // Empty when the source can feed a uniform of that type; else why not, as a sentence naming both.
-std::string bindingMismatch(const Workspace& ws, const UniformSource& source, const std::string& uniform,
+// In a pass of HLSL shaders a variable feeds a constant as RenderMonkey set Direct3D's registers:
+// a float vector wider than the constant gives its first components (a float4 variable into a
+// float2 constant: .xy), and an array constant takes the variable in its first element (the
+// others stay zero).
+std::string bindingMismatch(const Workspace& ws, const Pass& pass, const UniformSource& source, const std::string& uniform,
                             UniformType type, int arraySize);
 
 }  // namespace rmfx

@@ -343,6 +343,38 @@ float4 main(float2 uv : TEXCOORD0) : COLOR {
     expectNear(pixel(out, 1, 2), {0.5, 0.375, 0.25, 0.125}, 0.0, "pixel");
 }
 
+// RenderMonkey set a Direct3D constant register from the variable of its name: a float4
+// variable into a float2 constant gives .xy (a register is four floats), and an array constant
+// `float4 weights[2]` takes the variable in its first register, the second staying zero.
+TEST_F(HlslGLTest, AVariableFeedsAConstantAsItSetDirect3DsRegisters) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x4">
+  <vec4 name="offset" value="0.25 0.5 0.75 1"/>
+  <vec3 name="gain" value="2 3 4"/>
+  <vec4 name="weights" value="0.125 0.375 0.625 0.875"/>
+  <target name="out" format="rgba32f" size="4x4"/>
+  <target name="out2" format="rgba32f" size="4x4"/>
+  <pass name="hlsl" target="out">
+    <shader stage="fragment"><![CDATA[
+float2 offset;
+float gain;
+float4 main(float2 uv : TEXCOORD0) : COLOR { return float4(offset, gain, 0); }
+]]></shader>
+  </pass>
+  <pass name="hlsl_array" target="out2">
+    <shader stage="fragment"><![CDATA[
+float4 weights[2];
+float4 main(float2 uv : TEXCOORD0) : COLOR { return float4(weights[0].yw, weights[1].xw); }
+]]></shader>
+  </pass>
+</workspace>)";
+    std::unique_ptr<Workspace> ws = hlslWorkspace(xml);
+    ASSERT_TRUE(ws);
+    GlRun run = runWorkspace(std::move(ws), RunSettings());
+    ASSERT_TRUE(run.exec);
+    expectNear(pixel(readRef(run, "out"), 2, 1), {0.25, 0.5, 2.0, 0.0}, 0.0, "offset.xy, gain = gain.x");
+    expectNear(pixel(readRef(run, "out2"), 1, 3), {0.375, 0.875, 0.0, 0.0}, 0.0, "weights[0].yw, weights[1] zero");
+}
+
 // A constant's default may be an expression and an array (tdm1223's Blur.rfx: a Gaussian kernel
 // `float4 gaussFilter[7] = { 0.0, -3.0, 0.0, 1.0/64.0, … }` and `float texScaler = 1.0/2048.0;`):
 // fxc folded them, and they hold while no variable feeds the constant.
