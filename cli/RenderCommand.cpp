@@ -16,6 +16,7 @@
 #include "gl/GlContext.h"
 #include "graph/FrameExplanation.h"
 #include "io/image/ImageIO.h"
+#include "io/image/ImageMemoryLimit.h"
 #include "io/image/ImageOutputPath.h"
 #include "io/media/ImageSequence.h"
 #include "io/media/MediaArguments.h"
@@ -290,6 +291,14 @@ std::vector<std::string> renderOptionNames() {
 int renderCommand(const std::vector<std::string>& args) {
     auto a = parseArguments(args);
     if (!a) return 1;
+    // An --input image too large to read is refused from its header before the workspace loads.
+    for (const InputArgument& input : a->inputs) {
+        if (isSequencePattern(input.file.string())) continue;
+        if (Result<void> fits = checkImageFileMemory(input.file); !fits) {
+            std::cerr << "rmfx render: --input " << input.text << ": " << fits.error() << "\n";
+            return 1;
+        }
+    }
     // A given output is checked before anything is loaded; the default one (the workspace's
     // name) once it is known, still before any frame renders.
     if (a->output && !isSequencePattern(*a->output)) {

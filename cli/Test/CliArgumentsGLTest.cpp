@@ -120,6 +120,11 @@ TEST_F(CliArgumentsGLTest, AnImageIsRefusedFromItsHeaderByTheMemoryItWouldTake) 
     EXPECT_TRUE(has(cli.err, "claims.exr: image is 16000x16000: decoded it would take 3907 MiB, over the limit of 2048 MiB "
                              "(--max-image-memory MiB raises it)"))
         << cli.err;
+    // Before the workspace is even read: one that does not exist is not what is reported.
+    CommandResult first = runRmfx("render nothere.xml --input claims.exr -o x.exr", dir.path());
+    EXPECT_EQ(first.status, 1) << first.err;
+    EXPECT_TRUE(has(first.err, "rmfx render: --input claims.exr: claims.exr: image is 16000x16000")) << first.err;
+    EXPECT_FALSE(has(first.err, "nothere.xml")) << first.err;
     // The flag sets the limit for the run.
     CommandResult raised = runRmfx(render + " --max-image-memory 1 ", dir.path());
     EXPECT_EQ(raised.status, 1) << raised.err;

@@ -50,6 +50,27 @@ TEST(ImageMemoryLimit, ASmallFileClaimingAHugeImageIsRefusedFromItsHeader) {
     EXPECT_TRUE(has(texture.error(), "--max-image-memory")) << texture.error();
 }
 
+// From the header alone, before anything else: refused only when no part of the file fits; a file
+// that is not there or not an image is the reader's to report.
+TEST(ImageMemoryLimit, TheFileAloneIsCheckedBeforeAnythingElse) {
+    test::ScratchDir dir;
+    const auto claims = dir / "claims.exr";
+    ASSERT_TRUE(test::writeExrClaimingSize(claims, 16000, 16000));
+    Result<void> refused = checkImageFileMemory(claims);
+    ASSERT_FALSE(refused);
+    EXPECT_EQ(refused.error(), claims.string() + ": image is 16000x16000: decoded it would take 3907 MiB, over the limit of "
+                                                 "2048 MiB (--max-image-memory MiB raises it)");
+    EXPECT_TRUE(checkImageFileMemory(dir / "nothere.exr"));
+    EXPECT_TRUE(checkImageFileMemory(dir.write("garbage.exr", "not an image")));
+    Image small;
+    small.width = 4;
+    small.height = 2;
+    small.channels = 4;
+    small.pixels.assign(4 * 2 * 4, 0.5f);
+    ASSERT_TRUE(writeImage(dir / "small.exr", small));
+    EXPECT_TRUE(checkImageFileMemory(dir / "small.exr"));
+}
+
 TEST(ImageMemoryLimit, TheLimitIsTheRunsToSet) {
     test::ScratchDir dir;
     Image small;

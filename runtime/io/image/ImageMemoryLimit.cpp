@@ -1,7 +1,10 @@
 #include "io/image/ImageMemoryLimit.h"
 
+#include <algorithm>
 #include <atomic>
 #include <string>
+
+#include <OpenImageIO/imageio.h>
 
 #include "io/image/ImageFileError.h"
 
@@ -31,6 +34,26 @@ Result<void> checkImageMemory(const std::filesystem::path& file, std::int64_t wi
     return imageFileError(file, "image is " + size + ": decoded it would take " + mebibytes(bytes) +
                                     ", over the limit of " + mebibytes(imageMemoryLimit()) +
                                     " (--max-image-memory MiB raises it)");
+}
+
+Result<void> checkImageFileMemory(const std::filesystem::path& file) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec)) return {};
+    auto in = OIIO::ImageInput::open(file.string());
+    if (!in) {
+        (void)OIIO::geterror();  // the reader says what is wrong with it
+        return {};
+    }
+    Result<void> smallest;
+    for (int part = 0; in->seek_subimage(part, 0); ++part) {
+        const OIIO::ImageSpec& spec = in->spec();
+        Result<void> fits = checkImageMemory(file, std::max(spec.width, spec.full_width), std::max(spec.height, spec.full_height),
+                                             std::max(spec.depth, 1), 4);
+        if (fits) return {};
+        if (part == 0) smallest = fits;
+    }
+    (void)in->geterror();  // seeking past the last part leaves an error that says nothing about the file
+    return smallest;
 }
 
 }  // namespace rmfx

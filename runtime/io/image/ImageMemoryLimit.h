@@ -24,4 +24,9 @@ std::uint64_t decodedImageBytes(std::int64_t width, std::int64_t height, std::in
 Result<void> checkImageMemory(const std::filesystem::path& file, std::int64_t width, std::int64_t height,
                               std::int64_t depth, int channels);
 
+// The same from the file's header alone, before anything else is loaded: an error only when every
+// image the file holds (each part of a multi-part EXR) is over the limit, so that no choice of
+// part or layer could be read. A file that cannot be opened is left to the reader to report.
+Result<void> checkImageFileMemory(const std::filesystem::path& file);
+
 }  // namespace rmfx
