@@ -246,6 +246,44 @@ TEST(RfxCameraFraming, TheViewerCameraIsRecoveredFromAStoredViewProjectionAlone)
     EXPECT_FLOAT_EQ(ortho.camera.target.x, 10.0f);  // framed instead
 }
 
+// The matrices the passes read decide. Many Direct3D files keep RenderMonkey's last View (often its
+// default, 200 units down -z: the identity turned into a translation) beside the ViewProjection or
+// ViewInverse their shaders read; the camera comes from what the shaders read.
+TEST(RfxCameraFraming, TheMatricesTheShadersReadDecideOverAStaleView) {
+    test::ScratchDir dir;
+    dir.write("big.obj", kBigCube);
+    const glm::dvec3 centre(10, 20, 30), eye(-150, 90, -260);
+    const glm::dmat4 staleView = glm::lookAtLH(glm::dvec3(0, 0, -200), glm::dvec3(0), glm::dvec3(0, 1, 0));
+    const glm::dmat4 view = glm::lookAtLH(eye, centre, glm::dvec3(0, 1, 0));
+    const glm::dmat4 viewProjection = glm::perspectiveLH_ZO(glm::radians(50.0), 1.0, 1.0, 1000.0) * view;
+    auto effect = [](const std::string& variables, const std::string& matrix) {
+        return "<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\" ACTIVE_EFFECT=\"W.E\" XML_VERSION=\"RenderMonkey 1.71\">\n"
+               "<RmModelData NAME=\"M\" FILE_NAME=\"big.obj\"/>\n<RmDirectXEffect NAME=\"E\" API=\"D3D\">\n" + variables +
+               "<RmPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n<RmModelReference NAME=\"M\"/>\n"
+               "<RmHLSLShader NAME=\"V\" PIXEL_SHADER=\"FALSE\" TARGET=\"vs_2_0\" ENTRY_POINT=\"main\"><RmShaderCode><![CDATA["
+               "float4x4 " + matrix + "; float4 main(float4 p : POSITION) : POSITION { return mul(p, " + matrix + "); }"
+               "]]></RmShaderCode></RmHLSLShader>\n"
+               "<RmHLSLShader NAME=\"F\" PIXEL_SHADER=\"TRUE\" TARGET=\"ps_2_0\" ENTRY_POINT=\"main\"><RmShaderCode><![CDATA["
+               "float4 main() : COLOR { return 1; }]]></RmShaderCode></RmHLSLShader>\n</RmPass>\n</RmDirectXEffect>\n"
+               "</RmEffectWorkspace>\n</RENDER_MONKEY>\n";
+    };
+    const std::string stale = stored("matView", "View", staleView);
+    for (const auto& [matrix, variable] :
+         {std::pair{std::string("matViewProjection"), stored("matViewProjection", "ViewProjection", viewProjection)},
+          std::pair{std::string("matViewInverse"), stored("matViewInverse", "ViewInverse", glm::inverse(view)) +
+                                                       stored("matProjection", "Projection",
+                                                              glm::perspectiveLH_ZO(glm::radians(50.0), 1.0, 1.0, 1000.0))}}) {
+        SCOPED_TRACE(matrix);
+        Workspace ws = load(dir, effect(stale + variable, matrix));
+        const OrbitCamera camera(ws.camera);
+        EXPECT_NEAR(glm::length(glm::dvec3(camera.position()) - eye), 0.0, 0.05);
+        EXPECT_NEAR(glm::length(glm::dvec3(ws.camera.target) - centre), 0.0, 0.05);
+    }
+    // When the shaders read the View itself, the View decides, stale or not.
+    Workspace readsView = load(dir, effect(stale + stored("matViewProjection", "ViewProjection", viewProjection), "matView"));
+    EXPECT_NEAR(glm::length(glm::dvec3(OrbitCamera(readsView.camera).position()) - glm::dvec3(0, 0, -200)), 0.0, 0.05);
+}
+
 // Files that kept only WorldViewProjection (P·V·W), with the World beside it or without one (the
 // identity, as RenderMonkey's viewer leaves it): the camera comes back from P·V = P·V·W·W⁻¹.
 TEST(RfxCameraFraming, TheViewerCameraIsRecoveredFromAStoredWorldViewProjection) {

@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "core/IdentifierSearch.h"
 #include "io/mesh/BuiltinMeshes.h"
 #include "io/mesh/ModelLoader.h"
 #include "model/OrbitCamera.h"
@@ -217,28 +218,59 @@ void frameDrawnModels(Workspace& ws) {
         return true;
     };
     if (view && identity(*view)) view = nullptr;
-    if (view) {
-        if (auto camera = fromStoredView(*view, models, haveModels, ws.camera)) {
-            if (const Variable* projection = stored(ws, "Projection", ValueType::Mat4)) {
-                const double p11 = projection->value.data[5];
-                if (p11 > 1e-6 && std::isfinite(p11)) camera->fovYDegrees = fovFromYScale(p11);
+    const Variable* viewProjection = stored(ws, "ViewProjection", ValueType::Mat4);
+    const Variable* worldViewProjection = stored(ws, "WorldViewProjection", ValueType::Mat4);
+    const Variable* viewInverse = stored(ws, "ViewInverse", ValueType::Mat4);
+    // The matrices the passes read decide: a file often keeps the viewer's last View (stale, or
+    // its default 200 units away) beside the ViewProjection its shaders read. Those a shader reads
+    // are tried first; the others only when none of those holds a camera (a matrix the viewer never
+    // filled, the identity, holds none).
+    auto read = [&](const Variable* v) {
+        if (!v) return false;
+        for (const Pass& pass : ws.passes)
+            for (const ShaderSource& shader : pass.shaders)
+                if (mentionsIdentifier(shader.code, v->name)) return true;
+        return false;
+    };
+    auto cameraFrom = [&](const Variable* view, const Variable* viewProjection, const Variable* worldViewProjection,
+                          const Variable* viewInverse) -> std::optional<OrbitCameraSettings> {
+        // ViewInverse, the camera's own transform: the View is its inverse, in the same layout.
+        std::optional<Variable> invertedViewInverse;
+        if (!view && viewInverse) {
+            glm::dmat4 m;
+            for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = viewInverse->value.data[static_cast<size_t>(i)];
+            if (std::abs(glm::determinant(m)) > 1e-12) {
+                const glm::dmat4 inverse = glm::inverse(m);
+                invertedViewInverse = *viewInverse;
+                for (int i = 0; i < 16; ++i)
+                    invertedViewInverse->value.data[static_cast<size_t>(i)] = static_cast<float>(inverse[i / 4][i % 4]);
+                view = &*invertedViewInverse;
             }
-            adopt(*camera);
-            return;
         }
-    }
-    if (const Variable* viewProjection = stored(ws, "ViewProjection", ValueType::Mat4)) {
-        if (auto camera = fromStoredViewProjection(*viewProjection, models, haveModels, ws.camera)) {
-            adopt(*camera);
-            return;
-        }
-    }
-    if (const Variable* worldViewProjection = stored(ws, "WorldViewProjection", ValueType::Mat4))
-        if (std::optional<Variable> viewProjection = viewProjectionFromWorldViewProjection(ws, *worldViewProjection))
-            if (auto camera = fromStoredViewProjection(*viewProjection, models, haveModels, ws.camera)) {
-                adopt(*camera);
-                return;
+        if (view) {
+            if (auto camera = fromStoredView(*view, models, haveModels, ws.camera)) {
+                if (const Variable* projection = stored(ws, "Projection", ValueType::Mat4)) {
+                    const double p11 = projection->value.data[5];
+                    if (p11 > 1e-6 && std::isfinite(p11)) camera->fovYDegrees = fovFromYScale(p11);
+                }
+                return camera;
             }
+        }
+        if (viewProjection)
+            if (auto camera = fromStoredViewProjection(*viewProjection, models, haveModels, ws.camera)) return camera;
+        if (worldViewProjection)
+            if (std::optional<Variable> product = viewProjectionFromWorldViewProjection(ws, *worldViewProjection))
+                if (auto camera = fromStoredViewProjection(*product, models, haveModels, ws.camera)) return camera;
+        return std::nullopt;
+    };
+    auto ifRead = [&](const Variable* v) { return read(v) ? v : nullptr; };
+    std::optional<OrbitCameraSettings> camera =
+        cameraFrom(ifRead(view), ifRead(viewProjection), ifRead(worldViewProjection), ifRead(viewInverse));
+    if (!camera) camera = cameraFrom(view, viewProjection, worldViewProjection, viewInverse);
+    if (camera) {
+        adopt(*camera);
+        return;
+    }
     if (!haveModels) return;
     // Only the eye kept (ViewPosition, which the viewer fills with the matrices; 0 where it never
     // did): looking from it at the models, when it stands outside them.

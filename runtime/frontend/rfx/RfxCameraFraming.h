@@ -4,7 +4,8 @@
 // orbit camera (4 units from the origin) suits unit-sized models only, and RenderMonkey's models
 // are about 100 units across: one would swallow it. Many files keep the viewer's last matrices in
 // variables RenderMonkey filled by semantic (View and Projection, ViewProjection, or
-// WorldViewProjection with World): the camera is then recovered from them. Otherwise the camera keeps its direction and moves to where the bounding sphere of the
+// WorldViewProjection with World, ViewInverse): the camera is then recovered from them, those the
+// passes' shaders read first (a file often keeps a stale View beside the matrix its shaders read). Otherwise the camera keeps its direction and moves to where the bounding sphere of the
 // models the passes draw fills its field of view, leaving out a dome or box around the scene.
 
 #include "model/Workspace.h"
