@@ -99,6 +99,13 @@ TEST(RfxCameraFraming, TheViewerCameraIsRecoveredFromAStoredViewMatrix) {
     EXPECT_NEAR(ws.camera.fovYDegrees, 30.0, 1e-3);
     EXPECT_NEAR(ws.camera.rollDegrees, 0.0, 1e-3);
     EXPECT_GT(ws.camera.farPlane, glm::length(eye - centre) + 50.0 * std::sqrt(3.0));
+
+    // A Projection saved past 180 degrees (y scale cot(100°) < 0) keeps its angle.
+    glm::dmat4 wide = projection;
+    wide[1][1] = 1.0 / std::tan(glm::radians(100.0));
+    wide[0][0] = wide[1][1];
+    Workspace turned = load(dir, effectDrawing("big.obj", stored("view_matrix", "View", view) + stored("proj", "Projection", wide)));
+    EXPECT_NEAR(turned.camera.fovYDegrees, 200.0, 1e-3);
 }
 
 // A View left at the identity (alexey-malov/cg-course's NPR-optimized.rfx keeps one no shader

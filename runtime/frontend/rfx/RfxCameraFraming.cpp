@@ -56,8 +56,9 @@ const Variable* stored(const Workspace& ws, const std::string& semantic, ValueTy
     return nullptr;
 }
 
-// The vertical field of view, in degrees, of a perspective projection whose y scale is p11.
-float fovFromYScale(double p11) { return static_cast<float>(2.0 * std::atan(1.0 / p11) * 180.0 / std::numbers::pi); }
+// The vertical field of view, in degrees, of a perspective projection whose y scale is p11 =
+// cot(FOV / 2): past 180 degrees (RenderMonkey's zoom went there) p11 is negative.
+float fovFromYScale(double p11) { return static_cast<float>(2.0 * std::atan2(1.0, p11) * 180.0 / std::numbers::pi); }
 
 // RenderMonkey's viewer camera as it saved it in a View matrix (VARIABLE_SEMANTIC="View"): stored
 // row by row in the column-vector convention, which rmfx reads with VALUE_0…3 as the first column,
@@ -251,7 +252,7 @@ void frameDrawnModels(Workspace& ws) {
             if (auto camera = fromStoredView(*view, models, haveModels, ws.camera)) {
                 if (const Variable* projection = stored(ws, "Projection", ValueType::Mat4)) {
                     const double p11 = projection->value.data[5];
-                    if (p11 > 1e-6 && std::isfinite(p11)) camera->fovYDegrees = fovFromYScale(p11);
+                    if (std::abs(p11) > 1e-6 && std::isfinite(p11)) camera->fovYDegrees = fovFromYScale(p11);
                 }
                 return camera;
             }
