@@ -333,6 +333,16 @@ int renderCommand(const std::vector<std::string>& args) {
         std::cerr << "rmfx render: --effects: " << effects.error() << "\n";
         return 1;
     }
+    // The names the arguments give, checked before any image is read or frame rendered.
+    if (Result<std::vector<const ImageInput*>> named = resolveInputArguments(ws, a->inputs); !named) {
+        std::cerr << formatAll(named.diagnostics());
+        return 1;
+    }
+    if (a->target && !ws.canReadTarget(*a->target)) {
+        std::cerr << "rmfx render: --target " << *a->target << ": the workspace has no such target ("
+                  << ws.describeTargets() << ")\n";
+        return 1;
+    }
     if (!a->quiet) {
         FramePlanOptions planned = a->executor;
         for (const InputArgument& given : a->inputs)
@@ -361,11 +371,6 @@ int renderCommand(const std::vector<std::string>& args) {
         a->executor.givenInputs = supplied->given;
     }
     std::string targetName = a->target.value_or(ws.outputTargetName());
-    if (a->target && !ws.canReadTarget(*a->target)) {
-        std::cerr << "rmfx render: --target " << *a->target << ": the workspace has no such target ("
-                  << ws.describeTargets() << ")\n";
-        return 1;
-    }
     std::string output = a->output.value_or(ws.name + ".png");
     if (isSequencePattern(output)) {
         std::cerr << "rmfx render: -o " << output << " is a frame pattern, but no --input is a sequence\n";

@@ -234,6 +234,25 @@ TEST_F(CliSequenceGLTest, PrerollStartsHdrLightingAdaptedToTheFirstImage) {
     }
 }
 
+// A target or input name that does not exist is an argument error (exit status 1) for a sequence
+// too, found before any frame renders.
+TEST_F(CliSequenceGLTest, UnknownNamesAreArgumentErrorsBeforeTheFirstFrame) {
+    ScratchDir dir;
+    dir.write("acc.xml", kAccumulate);
+    writeFrames(dir, {1, 2});
+    CommandResult target = runRmfx("render acc.xml --input frame=shot/f.%04d.exr --target nosuch -o t.%04d.exr", dir.path());
+    EXPECT_EQ(target.status, 1) << target.err;
+    EXPECT_NE(target.err.find("--target nosuch: the workspace has no such target"), std::string::npos) << target.err;
+    CommandResult input = runRmfx("render acc.xml --input nosuch=shot/f.%04d.exr -o i.%04d.exr", dir.path());
+    EXPECT_EQ(input.status, 1) << input.err;
+    EXPECT_NE(input.err.find("--input nosuch=shot/f.%04d.exr: the workspace has no input 'nosuch' (its inputs: 'frame')"),
+              std::string::npos)
+        << input.err;
+    for (const CommandResult* r : {&target, &input}) EXPECT_EQ(r->err.find("frames,"), std::string::npos) << r->err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "t.0001.exr"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "i.0001.exr"));
+}
+
 // Where the frames go is checked before the first one renders: exit status 1, no progress line.
 TEST_F(CliSequenceGLTest, AnOutputPatternThatCannotBeWrittenFailsBeforeTheFirstFrame) {
     ScratchDir dir;

@@ -37,8 +37,7 @@ InputArgument parseInputArgument(const std::string& text) {
     return argument;
 }
 
-Result<SuppliedInputs> supplyInputs(Workspace& ws, const std::vector<InputArgument>& inputs,
-                                    std::optional<glm::ivec2> size, int maxSide) {
+Result<std::vector<const ImageInput*>> resolveInputArguments(const Workspace& ws, const std::vector<InputArgument>& inputs) {
     Diagnostics d;
     auto error = [&](const InputArgument& a, const std::string& message) {
         d.push_back({Diagnostic::Severity::Error, {ws.path.string(), 0}, "--input " + a.text, message});
@@ -46,14 +45,7 @@ Result<SuppliedInputs> supplyInputs(Workspace& ws, const std::vector<InputArgume
     std::string known;
     for (const ImageInput& input : ws.inputs) known += (known.empty() ? "'" : ", '") + input.name + "'";
     known = known.empty() ? "it declares no <input>" : "its inputs: " + known;
-
-    // Which input each argument fills, and its image.
-    struct Read {
-        const ImageInput* input;
-        const InputArgument* argument;
-        Image image;
-    };
-    std::vector<Read> read;
+    std::vector<const ImageInput*> resolved;
     std::map<std::string, const InputArgument*> taken;
     for (const InputArgument& a : inputs) {
         const ImageInput* input = nullptr;
@@ -69,6 +61,31 @@ Result<SuppliedInputs> supplyInputs(Workspace& ws, const std::vector<InputArgume
             error(a, "input '" + input->name + "' is already given by --input " + it->second->text);
             continue;
         }
+        resolved.push_back(input);
+    }
+    if (hasErrors(d)) return Result<std::vector<const ImageInput*>>::failure(std::move(d));
+    return resolved;
+}
+
+Result<SuppliedInputs> supplyInputs(Workspace& ws, const std::vector<InputArgument>& inputs,
+                                    std::optional<glm::ivec2> size, int maxSide) {
+    Result<std::vector<const ImageInput*>> resolved = resolveInputArguments(ws, inputs);
+    if (!resolved) return Result<SuppliedInputs>::failure(std::move(resolved).diagnostics());
+    Diagnostics d;
+    auto error = [&](const InputArgument& a, const std::string& message) {
+        d.push_back({Diagnostic::Severity::Error, {ws.path.string(), 0}, "--input " + a.text, message});
+    };
+
+    // Which input each argument fills, and its image.
+    struct Read {
+        const ImageInput* input;
+        const InputArgument* argument;
+        Image image;
+    };
+    std::vector<Read> read;
+    for (size_t k = 0; k < inputs.size(); ++k) {
+        const InputArgument& a = inputs[k];
+        const ImageInput* input = (*resolved)[k];
         Result<InputImage> image = readInputImage(a.file, a.layer, maxSide);
         if (!image) {
             error(a, image.error());

@@ -32,6 +32,11 @@ struct SuppliedInputs {
     glm::ivec2 viewport{0};       // the size the run renders at
 };
 
+// The <input> each argument fills, in order, before any image is read. Errors name the argument:
+// an unknown input (listing the workspace's), a name left out where the workspace has several, an
+// input given twice.
+Result<std::vector<const ImageInput*>> resolveInputArguments(const Workspace& ws, const std::vector<InputArgument>& inputs);
+
 // Reads each image as linear RGBA (readInputImage: how it decoded each file comes back as
 // warnings naming it) and puts it into its input's texture. The viewport is `size` when given,
 // else the size of the first image that replaces a target (the scene), else the workspace's.
