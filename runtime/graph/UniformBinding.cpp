@@ -31,16 +31,6 @@ bool hasHlsl(const Pass& pass) {
     return std::any_of(pass.shaders.begin(), pass.shaders.end(), [](const ShaderSource& s) { return s.dialect == ShaderDialect::Hlsl; });
 }
 
-int floatComponents(UniformType type) {
-    switch (type) {
-        case UniformType::Float: return 1;
-        case UniformType::Vec2: return 2;
-        case UniformType::Vec3: return 3;
-        case UniformType::Vec4: return 4;
-        default: return 0;
-    }
-}
-
 int floatComponents(ValueType type) {
     switch (type) {
         case ValueType::Float: return 1;
@@ -56,7 +46,7 @@ int floatComponents(ValueType type) {
 // A Direct3D constant register is four floats: a wider float variable set it whole, and the
 // shader read as many as its constant declared.
 bool registerTakesFirstComponents(UniformType uniform, ValueType variable) {
-    const int wanted = floatComponents(uniform), given = floatComponents(variable);
+    const int wanted = floatVectorWidth(uniform), given = floatComponents(variable);
     return wanted > 0 && given > wanted;
 }
 

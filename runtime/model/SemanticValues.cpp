@@ -164,16 +164,6 @@ bool equalIgnoringCase(std::string_view a, std::string_view b) {
     return true;
 }
 
-int vectorWidth(UniformType type) {
-    switch (type) {
-        case UniformType::Float: return 1;
-        case UniformType::Vec2: return 2;
-        case UniformType::Vec3: return 3;
-        case UniformType::Vec4: return 4;
-        default: return 0;
-    }
-}
-
 }  // namespace
 
 std::span<const SemanticInfo> semanticVariables() { return infos(); }
@@ -187,7 +177,7 @@ std::optional<SemanticInfo> findSemantic(std::string_view name) {
 bool semanticFeeds(const SemanticInfo& semantic, UniformType uniform) {
     if (semantic.type == UniformType::Mat4 || uniform == UniformType::Mat4) return semantic.type == uniform;
     if (semantic.type == UniformType::Float && (uniform == UniformType::Int || uniform == UniformType::Bool)) return true;
-    int have = vectorWidth(semantic.type), want = vectorWidth(uniform);
+    int have = floatVectorWidth(semantic.type), want = floatVectorWidth(uniform);
     return want > 0 && want <= have && (want > 1) == (have > 1);
 }
 

@@ -99,6 +99,16 @@ bool isSampler(UniformType type) {
            type == UniformType::OtherSampler;
 }
 
+int floatVectorWidth(UniformType type) {
+    switch (type) {
+        case UniformType::Float: return 1;
+        case UniformType::Vec2: return 2;
+        case UniformType::Vec3: return 3;
+        case UniformType::Vec4: return 4;
+        default: return 0;
+    }
+}
+
 bool uniformAccepts(UniformType uniform, ValueType variable) {
     switch (variable) {
         case ValueType::Float: return uniform == UniformType::Float;

@@ -16,6 +16,8 @@ enum class UniformType {
 UniformType uniformTypeFromGl(int glType);
 const char* uniformTypeName(UniformType type);
 bool isSampler(UniformType type);
+// The floats of a float scalar or vector (1 to 4); 0 for any other type.
+int floatVectorWidth(UniformType type);
 // Whether a variable of this type may feed a uniform of that type.
 bool uniformAccepts(UniformType uniform, ValueType variable);
 
