@@ -334,7 +334,8 @@ int renderCommand(const std::vector<std::string>& args) {
         return 1;
     }
     // The names the arguments give, checked before any image is read or frame rendered.
-    if (Result<std::vector<const ImageInput*>> named = resolveInputArguments(ws, a->inputs); !named) {
+    Result<std::vector<const ImageInput*>> named = resolveInputArguments(ws, a->inputs);
+    if (!named) {
         std::cerr << formatAll(named.diagnostics());
         return 1;
     }
@@ -345,8 +346,7 @@ int renderCommand(const std::vector<std::string>& args) {
     }
     if (!a->quiet) {
         FramePlanOptions planned = a->executor;
-        for (const InputArgument& given : a->inputs)
-            planned.givenInputs.insert(!given.name.empty() ? given.name : ws.inputs.size() == 1 ? ws.inputs.front().name : "");
+        for (const ImageInput* given : *named) planned.givenInputs.insert(given->name);
         std::cerr << formatAll(unreadArgumentWarnings(ws, planned, a->load.textures, a->inputs));
     }
     if (sequence) return renderSequenceCommand(*a, ws);
@@ -376,10 +376,13 @@ int renderCommand(const std::vector<std::string>& args) {
         std::cerr << "rmfx render: -o " << output << " is a frame pattern, but no --input is a sequence\n";
         return 1;
     }
-    const bool writes = a->output || !a->explain;  // --explain alone writes no image
-    if (Result<void> usable = checkImageOutputPath(output); writes && !usable) {
-        std::cerr << "rmfx render: -o: " << usable.error() << "\n";
-        return 1;
+    // A given -o was checked on the way in; the default is checked once its name is known
+    // (--explain alone writes no image).
+    if (!a->output && !a->explain) {
+        if (Result<void> usable = checkImageOutputPath(output); !usable) {
+            std::cerr << "rmfx render: -o: " << usable.error() << "\n";
+            return 1;
+        }
     }
     a->executor.outputs = {targetName};
 

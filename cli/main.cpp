@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -167,21 +166,26 @@ are invalid, 2 no GL context. bench: 0 success, 1 invalid manifest, arguments, i
 2 no GL context or a variant failed to render.
 )";
 
-const char* const commands[] = {"render", "validate", "list", "replay", "edit", "bench"};
+// Each command: what runs it, and the options its parser takes (rmfx --options).
+struct Command {
+    const char* name;
+    int (*run)(const std::vector<std::string>& args);
+    std::vector<std::string> (*optionNames)();
+};
 
-std::vector<std::string> commandOptions(const std::string& command) {
-    using namespace rmfx::cli;
-    if (command == "render") return renderOptionNames();
-    if (command == "validate") return validateOptionNames();
-    if (command == "list") return listOptionNames();
-    if (command == "replay") return replayOptionNames();
-    if (command == "edit") return editOptionNames();
-    if (command == "bench") return benchOptionNames();
-    return {};
-}
+const Command commands[] = {
+    {"render", rmfx::cli::renderCommand, rmfx::cli::renderOptionNames},
+    {"validate", rmfx::cli::validateCommand, rmfx::cli::validateOptionNames},
+    {"list", rmfx::cli::listCommand, rmfx::cli::listOptionNames},
+    {"replay", rmfx::cli::replayCommand, rmfx::cli::replayOptionNames},
+    {"edit", rmfx::cli::editCommand, rmfx::cli::editOptionNames},
+    {"bench", rmfx::cli::benchCommand, rmfx::cli::benchOptionNames},
+};
 
-bool isCommand(const std::string& name) {
-    return std::find(std::begin(commands), std::end(commands), name) != std::end(commands);
+const Command* findCommand(const std::string& name) {
+    for (const Command& c : commands)
+        if (name == c.name) return &c;
+    return nullptr;
 }
 
 // Whether a usage paragraph's first line ("render options:", "file options (render, …):")
@@ -239,7 +243,7 @@ int main(int argc, char** argv) {
     std::signal(SIGXFSZ, SIG_IGN);
     std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-        if (args.size() > 1 && isCommand(args[1])) {
+        if (args.size() > 1 && findCommand(args[1])) {
             std::fputs(commandUsage(args[1]).c_str(), stdout);
             return 0;
         }
@@ -252,22 +256,20 @@ int main(int argc, char** argv) {
     }
     if (args[0] == "--options") {
         for (const char* option : {"--help", "--version", "--options"}) std::printf("rmfx %s\n", option);
-        for (const char* command : commands)
-            for (const std::string& option : commandOptions(command)) std::printf("%s %s\n", command, option.c_str());
+        for (const Command& command : commands)
+            for (const std::string& option : command.optionNames()) std::printf("%s %s\n", command.name, option.c_str());
         return 0;
     }
-    std::string command = args[0];
+    const std::string name = args[0];
     args.erase(args.begin());
-    if (isCommand(command) && asksForHelp(args)) {
-        std::fputs(commandUsage(command).c_str(), stdout);
+    const Command* command = findCommand(name);
+    if (!command) {
+        std::cerr << "rmfx: unknown command '" << name << "' (try rmfx --help)\n";
+        return 1;
+    }
+    if (asksForHelp(args)) {
+        std::fputs(commandUsage(name).c_str(), stdout);
         return 0;
     }
-    if (command == "render") return rmfx::cli::renderCommand(args);
-    if (command == "validate") return rmfx::cli::validateCommand(args);
-    if (command == "replay") return rmfx::cli::replayCommand(args);
-    if (command == "edit") return rmfx::cli::editCommand(args);
-    if (command == "bench") return rmfx::cli::benchCommand(args);
-    if (command == "list") return rmfx::cli::listCommand(args);
-    std::cerr << "rmfx: unknown command '" << command << "' (try rmfx --help)\n";
-    return 1;
+    return command->run(args);
 }

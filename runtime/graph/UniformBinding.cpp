@@ -22,32 +22,19 @@ UniformSource resolveUniform(const Workspace& ws, const Pass& pass, const std::s
 }
 
 namespace {
-std::string where(const SourceLocation& at) { return at.file + ":" + std::to_string(at.line); }
-}  // namespace
 
-namespace {
+std::string where(const SourceLocation& at) { return at.file + ":" + std::to_string(at.line); }
 
 bool hasHlsl(const Pass& pass) {
     return std::any_of(pass.shaders.begin(), pass.shaders.end(), [](const ShaderSource& s) { return s.dialect == ShaderDialect::Hlsl; });
 }
 
-int floatComponents(ValueType type) {
-    switch (type) {
-        case ValueType::Float: return 1;
-        case ValueType::Vec2: return 2;
-        case ValueType::Vec3:
-        case ValueType::Color3: return 3;
-        case ValueType::Vec4:
-        case ValueType::Color4: return 4;
-        default: return 0;
-    }
-}
-
-// A Direct3D constant register is four floats: a wider float variable set it whole, and the
-// shader read as many as its constant declared.
+// A Direct3D constant register is four floats: a wider float vector variable set it whole, and
+// the shader read as many as its constant declared. (An int or bool has one component, never
+// more than a constant wants; a 2x2 matrix has four but is no vector.)
 bool registerTakesFirstComponents(UniformType uniform, ValueType variable) {
-    const int wanted = floatVectorWidth(uniform), given = floatComponents(variable);
-    return wanted > 0 && given > wanted;
+    const int wanted = floatVectorWidth(uniform), given = componentCount(variable);
+    return wanted > 0 && given > wanted && given <= 4 && variable != ValueType::Mat2;
 }
 
 }  // namespace

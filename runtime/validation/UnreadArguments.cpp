@@ -9,7 +9,8 @@ namespace {
 // "pass 'a': culled: disabled, enabled="false"; pass 'b': …": the passes that sample `texture` and why each
 // does not run in any graph of the plan; "" when none samples it.
 std::string samplingPasses(const Workspace& ws, const FramePlan& plan, const std::string& texture) {
-    const PassGraph* graph = plan.allGraphs().empty() ? nullptr : plan.allGraphs().front();
+    const std::vector<const PassGraph*> graphs = plan.allGraphs();
+    const PassGraph* graph = graphs.empty() ? nullptr : graphs.front();
     std::string out;
     for (size_t i = 0; i < ws.passes.size(); ++i) {
         bool samples = false;
