@@ -59,6 +59,7 @@ public:
         frameErrors_ = executor.renderFrame(clock).takeDiagnostics();
         timing_.record(executor);
         targets_.setOutput(session_.workspace().outputTargetName(), session_.workspace().output.transform);
+        blit_.setRowsTopFirst(rowsTopFirst(session_.workspace().textureSpace));
         targets_.updateThumbnails(executor, session_.workspace(), blit_);
         drawPanel(clock);
         drawViewers();

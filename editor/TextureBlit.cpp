@@ -30,6 +30,7 @@ uniform float slice;
 uniform ivec2 origin;
 uniform float scale;
 uniform bool srgb;
+uniform bool topRowFirst;  // the texture's row 0 is the picture's top row (a Direct3D texture space)
 out vec4 color;
 
 float display(float v) {
@@ -39,9 +40,15 @@ float display(float v) {
 }
 
 void main() {
-    vec4 t = sliced ? texture(volume, vec3(uv, slice))
-           : exact  ? texelFetch(source, ivec2(gl_FragCoord.xy) - origin, 0)
-                    : texture(source, uv);
+    ivec2 texel = ivec2(gl_FragCoord.xy) - origin;
+    vec2 at = uv;
+    if (topRowFirst) {
+        texel.y = textureSize(source, 0).y - 1 - texel.y;
+        at.y = 1.0 - at.y;
+    }
+    vec4 t = sliced ? texture(volume, vec3(at, slice))
+           : exact  ? texelFetch(source, texel, 0)
+                    : texture(source, at);
     vec3 c = t.rgb * scale;
     color = vec4(display(c.r), display(c.g), display(c.b), 1.0);
 }
@@ -107,6 +114,7 @@ Result<std::unique_ptr<TextureBlit>> TextureBlit::create() {
     blit->srgbLocation_ = glGetUniformLocation(blit->program_, "srgb");
     blit->slicedLocation_ = glGetUniformLocation(blit->program_, "sliced");
     blit->sliceLocation_ = glGetUniformLocation(blit->program_, "slice");
+    blit->topRowFirstLocation_ = glGetUniformLocation(blit->program_, "topRowFirst");
     glCreateVertexArrays(1, &blit->vertexArray_);
     blit->nearest_ = makeSampler(GL_NEAREST, GL_NEAREST);
     blit->linear_ = makeSampler(GL_LINEAR, GL_NEAREST);  // magnified texels stay sharp
@@ -119,6 +127,8 @@ TextureBlit::~TextureBlit() {
     glDeleteSamplers(1, &nearest_);
     glDeleteSamplers(1, &linear_);
 }
+
+void TextureBlit::setRowsTopFirst(bool topFirst) { glProgramUniform1i(program_, topRowFirstLocation_, topFirst ? 1 : 0); }
 
 void TextureBlit::drawExact(unsigned texture, glm::ivec2 origin, DisplayTransform transform) {
     draw(texture, nearest_, true, origin, 1.0f, transform);

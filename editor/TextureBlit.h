@@ -22,7 +22,11 @@ public:
     TextureBlit(const TextureBlit&) = delete;
     TextureBlit& operator=(const TextureBlit&) = delete;
 
-    // Texel (0, 0) of `texture` lands on framebuffer pixel `origin` (GL's bottom-left origin) and
+    // Whether the textures drawn next hold the picture's top row at GL's row 0, as a workspace in a
+    // Direct3D texture space draws its targets and uploads its images (model/Workspace.h
+    // rowsTopFirst); they are drawn the right way up either way. Default: false (OpenGL's).
+    void setRowsTopFirst(bool topFirst);
+    // The picture's bottom-left texel lands on framebuffer pixel `origin` (GL's bottom-left origin) and
     // each texel on one pixel: the viewport, from `origin`, covers the texels to draw (the texture's
     // size for all of it).
     void drawExact(unsigned texture, glm::ivec2 origin, DisplayTransform transform);
@@ -39,7 +43,7 @@ private:
     unsigned vertexArray_ = 0;
     unsigned nearest_ = 0, linear_ = 0;
     int exactLocation_ = -1, originLocation_ = -1, scaleLocation_ = -1, srgbLocation_ = -1;
-    int slicedLocation_ = -1, sliceLocation_ = -1;
+    int slicedLocation_ = -1, sliceLocation_ = -1, topRowFirstLocation_ = -1;
 };
 
 }  // namespace rmfx::editor

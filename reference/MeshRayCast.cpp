@@ -92,7 +92,7 @@ std::optional<SurfaceHit> MeshRayCast::at(double x, double y) const {
 }
 
 bool MeshRayCast::settled(int i, int j, double depthSpread) const {
-    const double cx = i + 0.5, cy = j + 0.5;
+    const double cx = centre(i, j).x, cy = centre(i, j).y;
     const auto centre = at(cx, cy);
     for (double dx : {-0.35, 0.35})
         for (double dy : {-0.35, 0.35}) {

@@ -33,7 +33,13 @@ public:
     // (i + 0.5, j + 0.5)); none when the ray misses or hits only beyond the clip planes.
     std::optional<SurfaceHit> at(double x, double y) const;
 
-    // Pixel (i, j) can be compared with a rasteriser's: the rays through its centre and four points
+    // Where the rasteriser compared with shades pixel (i, j), j from the bottom: (i, j) plus
+    // `pixelCentre`, (0.5, 0.5) by default (OpenGL, Direct3D 10). Direct3D 9 shades at whole-number
+    // window coordinates counted down from the top: (0, 1) from the pixel's bottom-left corner.
+    void setPixelCentre(glm::dvec2 pixelCentre) { pixelCentre_ = pixelCentre; }
+    glm::dvec2 centre(int i, int j) const { return glm::dvec2(i, j) + pixelCentre_; }
+
+    // Pixel (i, j) can be compared with a rasteriser's: the rays through its centre() and four points
     // 0.35 px from it diagonally all miss, or all hit at depths within `depthSpread` times the
     // centre's depth of it.
     // Elsewhere an edge, a silhouette or an occluding contour crosses the pixel, and which surface a
@@ -48,6 +54,7 @@ private:
     };
     const Mesh& mesh_;
     glm::ivec2 size_;
+    glm::dvec2 pixelCentre_{0.5, 0.5};
     glm::dmat4 windowToObject_;  // from (ndc x, ndc y, ndc z, 1)
     std::vector<Triangle> triangles_;
     std::vector<std::vector<uint32_t>> bins_;  // triangles whose window bounding box covers each pixel

@@ -16,7 +16,8 @@ RayCastImage rayCastImage(const MeshRayCast& cast, const SurfaceShading& shade, 
     out.compared.assign(size_t(size.x) * size.y, 0);
     for (int j = 0; j < size.y; ++j)
         for (int i = 0; i < size.x; ++i) {
-            const auto hit = cast.at(i + 0.5, j + 0.5);
+            const glm::dvec2 centre = cast.centre(i, j);
+            const auto hit = cast.at(centre.x, centre.y);
             bool compared = cast.settled(i, j);
             if (hit) {
                 const ExpectedRange range = shade(*hit);

@@ -386,7 +386,7 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
         if (issued) {
             glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
             glViewport(0, 0, memory.spec.size.x, memory.spec.size.y);
-            applyRenderState(pass, s.compatibility);
+            applyRenderState(pass, s.compatibility, rowsTopFirst(s.ws.textureSpace));
             if (pass.clear.color) glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, glm::value_ptr(*pass.clear.color));
             if (pass.clear.depth) {
                 glDepthMask(GL_TRUE);
@@ -541,8 +541,10 @@ Result<Image> GlExecutor::readTarget(const std::string& name) const {
                       rgba.data());  // the newest finished contents
     if (std::string e = firstGlError(); !e.empty()) return Error{e + " reading target '" + name + "'"};
     image.pixels.resize(static_cast<size_t>(image.width) * image.height * image.channels);
+    // GL's row 0 is the picture's bottom row, or its top row in a Direct3D texture space.
+    const bool topFirst = rowsTopFirst(s.ws.textureSpace);
     for (int y = 0; y < image.height; ++y) {
-        const float* src = &rgba[static_cast<size_t>(image.height - 1 - y) * image.width * 4];
+        const float* src = &rgba[static_cast<size_t>(topFirst ? y : image.height - 1 - y) * image.width * 4];
         for (int x = 0; x < image.width; ++x)
             for (int c = 0; c < image.channels; ++c) image.at(x, y, c) = src[x * 4 + c];
     }

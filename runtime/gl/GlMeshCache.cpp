@@ -20,6 +20,10 @@ Result<const GlMesh*> GlMeshCache::meshFor(const Workspace& ws, const DrawCall& 
     if (draw.mesh) {
         mesh = makeMesh(*draw.mesh);
         for (glm::vec3& p : mesh.positions) p *= draw.meshScale;
+        // Built-in meshes put t = 0 at the bottom of an image; Direct3D's v = 0 is its top row,
+        // where model files made for Direct3D (RenderMonkey's stock .3ds files) have it.
+        if (rowsTopFirst(ws.textureSpace))
+            for (glm::vec2& t : mesh.texcoords) t.y = 1.0f - t.y;
     } else {
         auto loaded = loadModel(ws.folder / draw.file);
         if (!loaded) return Result<const GlMesh*>::failure(drawError(draw, loaded.error()));

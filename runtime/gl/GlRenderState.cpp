@@ -14,7 +14,7 @@ GLenum polygonMode(PolygonMode mode) {
 
 }  // namespace
 
-void applyRenderState(const Pass& pass, bool compatibility) {
+void applyRenderState(const Pass& pass, bool compatibility, bool rowsTopFirst) {
     if (compatibility) {
         glPolygonMode(GL_FRONT, polygonMode(pass.raster.frontMode));
         glPolygonMode(GL_BACK, polygonMode(pass.raster.backMode));
@@ -44,7 +44,8 @@ void applyRenderState(const Pass& pass, bool compatibility) {
         glEnable(GL_CULL_FACE);
         glCullFace(pass.raster.cull == CullFace::Back ? GL_BACK : GL_FRONT);
     }
-    glFrontFace(pass.raster.frontCounterClockwise ? GL_CCW : GL_CW);
+    // The winding is as the picture shows it; drawn top row first, GL's window y runs down it.
+    glFrontFace(pass.raster.frontCounterClockwise != rowsTopFirst ? GL_CCW : GL_CW);
 }
 
 void restoreFilledPolygons(const Pass& pass, bool compatibility) {

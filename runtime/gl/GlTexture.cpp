@@ -74,17 +74,26 @@ std::string label(const Texture& t) {
     return std::string(textureElementName(t.kind)) + " '" + t.name + "'";
 }
 
-GlTextureInfo uploadTexture2D(Image image, const Texture& texture) {
+// Image rows run top to bottom. OpenGL's t = 0 is the bottom row: the rows are turned over.
+// Direct3D's v = 0 is the top row (topFirst): they are uploaded as they are.
+std::vector<float> rowsForUpload(Image& image, bool topFirst) {
+    if (topFirst) return std::move(image.pixels);
+    std::vector<float> flipped(image.pixels.size());
+    const size_t row = static_cast<size_t>(image.width) * image.channels;
+    const size_t slice = row * static_cast<size_t>(image.height);
+    for (int z = 0; z < std::max(image.depth, 1); ++z)
+        for (int y = 0; y < image.height; ++y)
+            std::copy_n(image.pixels.begin() + static_cast<long>(z * slice + y * row), row,
+                        flipped.begin() + static_cast<long>(z * slice + (image.height - 1 - y) * row));
+    return flipped;
+}
+
+GlTextureInfo uploadTexture2D(Image image, const Texture& texture, bool topFirst) {
     GlTextureInfo info;
     UploadFormat f = chooseFormat(image, texture.colorSpace);
     info.width = image.width;
     info.height = image.height;
-    // Image rows run top to bottom; GL's t = 0 is the bottom row.
-    std::vector<float> flipped(image.pixels.size());
-    size_t row = static_cast<size_t>(image.width) * image.channels;
-    for (int y = 0; y < image.height; ++y)
-        std::copy_n(image.pixels.begin() + static_cast<long>(y * row), row,
-                    flipped.begin() + static_cast<long>((image.height - 1 - y) * row));
+    const std::vector<float> flipped = rowsForUpload(image, topFirst);
     int levels = texture.mipmaps ? gl::mipLevels(info.width, info.height) : 1;
     glCreateTextures(GL_TEXTURE_2D, 1, &info.name);
     glTextureStorage2D(info.name, levels, f.internal, info.width, info.height);
@@ -96,19 +105,13 @@ GlTextureInfo uploadTexture2D(Image image, const Texture& texture) {
     return info;
 }
 
-// Each slice's rows flipped as a 2D texture's are; slice 0 at r = 0, as Direct3D's w = 0.
-GlTextureInfo uploadVolume(Image image, const Texture& texture) {
+// Each slice's rows as a 2D texture's are; slice 0 at r = 0, as Direct3D's w = 0.
+GlTextureInfo uploadVolume(Image image, const Texture& texture, bool topFirst) {
     GlTextureInfo info;
     UploadFormat f = chooseFormat(image, texture.colorSpace);
     info.width = image.width;
     info.height = image.height;
-    const size_t row = static_cast<size_t>(image.width) * image.channels;
-    const size_t slice = row * image.height;
-    std::vector<float> flipped(image.pixels.size());
-    for (int z = 0; z < image.depth; ++z)
-        for (int y = 0; y < image.height; ++y)
-            std::copy_n(image.pixels.begin() + static_cast<long>(z * slice + y * row), row,
-                        flipped.begin() + static_cast<long>(z * slice + (image.height - 1 - y) * row));
+    const std::vector<float> flipped = rowsForUpload(image, topFirst);
     const int largest = std::max({image.width, image.height, image.depth});
     const int levels = texture.mipmaps ? static_cast<int>(std::floor(std::log2(largest))) + 1 : 1;
     glCreateTextures(GL_TEXTURE_3D, 1, &info.name);
@@ -127,15 +130,16 @@ GlTextureInfo uploadVolume(Image image, const Texture& texture) {
 
 Result<GlTextureInfo> loadGlTexture(const Workspace& ws, const Texture& texture) {
     GlTextureInfo info;
+    const bool topFirst = rowsTopFirst(ws.textureSpace);
     Result<CubeFaces> faces = Error{""};
     if (texture.supplied) {
         if (texture.supplied->empty()) return Error{label(texture) + ": the image supplied for it is empty"};
-        if (texture.kind == TextureKind::Texture2D) return uploadTexture2D(*texture.supplied, texture);
+        if (texture.kind == TextureKind::Texture2D) return uploadTexture2D(*texture.supplied, texture, topFirst);
         if (texture.kind == TextureKind::Volume) {
             if (texture.supplied->pixels.size() !=
                 static_cast<size_t>(texture.supplied->width) * texture.supplied->height * texture.supplied->depth * texture.supplied->channels)
                 return Error{label(texture) + ": the image supplied for it is not a whole volume"};
-            return uploadVolume(*texture.supplied, texture);
+            return uploadVolume(*texture.supplied, texture, topFirst);
         }
         faces = cubeFromImage(*texture.supplied);  // a placeholder's cross (io/image/PlaceholderImage)
     } else if (texture.files.empty()) {
@@ -143,11 +147,11 @@ Result<GlTextureInfo> loadGlTexture(const Workspace& ws, const Texture& texture)
     } else if (texture.kind == TextureKind::Texture2D) {
         auto image = readImage(ws.folder / texture.files[0]);
         if (!image) return Error{label(texture) + ": " + image.error()};
-        return uploadTexture2D(std::move(*image), texture);
+        return uploadTexture2D(std::move(*image), texture, topFirst);
     } else if (texture.kind == TextureKind::Volume) {
         auto image = readVolumeImage(ws.folder / texture.files[0]);
         if (!image) return Error{label(texture) + ": " + image.error()};
-        return uploadVolume(std::move(*image), texture);
+        return uploadVolume(std::move(*image), texture, topFirst);
     } else if (texture.files.size() == 1 && isDdsFile(texture.files[0])) {
         faces = readDdsCubeMap(ws.folder / texture.files[0]);
     } else if (texture.layout == CubeLayout::Faces) {

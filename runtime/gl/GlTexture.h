@@ -13,6 +13,8 @@ struct GlTextureInfo {
     size_t bytes = 0;
 };
 
+// 2D and volume images are uploaded with their top row at t = 0 in a Direct3D texture space
+// (rowsTopFirst), at t = 1 in OpenGL's; cube faces top row first in both, as GL's faces are laid out.
 Result<GlTextureInfo> loadGlTexture(const Workspace& ws, const Texture& texture);
 
 }  // namespace rmfx

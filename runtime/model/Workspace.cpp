@@ -23,6 +23,21 @@ std::optional<HlslMatrixOrder> parseHlslMatrixOrder(std::string_view name) {
     return std::nullopt;
 }
 
+const char* textureSpaceName(TextureSpace space) {
+    switch (space) {
+        case TextureSpace::Direct3D9: return "direct3d9";
+        case TextureSpace::Direct3D10: return "direct3d10";
+        case TextureSpace::OpenGL: break;
+    }
+    return "opengl";
+}
+
+std::optional<TextureSpace> parseTextureSpace(std::string_view name) {
+    for (TextureSpace space : {TextureSpace::OpenGL, TextureSpace::Direct3D9, TextureSpace::Direct3D10})
+        if (name == textureSpaceName(space)) return space;
+    return std::nullopt;
+}
+
 const Variable* Workspace::findVariable(std::string_view name) const { return findByName(variables, name); }
 Variable* Workspace::findVariable(std::string_view name) { return findByName(variables, name); }
 const Texture* Workspace::findTexture(std::string_view name) const { return findByName(textures, name); }

@@ -349,8 +349,29 @@ struct NamedCamera {
     OrbitCameraSettings settings;
 };
 
+// Which way up images and render targets are and where pixel centres lie: the convention of the
+// API an effect was written for, which its shaders' arithmetic assumes.
+enum class TextureSpace {
+    // OpenGL: texture coordinate t = 0 at an image's bottom row, window y up, pixel centres at
+    // half-integers. rmfx's own workspaces and RenderMonkey's OpenGL effects.
+    OpenGL,
+    // Direct3D 9: v = 0 at an image's and a render target's top row, window y down, pixel centres
+    // at whole numbers (D3D9's half-pixel offset) and VPOS the pixel's whole-number position.
+    // RenderMonkey's Direct3D effects.
+    Direct3D9,
+    // Direct3D 10 and later: as Direct3D 9 with pixel centres at half-integers (ReShade FX).
+    Direct3D10,
+};
+// "opengl", "direct3d9", "direct3d10": the workspace's texture-space attribute.
+const char* textureSpaceName(TextureSpace space);
+std::optional<TextureSpace> parseTextureSpace(std::string_view name);
+// Direct3D's spaces: the passes draw with clip-space y turned over (and the winding with it), so
+// that an image's top row, uploaded first, is at v = 0 and a target's row 0 is its top row.
+inline bool rowsTopFirst(TextureSpace space) { return space != TextureSpace::OpenGL; }
+
 struct Workspace {
     GlProfile profile = GlProfile::Core;
+    TextureSpace textureSpace = TextureSpace::OpenGL;
     std::filesystem::path path;  // the file it came from ("<built-in>" for embedded text)
     std::filesystem::path folder;  // shader, texture and model paths are relative to it
     std::filesystem::path includeRoot;  // #include may not leave it; empty: `folder` (see includeFolder)

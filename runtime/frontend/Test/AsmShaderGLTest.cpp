@@ -131,7 +131,9 @@ mul_d2 r0.r, r1.a, -r1_bias
     double worst = 0.0;
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x) {
-            const Vec4 uv{(x + 0.5) / kSize, (y + 0.5) / kSize, 0.0, 1.0};
+            // quad.obj's (u, v) where Direct3D 9 shades pixel (x, y), y from the bottom: at whole-number
+            // window coordinates, x from the left and kSize − 1 − y from the top.
+            const Vec4 uv{double(x) / kSize, (y + 1.0) / kSize, 0.0, 1.0};
             Vec4 t0{}, r1{}, r0{};
             for (int i = 0; i < 3; ++i) {
                 double d = 0.0;
@@ -215,16 +217,34 @@ mov_sat oC0, r2
     double worst = 0.0;
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x) {
-            // The pixel's clip position back through the matrix to the quad's (u, v).
-            const double cx = 2.0 * (x + 0.5) / kSize - 1.0, cy = 2.0 * (y + 0.5) / kSize - 1.0;
+            // The pixel's clip position back through the matrix to the quad's (u, v). Direct3D 9 shades
+            // pixel (x, y) (y from the bottom) at whole-number window coordinates: x from the left,
+            // kSize − 1 − y from the top.
+            const double cx = 2.0 * x / kSize - 1.0, cy = 2.0 * (y + 1.0) / kSize - 1.0;
             const double qx = (cx - m[0][3]) / m[0][0], qy = (cy - m[1][3]) / m[1][1];
             const double u = (qx + 1.0) / 2.0, v = (qy + 1.0) / 2.0;
-            // D3D's default sampler states: point sampling.
-            const Vec4 tex = texel(int(std::floor(u * kSize)), int(std::floor(v * kSize)));
-            Vec4 out{};
-            for (int c = 0; c < 4; ++c) out[c] = 2.0 * tex[c] - 1.0 >= 0.0 ? tex[c] : 0.5;
-            out[3] = tex[0] * weights[0] + tex[1] * weights[1] + tex[2] * weights[2];
-            for (int c = 0; c < 4; ++c) worst = std::max(worst, std::abs(atGl(image, x, y, c) - clampTo(out[c], 0.0, 1.0)));
+            // D3D's default sampler states: point sampling, of row floor(v · kSize) from the image's
+            // top (Direct3D's v = 0; quad.obj's v runs up, so the image shows upside down; texel()'s j
+            // counts from the bottom). Where a pixel lands on a texel edge (every
+            // other column and row here: the quad is scaled by 2), float interpolation may round to
+            // either texel, in Direct3D as here: both are allowed.
+            const auto texels = [](double t) {
+                const double at = t * kSize, nearest = std::round(at);
+                return std::abs(at - nearest) < 1e-6 ? std::array<int, 2>{int(nearest) - 1, int(nearest)}
+                                                     : std::array<int, 2>{int(std::floor(at)), int(std::floor(at))};
+            };
+            double best = 1e9;
+            for (int i : texels(u))
+                for (int k : texels(v)) {
+                    const Vec4 tex = texel(std::clamp(i, 0, kSize - 1), kSize - 1 - std::clamp(k, 0, kSize - 1));
+                    Vec4 out{};
+                    for (int c = 0; c < 4; ++c) out[c] = 2.0 * tex[c] - 1.0 >= 0.0 ? tex[c] : 0.5;
+                    out[3] = tex[0] * weights[0] + tex[1] * weights[1] + tex[2] * weights[2];
+                    double error = 0.0;
+                    for (int c = 0; c < 4; ++c) error = std::max(error, std::abs(atGl(image, x, y, c) - clampTo(out[c], 0.0, 1.0)));
+                    best = std::min(best, error);
+                }
+            worst = std::max(worst, best);
         }
     expectWithin("max abs error against the shaders' maths", worst, kUnorm8Conversion + 1e-5);
 }

@@ -577,8 +577,8 @@ TEST(RfxImporter, Direct3dEffectWithHlslStatesAndADisabledAssemblyPass) {
     EXPECT_EQ(fill.streams[2].usageIndex, 2);
 
     const Pass& twice = ws.passes[1];
-    EXPECT_EQ(twice.raster.cull, CullFace::Back);  // D3DCULL_CW: clockwise faces culled,
-    EXPECT_TRUE(twice.raster.frontCounterClockwise);  // so counter-clockwise ones are the front
+    EXPECT_EQ(twice.raster.cull, CullFace::Front);  // D3DCULL_CW: clockwise faces culled, which
+    EXPECT_FALSE(twice.raster.frontCounterClockwise);  // are Direct3D's front faces
     EXPECT_EQ(twice.blend.srcAlpha, BlendFactor::One);
     EXPECT_EQ(twice.blend.dstAlpha, BlendFactor::Zero);
     EXPECT_EQ(twice.blend.alphaOp, BlendOp::Max);

@@ -149,7 +149,7 @@ SurfaceFilter onOneFace(const MeshRayCast& cast) {
     return [&cast](const SurfaceHit& hit, int i, int j) {
         for (double dx : {-0.35, 0.35})
             for (double dy : {-0.35, 0.35}) {
-                const std::optional<SurfaceHit> corner = cast.at(i + 0.5 + dx, j + 0.5 + dy);
+                const std::optional<SurfaceHit> corner = cast.at(cast.centre(i, j).x + dx, cast.centre(i, j).y + dy);
                 if (!corner || corner->triangle / 2 != hit.triangle / 2) return false;
             }
         return true;
@@ -224,7 +224,8 @@ TEST_F(RfxModelRenderGLTest, ModelFilesDrawWithTheirOwnCoordinatesTexcoordsAndWi
     const int size = 96;
     const glm::dmat4 view = glm::lookAt(glm::dvec3(1.6, 1.2, 2.0), glm::dvec3(0.3, 0.2, 0.1), glm::dvec3(0, 1, 0));
     const glm::dmat4 projection = glm::perspective(40.0 * std::numbers::pi / 180.0, 1.0, 0.1, 20.0);
-    const MeshRayCast cast(boxes, glm::dmat4(1.0), view, projection, {size, size});
+    MeshRayCast cast(boxes, glm::dmat4(1.0), view, projection, {size, size});
+    cast.setPixelCentre({0.0, 1.0});  // Direct3D 9's, at whole-number window coordinates from the top
     auto shade = [](const SurfaceHit& hit) { return ExpectedRange(glm::dvec4(hit.texcoord, 0.5, 1.0)); };
     const SurfaceFilter oneFace = onOneFace(cast);
     for (const std::string model : {"Shape.3ds", "Shape.x", "Shape.obj"}) {
@@ -309,7 +310,8 @@ TEST_F(RfxDirect3DModelGLTest, ADirect3DEffectSeesItsModelThroughD3DXsLeftHanded
     projection[2][2] = zf / (zf - zn);
     projection[3][2] = -zn * zf / (zf - zn);
     projection[2][3] = 1.0;
-    const MeshRayCast cast(boxes, glm::dmat4(1.0), view, projection, {size, size});
+    MeshRayCast cast(boxes, glm::dmat4(1.0), view, projection, {size, size});
+    cast.setPixelCentre({0.0, 1.0});  // Direct3D 9's, at whole-number window coordinates from the top
     auto shade = [](const SurfaceHit& hit) { return ExpectedRange(glm::dvec4(hit.texcoord, 0.5, 1.0)); };
     const SurfaceFilter oneFace = onOneFace(cast);
     for (const std::string version : {"RenderMonkey 1.71", "RenderMonkey 1.5"}) {
@@ -376,7 +378,8 @@ TEST_F(RfxDirect3DModelGLTest, AMissingStockModelIsDrawnAtTheSizeOfTheFilesCamer
     projection[3][2] = -zn * zf / (zf - zn);
     projection[2][3] = 1.0;
     const int size = 64;
-    const MeshRayCast cast(sphere, glm::dmat4(1.0), view, projection, {size, size});
+    MeshRayCast cast(sphere, glm::dmat4(1.0), view, projection, {size, size});
+    cast.setPixelCentre({0.0, 1.0});  // Direct3D 9's, at whole-number window coordinates from the top
     auto shade = [](const SurfaceHit&) { return ExpectedRange(glm::dvec4(1.0, 0.5, 0.25, 1.0)); };
     renderAndCompare(std::make_unique<Workspace>(std::move(*loaded)), {cast, shade, 600});
 }

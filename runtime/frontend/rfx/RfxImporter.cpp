@@ -101,6 +101,7 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
         // RenderMonkey's Direct3D viewer: left-handed, from -z toward the origin (the View that
         // files saved without moving it holds: identity rotation, the eye 200 units down -z).
         ws.camera.convention = CameraConvention::Direct3D;
+        ws.textureSpace = TextureSpace::Direct3D9;
         ws.camera.yawDegrees = 180.0f;
         ws.camera.pitchDegrees = 0.0f;
     }
@@ -144,6 +145,8 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
     // fifteen). The first pass starts from RenderMonkey's frame state.
     Pass carried;
     rfx::setRenderMonkeyDefaults(carried);
+    // Direct3D's front faces are the ones drawn clockwise on the screen.
+    if (effect.api == RfxApi::Direct3D) carried.raster.frontCounterClockwise = false;
     bool carriedSeparateAlpha = false;
     std::set<int> vertexFogWarned;  // lines of the FOGENABLE states warned about
     for (ReadPass& p : passes) {

@@ -18,6 +18,19 @@ bool isPositionSemantic(const std::string& semantic) {
     return (name == "POSITION" || name == "SV_POSITION") && index == 0;
 }
 
+std::optional<std::string> pixelSystemValue(const std::string& semantic, const std::string& type) {
+    const std::string name = splitSemantic(semantic).first;
+    if (name != "VPOS" && name != "VFACE") return std::nullopt;
+    int size = 0;
+    if (type == "float") size = 1;
+    else if (type.size() == 4 && type.compare(0, 3, "vec") == 0 && type[3] >= '2' && type[3] <= '4') size = type[3] - '0';
+    else return std::nullopt;
+    if (name == "VFACE") return size == 1 ? "(gl_FrontFacing ? 1.0 : -1.0)" : type + "(gl_FrontFacing ? 1.0 : -1.0)";
+    if (size == 1) return "(gl_FragCoord.x - 0.5)";
+    if (size == 2) return "(gl_FragCoord.xy - 0.5)";
+    return type + "(gl_FragCoord.xy - 0.5" + (size == 3 ? ", 0.0)" : ", 0.0, 0.0)");
+}
+
 std::string hlslVaryingName(const std::string& semantic) {
     auto [name, index] = splitSemantic(semantic);
     return "rm_hlsl_" + name + std::to_string(index);

@@ -1,5 +1,6 @@
 #include "frontend/shader/PassProgram.h"
 
+#include "frontend/shader/ClipSpaceTurnOver.h"
 #include "frontend/shader/HlslAlphaTest.h"
 #include "frontend/shader/HlslFixedFunctionFog.h"
 #include "frontend/shader/HlslTranslationCache.h"
@@ -186,6 +187,7 @@ Result<PassProgramSource> assemblePassProgram(const Workspace& ws, const Pass& p
         program.stages.insert(program.stages.begin(), std::move(stage));
     }
     if (!ok || hasErrors(diagnostics)) return Result<PassProgramSource>::failure(std::move(diagnostics));
+    turnClipSpaceOver(program.stages.front().shader, ws.textureSpace);
     return {std::move(program), std::move(diagnostics)};
 }
 

@@ -1,6 +1,8 @@
 #include "frontend/shader/SpirvToGlsl.h"
 
 #include <map>
+#include <optional>
+#include <regex>
 #include <set>
 
 #include <spirv_cross/spirv_cross_c.h>
@@ -215,11 +217,26 @@ ReflectedBlock reflectBlock(spvc_compiler c, spvc_type_id blockType) {
     return block;
 }
 
-std::vector<ReflectedVariable> reflectInputs(const CrossCompiler& cross) {
+// A pixel shader's VPOS and VFACE inputs: their declarations become definitions of what the
+// rasterizer gives (pixelSystemValue), so they are not varyings for a vertex shader to write.
+void defineSystemValueInputs(const CrossCompiler& cross, ShaderStage stage, std::string& code) {
+    if (stage != ShaderStage::Fragment) return;
+    for (const spvc_reflected_resource& r : cross.resources(SPVC_RESOURCE_TYPE_STAGE_INPUT)) {
+        const std::string type = glslTypeName(cross.get(), r.type_id);
+        const std::optional<std::string> value = pixelSystemValue(cross.semantic(r.id), type);
+        if (!value) continue;
+        const std::string name = cross.name(r.id);
+        const std::regex declaration("(^|\n)(layout\\([^)]*\\)\\s*)?in " + type + " " + name + ";");
+        code = std::regex_replace(code, declaration, "$1#define " + name + " " + *value);
+    }
+}
+
+std::vector<ReflectedVariable> reflectInputs(const CrossCompiler& cross, ShaderStage stage) {
     std::vector<ReflectedVariable> inputs;
     for (const spvc_reflected_resource& r : cross.resources(SPVC_RESOURCE_TYPE_STAGE_INPUT)) {
         std::string semantic = cross.semantic(r.id);
         if (semantic.empty()) continue;
+        if (stage == ShaderStage::Fragment && pixelSystemValue(semantic, glslTypeName(cross.get(), r.type_id))) continue;
         auto [name, index] = splitSemantic(semantic);
         inputs.push_back({cross.name(r.id), glslTypeName(cross.get(), r.type_id), arraySuffix(cross.get(), r.type_id),
                           name + std::to_string(index)});
@@ -252,7 +269,8 @@ Result<SpirvGlsl> spirvToGlsl(const std::vector<unsigned>& spirv, ShaderStage st
                                                      usableSamplerName(original->second))
             replaceIdentifier(out.code, before, original->second);
     for (spvc_type_id block : blocks) out.blocks.push_back(reflectBlock(cross.get(), block));
-    out.inputs = reflectInputs(cross);
+    defineSystemValueInputs(cross, stage, out.code);
+    out.inputs = reflectInputs(cross, stage);
     return out;
 }
 

@@ -22,12 +22,16 @@ public:
         : file_(std::move(file)), diagnostics_(diagnostics), passChildren_(file_, diagnostics_) {}
 
     void parseWorkspace(const XMLElement* root, Workspace& ws) {
-        ElementReader r(root, file_, diagnostics_, {"version", "name", "size", "include-root", "profile"});
+        ElementReader r(root, file_, diagnostics_, {"version", "name", "size", "include-root", "profile", "texture-space"});
         auto version = r.string("version", true);
         if (version && *version != "1")
             r.error("unsupported version '" + *version + "': this rmfx reads version 1");
         ws.profile = r.choice<GlProfile>("profile", {{"core", GlProfile::Core}, {"compatibility", GlProfile::Compatibility}})
                          .value_or(GlProfile::Core);
+        ws.textureSpace = r.choice<TextureSpace>("texture-space", {{"opengl", TextureSpace::OpenGL},
+                                                                    {"direct3d9", TextureSpace::Direct3D9},
+                                                                    {"direct3d10", TextureSpace::Direct3D10}})
+                              .value_or(TextureSpace::OpenGL);
         ws.name = r.string("name").value_or(ws.path.stem().string());
         if (auto wh = r.size("size")) {
             ws.width = wh->first;

@@ -233,9 +233,9 @@ void applyD3dRenderState(const RfxElement& state, Pass& pass, bool& separateAlph
         case 22:  // D3DRS_CULLMODE: 1 none, 2 cull clockwise faces, 3 cull counter-clockwise faces
             if (v == 1) {
                 pass.raster.cull = CullFace::None;
-            } else if (v == 2 || v == 3) {
-                pass.raster.cull = CullFace::Back;
-                pass.raster.frontCounterClockwise = v == 2;
+            } else if (v == 2 || v == 3) {  // Direct3D's front faces are the clockwise ones
+                pass.raster.cull = v == 2 ? CullFace::Front : CullFace::Back;
+                pass.raster.frontCounterClockwise = false;
             } else {
                 state.error("VALUE " + std::to_string(v) + " is not a D3DCULL (it takes 1, 2, 3)");
             }
