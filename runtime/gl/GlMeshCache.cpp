@@ -14,12 +14,13 @@ Diagnostics drawError(const DrawCall& draw, const std::string& message) {
 
 Result<const GlMesh*> GlMeshCache::meshFor(const Workspace& ws, const DrawCall& draw) {
     std::string key = draw.mesh ? std::string("builtin:") + builtinMeshName(*draw.mesh) : "file:" + draw.file;
-    if (draw.mesh && draw.meshScale != 1.0f) key += "@" + std::to_string(draw.meshScale);
+    if (draw.mesh && (draw.meshScale != 1.0f || draw.meshOffset != glm::vec3(0.0f)))
+        key += "@" + std::to_string(draw.meshScale) + "+" + std::to_string(draw.meshOffset.x) + "," +
+               std::to_string(draw.meshOffset.y) + "," + std::to_string(draw.meshOffset.z);
     if (auto it = meshes_.find(key); it != meshes_.end()) return static_cast<const GlMesh*>(it->second.get());
     Mesh mesh;
     if (draw.mesh) {
-        mesh = makeMesh(*draw.mesh);
-        for (glm::vec3& p : mesh.positions) p *= draw.meshScale;
+        mesh = *makeDrawnMesh(draw);
         // Built-in meshes put t = 0 at the bottom of an image; Direct3D's v = 0 is its top row,
         // where model files made for Direct3D (RenderMonkey's stock .3ds files) have it.
         if (rowsTopFirst(ws.textureSpace))

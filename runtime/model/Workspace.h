@@ -220,6 +220,10 @@ struct DrawCall {
     // RenderMonkey's shaders often apply no World matrix.
     bool standIn = false;
     float meshScale = 1.0f;
+    glm::vec3 meshOffset{0.0f};  // added to the vertex positions after meshScale
+    // The stand-in has the measured size of the RenderMonkey stock model it stands for
+    // (io/mesh/StockModels), which the file's shaders and camera were made for: not sized to the camera.
+    bool stockSize = false;
     SourceLocation where;
 };
 

@@ -321,16 +321,18 @@ TEST(RfxCameraFraming, TheViewerCameraIsRecoveredFromAStoredWorldViewProjection)
     EXPECT_FLOAT_EQ(flat.camera.target.x, 10.0f);
 }
 
-// RenderMonkey's stock Sphere.3ds, missing, is drawn as rmfx's unit sphere; through the file's
-// camera 300 units away it would be a dot, so it is scaled to half the view's height there. A
-// screen-aligned quad keeps its size, and so does a stand-in the camera is framed to.
-TEST(RfxCameraFraming, AStandInForAMissingModelIsSizedToTheFilesCamera) {
+// A missing model no measured stock model (Cube.3ds: no public copy was found to measure) is drawn
+// as rmfx's unit cube; through the file's camera 300 units away it would be a dot, so it is scaled
+// to half the view's height there. A measured stock model's stand-in (Sphere.3ds) keeps the stock
+// size whatever the camera (io/mesh/StockModels), a screen-aligned quad keeps its size, and so does
+// a stand-in the camera is framed to.
+TEST(RfxCameraFraming, AStandInForAnUnmeasuredMissingModelIsSizedToTheFilesCamera) {
     test::ScratchDir dir;
     const glm::dvec3 eye(120, 80, 300);
     const glm::dmat4 view = glm::lookAt(eye, glm::dvec3(0.0), glm::dvec3(0, 1, 0));
     const glm::dmat4 projection = glm::perspective(glm::radians(30.0), 1.0, 1.0, 1000.0);
-    std::string text = effectDrawing("C:\\RenderMonkey\\Media\\Models\\Sphere.3ds",
-                                     stored("view", "View", view) + stored("projection", "Projection", projection));
+    const std::string matrices = stored("view", "View", view) + stored("projection", "Projection", projection);
+    std::string text = effectDrawing("C:\\RenderMonkey\\Media\\Models\\Cube.3ds", matrices);
     const std::string quadPass =
         "<RmModelData NAME=\"Q\" FILE_NAME=\"C:\\RenderMonkey\\Media\\Models\\ScreenAlignedQuad.3ds\"/>\n"
         "<RmGLPass NAME=\"Quad\" PASS_INDEX=\"1\" ENABLED=\"TRUE\">\n<RmModelReference NAME=\"Q\"/>\n</RmGLPass>\n";
@@ -338,17 +340,22 @@ TEST(RfxCameraFraming, AStandInForAMissingModelIsSizedToTheFilesCamera) {
     Workspace ws = load(dir, text);
     ASSERT_EQ(ws.passes.size(), 2u);
     double unitRadius = 0.0;
-    for (const glm::vec3& p : makeMesh(BuiltinMesh::Sphere).positions) unitRadius = std::max(unitRadius, glm::length(glm::dvec3(p)));
-    const DrawCall& sphere = ws.passes[0].draw;
-    ASSERT_EQ(sphere.mesh, BuiltinMesh::Sphere);
-    EXPECT_TRUE(sphere.standIn);
+    for (const glm::vec3& p : makeMesh(BuiltinMesh::Cube).positions) unitRadius = std::max(unitRadius, glm::length(glm::dvec3(p)));
+    const DrawCall& cube = ws.passes[0].draw;
+    ASSERT_EQ(cube.mesh, BuiltinMesh::Cube);
+    EXPECT_TRUE(cube.standIn);
+    EXPECT_FALSE(cube.stockSize);
     const double wanted = 0.5 * glm::length(eye) * std::tan(glm::radians(15.0));
-    EXPECT_NEAR(sphere.meshScale * unitRadius, wanted, 1e-3 * wanted);
-    EXPECT_EQ(sphere.scale, glm::vec3(1.0f));  // the vertices, not World: shaders may apply none
+    EXPECT_NEAR(cube.meshScale * unitRadius, wanted, 1e-3 * wanted);
+    EXPECT_EQ(cube.scale, glm::vec3(1.0f));  // the vertices, not World: shaders may apply none
     EXPECT_EQ(ws.passes[1].draw.mesh, BuiltinMesh::Quad);
     EXPECT_EQ(ws.passes[1].draw.meshScale, 1.0f);
 
-    Workspace framed = load(dir, effectDrawing("C:\\RenderMonkey\\Media\\Models\\Sphere.3ds"));
+    Workspace sphere = load(dir, effectDrawing("C:\\RenderMonkey\\Media\\Models\\Sphere.3ds", matrices));
+    EXPECT_TRUE(sphere.passes[0].draw.stockSize);
+    EXPECT_NEAR(sphere.passes[0].draw.meshScale, 52.0016f, 1e-3f);  // the stock sphere's radius, for a unit sphere
+
+    Workspace framed = load(dir, effectDrawing("C:\\RenderMonkey\\Media\\Models\\Cube.3ds"));
     EXPECT_EQ(framed.passes[0].draw.meshScale, 1.0f);
     EXPECT_LT(framed.camera.distance, 10.0f);
 }

@@ -28,6 +28,7 @@
 
 #include "io/image/ImageIO.h"
 #include "io/mesh/BuiltinMeshes.h"
+#include "io/mesh/StockModels.h"
 #include "reference/CameraRays.h"
 #include "reference/RayCastImage.h"
 #include "tests/support/GlTestSupport.h"
@@ -165,14 +166,18 @@ TEST_F(RfxModelRenderGLTest, LitTeapotMatchesAFloat64RayCastOfTheModel) {
     auto ws = loadRfxWithMedia(sourceDir() / "tests" / "rfx" / "lit_teapot.rfx", media.path());
     ASSERT_TRUE(ws);
 
-    // The RmCamera "Side": position, look-at and up as given, FOV 50° (vertical), clip planes 0.1 and 20.
+    // The RmCamera "Side": position, look-at and up as given, FOV 50° (vertical), clip planes 8 and 1600.
     const int size = 128;
-    const glm::dmat4 view = glm::lookAt(glm::dvec3(1.6, 1.0, 2.0), glm::dvec3(0.0, 0.3, 0.0), glm::dvec3(0, 1, 0));
-    const glm::dmat4 projection = glm::perspective(50.0 * std::numbers::pi / 180.0, 1.0, 0.1, 20.0);
+    const glm::dmat4 view = glm::lookAt(glm::dvec3(128.0, 80.0, 160.0), glm::dvec3(0.0, 24.0, 0.0), glm::dvec3(0, 1, 0));
+    const glm::dmat4 projection = glm::perspective(50.0 * std::numbers::pi / 180.0, 1.0, 8.0, 1600.0);
     const glm::dmat3 normals = normalMatrix(view);
     const glm::dvec3 paint(0.9, 0.6, 0.3);
     const double rimPower = 3.0;
-    const Mesh teapot = makeMesh(BuiltinMesh::Teapot);  // the stand-in for the missing Teapot.3ds
+    // The stand-in for the missing Teapot.3ds, at the stock teapot's size (its own test:
+    // MediaResolver.MissingStockModelsStandInAtTheirMeasuredSize).
+    Mesh teapot = makeMesh(BuiltinMesh::Teapot);
+    const MeshPlacement placement = stockModelPlacement(*findStockModel("Teapot"));
+    for (glm::vec3& p : teapot.positions) p = p * placement.scale + placement.offset;
 
     auto shade = [&](const SurfaceHit& hit) {
         const glm::dvec3 n = glm::normalize(normals * hit.normal);
@@ -224,8 +229,7 @@ TEST_F(RfxModelRenderGLTest, ModelFilesDrawWithTheirOwnCoordinatesTexcoordsAndWi
     const int size = 96;
     const glm::dmat4 view = glm::lookAt(glm::dvec3(1.6, 1.2, 2.0), glm::dvec3(0.3, 0.2, 0.1), glm::dvec3(0, 1, 0));
     const glm::dmat4 projection = glm::perspective(40.0 * std::numbers::pi / 180.0, 1.0, 0.1, 20.0);
-    MeshRayCast cast(boxes, glm::dmat4(1.0), view, projection, {size, size});
-    cast.setPixelCentre({0.0, 1.0});  // Direct3D 9's, at whole-number window coordinates from the top
+    const MeshRayCast cast(boxes, glm::dmat4(1.0), view, projection, {size, size});
     auto shade = [](const SurfaceHit& hit) { return ExpectedRange(glm::dvec4(hit.texcoord, 0.5, 1.0)); };
     const SurfaceFilter oneFace = onOneFace(cast);
     for (const std::string model : {"Shape.3ds", "Shape.x", "Shape.obj"}) {
@@ -330,10 +334,10 @@ TEST_F(RfxDirect3DModelGLTest, ADirect3DEffectSeesItsModelThroughD3DXsLeftHanded
 
 // RenderMonkey's default Direct3D viewer, as a file saved without moving it keeps it: View with an
 // identity rotation and the eye 200 units down -z, a 45° Projection. The stock Sphere.3ds is
-// missing and rmfx's unit sphere stands in, its vertices scaled to half the view's height at the
-// sphere (the shader applies no World matrix, as many of RenderMonkey's do not): radius
-// 0.5 · 200 · tan(22.5°).
-TEST_F(RfxDirect3DModelGLTest, AMissingStockModelIsDrawnAtTheSizeOfTheFilesCamera) {
+// missing and rmfx's unit sphere stands in at the stock sphere's measured size (the shader
+// applies no World matrix, as many of RenderMonkey's do not): radius 52.0016 about
+// (0.001, 0.001, 0.001) (io/mesh/StockModels.h), not sized to the camera.
+TEST_F(RfxDirect3DModelGLTest, AMissingStockModelIsDrawnAtTheStockModelsSize) {
     auto matrix = [](const std::string& name, const std::string& semantic, const std::array<double, 16>& rows) {
         std::string text = R"(   <RmMatrixVariable NAME=")" + name + R"(" API="" ARTIST_EDITABLE="FALSE" VARIABLE_SEMANTIC=")" + semantic + "\"";
         for (int i = 0; i < 16; ++i) text += " VALUE_" + std::to_string(i) + "=\"" + std::to_string(rows[size_t(i)]) + "\"";
@@ -369,8 +373,8 @@ TEST_F(RfxDirect3DModelGLTest, AMissingStockModelIsDrawnAtTheSizeOfTheFilesCamer
     Mesh sphere = makeMesh(BuiltinMesh::Sphere);
     double unitRadius = 0.0;
     for (const glm::vec3& p : sphere.positions) unitRadius = std::max(unitRadius, glm::length(glm::dvec3(p)));
-    const double scale = 0.5 * 200.0 * std::tan(std::numbers::pi / 8.0) / unitRadius;
-    for (glm::vec3& p : sphere.positions) p = glm::vec3(glm::dvec3(p) * scale);
+    const double scale = 52.0016 / unitRadius;
+    for (glm::vec3& p : sphere.positions) p = glm::vec3(glm::dvec3(p) * scale + glm::dvec3(0.001));
     glm::dmat4 view(1.0), projection(0.0);
     view[3][2] = 200.0;  // the eye at (0, 0, -200), looking down +z
     projection[0][0] = projection[1][1] = yScale;

@@ -83,17 +83,19 @@ std::optional<OrbitCameraSettings> fromStoredView(const Variable& view, const Sp
     return orbitLookingAt(glm::vec3(eye), glm::vec3(eye + forward * std::max(along, 1e-3)), glm::vec3(up), base);
 }
 
-// A built-in mesh standing in for a missing model is unit-sized, and RenderMonkey's models and
-// cameras are about a hundred times larger: through the file's own camera it would be a dot. It is
-// scaled to span half the height of the camera's view where it stands (a radius of 41 at
-// RenderMonkey's default 200 units and 45°). Full-screen quads keep their size.
+// A built-in mesh standing in for a missing model that is no measured stock model (those have
+// their own size: io/mesh/StockModels) is unit-sized, and RenderMonkey's models and cameras are
+// about a hundred times larger: through the file's own camera it would be a dot. It is scaled to
+// span half the height of the camera's view where it stands (a radius of 41 at RenderMonkey's
+// default 200 units and 45°). Full-screen quads keep their size.
 void sizeStandInsToTheCamera(Workspace& ws) {
     const OrbitCamera camera(ws.camera);
     // |tan|: past 180 degrees the view is turned round at 360 - FOV (RfxCamera.cpp).
     const double halfHeightPerDistance = std::abs(std::tan(ws.camera.fovYDegrees * 0.5 * std::numbers::pi / 180.0));
     for (Pass& pass : ws.passes) {
         DrawCall& draw = pass.draw;
-        if (!draw.standIn || !draw.mesh || *draw.mesh == BuiltinMesh::Quad || *draw.mesh == BuiltinMesh::FullscreenTriangle)
+        if (!draw.standIn || draw.stockSize || !draw.mesh || *draw.mesh == BuiltinMesh::Quad ||
+            *draw.mesh == BuiltinMesh::FullscreenTriangle)
             continue;
         const Mesh mesh = makeMesh(*draw.mesh);
         const Sphere bounds = boundsOf({&mesh});
@@ -177,7 +179,7 @@ void frameDrawnModels(Workspace& ws) {
     for (const Pass& pass : ws.passes) {
         if (pass.draw.mesh) {
             if (*pass.draw.mesh == BuiltinMesh::Quad || *pass.draw.mesh == BuiltinMesh::FullscreenTriangle) continue;
-            meshes.push_back(makeMesh(*pass.draw.mesh));
+            meshes.push_back(*makeDrawnMesh(pass.draw));
         } else if (!pass.draw.file.empty()) {
             if (auto loaded = loadModel(ws.folder / pass.draw.file)) meshes.push_back(std::move(*loaded));
         }

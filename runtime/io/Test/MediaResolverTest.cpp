@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
+#include <glm/common.hpp>
 #include <gtest/gtest.h>
 
 #include "frontend/workspace/WorkspaceDependencies.h"
@@ -187,6 +188,42 @@ TEST(MediaResolver, MissingStockRenderMonkeyModelsBecomeBuiltInMeshesWithAWarnin
     // Under the sandbox a stock model outside it is refused, not replaced.
     dir.write("elsewhere/Teapot.3ds", "");
     EXPECT_EQ(errors(load(dir.write("ws/out.xml", drawWorkspace("../elsewhere/Teapot.3ds")), sandbox())).size(), 1u);
+}
+
+// A stand-in has the size of the stock model it stands for, as measured from the public copies of
+// RenderMonkey's media (io/mesh/StockModels.h): its drawn vertices span the stock model's bounding
+// box along its largest side, about the same centre. Sphere.3ds: radius 52 about (0.001, 0.001,
+// 0.001); Teapot.3ds: x from -74.85 (the handle) to 86.00 (the spout), centre (5.57, 1.14, 0.13).
+TEST(MediaResolver, MissingStockModelsStandInAtTheirMeasuredSize) {
+    test::ScratchDir dir;
+    auto drawnBounds = [&](const std::string& model) {
+        fs::path ws = dir.write("ws/" + model + ".xml", lines({"<workspace version=\"1\">", "  <pass name=\"p\">", kShader,
+                                                              "    <draw file=\"..\\Media\\Models\\" + model + "\"/>",
+                                                              "  </pass>", "</workspace>"}));
+        Result<Workspace> l = load(ws);
+        EXPECT_TRUE(l.ok()) << formatAll(l.diagnostics());
+        EXPECT_TRUE(l->passes[0].draw.stockSize);
+        const std::optional<Mesh> mesh = makeDrawnMesh(l->passes[0].draw);
+        glm::dvec3 low(1e30), high(-1e30);
+        for (const glm::vec3& p : mesh->positions) {
+            low = glm::min(low, glm::dvec3(p));
+            high = glm::max(high, glm::dvec3(p));
+        }
+        return std::pair{low, high};
+    };
+    const auto [sphereLow, sphereHigh] = drawnBounds("Sphere.3ds");
+    EXPECT_NEAR(sphereHigh.y, 52.0026, 1e-3);  // the poles: the built-in sphere's tallest extent
+    EXPECT_NEAR(sphereLow.y, -52.0006, 1e-3);
+    EXPECT_NEAR(0.5 * (sphereLow.x + sphereHigh.x), 0.001, 1e-3);
+    const auto [teapotLow, teapotHigh] = drawnBounds("Teapot.3ds");
+    EXPECT_NEAR(teapotLow.x, -74.8518, 1e-3);  // x is the teapot's largest side
+    EXPECT_NEAR(teapotHigh.x, 85.9982, 1e-3);
+    EXPECT_NEAR(0.5 * (teapotLow.y + teapotHigh.y), 0.5 * (-38.2332 + 40.5168), 1e-3);
+    EXPECT_NEAR(0.5 * (teapotLow.z + teapotHigh.z), 0.5 * (-49.8711 + 50.1289), 1e-3);
+    const auto [quadLow, quadHigh] = drawnBounds("ScreenAlignedQuad.3ds");
+    EXPECT_NEAR(quadLow.x, -0.999, 1e-6);
+    EXPECT_NEAR(quadHigh.y, 1.001, 1e-6);
+    EXPECT_NEAR(quadLow.z, 0.001, 1e-6);
 }
 
 TEST(MediaResolver, WithPlaceholdersMissingTexturesAndModelsGetStandInsAndOneWarningPerFile) {

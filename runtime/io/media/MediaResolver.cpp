@@ -1,5 +1,7 @@
 #include "io/media/MediaResolver.h"
 
+#include "io/mesh/StockModels.h"
+
 #include "io/image/PlaceholderImage.h"
 #include "model/BuiltinMeshNames.h"
 
@@ -253,10 +255,8 @@ static std::string lowerCaseStem(const std::string& reference) {
 
 std::optional<BuiltinMesh> stockModelStandIn(const std::string& reference) {
     const std::string stem = lowerCaseStem(reference);
-    if (stem == "screenalignedquad") return BuiltinMesh::Quad;
-    if (stem == "teapot") return BuiltinMesh::Teapot;
-    if (stem == "sphere") return BuiltinMesh::Sphere;
-    if (stem == "cube") return BuiltinMesh::Cube;
+    if (std::optional<StockModel> stock = findStockModel(stem)) return stock->standIn;
+    if (stem == "cube") return BuiltinMesh::Cube;  // no public copy measured: sized to the camera
     return std::nullopt;
 }
 
@@ -321,6 +321,12 @@ Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options, c
                                found.error + "; drawing rmfx's built-in '" + builtinMeshName(*standIn) + "' in its place"});
             pass.draw.mesh = standIn;
             pass.draw.standIn = true;
+            if (std::optional<StockModel> stock = findStockModel(lowerCaseStem(pass.draw.file))) {
+                const MeshPlacement placement = stockModelPlacement(*stock);
+                pass.draw.meshScale = placement.scale;
+                pass.draw.meshOffset = placement.offset;
+                pass.draw.stockSize = true;
+            }
             pass.draw.file.clear();
         } else if (found.missing && placeholders) {
             const BuiltinMesh standIn = placeholderMeshFor(pass.draw.file);

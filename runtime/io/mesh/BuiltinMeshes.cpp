@@ -124,6 +124,13 @@ Mesh makeTorus(float majorRadius, float minorRadius, int segments, int sides) {
     return mesh;
 }
 
+std::optional<Mesh> makeDrawnMesh(const DrawCall& draw) {
+    if (!draw.mesh) return std::nullopt;
+    Mesh mesh = makeMesh(*draw.mesh);
+    for (glm::vec3& p : mesh.positions) p = p * draw.meshScale + draw.meshOffset;
+    return mesh;
+}
+
 Mesh makeMesh(BuiltinMesh which) {
     switch (which) {
         case BuiltinMesh::FullscreenTriangle: return makeFullscreenTriangle();

@@ -6,10 +6,14 @@
 
 #include "model/BuiltinMeshNames.h"
 #include "model/Mesh.h"
+#include "model/Workspace.h"
 
 namespace rmfx {
 
 Mesh makeMesh(BuiltinMesh which);
+// The built-in mesh a draw call names, its vertices scaled by meshScale and moved by meshOffset
+// (a stand-in for a missing model); nullopt when it names a file.
+std::optional<Mesh> makeDrawnMesh(const DrawCall& draw);
 
 // One triangle that covers clip space [-1,1]^2; texcoords are 0..1 over the visible square.
 Mesh makeFullscreenTriangle();
