@@ -139,6 +139,35 @@ TEST(HlslWritableGlobals, AMemberNamedLikeAGlobalIsTheMember) {
                            }));
 }
 
+TEST(HlslWritableGlobals, AGlobalWithABracedInitializerIsFoundAfterItsBraces) {
+    // NVIDIA's ocean shader, as RenderMonkey files carry it: an array of structs set from constants.
+    const std::string code = lines({
+        "struct Wave { float freq; float amp; };",
+        "Wave wave[2] = {",
+        "    { 1.0, 1.0 },",
+        "    { 2.0, 0.5 } };",
+        "float waveFreq;",
+        "float4 main(float4 P : POSITION) : POSITION {",
+        "    wave[0].freq = waveFreq;",
+        "    return P * wave[0].freq * wave[1].amp;",
+        "}",
+    });
+    HlslWritableGlobals out = giveWrittenGlobalsACopy(code, "main");
+    EXPECT_EQ(out.written, std::vector<std::string>{"wave"});
+    EXPECT_EQ(out.lines, std::vector<int>{2});
+    EXPECT_EQ(out.code, lines({
+                            "struct Wave { float freq; float amp; };",
+                            "Wave wave[2] = {",
+                            "    { 1.0, 1.0 },",
+                            "    { 2.0, 0.5 } }; static Wave rm_writable_wave[2];",
+                            "float waveFreq;",
+                            "float4 main(float4 P : POSITION) : POSITION { rm_writable_wave = wave;",
+                            "    rm_writable_wave[0].freq = waveFreq;",
+                            "    return P * rm_writable_wave[0].freq * rm_writable_wave[1].amp;",
+                            "}",
+                        }));
+}
+
 TEST(HlslWritableGlobals, WithoutTheEntryPointNothingChanges) {
     const std::string code = "float g;\nfloat4 ps() : COLOR0 { g = 1; return g; }\n";
     EXPECT_EQ(giveWrittenGlobalsACopy(code, "main").code, code);

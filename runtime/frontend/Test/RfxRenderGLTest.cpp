@@ -110,6 +110,18 @@ TEST_F(RfxCoreRenderGLTest, Direct3DHlslPassesRunThroughGlslang) {
                         std::array<double, 3>{1.0, 0.0, 0.0});
 }
 
+// Direct3D binds textures by sampler stage and keeps them from pass to pass: "Show" reads, through
+// samplers named after no texture object, the target "Bind" left at stage 0 (not the one the
+// disabled "Off" would have bound) and the one its own object "Other" binds at stage 1.
+TEST_F(RfxCoreRenderGLTest, Direct3DSamplersReadWhatTheirStageHolds) {
+    auto ws = loadRfx("d3d_sampler_stages.rfx", GlProfile::Core);
+    ASSERT_TRUE(ws);
+    // The colours pass through 8-bit targets (D3DFMT_A8R8G8B8) before they are read.
+    const auto stored = [](double v) { return std::round(v * 255.0) / 255.0; };
+    const std::array<double, 3> a{0.2, 0.4, 0.6}, c{0.3, 0.7, 0.5};
+    expectUniformOutput(runWorkspace(std::move(ws), RunSettings{{kSize, kSize}}), {stored(a[0]), stored(a[1]), stored(c[2])});
+}
+
 // A 1.71 file whose HLSL multiplies mul(g_matViewProj, v) (written for OpenGL-layout matrices, as
 // gaxlin's LensFlare_10): imported on its own it renders bit for bit as with --rfx-matrices
 // column-vector, and the billboard lands elsewhere with the order its version implies.

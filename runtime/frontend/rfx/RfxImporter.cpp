@@ -1,9 +1,11 @@
 #include "frontend/rfx/RfxImporter.h"
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <string_view>
 
+#include "core/IdentifierSearch.h"
 #include "frontend/rfx/detail/RfxCamera.h"
 #include "frontend/rfx/detail/RfxDoctype.h"
 #include "frontend/rfx/detail/RfxEffectCatalogue.h"
@@ -69,6 +71,51 @@ void readCamera(const RfxEffectEntry& effect, const std::string& file, Diagnosti
         ws.cameras.push_back({camera.name(), orbitFromRmCamera(camera)});
         ws.cameras.back().settings.convention = convention;
     }
+}
+
+std::string stageName(int stage) {
+    return stage >= d3dSamplerStage(0, true) ? "vertex texture stage " + std::to_string(stage - d3dSamplerStage(0, true))
+                                             : "stage " + std::to_string(stage);
+}
+
+// A sampler with no texture object of its name: in Direct3D it reads what its stage holds, bound
+// by a texture object of this pass under another name or left there by a pass before it.
+void bindSamplersWithoutObject(ReadPass& p, RfxApi api, const std::map<int, Sampler>& stages, const std::string& file,
+                               Diagnostics& diagnostics) {
+    std::set<std::string> objectsReadByStage;
+    for (const ReadPass::SamplerWithoutObject& s : p.samplersWithoutObject) {
+        RfxElement e(s.element, file, diagnostics);
+        std::string message = "sampler '" + s.name + "' has no <RmTextureObject NAME=\"" + s.name + "\"> in the pass";
+        if (!s.used) {
+            e.warning(message + " to say which texture it reads; its shaders do not use it, so it is ignored");
+            continue;
+        }
+        if (api != RfxApi::Direct3D) {
+            e.error(message + " to say which texture it reads");
+            continue;
+        }
+        if (!s.stage) {
+            e.error(message + " and no REGISTER: rmfx cannot tell which sampler stage it reads");
+            continue;
+        }
+        auto bound = stages.find(*s.stage);
+        if (bound == stages.end()) {
+            e.error(message + ", and no texture object of the pass or of a pass before it binds " + stageName(*s.stage) +
+                    ", the stage it reads (REGISTER)");
+            continue;
+        }
+        Sampler sampler = bound->second;
+        objectsReadByStage.insert(sampler.uniform);
+        sampler.uniform = s.name;
+        sampler.where = e.where();
+        p.pass.samplers.push_back(std::move(sampler));
+    }
+    // A texture object no sampler is named after, read by stage: not a sampler of its own.
+    std::erase_if(p.pass.samplers, [&](const Sampler& s) {
+        return objectsReadByStage.count(s.uniform) &&
+               std::none_of(p.pass.shaders.begin(), p.pass.shaders.end(),
+                            [&](const ShaderSource& shader) { return mentionsIdentifier(shader.code, s.uniform); });
+    });
 }
 
 Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path& path,
@@ -148,6 +195,7 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
     // Direct3D's front faces are the ones drawn clockwise on the screen.
     if (effect.api == RfxApi::Direct3D) carried.raster.frontCounterClockwise = false;
     bool carriedSeparateAlpha = false;
+    std::map<int, Sampler> carriedStages;  // Direct3D: what each sampler stage holds (ReadPass::stageObjects)
     std::set<int> vertexFogWarned;  // lines of the FOGENABLE states warned about
     for (ReadPass& p : passes) {
         p.pass.blend = carried.blend;
@@ -167,6 +215,10 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
             carriedSeparateAlpha = separateAlpha;
         }
         if (effect.api == RfxApi::Direct3D) rfx::finishD3dRenderStates(p.pass, separateAlpha);
+        std::map<int, Sampler> stages = carriedStages;
+        for (const auto& [stage, sampler] : p.stageObjects) stages[stage] = sampler;
+        bindSamplersWithoutObject(p, effect.api, stages, file, diagnostics);
+        if (p.pass.enabled && p.runnable) carriedStages = std::move(stages);
         // With a vertex shader, Direct3D's vertex fog is the shader's FOG output, not depth. Said
         // once for the state, though the passes after it carry it.
         if (effect.api == RfxApi::Direct3D && p.pass.enabled && p.pass.fog.enabled && !p.pass.fog.mode && p.pass.fog.vertexFog &&

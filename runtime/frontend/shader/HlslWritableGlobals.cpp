@@ -19,6 +19,7 @@ struct Global {
     std::string arraySuffix;  // "[8]" or empty
     std::string name;
     size_t statementEnd = 0;  // offset of the declaration's ';'
+    size_t nameAt = 0;        // offset of its name
 };
 
 struct FunctionBody {
@@ -81,6 +82,7 @@ std::optional<Global> globalDeclaration(std::string_view text, size_t end) {
     g.type = words[0];
     g.name = words[1];
     g.statementEnd = end;
+    g.nameAt = end - text.size() + declarators.rfind(g.name);
     return g;
 }
 
@@ -92,11 +94,13 @@ void scan(const std::string& code, std::vector<Global>& globals, std::vector<Fun
     size_t bodyOpen = 0;
     std::string pendingHeader;
     bool inFunction = false;
+    bool initializer = false;  // the braces of `Wave waves[2] = { … };`, inside its statement
     for (size_t i = 0; i < code.size(); ++i) {
         const char c = code[i];
         if (c == '{') {
             if (depth == 0) {
                 std::string_view statement(code.data() + start, i - start);
+                initializer = statement.find('=') != std::string_view::npos;
                 size_t close = statement.rfind(')');
                 inFunction = close != std::string_view::npos && statement.find('=') == std::string_view::npos &&
                              statement.find_first_not_of(" \t\r\n:", close + 1) == std::string_view::npos;
@@ -123,8 +127,9 @@ void scan(const std::string& code, std::vector<Global>& globals, std::vector<Fun
                     bodies.push_back(std::move(body));
                 }
                 inFunction = false;
-                // A struct or cbuffer ends with its own ';'; a function body does not.
-                start = i + 1;
+                // A struct or cbuffer ends with its own ';'; a function body does not. An
+                // initializer's ';' ends the declaration it is part of.
+                if (!initializer) start = i + 1;
             }
         } else if (c == ';' && depth == 0) {
             if (auto g = globalDeclaration(std::string_view(code.data() + start, i - start), i)) globals.push_back(std::move(*g));
@@ -310,7 +315,7 @@ HlslWritableGlobals giveWrittenGlobalsACopy(const std::string& source, const std
         copies += " " + copy + " = " + g->name + ";";
         for (const Use& u : *usesOf(g->name)) edits.push_back({u.at, g->name.size(), copy});
         out.written.push_back(g->name);
-        out.lines.push_back(lineOf(newlines, g->statementEnd));
+        out.lines.push_back(lineOf(newlines, g->nameAt));
     }
     // At one offset insertions go first: `main(){gain = …` gets the copies before `gain`.
     edits.push_back({entry->open + 1, 0, copies});

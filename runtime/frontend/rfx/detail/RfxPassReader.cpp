@@ -59,16 +59,10 @@ public:
         for (const RfxElement& c : assemblyShaders_) assemblyShader(c);
         bindStreams();
         checkConstants();
-        // A sampler left behind in the file, which no shader reads, is ignored as RenderMonkey
-        // did (like an RmShaderConstant naming nothing).
-        for (const auto& [name, where] : samplersWithoutObject_) {
-            const std::string& sampler = name;  // clang before 16 cannot capture a structured binding
-            const std::string message = "sampler '" + sampler + "' has no <RmTextureObject NAME=\"" + sampler +
-                                        "\"> in the pass to say which texture it reads";
-            const bool used = std::any_of(out_.pass.shaders.begin(), out_.pass.shaders.end(),
-                                          [&](const ShaderSource& s) { return mentionsIdentifier(s.code, sampler); });
-            if (used) where.error(message);
-            else where.warning(message + "; its shaders do not use it, so it is ignored");
+        for (ReadPass::SamplerWithoutObject& sampler : samplersWithoutObject_) {
+            sampler.used = std::any_of(out_.pass.shaders.begin(), out_.pass.shaders.end(),
+                                       [&](const ShaderSource& s) { return mentionsIdentifier(s.code, sampler.name); });
+            out_.samplersWithoutObject.push_back(std::move(sampler));
         }
         if (!index) return std::nullopt;
         return out_;
@@ -84,13 +78,13 @@ private:
             shader(c, tag);
         } else if (tag == "RmShader" && api_ == RfxApi::Direct3D) {
             assemblyShaders_.push_back(c);
-            constantsOf(c);
+            constantsOf(c, pixelShader(c));
         } else if (tag == "RmShader") {
             c.warning("an assembly shader: rmfx compiles only HLSL and GLSL, so this pass cannot run");
             out_.runnable = false;
             out_.whyNotRunnable = "its " + std::string(pixelShader(c) ? "pixel" : "vertex") + " shader " + c.label() +
                                   " (line " + std::to_string(c.line()) + ") is assembly";
-            constantsOf(c);
+            constantsOf(c, pixelShader(c));
         } else if (tag == "RmRenderStateBlock") {
             out_.stateBlocks.push_back(x);
         } else if (tag == "RmRenderTarget") {
@@ -108,7 +102,7 @@ private:
         } else if (tag == "RmTextureObject") {
             textureObject(c);
         } else if (tag == "RmSampler") {
-            sampler(c);
+            sampler(c, true);
         } else if (tag == "RmShaderConstant") {
             constant(c);
         } else if (tag == "RmCameraReference") {
@@ -154,7 +148,7 @@ private:
             s.entryPoint = c.text("ENTRY_POINT").value_or("main");
             s.profile = c.text("TARGET").value_or("");
             s.matrixOrder = hlslMatrices_;
-            constantsOf(c);
+            constantsOf(c, pixelShader(c));
         }
         std::optional<RfxShaderCode> code = shaderCodeOf(c);
         if (!code) return;
@@ -218,11 +212,11 @@ private:
     }
 
     // RmShaderConstant and RmSampler children of a D3D shader.
-    void constantsOf(const RfxElement& c) {
+    void constantsOf(const RfxElement& c, bool pixel) {
         for (const XMLElement* x = c.xml()->FirstChildElement(); x; x = x->NextSiblingElement()) {
             std::string_view tag = x->Name();
             if (tag == "RmShaderConstant") constant(at(x));
-            else if (tag == "RmSampler") sampler(at(x));
+            else if (tag == "RmSampler") sampler(at(x), pixel);
         }
     }
 
@@ -276,10 +270,14 @@ private:
         return false;
     }
 
-    void sampler(const RfxElement& c) {
+    void sampler(const RfxElement& c, bool pixel) {
         std::string name = c.name();
         if (textureObjects_.count(name)) return;
-        samplersWithoutObject_.emplace_back(name, c);
+        for (const ReadPass::SamplerWithoutObject& known : samplersWithoutObject_)
+            if (known.name == name) return;
+        ReadPass::SamplerWithoutObject s{name, std::nullopt, c.xml(), false};
+        if (auto reg = c.integer("REGISTER", 0, 15, false)) s.stage = d3dSamplerStage(static_cast<int>(*reg), !pixel);
+        samplersWithoutObject_.push_back(std::move(s));
     }
 
     void textureObject(const RfxElement& c) {
@@ -289,7 +287,7 @@ private:
         // The sampler has its object, even one whose texture is reported missing below.
         textureObjects_.insert(s.uniform);
         if (auto stage = c.integer("STATE_INDEX", 0, 15, false)) objectStages_[s.uniform] = static_cast<int>(*stage);
-        std::erase_if(samplersWithoutObject_, [&](const auto& p) { return p.first == s.uniform; });
+        std::erase_if(samplersWithoutObject_, [&](const auto& p) { return p.name == s.uniform; });
         const XMLElement* ref = c.xml()->FirstChildElement("RmTextureReference");
         if (!ref) {
             c.error("it has no <RmTextureReference> naming the texture it binds");
@@ -320,6 +318,8 @@ private:
             else states.applyD3d(at(x));
         }
         states.finish(c, s);
+        if (auto stage = objectStages_.find(s.uniform); stage != objectStages_.end())
+            out_.stageObjects[d3dSamplerStage(stage->second, c.flag("VERTEX_TEXTURE", false).value_or(false))] = s;
         out_.pass.samplers.push_back(std::move(s));
     }
 
@@ -376,7 +376,7 @@ private:
     Declarations passLevel_;
     const StreamMapDeclaration* streamMap_ = nullptr;
     bool targetSeen_ = false;
-    std::vector<std::pair<std::string, RfxElement>> samplersWithoutObject_;
+    std::vector<ReadPass::SamplerWithoutObject> samplersWithoutObject_;
     std::set<std::string> textureObjects_;
     std::vector<RfxElement> constants_;
     std::vector<RfxElement> assemblyShaders_;

@@ -1,6 +1,7 @@
 #pragma once
 // One RenderMonkey pass (RmGLPass, RmGLESPass, RmPass) → an rmfx Pass.
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,7 +37,22 @@ struct ReadPass {
     // (RenderMonkey allowed it): the pass sees them first; the importer adds the textures and
     // targets to the workspace.
     Declarations declared;
+    // Direct3D binds textures to sampler stages, not to names, and a binding stays on the device
+    // from one pass to the next. The importer, which runs the passes in order, binds each sampler
+    // that has no texture object of its name to what its stage holds.
+    std::map<int, Sampler> stageObjects;  // d3dSamplerStage → the texture object this pass binds there
+    struct SamplerWithoutObject {
+        std::string name;
+        std::optional<int> stage;  // d3dSamplerStage of its REGISTER; none without one
+        const tinyxml2::XMLElement* element = nullptr;
+        bool used = false;  // whether a shader of the pass names it
+    };
+    std::vector<SamplerWithoutObject> samplersWithoutObject;
 };
+
+// Direct3D's sampler stage: a pixel sampler's register, or D3DVERTEXTEXTURESAMPLER0 (257) plus a
+// vertex texture sampler's register.
+constexpr int d3dSamplerStage(int index, bool vertexTexture) { return vertexTexture ? 257 + index : index; }
 
 // Shaders are left empty when the pass has none (the importer gives it the previous pass's).
 // HLSL shaders get `hlslMatrices` (rfx::hlslMatrixOrderOf); assembly ones are always ColumnVector.
