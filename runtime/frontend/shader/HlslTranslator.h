@@ -20,11 +20,11 @@
 // (column-vector) WorldViewProjection, untransposed, as D3DX does with a D3DXMATRIX, whose 16
 // floats are the same. `mul(M, v)` computes transpose(M) * v.
 //
-// Texture origin: Direct3D puts texture coordinate v = 0 at an image's top row; rmfx, like
-// OpenGL, puts t = 0 at its bottom row (GlTexture uploads images flipped), and Assimp gives
-// meshes lower-left texture coordinates. Coordinates that come from a mesh therefore sample the
-// same texel as in Direct3D. Coordinates a shader derives itself with Direct3D's v pointing down
-// (from a screen position, say) read the image upside down: the translator flips nothing.
+// Texture origin: a Direct3D effect runs in Direct3D 9's texture space (model/Workspace.h
+// TextureSpace): images and render targets hold their top row at v = 0 and the executor turns
+// clip-space y over after the vertex shader (ClipSpaceTurnOver), so the translator flips nothing:
+// texture coordinates from a mesh or from a shader's own arithmetic mean what they meant in
+// Direct3D.
 
 #include <optional>
 #include <string>

@@ -1,8 +1,7 @@
 #include "io/media/MediaResolver.h"
 
-#include "io/mesh/StockModels.h"
-
 #include "io/image/PlaceholderImage.h"
+#include "io/mesh/StockModels.h"
 #include "model/BuiltinMeshNames.h"
 
 #include <algorithm>
