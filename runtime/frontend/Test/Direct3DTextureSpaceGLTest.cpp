@@ -100,6 +100,13 @@ std::string pass(const std::string& name, int index, const std::string& target, 
            "    </RmRenderStateBlock>\n" + body + renderTarget + "   </RmPass>\n";
 }
 
+// An RmVectorVariable holding (x, y, 0, 0).
+std::string vectorVariable(const std::string& name, double x, double y) {
+    return "   <RmVectorVariable NAME=\"" + name + "\" API=\"\" ARTIST_EDITABLE=\"FALSE\" VARIABLE_SEMANTIC=\"\" VALUE_0=\"" +
+           std::to_string(x) + "\" VALUE_1=\"" + std::to_string(y) +
+           "\" VALUE_2=\"0\" VALUE_3=\"0\" MIN=\"0\" MAX=\"100\" CLAMP=\"FALSE\" NORMALIZE=\"FALSE\"/>\n";
+}
+
 // Pass "Copy" draws the picture into target "Scene" through the quad's texture coordinates, as a
 // glow's first pass draws its scene; `passes` follow it.
 std::string effect(const std::string& variables, const std::string& passes) {
@@ -211,9 +218,7 @@ TEST_F(Direct3DTextureSpaceGLTest, ATargetReadThroughPositionArithmeticAndTheIma
                  "     <RmSampler NAME=\"SceneSampler\" API=\"\" REGISTER=\"0\"/>\n"
                  "     <RmSampler NAME=\"PictureSampler\" API=\"\" REGISTER=\"1\"/>\n") +
             textureObject("SceneSampler", "Scene") + textureObject("PictureSampler", "Picture"));
-    const std::string halfTexel = "   <RmVectorVariable NAME=\"HalfTexel\" API=\"\" ARTIST_EDITABLE=\"FALSE\" VARIABLE_SEMANTIC=\"\" "
-                                  "VALUE_0=\"" + std::to_string(0.5 / kWidth) + "\" VALUE_1=\"" + std::to_string(0.5 / kHeight) +
-                                  "\" VALUE_2=\"0\" VALUE_3=\"0\" MIN=\"0\" MAX=\"1\" CLAMP=\"FALSE\" NORMALIZE=\"FALSE\"/>\n";
+    const std::string halfTexel = vectorVariable("HalfTexel", 0.5 / kWidth, 0.5 / kHeight);
     const Image output = render(effect(halfTexel, combine));
     const RefImage scene = expectedScene();
     const RefImage picture = topFirstPicture();
@@ -254,13 +259,7 @@ TEST_F(Direct3DTextureSpaceGLTest, AVposReadAndAMeshUvReadOfOneTargetAgree) {
                  "     <RmSampler NAME=\"SceneSampler\" API=\"\" REGISTER=\"0\"/>\n"
                  "     <RmShaderConstant NAME=\"Size\" API=\"\" REGISTER=\"0\"/>\n") +
             textureObject("SceneSampler", "Scene"));
-    const std::string variables =
-        "   <RmVectorVariable NAME=\"HalfTexel\" API=\"\" ARTIST_EDITABLE=\"FALSE\" VARIABLE_SEMANTIC=\"\" VALUE_0=\"" +
-        std::to_string(0.5 / kWidth) + "\" VALUE_1=\"" + std::to_string(0.5 / kHeight) +
-        "\" VALUE_2=\"0\" VALUE_3=\"0\" MIN=\"0\" MAX=\"1\" CLAMP=\"FALSE\" NORMALIZE=\"FALSE\"/>\n"
-        "   <RmVectorVariable NAME=\"Size\" API=\"\" ARTIST_EDITABLE=\"FALSE\" VARIABLE_SEMANTIC=\"\" VALUE_0=\"" +
-        std::to_string(kWidth) + "\" VALUE_1=\"" + std::to_string(kHeight) +
-        "\" VALUE_2=\"0\" VALUE_3=\"0\" MIN=\"0\" MAX=\"100\" CLAMP=\"FALSE\" NORMALIZE=\"FALSE\"/>\n";
+    const std::string variables = vectorVariable("HalfTexel", 0.5 / kWidth, 0.5 / kHeight) + vectorVariable("Size", kWidth, kHeight);
     const Image output = render(effect(variables, show));
     const RefImage scene = expectedScene();
     RefImage expected(kWidth, kHeight);
