@@ -1,5 +1,6 @@
 #include "graph/PassGraph.h"
 
+#include <algorithm>
 #include <deque>
 #include <map>
 
@@ -201,9 +202,18 @@ Result<PassGraph> buildPassGraph(const Workspace& ws, const FrameRequest& reques
         bool writtenWhenOn = false;
         for (const PassNode& node : g.nodes)
             writtenWhenOn = writtenWhenOn || (node.target == output && node.fate == PassFate::EffectSwitchedOff);
-        if (!writtenWhenOn)
+        if (!writtenWhenOn) {
+            // A shadow map's first step, alone in its file, draws only into its own target.
+            std::vector<std::string> written;
+            for (const PassNode& node : g.nodes)
+                if (node.active && std::find(written.begin(), written.end(), node.target) == written.end())
+                    written.push_back(node.target);
+            std::string those;
+            for (const std::string& t : written) those += (those.empty() ? "" : ", ") + inQuotes(t);
             diagnostics.push_back({Diagnostic::Severity::Error, {ws.path.string(), 0}, "",
-                                   "no running pass writes target '" + output + "', which is asked for"});
+                                   "no running pass writes target '" + output + "', which is asked for" +
+                                       (written.empty() ? std::string() : "; the running passes write " + those + " (--target NAME)")});
+        }
     }
     while (!work.empty()) {
         int k = work.front();

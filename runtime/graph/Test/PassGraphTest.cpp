@@ -132,7 +132,8 @@ TEST(PassGraph, AnOutputNothingWritesIsAnError) {
     EXPECT_FALSE(built.ok());
     const Diagnostics& d = built.diagnostics();
     ASSERT_EQ(d.size(), 2u);
-    EXPECT_EQ(d[0].message, "no running pass writes target 'never', which is asked for");
+    EXPECT_EQ(d[0].message, "no running pass writes target 'never', which is asked for; the running passes write 't', 'output' "
+                            "(--target NAME)");
     EXPECT_NE(d[1].message.find("no target named 'nope'"), std::string::npos) << d[1].message;
 }
 
