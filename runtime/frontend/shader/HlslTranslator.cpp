@@ -13,6 +13,7 @@
 #include "frontend/shader/BracketNesting.h"
 #include "frontend/shader/HlslBraceElision.h"
 #include "frontend/shader/HlslConstructorAssignments.h"
+#include "frontend/shader/HlslEffectTextures.h"
 #include "frontend/shader/HlslSamplerTypes.h"
 #include "frontend/shader/HlslWritableGlobals.h"
 #include "frontend/shader/GlslFloatLiteral.h"
@@ -254,8 +255,8 @@ Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const
     std::string code = hlsl.code;
     if (code.rfind("#version", 0) == 0) code.erase(0, code.find('\n'));
     // What fxc accepted and glslang does not, written out: brace elision, untyped samplers,
-    // constructors assigned to, writes to globals.
-    code = writeOutConstructorAssignments(typeGenericSamplers(nestFlatArrayInitializers(code))).code;
+    // constructors assigned to, effect-framework textures, writes to globals.
+    code = writeOutConstructorAssignments(typeGenericSamplers(nestFlatArrayInitializers(blankEffectTextures(code)))).code;
     std::string entry = stage.entryPoint.empty() ? "main" : stage.entryPoint;
     HlslWritableGlobals writable = giveWrittenGlobalsACopy(code, entry);
     code = std::move(writable.code);
