@@ -2,6 +2,7 @@
 // rendered headless, end to end: importer, media resolution, contexts, dialects, streams, states
 // and HLSL. Each expectation is the effect's maths worked out here from the values in the file.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -120,6 +121,31 @@ TEST_F(RfxCoreRenderGLTest, Direct3DSamplersReadWhatTheirStageHolds) {
     const auto stored = [](double v) { return std::round(v * 255.0) / 255.0; };
     const std::array<double, 3> a{0.2, 0.4, 0.6}, c{0.3, 0.7, 0.5};
     expectUniformOutput(runWorkspace(std::move(ws), RunSettings{{kSize, kSize}}), {stored(a[0]), stored(a[1]), stored(c[2])});
+}
+
+// d3d_color_clamp.rfx: a vs_2_0 shader's COLOR0 output is clamped to 0…1 (Direct3D 9's colour
+// register), its TEXCOORD0 output is not; with vs_3_0 (the same file, targets changed) neither is.
+TEST_F(RfxCoreRenderGLTest, ColourOutputsBelowShaderModel3AreClampedAsDirect3DsColourRegisters) {
+    const std::array<double, 4> value{-0.6, 1.4, 0.25, 1.0};
+    const auto shown = [&](bool clamped) {
+        std::array<double, 3> out{};
+        for (int c = 0; c < 3; ++c) {
+            const double colour = clamped ? std::clamp(value[c], 0.0, 1.0) : value[c];
+            out[c] = 0.25 * (colour - value[c]) + 0.5;
+        }
+        return out;
+    };
+    expectUniformOutput(runWorkspace(loadRfx("d3d_color_clamp.rfx", GlProfile::Core), RunSettings{{kSize, kSize}}), shown(true));
+
+    std::string text = readText(sourceDir() / "tests" / "rfx" / "d3d_color_clamp.rfx");
+    for (const std::string from : {"TARGET=\"vs_2_0\"", "TARGET=\"ps_2_0\""}) {
+        ASSERT_NE(text.find(from), std::string::npos) << from;
+        text.replace(text.find(from) + 11, 3, "3_0");
+    }
+    ScratchDir dir;
+    Result<Workspace> model3 = loadWorkspace(dir.write("clamp3.rfx", text));
+    ASSERT_TRUE(model3.ok()) << formatAll(model3.diagnostics());
+    expectUniformOutput(runWorkspace(std::make_unique<Workspace>(std::move(*model3)), RunSettings{{kSize, kSize}}), shown(false));
 }
 
 // A 1.71 file whose HLSL multiplies mul(g_matViewProj, v) (written for OpenGL-layout matrices, as
