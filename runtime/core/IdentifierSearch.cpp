@@ -54,6 +54,14 @@ bool mentionsIdentifier(std::string_view text, std::string_view name) {
     return findWord(uncommented, name) != std::string_view::npos;
 }
 
+int mentionCount(std::string_view text, std::string_view name) {
+    if (name.empty() || text.find(name) == std::string_view::npos) return 0;
+    const std::string uncommented = withoutComments(text);
+    int count = 0;
+    for (size_t at = findWord(uncommented, name); at != std::string_view::npos; at = findWord(uncommented, name, at + 1)) ++count;
+    return count;
+}
+
 bool declaresVertexInput(std::string_view code, std::string_view name) {
     if (name.empty()) return false;
     for (size_t at = code.find(name); at != std::string_view::npos; at = code.find(name, at + 1)) {

@@ -11,6 +11,8 @@ namespace rmfx {
 bool isIdentifierChar(char c);
 
 bool mentionsIdentifier(std::string_view code, std::string_view name);
+// How many times, by the same rules: a declaration and a use are two.
+int mentionCount(std::string_view code, std::string_view name);
 
 // Every whole-word `from` in `code` replaced by `to` (comments and strings included: for
 // generated code, whose words are all code).

@@ -14,6 +14,13 @@ TEST(IdentifierSearch, WholeWordsOnly) {
 
 // A name only a comment or a string holds is not used ("view_position" in a commented-out line
 // of MeshLab's Simplempass.rfx made `rmfx list` say the pass needs it).
+TEST(IdentifierSearch, MentionsAreCountedAsWholeWordsOutsideComments) {
+    EXPECT_EQ(mentionCount("float4x4 ViewI; // ViewI\nfloat4 f() { return mul(p, ViewIT); }", "ViewI"), 1);
+    EXPECT_EQ(mentionCount("float4x4 ViewI;\nfloat4 f() { return mul(p, ViewI); }", "ViewI"), 2);
+    EXPECT_EQ(mentionCount("", "ViewI"), 0);
+    EXPECT_EQ(mentionCount("ViewI", ""), 0);
+}
+
 TEST(IdentifierSearch, CommentsAndStringsDoNotCount) {
     EXPECT_FALSE(mentionsIdentifier("// uniform vec4 view_position;\nvoid main() {}", "view_position"));
     EXPECT_FALSE(mentionsIdentifier("/* view_position\n * more */ void main() {}", "view_position"));

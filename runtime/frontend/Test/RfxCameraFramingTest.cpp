@@ -286,9 +286,28 @@ TEST(RfxCameraFraming, TheMatricesTheShadersReadDecideOverAStaleView) {
         EXPECT_NEAR(glm::length(glm::dvec3(camera.position()) - eye), 0.0, 0.05);
         EXPECT_NEAR(glm::length(glm::dvec3(ws.camera.target) - centre), 0.0, 0.05);
     }
-    // When the shaders read the View itself, the View decides, stale or not.
+    // When the shaders read the View itself, the View decides, stale or not; with no Projection
+    // stored, the field of view is the ViewProjection's (50 degrees), not rmfx's default.
     Workspace readsView = load(dir, effect(stale + stored("matViewProjection", "ViewProjection", viewProjection), "matView"));
     EXPECT_NEAR(glm::length(glm::dvec3(OrbitCamera(readsView.camera).position()) - glm::dvec3(0, 0, -200)), 0.0, 0.05);
+    EXPECT_NEAR(readsView.camera.fovYDegrees, 50.0, 1e-3);
+    // A matrix the shader declares and never uses is not read (Nebula.rfx: a ViewInverse left at
+    // the identity beside the WorldViewProjection it multiplies by), nor is an identity ViewInverse
+    // a camera: the WorldViewProjection decides.
+    const std::string declaredOnly =
+        "<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\" ACTIVE_EFFECT=\"W.E\" XML_VERSION=\"RenderMonkey 1.71\">\n"
+        "<RmModelData NAME=\"M\" FILE_NAME=\"big.obj\"/>\n<RmDirectXEffect NAME=\"E\" API=\"D3D\">\n" +
+        stored("matViewInverse", "ViewInverse", glm::dmat4(1.0)) + stored("matWvp", "WorldViewProjection", viewProjection) +
+        "<RmPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n<RmModelReference NAME=\"M\"/>\n"
+        "<RmHLSLShader NAME=\"V\" PIXEL_SHADER=\"FALSE\" TARGET=\"vs_2_0\" ENTRY_POINT=\"main\"><RmShaderCode><![CDATA["
+        "float4x4 matViewInverse; float4x4 matWvp; float4 main(float4 p : POSITION) : POSITION { return mul(p, matWvp); }"
+        "]]></RmShaderCode></RmHLSLShader>\n"
+        "<RmHLSLShader NAME=\"F\" PIXEL_SHADER=\"TRUE\" TARGET=\"ps_2_0\" ENTRY_POINT=\"main\"><RmShaderCode><![CDATA["
+        "float4 main() : COLOR { return 1; }]]></RmShaderCode></RmHLSLShader>\n</RmPass>\n</RmDirectXEffect>\n"
+        "</RmEffectWorkspace>\n</RENDER_MONKEY>\n";
+    Workspace unused = load(dir, declaredOnly);
+    EXPECT_NEAR(glm::length(glm::dvec3(OrbitCamera(unused.camera).position()) - eye), 0.0, 0.05);
+    EXPECT_NEAR(unused.camera.fovYDegrees, 50.0, 1e-3);
 }
 
 // Files that kept only WorldViewProjection (P·V·W), with the World beside it or without one (the

@@ -212,8 +212,8 @@ void frameDrawnModels(Workspace& ws) {
         ws.camera.nearPlane = static_cast<float>(std::max(ws.camera.distance * 1e-3, 1e-3));
         sizeStandInsToTheCamera(ws);
     };
-    // A View left at the identity was never filled by the viewer, which stands away from the
-    // models (it would put the eye at the origin, inside them): passed over.
+    // A View (or ViewInverse) left at the identity was never filled by the viewer, which stands
+    // away from the models (it would put the eye at the origin, inside them): passed over.
     const Variable* view = stored(ws, "View", ValueType::Mat4);
     auto identity = [](const Variable& v) {
         for (size_t i = 0; i < 16; ++i)
@@ -224,17 +224,32 @@ void frameDrawnModels(Workspace& ws) {
     const Variable* viewProjection = stored(ws, "ViewProjection", ValueType::Mat4);
     const Variable* worldViewProjection = stored(ws, "WorldViewProjection", ValueType::Mat4);
     const Variable* viewInverse = stored(ws, "ViewInverse", ValueType::Mat4);
+    if (viewInverse && identity(*viewInverse)) viewInverse = nullptr;
     // The matrices the passes read decide: a file often keeps the viewer's last View (stale, or
     // its default 200 units away) beside the ViewProjection its shaders read. Those a shader reads
     // are tried first; the others only when none of those holds a camera (a matrix the viewer never
     // filled, the identity, holds none).
+    // A matrix a shader declares and never uses is not read (Nebula.rfx declares a stale
+    // ViewInverse beside the WorldViewProjection it multiplies by): its name must come up again
+    // after the declaration.
     auto read = [&](const Variable* v) {
         if (!v) return false;
         for (const Pass& pass : ws.passes)
             for (const ShaderSource& shader : pass.shaders)
-                if (mentionsIdentifier(shader.code, v->name)) return true;
+                if (mentionCount(shader.code, v->name) >= 2) return true;
         return false;
     };
+    // The camera of a stored P·V, or of P·V·W with the World taken off.
+    auto productCamera = [&](const Variable* viewProjection, const Variable* worldViewProjection) -> std::optional<OrbitCameraSettings> {
+        if (viewProjection)
+            if (auto camera = fromStoredViewProjection(*viewProjection, models, haveModels, ws.camera)) return camera;
+        if (worldViewProjection)
+            if (std::optional<Variable> product = viewProjectionFromWorldViewProjection(ws, *worldViewProjection))
+                if (auto camera = fromStoredViewProjection(*product, models, haveModels, ws.camera)) return camera;
+        return std::nullopt;
+    };
+    const Variable* storedViewProjection = viewProjection;
+    const Variable* storedWorldViewProjection = worldViewProjection;
     auto cameraFrom = [&](const Variable* view, const Variable* viewProjection, const Variable* worldViewProjection,
                           const Variable* viewInverse) -> std::optional<OrbitCameraSettings> {
         // ViewInverse, the camera's own transform: the View is its inverse, in the same layout.
@@ -252,19 +267,18 @@ void frameDrawnModels(Workspace& ws) {
         }
         if (view) {
             if (auto camera = fromStoredView(*view, models, haveModels, ws.camera)) {
+                // The field of view: from a stored Projection, else from the ViewProjection (or
+                // WorldViewProjection) the file keeps beside the View, read by a shader or not.
                 if (const Variable* projection = stored(ws, "Projection", ValueType::Mat4)) {
                     const double p11 = projection->value.data[5];
                     if (std::abs(p11) > 1e-6 && std::isfinite(p11)) camera->fovYDegrees = fovFromYScale(p11);
+                } else if (auto fromProduct = productCamera(storedViewProjection, storedWorldViewProjection)) {
+                    camera->fovYDegrees = fromProduct->fovYDegrees;
                 }
                 return camera;
             }
         }
-        if (viewProjection)
-            if (auto camera = fromStoredViewProjection(*viewProjection, models, haveModels, ws.camera)) return camera;
-        if (worldViewProjection)
-            if (std::optional<Variable> product = viewProjectionFromWorldViewProjection(ws, *worldViewProjection))
-                if (auto camera = fromStoredViewProjection(*product, models, haveModels, ws.camera)) return camera;
-        return std::nullopt;
+        return productCamera(viewProjection, worldViewProjection);
     };
     auto ifRead = [&](const Variable* v) { return read(v) ? v : nullptr; };
     std::optional<OrbitCameraSettings> camera =
