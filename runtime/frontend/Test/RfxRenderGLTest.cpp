@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec4.hpp>
 #include <gtest/gtest.h>
 
 #include "tests/support/GlTestSupport.h"
@@ -146,6 +147,28 @@ TEST_F(RfxCoreRenderGLTest, ColourOutputsBelowShaderModel3AreClampedAsDirect3DsC
     Result<Workspace> model3 = loadWorkspace(dir.write("clamp3.rfx", text));
     ASSERT_TRUE(model3.ok()) << formatAll(model3.diagnostics());
     expectUniformOutput(runWorkspace(std::make_unique<Workspace>(std::move(*model3)), RunSettings{{kSize, kSize}}), shown(false));
+}
+
+// d3d_stored_matrix.rfx: a matrix RenderMonkey keeps as its editor shows it (translation in
+// VALUE_3 and VALUE_7) translates the point under mul(v, M) in a 1.71 file and under mul(M, v) in
+// a 1.5 one (the same file, its version and multiplication turned round).
+TEST_F(RfxCoreRenderGLTest, AStoredMatrixTranslatesUnderEitherMultiplicationOrder) {
+    const glm::dvec4 point(0.25, 0.5, 0.0, 1.0), translation(0.25, 0.125, 0.0, 0.0);
+    const glm::dvec4 moved = point + translation * point.w;
+    const auto stored = [](double v) { return std::round(v * 255.0) / 255.0; };  // the 8-bit output
+    const std::array<double, 3> expected{stored(moved.x), stored(moved.y), stored(moved.z)};
+    expectUniformOutput(runWorkspace(loadRfx("d3d_stored_matrix.rfx", GlProfile::Core), RunSettings{{kSize, kSize}}), expected);
+
+    std::string text = readText(sourceDir() / "tests" / "rfx" / "d3d_stored_matrix.rfx");
+    for (const auto& [from, to] : {std::pair<std::string, std::string>{"XML_VERSION=\"RenderMonkey 1.71\"", "XML_VERSION=\"RenderMonkey 1.5\""},
+                                   {"mul(float4(0.25, 0.5, 0.0, 1.0), Offset)", "mul(Offset, float4(0.25, 0.5, 0.0, 1.0))"}}) {
+        ASSERT_NE(text.find(from), std::string::npos) << from;
+        text.replace(text.find(from), from.size(), to);
+    }
+    ScratchDir dir;
+    Result<Workspace> older = loadWorkspace(dir.write("stored15.rfx", text));
+    ASSERT_TRUE(older.ok()) << formatAll(older.diagnostics());
+    expectUniformOutput(runWorkspace(std::make_unique<Workspace>(std::move(*older)), RunSettings{{kSize, kSize}}), expected);
 }
 
 // A 1.71 file whose HLSL multiplies mul(g_matViewProj, v) (written for OpenGL-layout matrices, as

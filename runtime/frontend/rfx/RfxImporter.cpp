@@ -1,6 +1,7 @@
 #include "frontend/rfx/RfxImporter.h"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <set>
 #include <string_view>
@@ -116,6 +117,38 @@ void bindSamplersWithoutObject(ReadPass& p, RfxApi api, const std::map<int, Samp
                std::none_of(p.pass.shaders.begin(), p.pass.shaders.end(),
                             [&](const ShaderSource& shader) { return mentionsIdentifier(shader.code, s.uniform); });
     });
+}
+
+// RenderMonkey keeps a matrix variable row by row as it shows it, in the column-vector convention
+// (a translation in VALUE_3, 7 and 11), and rmfx reads VALUE_0…3 as its first column: right for a
+// shader that multiplies mul(M, v) (ColumnVector, uploaded untransposed). For mul(v, M) RenderMonkey
+// passed a matrix it did not fill by semantic the way it passed those it did, turned round (the
+// shadow-mapping course files' gWorldMatrix, moved by VALUE_7 = -40, lands where they draw it only
+// so): a stored matrix that only row-vector HLSL reads is transposed. Semantic ones are filled by
+// rmfx; assembly reads registers as rows, like mul(M, v).
+void turnStoredMatricesForRowVectors(Workspace& ws) {
+    auto readers = [&](const std::string& name, const Pass* only) {
+        int rowVector = 0, other = 0;
+        for (const Pass& pass : ws.passes) {
+            if (only && &pass != only) continue;
+            for (const ShaderSource& s : pass.shaders) {
+                if (!mentionsIdentifier(s.code, name)) continue;
+                (s.dialect == ShaderDialect::Hlsl && s.matrixOrder == HlslMatrixOrder::RowVector ? rowVector : other) += 1;
+            }
+        }
+        return rowVector > 0 && other == 0;
+    };
+    auto transpose = [](Variable& v) {
+        if (v.value.type != ValueType::Mat4 || !v.semantic.empty()) return;
+        std::array<float, 16> turned{};
+        for (size_t i = 0; i < 16; ++i) turned[i] = v.value.data[(i % 4) * 4 + i / 4];
+        std::copy(turned.begin(), turned.end(), v.value.data.begin());
+    };
+    for (Pass& pass : ws.passes)
+        for (Variable& v : pass.constants)
+            if (readers(v.name, &pass)) transpose(v);
+    for (Variable& v : ws.variables)
+        if (readers(v.name, nullptr)) transpose(v);
 }
 
 Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path& path,
@@ -273,6 +306,7 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
         ws.passes.push_back(std::move(p.pass));
         previous = &ws.passes.back();
     }
+    turnStoredMatricesForRowVectors(ws);
     // RenderMonkey clears its back buffer (colour and depth) before every frame: the first pass
     // that draws to the output clears what it does not clear itself, to opaque black and depth 1.
     for (Pass& pass : ws.passes) {
