@@ -17,6 +17,7 @@ Result<const GlMesh*> GlMeshCache::meshFor(const Workspace& ws, const DrawCall& 
     if (draw.mesh && (draw.meshScale != 1.0f || draw.meshOffset != glm::vec3(0.0f)))
         key += "@" + std::to_string(draw.meshScale) + "+" + std::to_string(draw.meshOffset.x) + "," +
                std::to_string(draw.meshOffset.y) + "," + std::to_string(draw.meshOffset.z);
+    if (draw.mirrorU) key += "~u";
     if (auto it = meshes_.find(key); it != meshes_.end()) return static_cast<const GlMesh*>(it->second.get());
     Mesh mesh;
     if (draw.mesh) {

@@ -226,6 +226,32 @@ TEST(MediaResolver, MissingStockModelsStandInAtTheirMeasuredSize) {
     EXPECT_NEAR(quadLow.z, 0.001, 1e-6);
 }
 
+// Sphere.3ds (opengles-book-samples' copy) has u = 0.25 on its -x side, 0.5 at -z and 0.75 at +x,
+// the other way round from the built-in sphere: its stand-in's u is turned to match, so a texture
+// or normal map reads as on the stock model (lazyartist's NormalMapping Test3.rfx).
+TEST(MediaResolver, TheSphereStandInsTextureRunsAsTheStockSpheres) {
+    test::ScratchDir dir;
+    fs::path ws = dir.write("ws/sphere.xml", lines({"<workspace version=\"1\">", "  <pass name=\"p\">", kShader,
+                                                    "    <draw file=\"..\\Media\\Models\\Sphere.3ds\"/>", "  </pass>",
+                                                    "</workspace>"}));
+    Result<Workspace> l = load(ws);
+    ASSERT_TRUE(l.ok()) << formatAll(l.diagnostics());
+    const std::optional<Mesh> mesh = makeDrawnMesh(l->passes[0].draw);
+    ASSERT_TRUE(mesh);
+    // The u of the equator vertex nearest each direction.
+    auto uToward = [&](glm::dvec3 direction) {
+        double best = -2.0, u = -1.0;
+        for (size_t i = 0; i < mesh->positions.size(); ++i) {
+            const glm::dvec3 p = glm::normalize(glm::dvec3(mesh->positions[i]));
+            if (glm::dot(p, direction) > best) best = glm::dot(p, direction), u = mesh->texcoords[i].x;
+        }
+        return u;
+    };
+    EXPECT_NEAR(uToward({-1, 0, 0}), 0.25, 0.02);
+    EXPECT_NEAR(uToward({0, 0, -1}), 0.5, 0.02);
+    EXPECT_NEAR(uToward({1, 0, 0}), 0.75, 0.02);
+}
+
 TEST(MediaResolver, WithPlaceholdersMissingTexturesAndModelsGetStandInsAndOneWarningPerFile) {
     test::ScratchDir dir;
     const std::string stone = "C:\\RenderMonkey\\Media\\Textures\\Fieldstone.tga";

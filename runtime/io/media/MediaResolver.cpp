@@ -325,6 +325,7 @@ Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options, c
                 pass.draw.meshScale = placement.scale;
                 pass.draw.meshOffset = placement.offset;
                 pass.draw.stockSize = true;
+                pass.draw.mirrorU = stock->mirrorU;
             }
             pass.draw.file.clear();
         } else if (found.missing && placeholders) {

@@ -128,6 +128,8 @@ std::optional<Mesh> makeDrawnMesh(const DrawCall& draw) {
     if (!draw.mesh) return std::nullopt;
     Mesh mesh = makeMesh(*draw.mesh);
     for (glm::vec3& p : mesh.positions) p = p * draw.meshScale + draw.meshOffset;
+    if (draw.mirrorU)
+        for (glm::vec2& t : mesh.texcoords) t.x = 1.0f - t.x;
     return mesh;
 }
 

@@ -15,7 +15,8 @@ namespace {
 
 // StockModels.h says where each was measured.
 constexpr std::array kStockModels = {
-    StockModel{"sphere", BuiltinMesh::Sphere, {-52.0006f, -52.0006f, -52.0006f}, {52.0026f, 52.0026f, 52.0026f}},
+    // Sphere.3ds: u = 0 at +z, 0.25 at -x, 0.5 at -z, 0.75 at +x; v = 0 at +y.
+    StockModel{"sphere", BuiltinMesh::Sphere, {-52.0006f, -52.0006f, -52.0006f}, {52.0026f, 52.0026f, 52.0026f}, true},
     StockModel{"teapot", BuiltinMesh::Teapot, {-74.8518f, -38.2332f, -49.8711f}, {85.9982f, 40.5168f, 50.1289f}},
     StockModel{"torus", BuiltinMesh::Torus, {-53.6954f, -39.8554f, -57.9029f}, {54.0770f, 39.8558f, 43.6192f}},
     StockModel{"screenalignedquad", BuiltinMesh::Quad, {-0.999f, -0.999f, 0.001f}, {1.001f, 1.001f, 0.001f}},

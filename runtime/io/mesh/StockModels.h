@@ -24,6 +24,7 @@ struct StockModel {
     std::string_view stem;  // the file name's stem, lower case: "sphere"
     BuiltinMesh standIn;    // the built-in mesh drawn in its place
     glm::vec3 boundsMin, boundsMax;
+    bool mirrorU = false;   // the model's u runs the other way round from the built-in mesh's
 };
 
 // The stock model a file name (its stem, any case: "Sphere", "TEAPOT") names; nullopt for others.
