@@ -149,6 +149,14 @@ TEST_F(RfxCoreRenderGLTest, ColourOutputsBelowShaderModel3AreClampedAsDirect3DsC
     expectUniformOutput(runWorkspace(std::make_unique<Workspace>(std::move(*model3)), RunSettings{{kSize, kSize}}), shown(false));
 }
 
+// d3d_pow.rfx: Direct3D 9's pow raises the absolute value of its base; GLSL's is undefined below 0.
+TEST_F(RfxCoreRenderGLTest, PowRaisesTheAbsoluteValueOfItsBaseAsDirect3D9s) {
+    const std::array<double, 3> base{-0.5, 0.5, -0.25};
+    std::array<double, 3> expected{};
+    for (int c = 0; c < 3; ++c) expected[c] = std::pow(std::abs(base[c]), 3.0);
+    expectUniformOutput(runWorkspace(loadRfx("d3d_pow.rfx", GlProfile::Core), RunSettings{{kSize, kSize}}), expected);
+}
+
 // d3d_stored_matrix.rfx: a matrix RenderMonkey keeps as its editor shows it (translation in
 // VALUE_3 and VALUE_7) translates the point under mul(v, M) in a 1.71 file and under mul(M, v) in
 // a 1.5 one (the same file, its version and multiplication turned round).

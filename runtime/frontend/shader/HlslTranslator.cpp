@@ -12,6 +12,7 @@
 #include "core/IdentifierSearch.h"
 #include "frontend/shader/BracketNesting.h"
 #include "frontend/shader/HlslBraceElision.h"
+#include "frontend/shader/GlslD3D9Pow.h"
 #include "frontend/shader/HlslColorOutputs.h"
 #include "frontend/shader/HlslConstructorAssignments.h"
 #include "frontend/shader/HlslEffectTextures.h"
@@ -317,6 +318,7 @@ Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const
     out.inputs = std::move(translated->inputs);
     out.glsl.code = flattenBlocks(std::move(*translated), initial, unsupported);
     if (stage.stage == ShaderStage::Vertex) out.glsl.code = clampColorOutputs(std::move(out.glsl.code), stage.profile);
+    out.glsl.code = powOfAbsoluteBase(std::move(out.glsl.code));
     out.glsl.files = hlsl.files;
     out.glsl.lineOrigins.assign(static_cast<size_t>(std::count(out.glsl.code.begin(), out.glsl.code.end(), '\n')) + 1, where);
     return {std::move(out), std::move(diagnostics)};

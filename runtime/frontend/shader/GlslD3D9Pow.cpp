@@ -1,0 +1,32 @@
+#include "frontend/shader/GlslD3D9Pow.h"
+
+#include "core/IdentifierSearch.h"
+
+namespace rmfx {
+
+std::string powOfAbsoluteBase(std::string glsl) {
+    bool any = false;
+    for (size_t at = glsl.find("pow"); at != std::string::npos; at = glsl.find("pow", at + 1)) {
+        if ((at > 0 && isIdentifierChar(glsl[at - 1])) || (at + 3 < glsl.size() && isIdentifierChar(glsl[at + 3]))) continue;
+        size_t open = at + 3;
+        while (open < glsl.size() && (glsl[open] == ' ' || glsl[open] == '\t')) ++open;
+        if (open >= glsl.size() || glsl[open] != '(') continue;
+        glsl.replace(at, 3, "rm_d3d9_pow");
+        any = true;
+    }
+    if (!any) return glsl;
+    std::string definitions;
+    for (const char* type : {"float", "vec2", "vec3", "vec4"})
+        definitions += std::string(type) + " rm_d3d9_pow(" + type + " x, " + type + " y) { return pow(abs(x), y); }\n";
+    size_t after = 0;
+    if (glsl.rfind("#version", 0) == 0) after = glsl.find('\n') == std::string::npos ? glsl.size() : glsl.find('\n') + 1;
+    // #extension lines must come before any declaration.
+    for (size_t line = after; glsl.compare(line, 10, "#extension") == 0;) {
+        const size_t end = glsl.find('\n', line);
+        after = line = end == std::string::npos ? glsl.size() : end + 1;
+    }
+    glsl.insert(after, definitions);
+    return glsl;
+}
+
+}  // namespace rmfx
