@@ -5,16 +5,9 @@
 namespace rmfx {
 
 std::string powOfAbsoluteBase(std::string glsl) {
-    bool any = false;
-    for (size_t at = glsl.find("pow"); at != std::string::npos; at = glsl.find("pow", at + 1)) {
-        if ((at > 0 && isIdentifierChar(glsl[at - 1])) || (at + 3 < glsl.size() && isIdentifierChar(glsl[at + 3]))) continue;
-        size_t open = at + 3;
-        while (open < glsl.size() && (glsl[open] == ' ' || glsl[open] == '\t')) ++open;
-        if (open >= glsl.size() || glsl[open] != '(') continue;
-        glsl.replace(at, 3, "rm_d3d9_pow");
-        any = true;
-    }
-    if (!any) return glsl;
+    // SPIRV-Cross names nothing else pow: every whole-word pow is the built-in's call.
+    if (!mentionsIdentifier(glsl, "pow")) return glsl;
+    replaceIdentifier(glsl, "pow", "rm_d3d9_pow");
     std::string definitions;
     for (const char* type : {"float", "vec2", "vec3", "vec4"})
         definitions += std::string(type) + " rm_d3d9_pow(" + type + " x, " + type + " y) { return pow(abs(x), y); }\n";
