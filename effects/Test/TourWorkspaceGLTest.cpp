@@ -1,4 +1,4 @@
-// samples/tour/tour.xml, the example in docs/workspace-format.md that uses every element: it
+// samples/tour/tour.xml, the example in docs/workspace-example.md that uses every element: it
 // validates, renders several frames, and its cube-map sky pass matches the analytic sky the
 // cross image was made from (cross layout, face orientation and view rays together).
 
