@@ -19,9 +19,9 @@
 #include "bench/accuracy/StageIdeal.h"
 #include "bench/accuracy/VariantManifest.h"
 #include "bench/accuracy/VariantRun.h"
-#include "cli/ArgumentParser.h"
+#include "apps/ArgumentParser.h"
 #include "cli/Commands.h"
-#include "cli/OptionValues.h"
+#include "apps/OptionValues.h"
 #include "gl/GlContext.h"
 #include "io/file/AtomicFile.h"
 #include "io/file/OutputPath.h"
@@ -32,6 +32,8 @@
 #include "validation/WorkspaceLoader.h"
 
 namespace rmfx::cli {
+
+using namespace rmfx::apps;  // the shared argument loop and option values
 namespace {
 
 namespace fs = std::filesystem;

@@ -6,9 +6,9 @@
 #include <set>
 #include <sstream>
 
-#include "cli/ArgumentParser.h"
+#include "apps/ArgumentParser.h"
 #include "cli/Commands.h"
-#include "cli/OptionValues.h"
+#include "apps/OptionValues.h"
 #include "core/IdentifierSearch.h"
 #include "frontend/rfx/RfxImporter.h"
 #include "io/media/MediaArguments.h"
@@ -18,6 +18,8 @@
 #include "validation/Validation.h"
 
 namespace rmfx::cli {
+
+using namespace rmfx::apps;  // the shared argument loop and option values
 namespace {
 
 const char* dialectName(ShaderDialect d) {

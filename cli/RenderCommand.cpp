@@ -7,9 +7,9 @@
 #include <optional>
 #include <set>
 
-#include "cli/ArgumentParser.h"
+#include "apps/ArgumentParser.h"
 #include "cli/Commands.h"
-#include "cli/OptionValues.h"
+#include "apps/OptionValues.h"
 #include "core/DiagnosticRepeats.h"
 #include "core/FrameWatchdog.h"
 #include "frontend/rfx/RfxImporter.h"
@@ -29,6 +29,8 @@
 #include "validation/WorkspaceLoader.h"
 
 namespace rmfx::cli {
+
+using namespace rmfx::apps;  // the shared argument loop and option values
 
 namespace {
 

@@ -10,9 +10,9 @@
 #include <iostream>
 #include <optional>
 
-#include "cli/ArgumentParser.h"
+#include "apps/ArgumentParser.h"
 #include "cli/Commands.h"
-#include "cli/OptionValues.h"
+#include "apps/OptionValues.h"
 #include "core/FrameWatchdog.h"
 #include "frontend/replay/ReplayManifest.h"
 #include "gl/GlContext.h"
@@ -24,6 +24,8 @@
 #include "run/ReplayRun.h"
 
 namespace rmfx::cli {
+
+using namespace rmfx::apps;  // the shared argument loop and option values
 namespace {
 
 namespace fs = std::filesystem;

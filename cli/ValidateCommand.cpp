@@ -1,12 +1,14 @@
 #include <iostream>
 
-#include "cli/ArgumentParser.h"
+#include "apps/ArgumentParser.h"
 #include "cli/Commands.h"
-#include "cli/OptionValues.h"
+#include "apps/OptionValues.h"
 #include "io/media/MediaArguments.h"
 #include "validation/WorkspaceLoader.h"
 
 namespace rmfx::cli {
+
+using namespace rmfx::apps;  // the shared argument loop and option values
 
 static std::string counted(size_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);

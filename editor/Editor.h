@@ -3,9 +3,11 @@
 // corner, and beside it (to the right) the ImGui panel: errors, variables, camera, render targets,
 // timing. docs/editor.md describes it.
 
-#include "editor/EditorOptions.h"
+#include "apps/EditorOptions.h"
 
 namespace rmfx::editor {
+
+using apps::EditorOptions;
 
 inline constexpr int panelWidth = 460;        // screen units right of the effect
 inline constexpr int minimumWindowHeight = 720;

@@ -9,7 +9,10 @@ and this check says it for every file at once, with the line. Also:
   - GL, EGL and windowing headers appear only in the gl and run layers and the applications;
   - .rfx internals (frontend/rfx/detail/) are included only from frontend/rfx/;
   - unit tests (Test/*Test.cpp not named *GLTest.cpp) include nothing from gl/ or run/: their
-    executable links no GL library.
+    executable links no GL library;
+  - the applications: apps/ (what rmfx and rmfx-edit share) includes only the runtime layers up to
+    validation and itself; cli/ (rmfx) and editor/ (rmfx-edit) include apps/ and the runtime, never
+    each other.
 Usage: check-layers.py [--root DIR]   (DIR: the repository, default this script's parent's parent)
 """
 import argparse
@@ -20,8 +23,9 @@ import sys
 LAYERS = ["core", "model", "io", "frontend", "graph", "validation", "gl", "run"]
 GL_LAYERS = {"gl", "run"}
 GL_HEADER = re.compile(r"^(epoxy|EGL|GL|GLES\d*|GLFW|X11|wayland)/|^imgui_impl_opengl")
+APPS = {"apps", "cli", "editor"}
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^">]+)[">]')
-SOURCE_ROOTS = ["runtime", "cli", "editor", "bench", "fuzz", "samples", "tests", "reference", "effects"]
+SOURCE_ROOTS = ["runtime", "apps", "cli", "editor", "bench", "fuzz", "samples", "tests", "reference", "effects"]
 
 
 def layer_of_include(path):
@@ -55,6 +59,15 @@ def check_file(root, path, problems):
             problems.append(f'{where}: "{target}": include a layer by its name ("{target[len("runtime/"):]}")')
             continue
         used = layer_of_include(target)
+        app = parts[0] if parts[0] in APPS else None
+        included_app = target.split("/", 1)[0] if "/" in target and target.split("/", 1)[0] in APPS else None
+        if app == "apps" and not is_test and (included_app in ("cli", "editor") or
+                                             (used is not None and LAYERS.index(used) > LAYERS.index("validation"))):
+            problems.append(f'{where}: "{target}": apps/ holds what rmfx and rmfx-edit share, below GL; '
+                            f"it includes the runtime up to validation and apps/ only")
+        if app in ("cli", "editor") and included_app in ("cli", "editor") and included_app != app:
+            problems.append(f'{where}: "{target}": {app}/ and {included_app}/ are separate programs; '
+                            f"what both need belongs in apps/")
         if used is None:
             continue
         if own is not None and not is_test and LAYERS.index(used) > LAYERS.index(own):

@@ -4,6 +4,7 @@
 // they would take; and every flag a message suggests is one a parser takes.
 
 #include <filesystem>
+#include <fstream>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -45,6 +46,27 @@ TEST_F(CliArgumentsGLTest, EachCommandsHelpIsItsUsage) {
     CommandResult replay = runRmfx("replay --help", dir.path());
     EXPECT_TRUE(has(replay.out, "replay options:")) << replay.out;
     EXPECT_FALSE(has(replay.out, "render options:")) << replay.out;
+}
+
+// rmfx edit checks its arguments itself, then starts the editor's program (rmfx-edit) in its place
+// with the same arguments, so that rmfx links no windowing library.
+TEST_F(CliArgumentsGLTest, EditChecksItsArgumentsThenStartsTheEditorsProgramWithThem) {
+    ScratchDir dir;
+    CommandResult bad = runRmfx("edit fx.xml --sise 64x32", dir.path());
+    EXPECT_EQ(bad.status, 1);
+    EXPECT_EQ(bad.err.rfind("rmfx edit: unknown option '--sise'", 0), 0u) << bad.err;
+
+    CommandResult nowhere = runRmfx("edit fx.xml", dir.path(), "RMFX_EDITOR=/nonexistent/rmfx-edit");
+    EXPECT_EQ(nowhere.status, 2);
+    EXPECT_EQ(nowhere.err, "rmfx edit: RMFX_EDITOR names '/nonexistent/rmfx-edit', which is not a program that can be run\n");
+
+    // A stand-in for the editor that says what it was given and exits with a status of its own.
+    std::ofstream(dir / "fake-edit.sh") << "#!/bin/sh\necho \"$@\"\nexit 7\n";
+    std::filesystem::permissions(dir / "fake-edit.sh", std::filesystem::perms::owner_all);
+    CommandResult started = runRmfx("edit fx.xml --size 64x32 --set 'Tint=1 0 0'", dir.path(),
+                                    "RMFX_EDITOR=" + shellQuoted(dir / "fake-edit.sh"));
+    EXPECT_EQ(started.status, 7) << started.err;
+    EXPECT_EQ(started.out, "fx.xml --size 64x32 --set Tint=1 0 0\n");
 }
 
 TEST_F(CliArgumentsGLTest, AMissingWorkspaceIsSaidNotToExist) {

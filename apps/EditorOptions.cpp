@@ -1,13 +1,13 @@
-#include "editor/EditorOptions.h"
+#include "apps/EditorOptions.h"
 
 #include <cstdlib>
 
-#include "cli/ArgumentParser.h"
-#include "cli/OptionValues.h"
+#include "apps/ArgumentParser.h"
+#include "apps/OptionValues.h"
 #include "io/image/ImageOutputPath.h"
 #include "io/media/MediaArguments.h"
 
-namespace rmfx::editor {
+namespace rmfx::apps {
 
 std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& args, std::string* error,
                                                  std::vector<std::string>* names) {
@@ -17,17 +17,17 @@ std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& 
         *error = message;
         return std::nullopt;
     };
-    using Empty = cli::ArgumentParser::EmptyValue;
-    cli::ArgumentParser parser;
-    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, o.media); }, cli::kMediaOptionNames)
-        .option({"--size"}, cli::sizeValue(o.size), Empty::Allowed)
-        .option({"--set"}, cli::overrideValue(o.overrides), Empty::Allowed)
-        .option({"--frames"}, cli::frameCountValue(o.frames), Empty::Allowed)
-        .option({"--dt"}, cli::secondsValue(o.deltaTime, &dtGiven), Empty::Allowed)
+    using Empty = ArgumentParser::EmptyValue;
+    ArgumentParser parser;
+    parser.own([&](const std::vector<std::string>& all, size_t& i) { return takeMediaArgument(all, i, o.media); }, kMediaOptionNames)
+        .option({"--size"}, sizeValue(o.size), Empty::Allowed)
+        .option({"--set"}, overrideValue(o.overrides), Empty::Allowed)
+        .option({"--frames"}, frameCountValue(o.frames), Empty::Allowed)
+        .option({"--dt"}, secondsValue(o.deltaTime, &dtGiven), Empty::Allowed)
         .option({"--effect"}, [&](const std::string& value) { o.effect = value; return ""; }, Empty::Allowed)
-        .option({"--rfx-matrices"}, cli::rfxMatricesValue(o.rfxMatrices))
-        .option({"--input"}, cli::inputValue(o.inputs))
-        .option({"--texture"}, cli::textureValue(o.textures))
+        .option({"--rfx-matrices"}, rfxMatricesValue(o.rfxMatrices))
+        .option({"--input"}, inputValue(o.inputs))
+        .option({"--texture"}, textureValue(o.textures))
         .option({"--split"}, [&](const std::string& value) -> std::string {
             char* end = nullptr;
             const double f = std::strtod(value.c_str(), &end);
@@ -64,4 +64,4 @@ std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& 
     return o;
 }
 
-}  // namespace rmfx::editor
+}  // namespace rmfx::apps

@@ -14,7 +14,7 @@
 #include "validation/ImageInputs.h"
 #include "validation/TextureArguments.h"
 
-namespace rmfx::editor {
+namespace rmfx::apps {
 
 struct EditorOptions {
     std::filesystem::path workspace;
@@ -41,4 +41,4 @@ struct EditorOptions {
 std::optional<EditorOptions> parseEditorOptions(const std::vector<std::string>& args, std::string* error,
                                                 std::vector<std::string>* names = nullptr);
 
-}  // namespace rmfx::editor
+}  // namespace rmfx::apps

@@ -9,12 +9,12 @@
 
 #include <glm/vec2.hpp>
 
-#include "cli/ArgumentParser.h"
+#include "apps/ArgumentParser.h"
 #include "model/Workspace.h"
 #include "validation/ImageInputs.h"
 #include "validation/TextureArguments.h"
 
-namespace rmfx::cli {
+namespace rmfx::apps {
 
 // The names takeMediaArgument (io/media/MediaArguments.h) takes, for ArgumentParser::own.
 inline const std::initializer_list<const char*> kMediaOptionNames{"--media", "--sandbox", "--no-sandbox", "--missing-media",
@@ -36,4 +36,4 @@ ArgumentParser::TakeValue textureValue(std::vector<TextureArgument>& textures);
 // --rfx-matrices row-vector|column-vector: how a RenderMonkey file's HLSL multiplies its matrices.
 ArgumentParser::TakeValue rfxMatricesValue(std::optional<HlslMatrixOrder>& order);
 
-}  // namespace rmfx::cli
+}  // namespace rmfx::apps

@@ -1,8 +1,8 @@
-#include "cli/ArgumentParser.h"
+#include "apps/ArgumentParser.h"
 
 #include <gtest/gtest.h>
 
-namespace rmfx::cli {
+namespace rmfx::apps {
 
 namespace {
 
@@ -112,4 +112,4 @@ TEST(ArgumentParser, PositionalsWithoutAHandlerAreRefused) {
 
 }  // namespace
 
-}  // namespace rmfx::cli
+}  // namespace rmfx::apps

@@ -1,10 +1,10 @@
-#include "cli/OptionValues.h"
+#include "apps/OptionValues.h"
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
-namespace rmfx::cli {
+namespace rmfx::apps {
 
 ArgumentParser::TakeValue sizeValue(glm::ivec2& size) {
     return [&size](const std::string& value) -> std::string {
@@ -84,4 +84,4 @@ ArgumentParser::TakeValue rfxMatricesValue(std::optional<HlslMatrixOrder>& order
     };
 }
 
-}  // namespace rmfx::cli
+}  // namespace rmfx::apps

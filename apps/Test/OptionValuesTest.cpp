@@ -1,8 +1,8 @@
-#include "cli/OptionValues.h"
+#include "apps/OptionValues.h"
 
 #include <gtest/gtest.h>
 
-namespace rmfx::cli {
+namespace rmfx::apps {
 namespace {
 
 TEST(OptionValues, SizeTakesWidthByHeightFromOneToTheLimit) {
@@ -63,4 +63,4 @@ TEST(OptionValues, OverridesKeepTheirOrderAndEverythingAfterTheFirstEquals) {
 }
 
 }  // namespace
-}  // namespace rmfx::cli
+}  // namespace rmfx::apps

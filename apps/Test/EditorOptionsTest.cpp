@@ -1,8 +1,8 @@
-#include "editor/EditorOptions.h"
+#include "apps/EditorOptions.h"
 
 #include <gtest/gtest.h>
 
-namespace rmfx::editor {
+namespace rmfx::apps {
 namespace {
 
 std::string rejection(const std::vector<std::string>& args) {
@@ -68,4 +68,4 @@ TEST(EditorOptions, RejectsWhatItCannotUse) {
     EXPECT_NE(rejection({"a.xml", "--input", ""}).find("--input"), std::string::npos);
 }
 
-}  // namespace rmfx::editor
+}  // namespace rmfx::apps

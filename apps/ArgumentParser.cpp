@@ -1,8 +1,8 @@
-#include "cli/ArgumentParser.h"
+#include "apps/ArgumentParser.h"
 
 #include <algorithm>
 
-namespace rmfx::cli {
+namespace rmfx::apps {
 
 ArgumentParser& ArgumentParser::flag(std::initializer_list<const char*> names, std::function<void()> set) {
     named_.push_back({{names.begin(), names.end()}, false, EmptyValue::Refused, std::move(set), {}});
@@ -73,4 +73,4 @@ std::string ArgumentParser::parse(const std::vector<std::string>& args) const {
     return "";
 }
 
-}  // namespace rmfx::cli
+}  // namespace rmfx::apps

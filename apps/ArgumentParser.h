@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace rmfx::cli {
+namespace rmfx::apps {
 
 class ArgumentParser {
 public:
@@ -57,4 +57,4 @@ private:
     std::string unknownHint_ = " (see rmfx --help)";
 };
 
-}  // namespace rmfx::cli
+}  // namespace rmfx::apps
