@@ -153,6 +153,41 @@ mul_d2 r0.r, r1.a, -r1_bias
     expectWithin("max abs error against the shaders' maths", worst, kUnorm8Conversion + 1e-5);
 }
 
+// ps_1_x constant registers hold [-1, 1] in every version: a ps_1_4 shader reads an RmShaderConstant
+// of (4, -3, 0.5, 2) as (1, -1, 0.5, 1), though its temporaries reach ±8 (KORZINA's CarPaint2Tone
+// feeds its zPos of -5 to lrp so).
+TEST_F(AsmShaderGLTest, Ps14ReadsItsConstantsWithinMinusOneToOne) {
+    const std::string vs = "vs.1.1\nmov oPos, v0\nmov oT0, v1\n";
+    const std::string ps = "ps.1.4\ndef c1, 0.25, -0.5, 1.0, 0.125\nmul r0, c0, c1\n";
+    std::string text = effect(
+        "   <RmVectorVariable NAME=\"Big\" API=\"\" ARTIST_EDITABLE=\"TRUE\" VARIABLE_SEMANTIC=\"\" VALUE_0=\"4\" "
+        "VALUE_1=\"-3\" VALUE_2=\"0.5\" VALUE_3=\"2\" MIN=\"-8\" MAX=\"8\" CLAMP=\"FALSE\" NORMALIZE=\"FALSE\"/>\n" +
+        std::string(kQuadAndStreams) + "   <RmPass NAME=\"Asm\" API=\"D3D\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n" + kStates +
+        "    <RmShader NAME=\"Vertex Shader\" API=\"D3D\" PIXEL_SHADER=\"FALSE\"><RmShaderCode TYPE=\"TEXT\"><![CDATA[" + vs +
+        "]]></RmShaderCode></RmShader>\n"
+        "    <RmShader NAME=\"Pixel Shader\" API=\"D3D\" PIXEL_SHADER=\"TRUE\"><RmShaderCode TYPE=\"TEXT\"><![CDATA[" + ps +
+        "]]></RmShaderCode>\n"
+        "     <RmShaderConstant NAME=\"Big\" API=\"\" REGISTER=\"0\"/>\n"
+        "    </RmShader>\n"
+        "   </RmPass>\n");
+    auto ws = loadFixture("ps14_constants.rfx", text);
+    ASSERT_TRUE(ws);
+    GlRun run = runWorkspace(std::move(ws), RunSettings{{kSize, kSize}});
+    ASSERT_TRUE(run.exec);
+    Image image = readBack(*run.exec, run.ws->outputTargetName());
+    ASSERT_EQ(image.width, kSize);
+    const Vec4 c0{4.0, -3.0, 0.5, 2.0}, c1{0.25, -0.5, 1.0, 0.125};
+    double worst = 0.0;
+    for (int c = 0; c < 4; ++c) {
+        // r0 = clamp(c0) * c1 within ps_1_4's ±8, then the 8-bit output's [0, 1]. Unclamped, c0 would
+        // give (1, 1, 0.5, 0.25).
+        const double expected = clampTo(clampTo(c0[c], -1.0, 1.0) * c1[c], 0.0, 1.0);
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) worst = std::max(worst, std::abs(atGl(image, x, y, c) - expected));
+    }
+    expectWithin("max abs error against (0.25, 0.5, 0.5, 0.125)", worst, kUnorm8Conversion + 1e-5);
+}
+
 // vs_2_0 with dcl_* and a position matrix; ps_2_0 sampling a texture the test writes.
 TEST_F(AsmShaderGLTest, Vs20AndPs20SampleATextureThroughTexld) {
     // Scales the quad by 2 and moves it by (0.5, -0.5): it still covers the viewport. Read as its

@@ -477,7 +477,9 @@ private:
                     at = "clamp(" + a + " + " + i + ", 0, " + std::to_string(constCount_ - 1) + ")";
                 }
                 std::string v = "c[" + at + "]";
-                return ps1x_ ? "clamp(" + v + ", " + range(true) + ", " + range(false) + ")" : v;
+                // ps_1_x constant registers hold [-1, 1] in every version, ps_1_4's included (its
+                // temporaries reach ±8, its constants do not).
+                return ps1x_ ? "clamp(" + v + ", -1.0, 1.0)" : v;
             }
             // ps_1_x colour registers hold [0, 1]; an HLSL vertex shader may have written more.
             case RegisterType::Input: return ps1x_ ? "saturate(v" + i + ")" : "v" + i;
