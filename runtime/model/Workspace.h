@@ -224,6 +224,7 @@ struct DrawCall {
     // The stand-in has the measured size of the RenderMonkey stock model it stands for
     // (io/mesh/StockModels), which the file's shaders and camera were made for: not sized to the camera.
     bool stockSize = false;
+    std::string standsInFor;  // the missing file's reference as the workspace wrote it
     // Its texture coordinates' u turned round (1 - u), as the stock model has them (Sphere.3ds's u
     // runs from +z through -x, the built-in sphere's through +x).
     bool mirrorU = false;

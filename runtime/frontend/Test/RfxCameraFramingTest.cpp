@@ -340,6 +340,21 @@ TEST(RfxCameraFraming, TheViewerCameraIsRecoveredFromAStoredWorldViewProjection)
     EXPECT_FLOAT_EQ(flat.camera.target.x, 10.0f);
 }
 
+// The view axis of a stored View is turned round only when the models lie behind an eye that
+// stands outside them: from inside a model (a stand-in larger than what it stands for), the models'
+// direction says nothing, and the View's own axis is kept.
+TEST(RfxCameraFraming, AnEyeInsideTheModelsKeepsTheStoredViewsAxis) {
+    test::ScratchDir dir;
+    dir.write("big.obj", kBigCube);  // centre (10, 20, 30), radius 86.6
+    const glm::dvec3 eye(5, 15, 10), lookAt(-20, 15, -15);  // looking away from the centre
+    const glm::dmat4 view = glm::lookAtLH(eye, lookAt, glm::dvec3(0, 1, 0));
+    Workspace ws = load(dir, direct3dEffectDrawing("big.obj", stored("view", "View", view)));
+    const OrbitCamera camera(ws.camera);
+    EXPECT_NEAR(glm::length(glm::dvec3(camera.position()) - eye), 0.0, 0.05);
+    const glm::dvec3 axis = glm::normalize(glm::dvec3(ws.camera.target) - glm::dvec3(camera.position()));
+    EXPECT_GT(glm::dot(axis, glm::normalize(lookAt - eye)), 0.999);
+}
+
 // A missing model no measured stock model (Cube.3ds: no public copy was found to measure) is drawn
 // as rmfx's unit cube; through the file's camera 300 units away it would be a dot, so it is scaled
 // to half the view's height there. A measured stock model's stand-in (Sphere.3ds) keeps the stock
@@ -373,6 +388,34 @@ TEST(RfxCameraFraming, AStandInForAnUnmeasuredMissingModelIsSizedToTheFilesCamer
     Workspace sphere = load(dir, effectDrawing("C:\\RenderMonkey\\Media\\Models\\Sphere.3ds", matrices));
     EXPECT_TRUE(sphere.passes[0].draw.stockSize);
     EXPECT_NEAR(sphere.passes[0].draw.meshScale, 52.0016f, 1e-3f);  // the stock sphere's radius, for a unit sphere
+
+    // An author's own "teapot.X" seen from 3.5 units away: the stock teapot (161 units long) would
+    // hold the camera, so the stand-in is sized to the camera as an unmeasured model is (never below
+    // the built-in mesh's own size).
+    const glm::dvec3 near(1.5, 1.0, 3.0);
+    const std::string nearMatrices = stored("view", "View", glm::lookAt(near, glm::dvec3(0.0), glm::dvec3(0, 1, 0))) +
+                                     stored("projection", "Projection", projection);
+    Workspace own = load(dir, effectDrawing("C:\\_KSW\\Media\\primit\\teapot.X", nearMatrices));
+    const DrawCall& teapot = own.passes[0].draw;
+    ASSERT_EQ(teapot.mesh, BuiltinMesh::Teapot);
+    EXPECT_FALSE(teapot.stockSize);
+    EXPECT_EQ(teapot.meshOffset, glm::vec3(0.0f));
+    const Mesh teapotMesh = makeMesh(BuiltinMesh::Teapot);
+    double teapotRadius = 0.0;
+    glm::dvec3 low(1e9), high(-1e9);
+    for (const glm::vec3& p : teapotMesh.positions) {
+        low = glm::min(low, glm::dvec3(p));
+        high = glm::max(high, glm::dvec3(p));
+    }
+    const glm::dvec3 teapotCentre = 0.5 * (low + high);
+    for (const glm::vec3& p : teapotMesh.positions) teapotRadius = std::max(teapotRadius, glm::length(glm::dvec3(p) - teapotCentre));
+    const double nearWanted = 0.5 * glm::length(near - teapotCentre) * std::tan(glm::radians(15.0));
+    const double nearExpected = std::max(teapotRadius, nearWanted);
+    EXPECT_NEAR(teapot.meshScale * teapotRadius, nearExpected, 1e-3 * nearExpected);
+    EXPECT_LT(teapot.meshScale * teapotRadius, glm::length(near - teapotCentre));  // the camera outside it
+    // Seen from 300 units, the same name keeps the stock teapot's size.
+    Workspace far = load(dir, effectDrawing("C:\\_KSW\\Media\\primit\\teapot.X", matrices));
+    EXPECT_TRUE(far.passes[0].draw.stockSize);
 
     Workspace framed = load(dir, effectDrawing("C:\\RenderMonkey\\Media\\Models\\Cube.3ds"));
     EXPECT_EQ(framed.passes[0].draw.meshScale, 1.0f);

@@ -1,6 +1,7 @@
 #include "frontend/rfx/RfxCameraFraming.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -78,22 +79,49 @@ std::optional<OrbitCameraSettings> fromStoredView(const Variable& view, const Sp
     if (!(glm::length(forward) > 1e-6) || !std::isfinite(eye.x + eye.y + eye.z)) return std::nullopt;
     forward = glm::normalize(forward);
     const glm::dvec3 toModels = models.centre - eye;
-    if (haveModels && glm::dot(toModels, forward) < 0.0) forward = -forward;
+    // Which way the view axis points is taken from where the models are, when the eye stands
+    // outside them: from inside (a stand-in larger than the model it stands for), they say nothing.
+    const bool eyeOutside = haveModels && glm::length(toModels) > models.radius;
+    if (eyeOutside && glm::dot(toModels, forward) < 0.0) forward = -forward;
     const double along = haveModels ? std::max(glm::dot(toModels, forward), models.radius * 0.1) : glm::length(eye);
     return orbitLookingAt(glm::vec3(eye), glm::vec3(eye + forward * std::max(along, 1e-3)), glm::vec3(up), base);
+}
+
+// Whether a model reference (a Windows path, any case) names a .3ds file.
+bool isThreeDs(const std::string& reference) {
+    if (reference.size() < 4) return false;
+    std::string tail = reference.substr(reference.size() - 4);
+    for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return tail == ".3ds";
 }
 
 // A built-in mesh standing in for a missing model that is no measured stock model (those have
 // their own size: io/mesh/StockModels) is unit-sized, and RenderMonkey's models and cameras are
 // about a hundred times larger: through the file's own camera it would be a dot. It is scaled to
 // span half the height of the camera's view where it stands (a radius of 41 at RenderMonkey's
-// default 200 units and 45°). Full-screen quads keep their size.
+// default 200 units and 45°). Full-screen quads keep their size. A stock model's stand-in keeps
+// the stock size unless the file is no .3ds (RenderMonkey's stock models all are) and the camera
+// would stand inside it: then it was the author's own model of that name (a "teapot.X" a few units
+// across, seen from 3.5 units away), and it is sized to the camera like any other.
 void sizeStandInsToTheCamera(Workspace& ws) {
     const OrbitCamera camera(ws.camera);
     // |tan|: past 180 degrees the view is turned round at 360 - FOV (RfxCamera.cpp).
     const double halfHeightPerDistance = std::abs(std::tan(ws.camera.fovYDegrees * 0.5 * std::numbers::pi / 180.0));
     for (Pass& pass : ws.passes) {
         DrawCall& draw = pass.draw;
+        if (draw.standIn && draw.stockSize && draw.mesh && *draw.mesh != BuiltinMesh::Quad &&
+            !isThreeDs(draw.standsInFor)) {
+            const Mesh mesh = makeMesh(*draw.mesh);
+            const Sphere unit = boundsOf({&mesh});
+            const glm::dvec3 centre = glm::dvec3(draw.translate) +
+                                      (unit.centre * double(draw.meshScale) + glm::dvec3(draw.meshOffset)) * glm::dvec3(draw.scale);
+            const double radius = unit.radius * double(draw.meshScale) * double(std::max({draw.scale.x, draw.scale.y, draw.scale.z}));
+            if (glm::length(glm::dvec3(camera.position()) - centre) < radius) {
+                draw.stockSize = false;
+                draw.meshScale = 1.0f;
+                draw.meshOffset = glm::vec3(0.0f);
+            }
+        }
         if (!draw.standIn || draw.stockSize || !draw.mesh || *draw.mesh == BuiltinMesh::Quad ||
             *draw.mesh == BuiltinMesh::FullscreenTriangle)
             continue;

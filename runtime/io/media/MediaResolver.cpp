@@ -320,6 +320,7 @@ Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options, c
                                found.error + "; drawing rmfx's built-in '" + builtinMeshName(*standIn) + "' in its place"});
             pass.draw.mesh = standIn;
             pass.draw.standIn = true;
+            pass.draw.standsInFor = pass.draw.file;
             if (std::optional<StockModel> stock = findStockModel(lowerCaseStem(pass.draw.file))) {
                 const MeshPlacement placement = stockModelPlacement(*stock);
                 pass.draw.meshScale = placement.scale;
@@ -336,6 +337,7 @@ Result<void> resolveWorkspaceMedia(Workspace& ws, const MediaOptions& options, c
                                    "' in its place (--missing-media placeholder)"});
             pass.draw.mesh = standIn;
             pass.draw.standIn = true;
+            pass.draw.standsInFor = pass.draw.file;
             pass.draw.file.clear();
         } else {
             out.push_back({Diagnostic::Severity::Error, pass.draw.where, "<draw>", found.error});
