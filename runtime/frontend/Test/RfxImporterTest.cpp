@@ -645,6 +645,22 @@ TEST(RfxImporter, FogStatesBecomeThePasssFixedFunctionFog) {
               std::string::npos);
 }
 
+// D3DRS_ZENABLE 0 turns depth buffering off: no test and no write, though ZWRITEENABLE stays TRUE
+// (a sky sphere drawn with ZENABLE 0 must not hide what is drawn after it). The write state comes
+// back with the next pass that turns ZENABLE on.
+TEST(RfxImporter, ZEnableOffWritesNoDepth) {
+    Result<Workspace> ws = importRfxText(
+        d3dEffect(d3dStatePass(0, d3dState(7, "0")) + d3dStatePass(1, "") + d3dStatePass(2, d3dState(7, "1"))), "t.rfx", ".", {""});
+    ASSERT_TRUE(ws) << formatAll(ws.diagnostics());
+    ASSERT_EQ(ws->passes.size(), 3u);
+    for (int i : {0, 1}) {
+        EXPECT_FALSE(ws->passes[i].depth.test) << i;
+        EXPECT_FALSE(ws->passes[i].depth.write) << i;
+    }
+    EXPECT_TRUE(ws->passes[2].depth.test);
+    EXPECT_TRUE(ws->passes[2].depth.write);  // ZWRITEENABLE was never changed from TRUE
+}
+
 // D3DRS_ALPHATESTENABLE, ALPHAFUNC and ALPHAREF (a byte) make the pass's alpha test, carried
 // over like the other states.
 TEST(RfxImporter, AlphaTestStatesBecomeThePasssAlphaTest) {

@@ -248,6 +248,10 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
             carriedSeparateAlpha = separateAlpha;
         }
         if (effect.api == RfxApi::Direct3D) rfx::finishD3dRenderStates(p.pass, separateAlpha);
+        // Depth buffering off (D3DRS_ZENABLE 0, GL_DepthEnable false) writes no depth either,
+        // whatever the write state holds; that state comes back with the next pass that turns
+        // depth buffering on (it is carried as set).
+        if (!p.pass.depth.test) p.pass.depth.write = false;
         std::map<int, Sampler> stages = carriedStages;
         for (const auto& [stage, sampler] : p.stageObjects) stages[stage] = sampler;
         bindSamplersWithoutObject(p, effect.api, stages, file, diagnostics);
