@@ -163,6 +163,9 @@ struct ShaderSource {
     std::string file;    // relative to the workspace folder; empty for inline code
     std::string code;    // inline code (CDATA or text)
     int codeLine = 0;    // line of the workspace file where inline code starts
+    // Direct3D (an .rfx RmHLSLShader): the constants its compiled code kept, as RenderMonkey listed
+    // them (RmShaderConstant); a constant only dead code reads is not among them. Empty: unknown.
+    std::vector<std::string> constantTable;
     SourceLocation where;
 };
 

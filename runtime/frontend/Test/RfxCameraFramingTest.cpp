@@ -108,6 +108,31 @@ TEST(RfxCameraFraming, TheViewerCameraIsRecoveredFromAStoredViewMatrix) {
     EXPECT_NEAR(turned.camera.fovYDegrees, 200.0, 1e-3);
 }
 
+// The clip planes are the stored projection's (RenderMonkey's viewer: near 1, far 1000), from a
+// Projection, or a ViewProjection or WorldViewProjection without one, in either convention: a light
+// 866 units away is inside them, where planes set to hold the models would clip it.
+TEST(RfxCameraFraming, TheClipPlanesAreTheStoredProjections) {
+    test::ScratchDir dir;
+    dir.write("big.obj", kBigCube);
+    const glm::dvec3 eye(120, 80, 300), centre(10, 20, 30);
+    for (const bool direct3d : {false, true}) {
+        SCOPED_TRACE(direct3d ? "Direct3D" : "OpenGL");
+        const glm::dmat4 view = direct3d ? glm::lookAtLH(eye, centre, glm::dvec3(0, 1, 0)) : glm::lookAt(eye, centre, glm::dvec3(0, 1, 0));
+        const glm::dmat4 projection = direct3d ? glm::perspectiveLH_ZO(glm::radians(30.0), 1.0, 1.0, 1000.0)
+                                               : glm::perspectiveRH_NO(glm::radians(30.0), 1.0, 1.0, 1000.0);
+        auto drawing = [&](const std::string& matrices) {
+            return direct3d ? direct3dEffectDrawing("big.obj", matrices) : effectDrawing("big.obj", matrices);
+        };
+        for (const std::string& matrices : {stored("v", "View", view) + stored("p", "Projection", projection),
+                                            stored("vp", "ViewProjection", projection * view),
+                                            stored("wvp", "WorldViewProjection", projection * view)}) {
+            Workspace ws = load(dir, drawing(matrices));
+            EXPECT_NEAR(ws.camera.nearPlane, 1.0, 1e-3);
+            EXPECT_NEAR(ws.camera.farPlane, 1000.0, 0.5);
+        }
+    }
+}
+
 // A View left at the identity (alexey-malov/cg-course's NPR-optimized.rfx keeps one no shader
 // reads) was never filled by RenderMonkey's viewer, which stands away from the models: it would put
 // the eye at the origin, inside them. It is passed over, and the models are framed as without it;
@@ -308,6 +333,24 @@ TEST(RfxCameraFraming, TheMatricesTheShadersReadDecideOverAStaleView) {
     Workspace unused = load(dir, declaredOnly);
     EXPECT_NEAR(glm::length(glm::dvec3(OrbitCamera(unused.camera).position()) - eye), 0.0, 0.05);
     EXPECT_NEAR(unused.camera.fovYDegrees, 50.0, 1e-3);
+
+    // A View read only by dead code (its result never reaches an output) is not in the constant
+    // table RenderMonkey kept for the compiled shader (RmShaderConstant); the ViewProjection there
+    // decides (myMater's прикольнвй эффект.rfx: a stale View under a reflection overwritten later).
+    const std::string deadCode =
+        "<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\" ACTIVE_EFFECT=\"W.E\" XML_VERSION=\"RenderMonkey 1.71\">\n"
+        "<RmModelData NAME=\"M\" FILE_NAME=\"big.obj\"/>\n<RmDirectXEffect NAME=\"E\" API=\"D3D\">\n" +
+        stale + stored("matViewProjection", "ViewProjection", viewProjection) +
+        "<RmPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n<RmModelReference NAME=\"M\"/>\n"
+        "<RmHLSLShader NAME=\"V\" PIXEL_SHADER=\"FALSE\" TARGET=\"vs_2_0\" ENTRY_POINT=\"main\"><RmShaderCode><![CDATA["
+        "float4x4 matView; float4x4 matViewProjection; float4 main(float4 p : POSITION) : POSITION {"
+        " float4 unused = mul(p, matView); return mul(p, matViewProjection); }"
+        "]]></RmShaderCode><RmShaderConstant NAME=\"matViewProjection\" REGISTER=\"0\"/></RmHLSLShader>\n"
+        "<RmHLSLShader NAME=\"F\" PIXEL_SHADER=\"TRUE\" TARGET=\"ps_2_0\" ENTRY_POINT=\"main\"><RmShaderCode><![CDATA["
+        "float4 main() : COLOR { return 1; }]]></RmShaderCode></RmHLSLShader>\n</RmPass>\n</RmDirectXEffect>\n"
+        "</RmEffectWorkspace>\n</RENDER_MONKEY>\n";
+    Workspace dead = load(dir, deadCode);
+    EXPECT_NEAR(glm::length(glm::dvec3(OrbitCamera(dead.camera).position()) - eye), 0.0, 0.05);
 }
 
 // Files that kept only WorldViewProjection (P·V·W), with the World beside it or without one (the

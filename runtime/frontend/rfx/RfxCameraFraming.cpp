@@ -7,6 +7,7 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -167,6 +168,31 @@ std::optional<OrbitCameraSettings> fromStoredViewProjection(const Variable& view
     return s;
 }
 
+// The near and far planes of a stored perspective projection, alone or times a View (and World):
+// its depth row is a·(its w row) + c, w being the distance along the view, so z/w runs over
+// Direct3D's 0…1 (OpenGL's -1…1) from the near plane to the far one. Nothing for a matrix whose
+// rows are not so (orthographic) or whose planes make no sense.
+std::optional<std::pair<double, double>> clipPlanesOf(const Variable& stored, CameraConvention convention) {
+    const auto& m = stored.value.data;
+    auto row = [&](int i) {
+        return glm::dvec4(m[static_cast<size_t>(4 * i)], m[static_cast<size_t>(4 * i + 1)], m[static_cast<size_t>(4 * i + 2)],
+                          m[static_cast<size_t>(4 * i + 3)]);
+    };
+    const glm::dvec4 z = row(2), w = row(3);
+    const glm::dvec3 wAxis(w);
+    const double wLength2 = glm::dot(wAxis, wAxis);
+    if (!(wLength2 > 1e-18) || !std::isfinite(wLength2)) return std::nullopt;
+    const double a = glm::dot(glm::dvec3(z), wAxis) / wLength2;
+    if (glm::length(glm::dvec3(z) - a * wAxis) > 1e-4 * std::max(1.0, glm::length(glm::dvec3(z)))) return std::nullopt;
+    const double c = z.w - a * w.w;
+    const double nearPlane = convention == CameraConvention::Direct3D ? -c / a : c / (-1.0 - a);
+    const double farPlane = c / (1.0 - a);
+    if (!std::isfinite(nearPlane) || !std::isfinite(farPlane) || !(nearPlane > 0.0) || !(farPlane > nearPlane * 1.0001) ||
+        farPlane / nearPlane > 1e8)
+        return std::nullopt;
+    return std::pair{nearPlane, farPlane};
+}
+
 // A stored matrix's data (element (row i, column j) at 4i + j, as fromStoredView reads it) as a
 // matrix, and back.
 glm::dmat4 matrixOf(const std::array<float, 16>& data) {
@@ -231,13 +257,23 @@ void frameDrawnModels(Workspace& ws) {
     const Sphere models = boundsOf(framed);
     const bool haveModels = !framed.empty() && models.radius > 0.0 && std::isfinite(models.radius);
 
-    // The camera RenderMonkey's viewer last showed, where the file kept its matrices: its clip
-    // planes are not kept, so they are set to hold the models.
+    // The camera RenderMonkey's viewer last showed, where the file kept its matrices. Its clip
+    // planes are those of the stored Projection (or ViewProjection, or WorldViewProjection), which
+    // the shaders' own scaling and shadow maps were made for; without one they are set to hold the
+    // models.
     auto adopt = [&](const OrbitCameraSettings& camera) {
         ws.camera = camera;
-        const double reach = haveModels ? glm::length(models.centre - glm::dvec3(camera.target)) + models.radius : 0.0;
-        ws.camera.farPlane = static_cast<float>(std::max<double>(ws.camera.farPlane, (ws.camera.distance + reach) * 2.0));
-        ws.camera.nearPlane = static_cast<float>(std::max(ws.camera.distance * 1e-3, 1e-3));
+        std::optional<std::pair<double, double>> planes;
+        for (const char* semantic : {"Projection", "ViewProjection", "WorldViewProjection"})
+            if (const Variable* m = stored(ws, semantic, ValueType::Mat4); m && !planes) planes = clipPlanesOf(*m, camera.convention);
+        if (planes) {
+            ws.camera.nearPlane = static_cast<float>(planes->first);
+            ws.camera.farPlane = static_cast<float>(planes->second);
+        } else {
+            const double reach = haveModels ? glm::length(models.centre - glm::dvec3(camera.target)) + models.radius : 0.0;
+            ws.camera.farPlane = static_cast<float>(std::max<double>(ws.camera.farPlane, (ws.camera.distance + reach) * 2.0));
+            ws.camera.nearPlane = static_cast<float>(std::max(ws.camera.distance * 1e-3, 1e-3));
+        }
         sizeStandInsToTheCamera(ws);
     };
     // A View (or ViewInverse) left at the identity was never filled by the viewer, which stands
@@ -260,11 +296,19 @@ void frameDrawnModels(Workspace& ws) {
     // A matrix a shader declares and never uses is not read (Nebula.rfx declares a stale
     // ViewInverse beside the WorldViewProjection it multiplies by): its name must come up again
     // after the declaration.
+    // A Direct3D shader's constant table (RmShaderConstant) says it outright: RenderMonkey lists
+    // the constants the compiled code kept, so a View only dead code reads is not there.
     auto read = [&](const Variable* v) {
         if (!v) return false;
         for (const Pass& pass : ws.passes)
-            for (const ShaderSource& shader : pass.shaders)
-                if (mentionCount(shader.code, v->name) >= 2) return true;
+            for (const ShaderSource& shader : pass.shaders) {
+                if (!shader.constantTable.empty()) {
+                    if (std::find(shader.constantTable.begin(), shader.constantTable.end(), v->name) != shader.constantTable.end())
+                        return true;
+                } else if (mentionCount(shader.code, v->name) >= 2) {
+                    return true;
+                }
+            }
         return false;
     };
     // The camera of a stored P·V, or of P·V·W with the World taken off.

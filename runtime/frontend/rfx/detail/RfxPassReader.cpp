@@ -149,6 +149,8 @@ private:
             s.profile = c.text("TARGET").value_or("");
             s.matrixOrder = hlslMatrices_;
             constantsOf(c, pixelShader(c));
+            for (const XMLElement* x = c.xml()->FirstChildElement("RmShaderConstant"); x; x = x->NextSiblingElement("RmShaderConstant"))
+                if (const char* name = x->Attribute("NAME")) s.constantTable.emplace_back(name);
         }
         std::optional<RfxShaderCode> code = shaderCodeOf(c);
         if (!code) return;
