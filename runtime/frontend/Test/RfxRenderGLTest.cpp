@@ -155,6 +155,18 @@ TEST_F(RfxCoreRenderGLTest, PowRaisesTheAbsoluteValueOfItsBaseAsDirect3D9s) {
     std::array<double, 3> expected{};
     for (int c = 0; c < 3; ++c) expected[c] = std::pow(std::abs(base[c]), 3.0);
     expectUniformOutput(runWorkspace(loadRfx("d3d_pow.rfx", GlProfile::Core), RunSettings{{kSize, kSize}}), expected);
+
+    // 0^0 is 1 in Direct3D 9 (undefined in GLSL, NaN on Mesa); any other base to the 0th too.
+    std::string text = readText(sourceDir() / "tests" / "rfx" / "d3d_pow.rfx");
+    for (const auto& [from, to] : {std::pair<std::string, std::string>{"VALUE_0=\"-0.5\"", "VALUE_0=\"0.0\""},
+                                   {"VALUE=\"3.0\"", "VALUE=\"0.0\""}}) {
+        ASSERT_NE(text.find(from), std::string::npos) << from;
+        text.replace(text.find(from), from.size(), to);
+    }
+    ScratchDir dir;
+    Result<Workspace> zeroth = loadWorkspace(dir.write("pow0.rfx", text));
+    ASSERT_TRUE(zeroth.ok()) << formatAll(zeroth.diagnostics());
+    expectUniformOutput(runWorkspace(std::make_unique<Workspace>(std::move(*zeroth)), RunSettings{{kSize, kSize}}), {1.0, 1.0, 1.0});
 }
 
 // d3d_stored_matrix.rfx: a matrix RenderMonkey keeps as its editor shows it (translation in

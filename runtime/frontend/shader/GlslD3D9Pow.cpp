@@ -9,8 +9,12 @@ std::string powOfAbsoluteBase(std::string glsl) {
     if (!mentionsIdentifier(glsl, "pow")) return glsl;
     replaceIdentifier(glsl, "pow", "rm_d3d9_pow");
     std::string definitions;
-    for (const char* type : {"float", "vec2", "vec3", "vec4"})
-        definitions += std::string(type) + " rm_d3d9_pow(" + type + " x, " + type + " y) { return pow(abs(x), y); }\n";
+    // 0^0 is 1, as Direct3D 9 gives it (fxc folds pow(x, 0); the instruction's exp(0 * log(0))
+    // multiplies by zero first), where GLSL leaves it undefined (NaN on Mesa).
+    definitions += "float rm_d3d9_pow(float x, float y) { return y == 0.0 ? 1.0 : pow(abs(x), y); }\n";
+    for (const char* type : {"vec2", "vec3", "vec4"})
+        definitions += std::string(type) + " rm_d3d9_pow(" + type + " x, " + type + " y) { return mix(pow(abs(x), y), " + type +
+                       "(1.0), equal(y, " + type + "(0.0))); }\n";
     size_t after = 0;
     if (glsl.rfind("#version", 0) == 0) after = glsl.find('\n') == std::string::npos ? glsl.size() : glsl.find('\n') + 1;
     // #extension lines must come before any declaration.
