@@ -844,6 +844,27 @@ TEST(RfxImporter, TheHlslMatrixOrderFollowsWhatTheCodeMultiplies) {
     EXPECT_EQ(formatAll(asked.diagnostics()).find("mul("), std::string::npos) << formatAll(asked.diagnostics());
 }
 
+// A file upgraded from 1.5 keeps shaders writing mul(M, v) beside new ones writing mul(v, M)
+// (atMOS_PassMethod_03: the planet's passes one way, the ring's the other): each shader whose own
+// code says one order gets it, unwarned; a shader that says nothing gets the effect's.
+TEST(RfxImporter, EachShaderGetsTheMatrixOrderItsOwnCodeMultiplies) {
+    std::string text = matrixOrderEffect("RenderMonkey 1.71", "return mul(Mvp, p);");
+    const std::string pass = text.substr(text.find("<RmPass"), text.find("</RmPass>") + 9 - text.find("<RmPass"));
+    std::string ring = pass, quiet = pass;
+    ring.replace(ring.find("PASS_INDEX=\"0\""), 14, "PASS_INDEX=\"1\"");
+    ring.replace(ring.find("return mul(Mvp, p);"), 19, "return mul(p, Mvp);");
+    quiet.replace(quiet.find("PASS_INDEX=\"0\""), 14, "PASS_INDEX=\"2\"");
+    quiet.replace(quiet.find("return mul(Mvp, p);"), 19, "return p;");
+    text.insert(text.find("</RmPass>") + 9, "\n" + ring + "\n" + quiet);
+    Result<Workspace> ws = importRfxText(text, "t.rfx", ".", {""});
+    ASSERT_TRUE(ws) << formatAll(ws.diagnostics());
+    ASSERT_EQ(ws->passes.size(), 3u);
+    EXPECT_EQ(ws->passes[0].shaders[0].matrixOrder, HlslMatrixOrder::ColumnVector);
+    EXPECT_EQ(ws->passes[1].shaders[0].matrixOrder, HlslMatrixOrder::RowVector);
+    EXPECT_EQ(ws->passes[2].shaders[0].matrixOrder, HlslMatrixOrder::RowVector);  // the 1.71 version's
+    EXPECT_EQ(formatAll(ws.diagnostics()).find("mul("), std::string::npos) << formatAll(ws.diagnostics());
+}
+
 // The test file written in LensFlare_10's way: both shaders of its pass get the order its vertex
 // shader's mul(g_matViewProj, v) asks for, with a warning naming that line.
 TEST(RfxImporter, AFileWrittenForTheOtherMatrixOrderIsReadByItsCode) {

@@ -188,11 +188,15 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
     readCamera(effect, file, diagnostics, ws);
 
     // Only Direct3D effects have HLSL (and only they are warned about a missing version).
-    const HlslMatrixOrder hlslMatrices =
-        effect.api != RfxApi::Direct3D ? HlslMatrixOrder::RowVector
-        : options.hlslMatrices         ? *options.hlslMatrices
-                                       : hlslMatrixOrderOf(RfxElement(effect.workspace, file, diagnostics),
-                                                           matrixOrderEvidence(RfxElement(effect.element, file, diagnostics), scopes));
+    std::map<const XMLElement*, HlslMatrixOrder> shaderOrders;
+    HlslMatrixOrder hlslMatrices = HlslMatrixOrder::RowVector;
+    if (effect.api == RfxApi::Direct3D && options.hlslMatrices) {
+        hlslMatrices = *options.hlslMatrices;
+    } else if (effect.api == RfxApi::Direct3D) {
+        const MatrixOrderEvidence evidence = matrixOrderEvidence(RfxElement(effect.element, file, diagnostics), scopes);
+        hlslMatrices = hlslMatrixOrderOf(RfxElement(effect.workspace, file, diagnostics), evidence);
+        shaderOrders = shaderMatrixOrders(evidence);
+    }
     std::vector<ReadPass> passes;
     for (const XMLElement* x = effect.element->FirstChildElement(); x; x = x->NextSiblingElement())
         if (isPassTag(x->Name())) {
@@ -202,7 +206,7 @@ Workspace importEffect(const RfxEffectEntry& effect, const std::filesystem::path
                 e.error("a " + std::string(rfxApiName(effect.api)) + " effect takes <" + std::string(expected) + "> passes");
                 continue;
             }
-            if (auto p = readPass(e, effect.api, scopes, hlslMatrices)) passes.push_back(std::move(*p));
+            if (auto p = readPass(e, effect.api, scopes, hlslMatrices, shaderOrders)) passes.push_back(std::move(*p));
         }
     // Textures and renderable textures a pass declares itself join the workspace's: rmfx has one
     // namespace for them, so a second declaration of a name with another file is a warning.

@@ -1,5 +1,7 @@
 #include "frontend/rfx/detail/RfxMatrixOrder.h"
 
+#include <algorithm>
+
 #include <charconv>
 #include <string_view>
 #include <tuple>
@@ -69,6 +71,8 @@ MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleS
                 const Variable* a = matrixVariable(first);
                 const Variable* b = matrixVariable(second);
                 auto note = [&](bool columnVector) {
+                    std::pair<int, int>& own = evidence.byShader[x];
+                    ++(columnVector ? own.first : own.second);
                     std::optional<MatrixOrderEvidence::Use>& use = columnVector ? evidence.columnVector : evidence.rowVector;
                     if (!use) use = MatrixOrderEvidence::Use{{effect.file(), code->line + call.line - 1}, "mul(" + call.first + ", " + call.second + ")", 0};
                     ++use->count;
@@ -113,10 +117,21 @@ MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleS
     return evidence;
 }
 
+std::map<const tinyxml2::XMLElement*, HlslMatrixOrder> shaderMatrixOrders(const MatrixOrderEvidence& code) {
+    std::map<const tinyxml2::XMLElement*, HlslMatrixOrder> orders;
+    for (const auto& [shader, counts] : code.byShader)
+        if ((counts.first > 0) != (counts.second > 0))
+            orders[shader] = counts.first > 0 ? HlslMatrixOrder::ColumnVector : HlslMatrixOrder::RowVector;
+    return orders;
+}
+
 HlslMatrixOrder hlslMatrixOrderOf(const RfxElement& workspace, const MatrixOrderEvidence& code) {
     const std::optional<std::string> version = workspace.text("XML_VERSION", false);
     const std::optional<HlslMatrixOrder> byVersion = versionOrder(version);
     const std::string versionText = version ? "\"" + *version + "\"" : std::string("missing");
+    const bool oneShaderSaysBoth = std::any_of(code.byShader.begin(), code.byShader.end(),
+                                               [](const auto& shader) { return shader.second.first > 0 && shader.second.second > 0; });
+    if (code.columnVector && code.rowVector && !oneShaderSaysBoth) return byVersion.value_or(HlslMatrixOrder::RowVector);
     if (code.columnVector && code.rowVector) {
         const HlslMatrixOrder order = byVersion.value_or(HlslMatrixOrder::RowVector);
         const auto& c = *code.columnVector;

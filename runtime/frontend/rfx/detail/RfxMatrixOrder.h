@@ -15,8 +15,10 @@
 // D3DX does, and its template wrote mul(Input.Position, matViewProjection). Of the public files
 // tried, one saved by 1.71 writes mul(g_matViewProj, v) (docs/rendermonkey.md, "Matrices").
 
+#include <map>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "frontend/rfx/detail/RfxElement.h"
 #include "frontend/rfx/detail/RfxPassReader.h"
@@ -32,6 +34,8 @@ struct MatrixOrderEvidence {
         int count = 0;         // uses of this order
     };
     std::optional<Use> columnVector, rowVector;  // mul(M, v); mul(v, M)
+    // Each <RmHLSLShader>'s own count of each order (mul(M, v), mul(v, M)).
+    std::map<const tinyxml2::XMLElement*, std::pair<int, int>> byShader;
 };
 
 // From the <RmHLSLShader> code of the effect's passes, the matrices looked up among each pass's own
@@ -42,5 +46,11 @@ MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleS
 // later ones, and for a missing or unreadable XML_VERSION, with a warning). A warning names the
 // line where the code goes against the version, or where it says both.
 HlslMatrixOrder hlslMatrixOrderOf(const RfxElement& workspace, const MatrixOrderEvidence& code);
+
+// The shaders whose own code multiplies their semantic matrices one way round only: each is passed
+// them for that order, whatever the rest of the effect does. RenderMonkey compiled a shader with
+// its own flags (COMPILER_FLAGS), and files upgraded from 1.5 keep such shaders, writing
+// mul(M, v), beside new ones writing mul(v, M) (MY_PROJ/PLANET/atMOS_PassMethod_03.rfx).
+std::map<const tinyxml2::XMLElement*, HlslMatrixOrder> shaderMatrixOrders(const MatrixOrderEvidence& code);
 
 }  // namespace rmfx::rfx

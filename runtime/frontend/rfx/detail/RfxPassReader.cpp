@@ -30,8 +30,9 @@ const T* findIn(const std::vector<const Declarations*>& levels, Member member, c
 
 class PassReader {
 public:
-    PassReader(const RfxElement& e, RfxApi api, const VisibleScopes& scopes, HlslMatrixOrder hlslMatrices)
-        : e_(e), api_(api), hlslMatrices_(hlslMatrices) {
+    PassReader(const RfxElement& e, RfxApi api, const VisibleScopes& scopes, HlslMatrixOrder hlslMatrices,
+               const std::map<const XMLElement*, HlslMatrixOrder>& shaderOrders)
+        : e_(e), api_(api), hlslMatrices_(hlslMatrices), shaderOrders_(shaderOrders) {
         // What the pass declares itself comes first: RenderMonkey let a pass hold its own
         // texture variables, renderable textures, models and stream maps.
         scopes_.levels.push_back(&out_.declared);
@@ -147,7 +148,8 @@ private:
             s.dialect = ShaderDialect::Hlsl;
             s.entryPoint = c.text("ENTRY_POINT").value_or("main");
             s.profile = c.text("TARGET").value_or("");
-            s.matrixOrder = hlslMatrices_;
+            const auto own = shaderOrders_.find(c.xml());
+            s.matrixOrder = own != shaderOrders_.end() ? own->second : hlslMatrices_;
             constantsOf(c, pixelShader(c));
             for (const XMLElement* x = c.xml()->FirstChildElement("RmShaderConstant"); x; x = x->NextSiblingElement("RmShaderConstant"))
                 if (const char* name = x->Attribute("NAME")) s.constantTable.emplace_back(name);
@@ -373,6 +375,7 @@ private:
     const RfxElement& e_;
     RfxApi api_;
     HlslMatrixOrder hlslMatrices_;
+    const std::map<const XMLElement*, HlslMatrixOrder>& shaderOrders_;
     ReadPass out_;
     VisibleScopes scopes_;  // the pass's own declarations (out_.declared), then the levels above
     Declarations passLevel_;
@@ -408,8 +411,9 @@ const ModelDeclaration* VisibleScopes::model(const std::string& name) const {
     return findIn<ModelDeclaration>(levels, &Declarations::models, name);
 }
 
-std::optional<ReadPass> readPass(const RfxElement& e, RfxApi api, const VisibleScopes& scopes, HlslMatrixOrder hlslMatrices) {
-    return PassReader(e, api, scopes, hlslMatrices).read();
+std::optional<ReadPass> readPass(const RfxElement& e, RfxApi api, const VisibleScopes& scopes, HlslMatrixOrder hlslMatrices,
+                                 const std::map<const XMLElement*, HlslMatrixOrder>& shaderOrders) {
+    return PassReader(e, api, scopes, hlslMatrices, shaderOrders).read();
 }
 
 }  // namespace rmfx::rfx

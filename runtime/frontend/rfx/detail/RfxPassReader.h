@@ -55,7 +55,9 @@ struct ReadPass {
 constexpr int d3dSamplerStage(int index, bool vertexTexture) { return vertexTexture ? 257 + index : index; }
 
 // Shaders are left empty when the pass has none (the importer gives it the previous pass's).
-// HLSL shaders get `hlslMatrices` (rfx::hlslMatrixOrderOf); assembly ones are always ColumnVector.
-std::optional<ReadPass> readPass(const RfxElement& e, RfxApi api, const VisibleScopes& scopes, HlslMatrixOrder hlslMatrices);
+// HLSL shaders get their own order from `shaderOrders` (rfx::shaderMatrixOrders), else
+// `hlslMatrices` (rfx::hlslMatrixOrderOf); assembly ones are always ColumnVector.
+std::optional<ReadPass> readPass(const RfxElement& e, RfxApi api, const VisibleScopes& scopes, HlslMatrixOrder hlslMatrices,
+                                 const std::map<const tinyxml2::XMLElement*, HlslMatrixOrder>& shaderOrders = {});
 
 }  // namespace rmfx::rfx
