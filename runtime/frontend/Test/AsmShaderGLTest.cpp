@@ -141,12 +141,13 @@ mul_d2 r0.r, r1.a, -r1_bias
                 t0[i] = clampTo(d, 0.0, 1.0);  // texcoord: saturate(xyz), w = 1
             }
             t0[3] = 1.0;
-            for (int i = 0; i < 4; ++i) r1[i] = clampTo(2.0 * t0[i] * c1[i], -1.0, 1.0);
+            // ps_1_1's temporaries hold ±8 (PixelShader1xMaxValue), its constants ±1.
+            for (int i = 0; i < 4; ++i) r1[i] = clampTo(2.0 * t0[i] * c1[i], -8.0, 8.0);
             for (int i = 0; i < 3; ++i) r0[i] = clampTo(r1[i] + (2.0 * tint[i] - 1.0), 0.0, 1.0);
             r0[3] = c2[2];
-            for (int i = 0; i < 3; ++i) r0[i] = clampTo((1.0 - r0[i]) * (c2[i] - 0.5) + r0[i], -1.0, 1.0);
-            for (int i = 0; i < 4; ++i) r1[i] = clampTo(r0[i] - c1[i], -1.0, 1.0);
-            r0[0] = clampTo(r1[3] * -(r1[0] - 0.5) * 0.5, -1.0, 1.0);
+            for (int i = 0; i < 3; ++i) r0[i] = clampTo((1.0 - r0[i]) * (c2[i] - 0.5) + r0[i], -8.0, 8.0);
+            for (int i = 0; i < 4; ++i) r1[i] = clampTo(r0[i] - c1[i], -8.0, 8.0);
+            r0[0] = clampTo(r1[3] * -(r1[0] - 0.5) * 0.5, -8.0, 8.0);
             for (int c = 0; c < 4; ++c)
                 worst = std::max(worst, std::abs(atGl(image, x, y, c) - clampTo(r0[c], 0.0, 1.0)));
         }

@@ -217,10 +217,10 @@ TEST(D3DAsmToHlsl, Vs11ScalarsReadWWithoutASwizzleAndTheAddressRegisterRoundsToN
 TEST(D3DAsmToHlsl, InstructionModifiersAndPs1xRanges) {
     HlslFromAsm h = hlslOf("ps.1.1\ndef c0, 2, 0, 0, 0\nmul_x4 r0, v0, c0\nadd_sat r1, v0_bias, 1-v1\nmov_d2 r0.a, r1.b\n");
     ASSERT_TRUE(h.ok()) << firstError(h.messages);
-    // ps_1_1 reads constants clamped to [-1, 1], colours to [0, 1], and keeps temps in [-1, 1].
-    EXPECT_EQ(lineOf(h.hlsl, 3), "r0 = clamp((saturate(v0) * clamp(c[0], -1.0, 1.0)) * 4.0, -1.0, 1.0);");
+    // ps_1_1 reads constants clamped to [-1, 1], colours to [0, 1], and keeps temps in [-8, 8].
+    EXPECT_EQ(lineOf(h.hlsl, 3), "r0 = clamp((saturate(v0) * clamp(c[0], -1.0, 1.0)) * 4.0, -8.0, 8.0);");
     EXPECT_EQ(lineOf(h.hlsl, 4), "r1 = saturate((saturate(v0) - 0.5) + (1.0 - saturate(v1)));");
-    EXPECT_TRUE(contains(lineOf(h.hlsl, 5), "r0.w = (clamp((r1.zzzz) * 0.5, -1.0, 1.0)).w;")) << lineOf(h.hlsl, 5);
+    EXPECT_TRUE(contains(lineOf(h.hlsl, 5), "r0.w = (clamp((r1.zzzz) * 0.5, -8.0, 8.0)).w;")) << lineOf(h.hlsl, 5);
     EXPECT_TRUE(contains(lineOf(h.hlsl, 5), "oC0 = r0;"));
     EXPECT_TRUE(contains(lineOf(h.hlsl, 1), "float4 v0 : COLOR0, float4 v1 : COLOR1, out float4 oC0 : COLOR0")) << lineOf(h.hlsl, 1);
     HlslFromAsm p14 = hlslOf("ps.1.4\ntexld r0, t0\nmul_x8 r0, r0, r0\n");
@@ -284,8 +284,8 @@ TEST(D3DAsmToHlsl, TextureInstructionsOfEachPixelShaderVersion) {
                              "texreg2ar t5, t0\nmov r0, t0\n",
                              {}, {{"base", 0, SamplerKind::Texture2D}, {"env", 4, SamplerKind::Cube}});
     ASSERT_TRUE(p11.ok()) << firstError(p11.messages);
-    EXPECT_EQ(lineOf(p11.hlsl, 2), "t0 = clamp(tex2D(base, (rm_tc0).xy), -1.0, 1.0);");
-    EXPECT_EQ(lineOf(p11.hlsl, 3), "t1 = clamp(saturate(float4(rm_tc1.xyz, 1.0)), -1.0, 1.0);");
+    EXPECT_EQ(lineOf(p11.hlsl, 2), "t0 = clamp(tex2D(base, (rm_tc0).xy), -8.0, 8.0);");
+    EXPECT_EQ(lineOf(p11.hlsl, 3), "t1 = clamp(saturate(float4(rm_tc1.xyz, 1.0)), -8.0, 8.0);");
     EXPECT_EQ(lineOf(p11.hlsl, 4), "clip((rm_tc2).xyz);");
     EXPECT_EQ(lineOf(p11.hlsl, 5), "t3.x = dot(rm_tc3.xyz, ((2.0 * t0 - 1.0)).xyz);");
     EXPECT_TRUE(contains(lineOf(p11.hlsl, 6), "texCUBE(env, (float4(t3.x, dot(rm_tc4.xyz")) << lineOf(p11.hlsl, 6);
@@ -322,11 +322,11 @@ TEST(D3DAsmToHlsl, BumpEnvironmentInstructionsReadTheStagesBumpMatrix) {
                            {{"bump", 0, SamplerKind::Texture2D}, bumped, {"other", 2, SamplerKind::Texture2D}});
     ASSERT_TRUE(h.ok()) << firstError(h.messages);
     EXPECT_EQ(lineOf(h.hlsl, 3), "t1 = clamp(tex2D(env, (float4(rm_tc1.x + 0.5 * (t0).x + -0.25 * (t0).y, rm_tc1.y + 0.25 * "
-                                 "(t0).x + 2.0 * (t0).y, 0.0, 1.0)).xy), -1.0, 1.0);");
+                                 "(t0).x + 2.0 * (t0).y, 0.0, 1.0)).xy), -8.0, 8.0);");
     // Stage 2 has the default matrix, scale and offset: 0.
     EXPECT_EQ(lineOf(h.hlsl, 4), "t2 = clamp((tex2D(other, (float4(rm_tc2.x + 0.0 * ((2.0 * t0 - 1.0)).x + 0.0 * ((2.0 * t0 - 1.0)).y, "
                                  "rm_tc2.y + 0.0 * ((2.0 * t0 - 1.0)).x + 0.0 * ((2.0 * t0 - 1.0)).y, 0.0, 1.0)).xy)) * "
-                                 "(((2.0 * t0 - 1.0)).z * 0.0 + 0.0), -1.0, 1.0);");
+                                 "(((2.0 * t0 - 1.0)).z * 0.0 + 0.0), -8.0, 8.0);");
     HlslFromAsm b = hlslOf("ps.1.4\ntexld r1, t0\ntexcrd r0.rgb, t1\nbem r1.xy, r0, r1\nphase\ntexld r1, r1\n", {}, {bumped});
     ASSERT_TRUE(b.ok()) << firstError(b.messages);
     EXPECT_EQ(lineOf(b.hlsl, 4), "r1.xy = (clamp(float4((r0).x + 0.5 * (r1).x + -0.25 * (r1).y, (r0).y + 0.25 * (r1).x + 2.0 * "

@@ -494,10 +494,10 @@ private:
         }
     }
 
-    std::string range(bool low) const {
-        if (ps14_) return low ? "-8.0" : "8.0";
-        return low ? "-1.0" : "1.0";
-    }
+    // The range of ps_1_x temporaries and texture registers: ±PixelShader1xMaxValue, which is 8 on
+    // the hardware RenderMonkey ran on (ATI's since the R200, and every Direct3D 9 card, which
+    // runs ps_1_4 and must reach 8 there), for ps_1_1…1_3 too (RAZD's PTM shader reaches 2).
+    std::string range(bool low) const { return low ? "-8.0" : "8.0"; }
 
     std::string source(const Source& s, int offset = 0) {
         std::string x = registerRead(s, offset);
