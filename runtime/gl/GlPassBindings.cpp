@@ -9,6 +9,7 @@
 #include "gl/GlFormats.h"
 #include "gl/GlProgramBuild.h"
 #include "model/VertexUsageName.h"
+#include "validation/GlslangCheck.h"
 
 namespace rmfx {
 namespace {
@@ -136,7 +137,7 @@ Result<void> bindUniforms(GpuPass& gp, const UniformSources& sources) {
             continue;
         }
         UniformSource source = resolveUniform(sources.ws, pass, name);
-        if (std::holds_alternative<Unbound>(source) && gp.initializedUniforms.count(name)) continue;
+        if (std::holds_alternative<Unbound>(source) && keepsInitialValue(gp.initializedUniforms, name)) continue;
         if (unboundUniformIsZero(pass, source, type)) continue;  // validation warned: GL's initial zero stays
         if (std::string why = bindingMismatch(sources.ws, pass, source, name, type, active.arraySize); !why.empty()) {
             error(pass.where, passLabel(pass), why);

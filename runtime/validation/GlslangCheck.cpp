@@ -137,4 +137,8 @@ std::set<std::string> uniformsWithInitializers(const PassProgramSource& program)
     return out;
 }
 
+bool keepsInitialValue(const std::set<std::string>& initialized, const std::string& name) {
+    return initialized.count(name) > 0 || initialized.count(name.substr(0, name.find_first_of("[."))) > 0;
+}
+
 }  // namespace rmfx

@@ -33,4 +33,8 @@ std::optional<SourceLocation> findUniformDeclaration(const PassProgramSource& pr
 // HLSL translator writes for initialised globals): left unbound, they keep that value.
 std::set<std::string> uniformsWithInitializers(const PassProgramSource& program);
 
+// Whether the active uniform `name` ("k", "w[3]", "wave[0].phase") belongs to one of `initialized`
+// (by the name before its first '[' or '.').
+bool keepsInitialValue(const std::set<std::string>& initialized, const std::string& name);
+
 }  // namespace rmfx

@@ -387,7 +387,7 @@ private:
             active.insert(u.name);
             if (u.name.rfind("rmfx_effect_", 0) == 0 && ws_.findEffect(u.name.substr(12))) continue;
             UniformSource source = resolveUniform(ws_, pass, u.name);
-            if (std::holds_alternative<Unbound>(source) && initialized.count(u.name)) continue;  // keeps its value
+            if (std::holds_alternative<Unbound>(source) && keepsInitialValue(initialized, u.name)) continue;  // keeps its value
             std::string why = bindingMismatch(ws_, pass, source, u.name, u.type, u.arraySize);
             if (why.empty()) continue;
             SourceLocation where = findUniformDeclaration(*program, u.name).value_or(pass.where);

@@ -322,6 +322,41 @@ float4 main(float2 uv : TEXCOORD0) : COLOR {
         expectNear(pixel(out, x, 2), {0.125 + 0.375 + 0.625, 0.25 + 0.5 + 0.75, 0.75, 6.0 + 3.0}, 1e-6, "pixel " + std::to_string(x));
 }
 
+// A struct array's initial value is the constants' default, as for scalars and vectors
+// (ocean_from_composer's `Wave wave[2] = {{1, 1, 0.5, float2(-1, 0)}, …}`, whose phase and
+// direction no variable feeds); nothing is warned as fed zero.
+TEST_F(HlslGLTest, AStructArrayKeepsItsInitialValue) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x4">
+  <target name="out" format="rgba32f" size="4x4"/>
+  <pass name="hlsl" target="out">
+    <shader stage="fragment"><![CDATA[
+struct Wave {
+  float freq;
+  float amp;
+  float phase;
+  float2 dir;
+};
+Wave wave[2] = {
+   { 1.0, 1.0, 0.5, float2(-1, 0) },
+   { 2.0, 0.5, 1.3, float2(-0.7, 0.7) }
+};
+float4 main(float2 uv : TEXCOORD0) : COLOR {
+    return float4(wave[0].phase + wave[1].freq, wave[1].amp, wave[1].dir.y - wave[0].dir.x, wave[1].phase);
+}
+]]></shader>
+  </pass>
+</workspace>)";
+    std::unique_ptr<Workspace> ws = hlslWorkspace(xml);
+    ASSERT_TRUE(ws);
+    const std::string warnings = formatAll(validateWorkspace(*ws).diagnostics());
+    EXPECT_EQ(warnings.find("fed zero"), std::string::npos) << warnings;
+    EXPECT_EQ(warnings.find("not carried over"), std::string::npos) << warnings;
+    RefImage out = renderOut(xml);
+    ASSERT_EQ(out.width, 4);
+    for (int x = 0; x < 4; ++x)
+        expectNear(pixel(out, x, 1), {0.5 + 2.0, 0.5, 0.7 + 1.0, 1.3}, 1e-6, "pixel " + std::to_string(x));
+}
+
 // fxc accepted a constructor as an assignment's target (ATI's Iridescent Butterfly:
 // `float4(vNormal, fGloss) = tex2D(…)`): the value's components go to the names in order.
 TEST_F(HlslGLTest, AConstructorAssignedToSplitsTheValueAmongItsNamesAsFxcDid) {

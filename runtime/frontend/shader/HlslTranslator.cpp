@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <sstream>
 #include <optional>
 #include <vector>
 
@@ -76,11 +77,40 @@ std::string literal(const std::string& type, double value) {
 // the HLSL initial value, or nullopt with `why` when it cannot be one. An HLSL matrix's row i is
 // its GLSL matrix's column i (the layout above), so the values, listed row by row in HLSL, fill
 // GLSL's constructor column by column in the same order.
+// The member types, in order, of the struct `type` as SpirvToGlsl wrote it (`struct Wave\n{\n
+// float freq;\n …\n};`); nullopt unless every member is a scalar, vector or float matrix.
+std::optional<std::vector<std::string>> structMemberTypes(const std::string& glsl, const std::string& type) {
+    const size_t start = glsl.find("struct " + type + "\n{\n");
+    if (start == std::string::npos) return std::nullopt;
+    const size_t end = glsl.find("\n};", start);
+    if (end == std::string::npos) return std::nullopt;
+    std::vector<std::string> types;
+    std::istringstream body(glsl.substr(start, end - start));
+    std::string line;
+    std::getline(body, line);  // struct NAME
+    std::getline(body, line);  // {
+    while (std::getline(body, line)) {
+        std::istringstream words(line);
+        std::string memberType, member;
+        if (!(words >> memberType >> member) || components(memberType) == 0 || member.find('[') != std::string::npos)
+            return std::nullopt;
+        types.push_back(memberType);
+    }
+    if (types.empty()) return std::nullopt;
+    return types;
+}
+
 std::optional<std::string> glslInitializer(const std::string& type, const std::string& arraySuffix,
-                                           const HlslGlobalInitializer& init, std::string& why) {
-    const int n = components(type);
+                                           const HlslGlobalInitializer& init, const std::string& glsl, std::string& why) {
+    // A struct (HLSL's `Wave wave[2] = {{1, 1, 0.5, float2(-1, 0)}, …}`): its members' values in
+    // declaration order, as the brace list flattens them.
+    const std::optional<std::vector<std::string>> members = components(type) == 0 ? structMemberTypes(glsl, type) : std::nullopt;
+    int n = components(type);
+    if (members)
+        for (const std::string& m : *members) n += components(m);
     if (n == 0) {
-        why = "rmfx carries over the initial values of scalars, vectors, float matrices and arrays of them only";
+        why = "rmfx carries over the initial values of scalars, vectors, float matrices, structs of them and arrays of "
+              "those only";
         return std::nullopt;
     }
     if (!init.constant) {
@@ -106,11 +136,24 @@ std::optional<std::string> glslInitializer(const std::string& type, const std::s
         why = std::to_string(count) + " values for a " + init.declaredType + arraySuffix;
         return std::nullopt;
     }
-    auto element = [&](size_t first) {
-        if (n == 1) return literal(type, init.values[first]);
-        std::string out = type + "(";
-        for (int i = 0; i < n; ++i) out += (i ? ", " : "") + literal(type, init.values[count == 1 ? 0 : first + static_cast<size_t>(i)]);
+    auto value = [&](const std::string& valueType, size_t first) {
+        const int k = components(valueType);
+        if (k == 1) return literal(valueType, init.values[count == 1 ? 0 : first]);
+        std::string out = valueType + "(";
+        for (int i = 0; i < k; ++i) out += (i ? ", " : "") + literal(valueType, init.values[count == 1 ? 0 : first + static_cast<size_t>(i)]);
         return out + ")";
+    };
+    auto element = [&](size_t first) {
+        if (members) {
+            std::string out = type + "(";
+            size_t at = first;
+            for (size_t m = 0; m < members->size(); ++m) {
+                out += (m ? ", " : "") + value((*members)[m], at);
+                at += static_cast<size_t>(components((*members)[m]));
+            }
+            return out + ")";
+        }
+        return value(type, first);
     };
     if (arraySuffix.empty()) return " = " + element(0);
     std::string out = " = " + type + arraySuffix + "(";
@@ -140,7 +183,7 @@ std::string flattenBlocks(SpirvGlsl spirv, const std::map<std::string, HlslGloba
             std::string value;
             if (auto it = initial.find(member.name); it != initial.end()) {
                 std::string why;
-                if (auto v = glslInitializer(member.type, member.arraySuffix, it->second, why)) value = *v;
+                if (auto v = glslInitializer(member.type, member.arraySuffix, it->second, glsl, why)) value = *v;
                 else unsupported(it->second, why);
             }
             uniforms += "uniform " + member.type + " " + member.name + member.arraySuffix + value + ";\n";
