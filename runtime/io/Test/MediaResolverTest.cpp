@@ -114,6 +114,14 @@ TEST(MediaResolver, SearchPathByTrailingComponentsLongestFirstThenByFileName) {
                   (media / "Models/ScreenAlignedQuad.3ds").string() + ", " +
                   (media / "Old/ScreenAlignedQuad.3ds").string() + " under the media folder " + media.string() +
                   "; write more of its path, or give a narrower --media folder");
+    // Copies of one file, byte for byte, are that file: the first of them in path order.
+    dir.write("Examples/Media/Models/Teapot.3ds", "teapot");
+    dir.write("Examples/Media/Copy/Teapot.3ds", "teapot");
+    MediaResolver copies(dir / "effects", {{media}, false});
+    EXPECT_EQ(resolve(copies, "C:\\RM\\Teapot.3ds"), (media / "Copy/Teapot.3ds").string());
+    dir.write("Examples/Media/Copy/Teapot.3ds", "teapoT");
+    MediaResolver differing(dir / "effects", {{media}, false});
+    EXPECT_EQ(resolve(differing, "C:\\RM\\Teapot.3ds").rfind("error: image file 'C:\\RM\\Teapot.3ds' is ambiguous", 0), 0u);
 }
 
 TEST(MediaResolver, TheWorkspaceFolderComesFirstThenTheMediaFoldersInOrder) {

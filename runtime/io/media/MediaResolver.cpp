@@ -5,6 +5,8 @@
 #include "model/BuiltinMeshNames.h"
 
 #include <algorithm>
+#include <array>
+#include <fstream>
 #include <memory>
 #include <cctype>
 
@@ -127,6 +129,26 @@ std::optional<fs::path> walkIgnoringCase(const fs::path& base, const std::vector
 
 bool liesInside(const fs::path& file, const fs::path& folder) { return inside(resolved(file), resolved(folder)); }
 
+namespace {
+
+// Whether two files hold the same bytes (one file linked twice among them).
+bool sameContent(const fs::path& a, const fs::path& b) {
+    std::error_code error;
+    if (fs::equivalent(a, b, error)) return true;
+    const auto size = fs::file_size(a, error);
+    if (error || fs::file_size(b, error) != size || error) return false;
+    std::ifstream x(a, std::ios::binary), y(b, std::ios::binary);
+    std::array<char, 65536> p{}, q{};
+    while (x && y) {
+        x.read(p.data(), p.size());
+        y.read(q.data(), q.size());
+        if (x.gcount() != y.gcount() || !std::equal(p.begin(), p.begin() + x.gcount(), q.begin())) return false;
+    }
+    return !x.bad() && !y.bad();
+}
+
+}  // namespace
+
 MediaResolver::MediaResolver(fs::path workspaceFolder, MediaOptions options)
     : folder_(workspaceFolder.empty() ? fs::path(".") : std::move(workspaceFolder)), options_(std::move(options)) {
     roots_.push_back(resolved(folder_));
@@ -224,6 +246,13 @@ MediaResolver::Found MediaResolver::resolve(const std::string& reference, const 
         }
         if (matches.size() > 1) {
             std::sort(matches.begin(), matches.end());
+            // Copies of one file (a repository keeping RenderMonkey's Teapot.3ds in several
+            // folders) are that file: the first is taken.
+            if (std::all_of(matches.begin() + 1, matches.end(), [&](const fs::path& m) { return sameContent(matches[0], m); })) {
+                std::error_code ignored;
+                fs::path file = fs::absolute(matches[0], ignored).lexically_normal();
+                return checked(file, file, reference, noun);
+            }
             ambiguity = "the file name " + quoted(name) + " matches";
             for (size_t i = 0; i < matches.size(); ++i) ambiguity += (i ? ", " : " ") + matches[i].string();
             ambiguity += " under the media folder " + dir.string() + "; write more of its path, or give a narrower --media folder";
