@@ -792,15 +792,19 @@ TEST(RfxImporter, TheHlslMatrixOrderFollowsWhatTheCodeMultiplies) {
         // Nothing comes after the projection: a matrix ending in it stands last whatever the other
         // (simpleCubeMapReflection-3, saved by 1.71: mul(view_proj_matrix, matWorld), matWorld stored).
         {"RenderMonkey 1.71", "float4x4 m = mul(Mvp, S);\nreturn mul(m, p);", HlslMatrixOrder::ColumnVector,
-         "t.rfx:13 multiplies mul(Mvp, S) (1 such in the effect)"},
+         "t.rfx:13 multiplies mul(Mvp, S) (2 such in the effect)"},
         {"RenderMonkey 1.5", "float4x4 W = S;\nreturn mul(p, mul(W, Mvp));", HlslMatrixOrder::RowVector,
          "t.rfx:14 multiplies mul(W, Mvp) (1 such in the effect)"},
         // Two semantic matrices: the one applied later on the left is M·v's order (skyBox_11,
         // saved by 1.71, writes m = mul(matViewProjection, matWorld); mul(m, Pos)).
         {"RenderMonkey 1.71", "float4x4 m = mul(Mvp, Wld);\nreturn mul(m, p);", HlslMatrixOrder::ColumnVector,
-         "t.rfx:13 multiplies mul(Mvp, Wld) (1 such in the effect)"},
+         "t.rfx:13 multiplies mul(Mvp, Wld) (2 such in the effect)"},
         {"RenderMonkey 1.5", "float4x4 m = mul(Wld, Mvp);\nreturn mul(p, m);", HlslMatrixOrder::RowVector,
-         "t.rfx:13 multiplies mul(Wld, Mvp) (1 such in the effect)"},
+         "t.rfx:13 multiplies mul(Wld, Mvp) (2 such in the effect)"},
+        // A local computed from a semantic matrix counts as that matrix beside a vector: the product
+        // says v·M's order, the position M·v's (rainBow_transp-1, saved by 1.5), and the version decides.
+        {"RenderMonkey 1.5", "float4x4 mtr = mul(S, Mvp);\nreturn mul(mtr, p);", HlslMatrixOrder::ColumnVector,
+         "both ways round (mul(mtr, p) at t.rfx:14, 1 such; mul(S, Mvp) at t.rfx:13, 1 such): they are passed for mul(M, v)"},
         {"RenderMonkey 1.71", "float4 q = mul(Mvp, mul(S, p)) + mul(mul(p, S), Mvp);\nreturn mul(Mvp, p) + mul(p.xyzw, Mvp);",
          HlslMatrixOrder::RowVector,
          "both ways round (mul(Mvp, p) at t.rfx:14, 1 such; mul(p.xyzw, Mvp) at t.rfx:14, 1 such): they are passed for mul(v, M), "

@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include <charconv>
+#include <regex>
+#include <set>
 #include <string_view>
 #include <tuple>
 #include <utility>
@@ -66,6 +68,25 @@ MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleS
             std::optional<RfxShaderCode> code = shaderCodeOf(RfxElement(x, effect.file(), quiet));
             if (!code) continue;
             const std::map<std::string, MulOperandShape> declared = declaredShapes(code->code);
+            // Local matrices computed from a semantic one (`float4x4 mtr = mul(matWorld,
+            // view_proj_matrix);`): a vector multiplied by such a local says the order as the
+            // semantic matrix itself would (rainBow_transp-1 then writes mul(mtr, Pos)).
+            std::set<std::string> derived;
+            {
+                static const std::regex assignment(R"(\b(?:float4x4|matrix)\s+(\w+)\s*=\s*([^;]*);)");
+                const std::string& text = code->code;
+                for (std::sregex_iterator it(text.begin(), text.end(), assignment), end; it != end; ++it) {
+                    const std::string value = (*it)[2].str();
+                    static const std::regex word(R"(\b[A-Za-z_]\w*\b)");
+                    for (std::sregex_iterator w(value.begin(), value.end(), word), wend; w != wend; ++w) {
+                        const Variable* m = matrixVariable({w->str(), false});
+                        if (m && !m->semantic.empty() && findSemantic(m->semantic)) {
+                            derived.insert((*it)[1].str());
+                            break;
+                        }
+                    }
+                }
+            }
             for (const MulCall& call : mulCalls(code->code)) {
                 const MulOperandVariable first = mulOperandVariable(call.first), second = mulOperandVariable(call.second);
                 const Variable* a = matrixVariable(first);
@@ -101,7 +122,14 @@ MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleS
                     else if (right && right->second == 2 && beforeProjection(a, left)) note(false);
                     continue;
                 }
-                if (!a && !b) continue;
+                if (!a && !b) {
+                    // A local computed from a semantic matrix, on one side of a vector.
+                    const bool leftDerived = derived.count(first.name) > 0, rightDerived = derived.count(second.name) > 0;
+                    if (leftDerived != rightDerived &&
+                        mulOperandShape(leftDerived ? call.second : call.first, declared) == MulOperandShape::Vector)
+                        note(leftDerived);
+                    continue;
+                }
                 // Only a vector on the other side says it: World on the left of a matrix is v·W·VP's
                 // order, on the left of a vector M·v's.
                 if (mulOperandShape(a ? call.second : call.first, declared) != MulOperandShape::Vector) continue;
