@@ -867,6 +867,17 @@ TEST(RfxImporter, EachShaderGetsTheMatrixOrderItsOwnCodeMultiplies) {
     EXPECT_EQ(ws->passes[1].shaders[0].matrixOrder, HlslMatrixOrder::RowVector);
     EXPECT_EQ(ws->passes[2].shaders[0].matrixOrder, HlslMatrixOrder::RowVector);  // the 1.71 version's
     EXPECT_EQ(formatAll(ws.diagnostics()).find("mul("), std::string::npos) << formatAll(ws.diagnostics());
+
+    // A shader that says both ways round (a product for v·M, a local through it for M·v) gets
+    // mul(M, v) when compiled with COMPILER_FLAGS 32 (rainBow_transp-1's copy saved by 1.71), else
+    // the version's order.
+    for (const auto& [flags, expected] : {std::pair{"32", HlslMatrixOrder::ColumnVector}, std::pair{"0", HlslMatrixOrder::RowVector}}) {
+        std::string both = matrixOrderEffect("RenderMonkey 1.71", "float4x4 mtr = mul(S, Mvp);\nreturn mul(mtr, p);");
+        both.replace(both.find("ENTRY_POINT=\"main\""), 0, "COMPILER_FLAGS=\"" + std::string(flags) + "\" ");
+        Result<Workspace> flagged = importRfxText(both, "t.rfx", ".", {""});
+        ASSERT_TRUE(flagged) << formatAll(flagged.diagnostics());
+        EXPECT_EQ(flagged->passes[0].shaders[0].matrixOrder, expected) << flags;
+    }
 }
 
 // The test file written in LensFlare_10's way: both shaders of its pass get the order its vertex

@@ -147,9 +147,15 @@ MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleS
 
 std::map<const tinyxml2::XMLElement*, HlslMatrixOrder> shaderMatrixOrders(const MatrixOrderEvidence& code) {
     std::map<const tinyxml2::XMLElement*, HlslMatrixOrder> orders;
-    for (const auto& [shader, counts] : code.byShader)
-        if ((counts.first > 0) != (counts.second > 0))
+    for (const auto& [shader, counts] : code.byShader) {
+        if ((counts.first > 0) != (counts.second > 0)) {
             orders[shader] = counts.first > 0 ? HlslMatrixOrder::ColumnVector : HlslMatrixOrder::RowVector;
+        } else if (counts.first > 0 && (shader->UnsignedAttribute("COMPILER_FLAGS") & kColumnVectorFlag) != 0) {
+            // A shader that says both ways round, compiled with the flag RenderMonkey gave the
+            // shaders of 1.5 files: mul(M, v), as every such shader that says one way writes.
+            orders[shader] = HlslMatrixOrder::ColumnVector;
+        }
+    }
     return orders;
 }
 

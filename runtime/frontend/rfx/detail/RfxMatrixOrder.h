@@ -51,6 +51,11 @@ HlslMatrixOrder hlslMatrixOrderOf(const RfxElement& workspace, const MatrixOrder
 // them for that order, whatever the rest of the effect does. RenderMonkey compiled a shader with
 // its own flags (COMPILER_FLAGS), and files upgraded from 1.5 keep such shaders, writing
 // mul(M, v), beside new ones writing mul(v, M) (MY_PROJ/PLANET/atMOS_PassMethod_03.rfx).
+// A shader whose code says both ways round gets mul(M, v) when RenderMonkey compiled it with
+// COMPILER_FLAGS bit 32: in the public files every shader with that flag whose code says one way
+// writes mul(M, v) (over 200 of them; none writes only mul(v, M)), and every shader without it,
+// mul(v, M).
 std::map<const tinyxml2::XMLElement*, HlslMatrixOrder> shaderMatrixOrders(const MatrixOrderEvidence& code);
+inline constexpr unsigned kColumnVectorFlag = 32;
 
 }  // namespace rmfx::rfx
