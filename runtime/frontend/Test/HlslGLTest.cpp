@@ -357,6 +357,33 @@ float4 main(float2 uv : TEXCOORD0) : COLOR {
         expectNear(pixel(out, x, 1), {0.5 + 2.0, 0.5, 0.7 + 1.0, 1.3}, 1e-6, "pixel " + std::to_string(x));
 }
 
+// A pixel shader compiled for ps_1_x reads its constants clamped to [-1, 1], as Direct3D 9's ps_1_x
+// constant registers held them (USE_RenderTarget's Motion Blur: a ps_1_4 light direction of
+// (4.2, 1.4, -0.8)); for ps_2_0 they are as set.
+TEST_F(HlslGLTest, APs1xPixelShaderReadsItsConstantsWithinMinusOneToOne) {
+    const std::string xml = R"(<workspace version="1" name="hlsl" size="4x4">
+  <vec4 name="k" value="4 -3 0.5 2"/>
+  <target name="out" format="rgba32f" size="4x4"/>
+  <pass name="hlsl" target="out">
+    <shader stage="fragment"><![CDATA[
+float4 k;
+float4 main(float2 uv : TEXCOORD0) : COLOR { return k * float4(0.25, -0.25, 1.0, 0.125); }
+]]></shader>
+  </pass>
+</workspace>)";
+    for (const auto& [profile, expected] : {std::pair{std::string("ps_1_4"), glm::dvec4(0.25, 0.25, 0.5, 0.125)},
+                                            std::pair{std::string("ps_2_0"), glm::dvec4(1.0, 0.75, 0.5, 0.25)}}) {
+        std::unique_ptr<Workspace> ws = hlslWorkspace(xml);
+        ASSERT_TRUE(ws);
+        for (ShaderSource& s : ws->passes[0].shaders)
+            if (s.stage == ShaderStage::Fragment) s.profile = profile;
+        GlRun run = runWorkspace(std::move(ws), RunSettings());
+        ASSERT_TRUE(run.exec) << profile;
+        const RefImage out = readRef(run, "out");
+        for (int x = 0; x < 4; ++x) expectNear(pixel(out, x, 1), expected, 1e-6, profile + " pixel " + std::to_string(x));
+    }
+}
+
 // fxc accepted a constructor as an assignment's target (ATI's Iridescent Butterfly:
 // `float4(vNormal, fGloss) = tex2D(…)`): the value's components go to the names in order.
 TEST_F(HlslGLTest, AConstructorAssignedToSplitsTheValueAmongItsNamesAsFxcDid) {

@@ -16,6 +16,7 @@
 #include "frontend/shader/GlslD3D9Pow.h"
 #include "frontend/shader/HlslColorOutputs.h"
 #include "frontend/shader/HlslConstructorAssignments.h"
+#include "frontend/shader/HlslPs1xConstants.h"
 #include "frontend/shader/HlslEffectTextures.h"
 #include "frontend/shader/HlslSamplerTypes.h"
 #include "frontend/shader/HlslWritableGlobals.h"
@@ -361,6 +362,7 @@ Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const
     out.inputs = std::move(translated->inputs);
     out.glsl.code = flattenBlocks(std::move(*translated), initial, unsupported);
     if (stage.stage == ShaderStage::Vertex) out.glsl.code = clampColorOutputs(std::move(out.glsl.code), stage.profile);
+    else out.glsl.code = clampPs1xConstants(std::move(out.glsl.code), stage.profile);
     out.glsl.code = powOfAbsoluteBase(std::move(out.glsl.code));
     out.glsl.files = hlsl.files;
     out.glsl.lineOrigins.assign(static_cast<size_t>(std::count(out.glsl.code.begin(), out.glsl.code.end(), '\n')) + 1, where);
