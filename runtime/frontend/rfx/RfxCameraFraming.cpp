@@ -110,29 +110,33 @@ void sizeStandInsToTheCamera(Workspace& ws) {
     const double halfHeightPerDistance = std::abs(std::tan(ws.camera.fovYDegrees * 0.5 * std::numbers::pi / 180.0));
     for (Pass& pass : ws.passes) {
         DrawCall& draw = pass.draw;
-        if (draw.standIn && draw.stockSize && draw.mesh && *draw.mesh != BuiltinMesh::Quad &&
-            !isThreeDs(draw.standsInFor)) {
-            const Mesh mesh = makeMesh(*draw.mesh);
-            const Sphere unit = boundsOf({&mesh});
+        if (!draw.standIn || !draw.mesh || *draw.mesh == BuiltinMesh::Quad || *draw.mesh == BuiltinMesh::FullscreenTriangle)
+            continue;
+        const Mesh mesh = makeMesh(*draw.mesh);
+        const Sphere bounds = boundsOf({&mesh});
+        if (draw.stockSize && !isThreeDs(draw.standsInFor)) {
             const glm::dvec3 centre = glm::dvec3(draw.translate) +
-                                      (unit.centre * double(draw.meshScale) + glm::dvec3(draw.meshOffset)) * glm::dvec3(draw.scale);
-            const double radius = unit.radius * double(draw.meshScale) * double(std::max({draw.scale.x, draw.scale.y, draw.scale.z}));
+                                      (bounds.centre * double(draw.meshScale) + glm::dvec3(draw.meshOffset)) * glm::dvec3(draw.scale);
+            const double radius = bounds.radius * double(draw.meshScale) * double(std::max({draw.scale.x, draw.scale.y, draw.scale.z}));
             if (glm::length(glm::dvec3(camera.position()) - centre) < radius) {
                 draw.stockSize = false;
                 draw.meshScale = 1.0f;
                 draw.meshOffset = glm::vec3(0.0f);
             }
         }
-        if (!draw.standIn || draw.stockSize || !draw.mesh || *draw.mesh == BuiltinMesh::Quad ||
-            *draw.mesh == BuiltinMesh::FullscreenTriangle)
-            continue;
-        const Mesh mesh = makeMesh(*draw.mesh);
-        const Sphere bounds = boundsOf({&mesh});
+        if (draw.stockSize) continue;
         const double distance = glm::length(glm::dvec3(camera.position()) - (glm::dvec3(draw.translate) + bounds.centre * glm::dvec3(draw.scale)));
         const double wanted = 0.5 * distance * halfHeightPerDistance;
         if (!(bounds.radius > 0.0) || !(wanted > bounds.radius) || !std::isfinite(wanted)) continue;
         draw.meshScale = static_cast<float>(wanted / bounds.radius);
     }
+}
+
+// Row i of a stored matrix's data (element (row i, column j) at 4i + j, as fromStoredView reads it).
+glm::dvec4 rowOf(const Variable& stored, int i) {
+    const auto& m = stored.value.data;
+    return glm::dvec4(m[static_cast<size_t>(4 * i)], m[static_cast<size_t>(4 * i + 1)], m[static_cast<size_t>(4 * i + 2)],
+                      m[static_cast<size_t>(4 * i + 3)]);
 }
 
 // The camera from a stored ViewProjection alone (P·V, a symmetric perspective): in either
@@ -142,12 +146,7 @@ void sizeStandInsToTheCamera(Workspace& ws) {
 // field of view. A matrix whose last row is no direction (an orthographic one) gives nothing.
 std::optional<OrbitCameraSettings> fromStoredViewProjection(const Variable& viewProjection, const Sphere& models,
                                                             bool haveModels, const OrbitCameraSettings& base) {
-    const auto& m = viewProjection.value.data;
-    auto row = [&](int i) {
-        return glm::dvec4(m[static_cast<size_t>(4 * i)], m[static_cast<size_t>(4 * i + 1)], m[static_cast<size_t>(4 * i + 2)],
-                          m[static_cast<size_t>(4 * i + 3)]);
-    };
-    const glm::dvec4 x = row(0), y = row(1), w = row(3);
+    const glm::dvec4 x = rowOf(viewProjection, 0), y = rowOf(viewProjection, 1), w = rowOf(viewProjection, 3);
     const double wLength = glm::length(glm::dvec3(w));
     if (!(wLength > 1e-9) || !std::isfinite(wLength)) return std::nullopt;
     const glm::dvec3 forward = glm::dvec3(w) / wLength;
@@ -173,12 +172,7 @@ std::optional<OrbitCameraSettings> fromStoredViewProjection(const Variable& view
 // Direct3D's 0…1 (OpenGL's -1…1) from the near plane to the far one. Nothing for a matrix whose
 // rows are not so (orthographic) or whose planes make no sense.
 std::optional<std::pair<double, double>> clipPlanesOf(const Variable& stored, CameraConvention convention) {
-    const auto& m = stored.value.data;
-    auto row = [&](int i) {
-        return glm::dvec4(m[static_cast<size_t>(4 * i)], m[static_cast<size_t>(4 * i + 1)], m[static_cast<size_t>(4 * i + 2)],
-                          m[static_cast<size_t>(4 * i + 3)]);
-    };
-    const glm::dvec4 z = row(2), w = row(3);
+    const glm::dvec4 z = rowOf(stored, 2), w = rowOf(stored, 3);
     const glm::dvec3 wAxis(w);
     const double wLength2 = glm::dot(wAxis, wAxis);
     if (!(wLength2 > 1e-18) || !std::isfinite(wLength2)) return std::nullopt;
