@@ -75,6 +75,19 @@ const char* kStates =
     "    </RmRenderStateBlock>\n"
     "    <RmStreamMapReference NAME=\"Streams\" API=\"\"/>\n";
 
+// The fixture written as `name`, imported and rendered one frame at kSize; its output read back, or
+// an empty image (and a failure) when it does not load or run.
+Image renderedOutput(const std::string& name, const std::string& text) {
+    auto ws = loadFixture(name, text);
+    if (!ws) return {};
+    GlRun run = runWorkspace(std::move(ws), RunSettings{{kSize, kSize}});
+    if (!run.exec) {
+        ADD_FAILURE() << name << " does not run";
+        return {};
+    }
+    return readBack(*run.exec, run.ws->outputTargetName());
+}
+
 double clampTo(double v, double lo, double hi) { return std::min(hi, std::max(lo, v)); }
 
 class AsmShaderGLTest : public GlTest {};
@@ -121,11 +134,7 @@ mul_d2 r0.r, r1.a, -r1_bias
         "    <RmShader NAME=\"Pixel Shader\" API=\"D3D\" PIXEL_SHADER=\"TRUE\"><RmShaderCode TYPE=\"TEXT\"><![CDATA[" + ps +
         "]]></RmShaderCode></RmShader>\n"
         "   </RmPass>\n");
-    auto ws = loadFixture("vs11_ps11.rfx", text);
-    ASSERT_TRUE(ws);
-    GlRun run = runWorkspace(std::move(ws), RunSettings{{kSize, kSize}});
-    ASSERT_TRUE(run.exec);
-    Image image = readBack(*run.exec, run.ws->outputTargetName());
+    const Image image = renderedOutput("vs11_ps11.rfx", text);
     ASSERT_EQ(image.width, kSize);
     const Vec4 c1{0.25, 0.5, 0.75, 1.0}, c2{0.3, 0.6, 0.9, 0.5};
     double worst = 0.0;
@@ -171,11 +180,7 @@ TEST_F(AsmShaderGLTest, Ps14ReadsItsConstantsWithinMinusOneToOne) {
         "     <RmShaderConstant NAME=\"Big\" API=\"\" REGISTER=\"0\"/>\n"
         "    </RmShader>\n"
         "   </RmPass>\n");
-    auto ws = loadFixture("ps14_constants.rfx", text);
-    ASSERT_TRUE(ws);
-    GlRun run = runWorkspace(std::move(ws), RunSettings{{kSize, kSize}});
-    ASSERT_TRUE(run.exec);
-    Image image = readBack(*run.exec, run.ws->outputTargetName());
+    const Image image = renderedOutput("ps14_constants.rfx", text);
     ASSERT_EQ(image.width, kSize);
     const Vec4 c0{4.0, -3.0, 0.5, 2.0}, c1{0.25, -0.5, 1.0, 0.125};
     double worst = 0.0;
@@ -244,11 +249,7 @@ mov_sat oC0, r2
         "    </RmShader>\n"
         "    <RmTextureObject NAME=\"baseMap\" API=\"D3D\" STATE_INDEX=\"0\"><RmTextureReference NAME=\"Texels\" API=\"\"/></RmTextureObject>\n"
         "   </RmPass>\n");
-    auto ws = loadFixture("vs20_ps20.rfx", text);
-    ASSERT_TRUE(ws);
-    GlRun run = runWorkspace(std::move(ws), RunSettings{{kSize, kSize}});
-    ASSERT_TRUE(run.exec);
-    Image image = readBack(*run.exec, run.ws->outputTargetName());
+    const Image image = renderedOutput("vs20_ps20.rfx", text);
     ASSERT_EQ(image.width, kSize);
     double worst = 0.0;
     for (int y = 0; y < kSize; ++y)
