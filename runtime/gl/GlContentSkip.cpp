@@ -39,12 +39,6 @@ std::string compileStage(GLuint shader, const char* source) {
     return log;
 }
 
-// Whether `pass` samples `target` as this frame leaves it (not frame="previous").
-bool readsThisFrame(const Pass& pass, const std::string& target) {
-    return std::any_of(pass.samplers.begin(), pass.samplers.end(),
-                       [&](const Sampler& s) { return s.target == target && !s.previousFrame; });
-}
-
 std::string channelNames(glm::bvec4 channels) {
     static const char* const names[4] = {"red", "green", "blue", "alpha"};
     std::vector<std::string> chosen;
@@ -82,159 +76,41 @@ Result<std::unique_ptr<GlContentSkip>> GlContentSkip::create() {
     return skip;
 }
 
-void GlContentSkip::plan(const Workspace& ws, const std::vector<GpuPass*>& schedule, const GlRenderTargets& targets,
-                         const std::vector<std::string>& outputs) {
-    effects_.clear();
+void GlContentSkip::usePlan(const ContentSkipPlan& plan, const GlRenderTargets& targets) {
+    plan_ = &plan;
     skipped_.clear();
-    runningAlways_.clear();
     lastFrameSlot_ = -1;
-    effectOfPass_.assign(schedule.size(), -1);
-    for (const Effect& e : ws.effects) {
-        GpuTarget* source = e.source.empty() ? nullptr : targets.find(e.source);
-        if (!source) continue;
-        ActiveEffect active;
-        active.effect = &e;
-        std::vector<size_t> positions;
-        std::set<std::string> written;
-        for (size_t i = 0; i < schedule.size(); ++i) {
-            const std::string& pass = schedule[i]->pass->name;
-            if (!e.hasPass(pass)) continue;
-            positions.push_back(i);
-            written.insert(schedule[i]->target->name);
-        }
-        if (positions.empty()) continue;
-        // The gate is counted in its place where a scheduled pass writes it before the effect.
-        glm::bvec4 channels = e.sourceChannels;
-        GpuTarget* gate = e.gate.empty() ? nullptr : targets.find(e.gate);
-        if (gate && std::any_of(schedule.begin(), schedule.begin() + static_cast<std::ptrdiff_t>(positions.front()),
-                                [&](const GpuPass* p) { return p->target == gate; })) {
-            source = gate;
-            channels = e.gateChannels;
-            active.gated = true;
-        }
-        // Asked for by name (an empty list, every target, is the editor's thumbnails): exact bits.
-        const auto readBack = std::find_if(written.begin(), written.end(), [&](const std::string& t) {
-            return std::find(outputs.begin(), outputs.end(), t) != outputs.end();
+    planProbes_.clear();
+    sources_.clear();
+    for (const ContentSkipPlan::Probe& wanted : plan.probes) {
+        auto kept = std::find_if(probes_.begin(), probes_.end(), [&](const std::unique_ptr<Probe>& p) {
+            return p->source == wanted.source && p->channels == wanted.channels;
         });
-        if (readBack != written.end()) {
-            runningAlways_[e.name] = "its target '" + *readBack + "' is read back after the frame, and holds what its passes write";
-            continue;
+        if (kept == probes_.end()) {
+            auto fresh = std::make_unique<Probe>();
+            fresh->source = wanted.source;
+            fresh->channels = wanted.channels;
+            for (QueryHandle& q : fresh->queries) q = createQuery(GL_ANY_SAMPLES_PASSED);
+            kept = probes_.insert(probes_.end(), std::move(fresh));
         }
-        active.first = positions.front();
-        active.last = positions.back();
-        for (size_t i : positions) effectOfPass_[i] = static_cast<int>(effects_.size());
-        // Handed on: read by a scheduled pass outside the effect, or read back after the frame
-        // (only where every target is: one asked for by name makes the effect run, above).
-        for (const std::string& t : written) {
-            HandedOn handed;
-            handed.target = targets.find(t);
-            handed.readBack = outputs.empty();
-            for (size_t i = 0; i < schedule.size(); ++i)
-                if (effectOfPass_[i] != static_cast<int>(effects_.size()) && readsThisFrame(*schedule[i]->pass, t))
-                    handed.readers.push_back(i);
-            if (handed.target && (handed.readBack || !handed.readers.empty())) active.handedOn.push_back(std::move(handed));
-        }
-        auto probe = std::find_if(probes_.begin(), probes_.end(), [&](const Probe& p) {
-            return p.source == source && p.channels == channels;
-        });
-        if (probe == probes_.end()) {
-            Probe fresh;
-            fresh.source = source;
-            fresh.channels = channels;
-            for (QueryHandle& q : fresh.queries) q = createQuery(GL_ANY_SAMPLES_PASSED);
-            probes_.push_back(std::move(fresh));
-            probe = probes_.end() - 1;
-        }
-        active.probe = static_cast<size_t>(probe - probes_.begin());
-        effects_.push_back(std::move(active));
+        planProbes_.push_back(kept->get());
+        sources_.push_back(targets.find(wanted.source));
     }
-    planFeeders(schedule, outputs);
-    planConsumers(schedule);
+    handedOn_.clear();
+    for (size_t e = 0; e < plan.effects.size(); ++e)
+        for (const ContentSkipPlan::HandedOn& h : plan.effects[e].handedOn)
+            if (GpuTarget* target = targets.find(h.target)) handedOn_.push_back({e, &h, target, true});
 }
 
-void GlContentSkip::planFeeders(const std::vector<GpuPass*>& schedule, const std::vector<std::string>& outputs) {
-    feeders_.clear();
-    feederProbe_.assign(schedule.size(), -1);
-    if (effects_.empty() || outputs.empty()) return;  // every target is read back after the frame
-    // Each probe reads its source before the first pass drawn under it: feeders come after the
-    // source's last write.
-    std::vector<size_t> sourceComplete(probes_.size(), 0);
-    for (size_t p = 0; p < probes_.size(); ++p)
-        for (size_t i = 0; i < schedule.size(); ++i)
-            if (schedule[i]->target == probes_[p].source) sourceComplete[p] = i + 1;
-    std::set<std::string> previousFrame, sources;
-    for (const GpuPass* gp : schedule)
-        for (const Sampler& s : gp->pass->samplers)
-            if (s.previousFrame) previousFrame.insert(s.target);
-    for (const Probe& p : probes_) sources.insert(p.source->name);
-    // From the last pass back, so that a feeder's readers are decided before it.
-    for (size_t i = schedule.size(); i-- > 0;) {
-        if (effectOfPass_[i] >= 0) continue;
-        const std::string& written = schedule[i]->target->name;
-        if (std::find(outputs.begin(), outputs.end(), written) != outputs.end() || previousFrame.count(written) ||
-            sources.count(written))
-            continue;
-        int probe = -1;
-        bool feeds = true, read = false;
-        std::set<std::string> effects;
-        for (size_t j = 0; j < schedule.size() && feeds; ++j) {
-            if (j == i) continue;
-            if (schedule[j]->target->name == written) {  // another pass writes it too
-                feeds = false;
-                continue;
-            }
-            // (What is read as last frame's was ruled out above.)
-            if (!readsThisFrame(*schedule[j]->pass, written)) continue;
-            read = true;
-            const int readerProbe = probeAt(j);
-            feeds = j > i && readerProbe >= 0 && (probe < 0 || probe == readerProbe);
-            probe = readerProbe;
-            if (effectOfPass_[j] >= 0) effects.insert(effects_[static_cast<size_t>(effectOfPass_[j])].effect->name);
-            for (const Feeder& f : feeders_)
-                if (f.position == j) effects.insert(f.effects.begin(), f.effects.end());
-        }
-        if (!feeds || !read || i < sourceComplete[static_cast<size_t>(probe)]) continue;
-        feederProbe_[i] = probe;
-        feeders_.push_back({i, std::move(effects), static_cast<size_t>(probe)});
-    }
-    std::reverse(feeders_.begin(), feeders_.end());
-}
-
-int GlContentSkip::probeAt(size_t index) const {
-    if (index < effectOfPass_.size() && effectOfPass_[index] >= 0)
-        return static_cast<int>(effects_[static_cast<size_t>(effectOfPass_[index])].probe);
-    return index < feederProbe_.size() ? feederProbe_[index] : -1;
-}
-
-bool GlContentSkip::endsAnEffect(size_t index) const {
-    return std::any_of(effects_.begin(), effects_.end(), [&](const ActiveEffect& e) { return e.last == index; });
-}
-
-void GlContentSkip::planConsumers(const std::vector<GpuPass*>& schedule) {
-    consumers_.clear();
-    for (size_t i = 0; i < schedule.size(); ++i) {
-        if (probeAt(i) >= 0) continue;
-        Consumer consumer{i, {}, 0};
-        std::set<size_t> probes;
-        for (const ActiveEffect& e : effects_) {
-            if (i <= e.last) continue;
-            if (std::none_of(e.handedOn.begin(), e.handedOn.end(),
-                             [&](const HandedOn& h) { return readsThisFrame(*schedule[i]->pass, h.target->name); }))
-                continue;
-            consumer.effects.insert(e.effect->name);
-            probes.insert(e.probe);
-        }
-        // One condition decides one draw: effects on different probes could be skipped apart.
-        if (consumer.effects.empty() || probes.size() != 1) continue;
-        consumer.probe = *probes.begin();
-        consumers_.push_back(std::move(consumer));
-    }
+GlContentSkip::Probe* GlContentSkip::probeAt(size_t index) const {
+    const int p = plan_ ? plan_->probeAt(index) : -1;
+    return p < 0 ? nullptr : planProbes_[static_cast<size_t>(p)];
 }
 
 bool GlContentSkip::beginConsumerDraw(size_t position, bool withoutEffects) {
-    for (const Consumer& consumer : consumers_) {
+    for (const ContentSkipPlan::Consumer& consumer : plan_->consumers) {
         if (consumer.position != position) continue;
-        Probe& probe = probes_[consumer.probe];
+        Probe& probe = *planProbes_[consumer.probe];
         if (!probe.issued) return !withoutEffects;
         switch (answerOf(probe)) {
             case Answer::Nothing: return withoutEffects;
@@ -249,12 +125,11 @@ bool GlContentSkip::beginConsumerDraw(size_t position, bool withoutEffects) {
 }
 
 void GlContentSkip::setSampledWithoutEffects(const std::map<size_t, std::set<const GpuTarget*>>& sampled) {
-    for (ActiveEffect& e : effects_)
-        for (HandedOn& h : e.handedOn)
-            h.cleared = h.readBack || std::any_of(h.readers.begin(), h.readers.end(), [&](size_t reader) {
-                            auto second = sampled.find(reader);
-                            return second == sampled.end() || second->second.count(h.target);
-                        });
+    for (HandedOnTarget& h : handedOn_)
+        h.cleared = h.handed->readBack || std::any_of(h.handed->readers.begin(), h.handed->readers.end(), [&](size_t reader) {
+                        auto second = sampled.find(reader);
+                        return second == sampled.end() || second->second.count(h.target);
+                    });
 }
 
 void GlContentSkip::endConsumerDraw() {
@@ -263,23 +138,22 @@ void GlContentSkip::endConsumerDraw() {
 }
 
 void GlContentSkip::beginFrame() {
-    for (Probe& p : probes_) {
-        p.issued = false;
-        p.answer = Answer::Pending;
-        p.fence.reset();
+    for (auto& p : probes_) {
+        p->issued = false;
+        p->answer = Answer::Pending;
+        p->fence.reset();
     }
-    conditionOf_ = -1;
+    condition_ = nullptr;
     notIssued_ = 0;
 }
 
 GlContentSkip::Answer GlContentSkip::answerOf(Probe& probe) {
-    if (!probe.issued || probe.answer != Answer::Pending || decision_ == FramePlanOptions::ContentSkipDecision::GpuOnly)
-        return probe.answer;
-    const bool waits = decision_ == FramePlanOptions::ContentSkipDecision::CpuWaits;
+    if (!probe.issued || probe.answer != Answer::Pending || decision_ == ContentSkipDecision::GpuOnly) return probe.answer;
+    const bool waits = decision_ == ContentSkipDecision::CpuWaits;
     // The fence, not the query: NVIDIA reports GL_INVALID_OPERATION for reading a query that an
     // active conditional rendering uses (the passes spanned by the probe's condition ask here).
     if (!waits && !probe.fence.signalled()) return Answer::Pending;
-    if (conditionOf_ >= 0 && &probes_[static_cast<size_t>(conditionOf_)] == &probe) endCondition();
+    if (condition_ == &probe) endCondition();
     const GLuint query = probe.queries[slot_].get();
     GLuint available = waits ? 1 : 0;
     if (!available) glGetQueryObjectuiv(query, GL_QUERY_RESULT_AVAILABLE, &available);
@@ -292,13 +166,16 @@ GlContentSkip::Answer GlContentSkip::answerOf(Probe& probe) {
 }
 
 void GlContentSkip::endCondition() {
-    if (conditionOf_ >= 0) glEndConditionalRender();
-    conditionOf_ = -1;
+    if (condition_) glEndConditionalRender();
+    condition_ = nullptr;
 }
 
 void GlContentSkip::issueProbe(Probe& probe) {
-    const GpuTarget& t = *probe.source;
-    if (!t.resource) return;
+    const GpuTarget* source = nullptr;
+    for (size_t p = 0; p < planProbes_.size(); ++p)
+        if (planProbes_[p] == &probe) source = sources_[p];
+    if (!source || !source->resource) return;
+    const GpuTarget& t = *source;
     const GpuResource& r = *t.resource;
     const GLuint texture = r.textures[t.writtenThisFrame ? r.writeBuffer() : r.front].get();
     const glm::ivec2 size = (r.spec.size + 1) / 2;  // a fragment for each 2x2 pixels
@@ -328,16 +205,16 @@ void GlContentSkip::issueProbe(Probe& probe) {
     glBindSampler(0, 0);
     probe.issued = true;
     // Sent now, so that the answer may be in before the passes it decides are issued.
-    if (decision_ == FramePlanOptions::ContentSkipDecision::CpuWhenKnown) {
+    if (decision_ == ContentSkipDecision::CpuWhenKnown) {
         probe.fence.insert();
         glFlush();
     }
 }
 
 bool GlContentSkip::beforePass(size_t index) {
-    const int p = probeAt(index);
-    if (p < 0) return true;
-    Probe& probe = probes_[static_cast<size_t>(p)];
+    Probe* p = probeAt(index);
+    if (!p) return true;
+    Probe& probe = *p;
     if (!probe.issued) issueProbe(probe);
     if (!probe.issued) return true;
     const Answer answer = answerOf(probe);
@@ -346,63 +223,56 @@ bool GlContentSkip::beforePass(size_t index) {
         if (answer == Answer::Nothing) ++notIssued_;
         return answer == Answer::Something;
     }
-    if (conditionOf_ == p) return true;
+    if (condition_ == p) return true;
     glBeginConditionalRender(probe.queries[slot_].get(), GL_QUERY_WAIT);
-    conditionOf_ = p;
+    condition_ = p;
     return true;
 }
 
 unsigned GlContentSkip::conditionOf(size_t index) const {
-    const int p = probeAt(index);
-    if (p < 0) return 0;
-    const Probe& probe = probes_[static_cast<size_t>(p)];
+    const Probe* p = probeAt(index);
+    if (!p) return 0;
+    const Probe& probe = *p;
     if (!probe.issued || probe.answer == Answer::Something) return 0;
     return probe.queries[slot_].get();
 }
 
 void GlContentSkip::afterPass(size_t index) {
-    const int p = probeAt(index);
-    if (p < 0) return;
-    const Probe& probe = probes_[static_cast<size_t>(p)];
+    const Probe* p = probeAt(index);
+    if (!p) return;
+    const Probe& probe = *p;
     if (!probe.issued) return;
     // An effect's last pass ends the condition: what it hands on is cleared under the inverse.
-    const bool ends = endsAnEffect(index);
-    if (spanning_ && !ends && probeAt(index + 1) == p && conditionOf_ == p) return;
+    const bool ends = plan_->endsAnEffect(index);
+    if (spanning_ && !ends && probeAt(index + 1) == p && condition_ == p) return;
     endCondition();
     if (!ends || probe.answer == Answer::Something) return;
     const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     const bool conditional = probe.answer == Answer::Pending;
     if (conditional) glBeginConditionalRender(probe.queries[slot_].get(), GL_QUERY_WAIT_INVERTED);
-    for (const ActiveEffect& e : effects_) {
-        if (e.last != index) continue;
-        for (const HandedOn& h : e.handedOn)
-            if (h.cleared && h.target->resource) {
-                glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-                glDisable(GL_SCISSOR_TEST);
-                glClearNamedFramebufferfv(h.target->resource->framebuffers[h.target->resource->writeBuffer()].get(), GL_COLOR, 0,
-                                          zero);
-            }
-    }
+    for (const HandedOnTarget& h : handedOn_)
+        if (plan_->effects[h.effect].last == index && h.cleared && h.target->resource) {
+            glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+            glDisable(GL_SCISSOR_TEST);
+            glClearNamedFramebufferfv(h.target->resource->framebuffers[h.target->resource->writeBuffer()].get(), GL_COLOR, 0, zero);
+        }
     if (conditional) glEndConditionalRender();
-    for (const ActiveEffect& e : effects_) {
-        if (e.last != index) continue;
-        for (const HandedOn& h : e.handedOn)
-            if (h.cleared && h.target->resource && h.target->resource->spec.mipmaps)
-                glGenerateTextureMipmap(h.target->resource->textures[h.target->resource->writeBuffer()].get());
-    }
+    for (const HandedOnTarget& h : handedOn_)
+        if (plan_->effects[h.effect].last == index && h.cleared && h.target->resource && h.target->resource->spec.mipmaps)
+            glGenerateTextureMipmap(h.target->resource->textures[h.target->resource->writeBuffer()].get());
 }
 
 void GlContentSkip::endFrame() {
     lastNotIssued_ = notIssued_;
-    if (effects_.empty()) return;
+    if (!plan_ || plan_->empty()) return;
     lastFrameSlot_ = slot_;
     slot_ = (slot_ + 1) % 3;
 }
 
 const std::map<std::string, std::string>& GlContentSkip::skipped(bool wait) {
     if (lastFrameSlot_ < 0) return skipped_;
-    for (const ActiveEffect& e : effects_) {
-        const Probe& probe = probes_[e.probe];
+    for (const ContentSkipPlan::SkippableEffect& e : plan_->effects) {
+        const Probe& probe = *planProbes_[e.probe];
         const GLuint query = probe.queries[lastFrameSlot_].get();
         GLuint available = 0;
         if (!wait) glGetQueryObjectuiv(query, GL_QUERY_RESULT_AVAILABLE, &available);

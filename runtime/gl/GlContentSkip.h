@@ -29,6 +29,7 @@
 #include "core/Result.h"
 #include "gl/GlHandles.h"
 #include "gl/GlRenderTargets.h"
+#include "graph/ContentSkipPlan.h"
 #include "graph/FramePlan.h"
 #include "model/Workspace.h"
 
@@ -40,22 +41,22 @@ class GlContentSkip {
 public:
     static Result<std::unique_ptr<GlContentSkip>> create();
 
-    // For a new schedule (the effect switches changed): which of its passes belong to an effect
-    // with a source, where each such effect starts and ends, and what it hands on. `outputs`: the
-    // targets read after the frame (empty: every target).
-    void plan(const Workspace& ws, const std::vector<GpuPass*>& schedule, const GlRenderTargets& targets,
-              const std::vector<std::string>& outputs);
+    // For a new schedule (the effect switches changed): its plan (graph/ContentSkipPlan.h), which
+    // must outlive its use, with the targets it names found in `targets`. What the effects' last
+    // frame skipped is forgotten.
+    void usePlan(const ContentSkipPlan& plan, const GlRenderTargets& targets);
+    const ContentSkipPlan& plan() const { return *plan_; }
 
     // Whether one conditional rendering may span consecutive passes of an effect (each pass's
     // begin and end cost the driver a wait on the query): not when something else draws between
     // passes that must run whatever the condition (the health check).
     void setSpanning(bool spanning) { spanning_ = spanning; }
-    void setDecision(FramePlanOptions::ContentSkipDecision decision) { decision_ = decision; }
+    void setDecision(ContentSkipDecision decision) { decision_ = decision; }
 
     void beginFrame();
-    // Around scheduled pass `index` (its position in the schedule given to plan()). beforePass
-    // returns false when the CPU knows the pass is left out this frame: it is then not issued at
-    // all (afterPass is still called).
+    // Around scheduled pass `index` (its position in the plan's schedule). beforePass returns
+    // false when the CPU knows the pass is left out this frame: it is then not issued at all
+    // (afterPass is still called).
     bool beforePass(size_t index);
     void afterPass(size_t index);
     // How many passes of the last finished frame the CPU left out (beforePass false).
@@ -66,30 +67,10 @@ public:
     unsigned conditionOf(size_t index) const;
     void endFrame();
 
-    // A pass outside the effects that reads what effects sharing one probe hand on (hdr_lighting's
-    // final, after bloom and star): where the probe finds nothing it can be drawn compiled with
-    // those effects left out (their RMFX_EFFECT_* false), reading none of the cleared targets,
-    // and as compiled where it finds something. Set by plan().
-    struct Consumer {
-        size_t position = 0;            // in the schedule
-        std::set<std::string> effects;  // left out of the second program
-        size_t probe = 0;               // the one their sources share
-    };
-    const std::vector<Consumer>& consumers() const { return consumers_; }
-
-    // A pass outside the effects whose target only passes drawn under one probe's condition read
-    // (effect passes, or other feeders), written after the source is complete and read back by
-    // nothing after the frame: it is drawn under that condition too. Set by plan().
-    struct Feeder {
-        size_t position = 0;            // in the schedule
-        std::set<std::string> effects;  // the effects that read it, directly or through other feeders
-        size_t probe = 0;
-    };
-    const std::vector<Feeder>& feeders() const { return feeders_; }
-    // Around a consumer's draws: `withoutEffects` false for the program as compiled (drawn where
-    // the source holds something), true for the one without the effects (where it holds nothing).
-    // Without an issued probe, the program as compiled is drawn unconditionally and the other not
-    // at all: false when the draw is to be left out.
+    // Around a consumer's draws (ContentSkipPlan::Consumer): `withoutEffects` false for the
+    // program as compiled (drawn where the source holds something), true for the one without the
+    // effects (where it holds nothing). Without an issued probe, the program as compiled is drawn
+    // unconditionally and the other not at all: false when the draw is to be left out.
     bool beginConsumerDraw(size_t position, bool withoutEffects);
     void endConsumerDraw();
     // The targets each consumer's second program samples, by schedule position (none given: it has
@@ -98,39 +79,28 @@ public:
     // skipped: nothing reads the zeros. Replaces what an earlier call gave.
     void setSampledWithoutEffects(const std::map<size_t, std::set<const GpuTarget*>>& sampled);
 
-    // The effects with a source that content skip leaves running whatever it holds, each with why
-    // (a target it writes is read back after the frame, and must hold what its passes write, not
-    // zeros: running a pass on a zero source can still write a non-zero alpha). Set by plan().
-    const std::map<std::string, std::string>& runningAlways() const { return runningAlways_; }
-
     // The effects the last frame skipped, each with why; waits for the GPU's answer when `wait`,
     // else reports only what has arrived (and what arrived for an earlier frame is kept).
     const std::map<std::string, std::string>& skipped(bool wait);
 
 private:
     enum class Answer { Pending, Nothing, Something };  // as far as the CPU knows this frame
+    // The GL side of a plan's probe; kept across plans for the same source and channels.
     struct Probe {
-        GpuTarget* source = nullptr;
+        std::string source;
         glm::bvec4 channels{false};
         QueryHandle queries[3];
         FenceHandle fence;    // after this frame's query (CpuWhenKnown): whether its answer is in
         bool issued = false;  // this frame
         Answer answer = Answer::Pending;
     };
-    // A target the effect writes that something after it reads: cleared to zero when the effect is
-    // skipped, unless nothing would read the zeros.
-    struct HandedOn {
+    // A target a plan's effect hands on, found; cleared where the effect is skipped unless nothing
+    // would read the zeros.
+    struct HandedOnTarget {
+        size_t effect = 0;  // into the plan's effects
+        const ContentSkipPlan::HandedOn* handed = nullptr;
         GpuTarget* target = nullptr;
-        bool readBack = false;        // after the frame (the editor reads every target)
-        std::vector<size_t> readers;  // schedule positions of the passes outside the effect that sample it
         bool cleared = true;
-    };
-    struct ActiveEffect {
-        const Effect* effect = nullptr;
-        size_t probe = 0;
-        bool gated = false;                   // the probe counts its gate, not its source
-        size_t first = 0, last = 0;           // schedule positions of its first and last pass
-        std::vector<HandedOn> handedOn;
     };
 
     GlContentSkip() = default;
@@ -139,10 +109,7 @@ private:
     // probe's query before reading it.
     Answer answerOf(Probe& probe);
     void endCondition();
-    void planFeeders(const std::vector<GpuPass*>& schedule, const std::vector<std::string>& outputs);
-    void planConsumers(const std::vector<GpuPass*>& schedule);
-    int probeAt(size_t index) const;  // the probe whose condition scheduled pass `index` is drawn under, or -1
-    bool endsAnEffect(size_t index) const;
+    Probe* probeAt(size_t index) const;  // the probe whose condition scheduled pass `index` is drawn under
 
     ProgramHandle program_;
     FramebufferHandle empty_;
@@ -152,21 +119,19 @@ private:
     VertexArrayHandle vertexArray_;
     int channelsLocation_ = -1;
 
-    std::vector<Probe> probes_;
-    std::vector<ActiveEffect> effects_;
-    std::vector<int> effectOfPass_;  // schedule position → index into effects_, or -1
-    std::vector<int> feederProbe_;   // schedule position → probe of a feeder, or -1
-    std::vector<Feeder> feeders_;
-    std::vector<Consumer> consumers_;
+    const ContentSkipPlan* plan_ = nullptr;
+    std::vector<std::unique_ptr<Probe>> probes_;  // every probe some plan has used
+    std::vector<Probe*> planProbes_;              // the plan's probes, by its index
+    std::vector<GpuTarget*> sources_;             // the target each of the plan's probes counts
+    std::vector<HandedOnTarget> handedOn_;
     bool consumerCondition_ = false;
     int slot_ = 0;                   // the query of this frame in each probe's ring
     int lastFrameSlot_ = -1;         // the last finished frame's, -1 before the first
     bool spanning_ = true;
-    FramePlanOptions::ContentSkipDecision decision_ = FramePlanOptions::ContentSkipDecision::CpuWhenKnown;
-    int conditionOf_ = -1;           // the probe whose condition is active, or -1
+    ContentSkipDecision decision_ = ContentSkipDecision::CpuWhenKnown;
+    Probe* condition_ = nullptr;     // the probe whose condition is active
     int notIssued_ = 0, lastNotIssued_ = 0;
     std::map<std::string, std::string> skipped_;
-    std::map<std::string, std::string> runningAlways_;
 };
 
 }  // namespace rmfx

@@ -67,7 +67,7 @@ struct GlExecutor::Impl {
     std::vector<std::string> lastFramePasses;
     GlPassTimers timers;
     std::unique_ptr<GlContentSkip> contentSkip;  // null without an effect with a source, or when off
-    // Content skip's consumers compiled without the effects they read (GlContentSkip::Consumer),
+    // Content skip's consumers compiled without the effects they read (ContentSkipPlan::Consumer),
     // by pass index with the effects left out; and for each schedule position, the one it draws.
     std::map<int, std::pair<std::set<std::string>, std::unique_ptr<GpuPass>>> withoutEffects;
     std::vector<const GpuPass*> withoutEffectsAt;
@@ -122,12 +122,12 @@ struct GlExecutor::Impl {
         schedule.clear();
         for (int index : current.graph->schedule)
             if (GpuPass* p = compiledPass(index)) schedule.push_back(p);
-        if (contentSkip) contentSkip->plan(ws, schedule, targets, plan.options.outputs);
+        if (contentSkip) contentSkip->usePlan(*current.contentSkip, targets);
         planSkippedDraws();
     }
 
     // How content skip draws the schedule: whether one condition may span an effect's passes, and
-    // which passes it draws a second way (GlContentSkip::Consumer).
+    // which passes it draws a second way (ContentSkipPlan::Consumer).
     void planSkippedDraws() {
         withoutEffectsAt.assign(schedule.size(), nullptr);
         if (!contentSkip) return;
@@ -137,7 +137,7 @@ struct GlExecutor::Impl {
                                                              [](const GpuPass* p) { return p->health.found; }));
         std::map<size_t, std::set<const GpuTarget*>> sampled;
         if (!healthCheck)  // the check looks at every pass as compiled
-            for (const GlContentSkip::Consumer& c : contentSkip->consumers())
+            for (const ContentSkipPlan::Consumer& c : current.contentSkip->consumers)
                 if (const GpuPass* without = passWithout(*schedule[c.position], c.effects)) {
                     withoutEffectsAt[c.position] = without;
                     std::set<const GpuTarget*>& read = sampled[c.position];
@@ -325,8 +325,7 @@ struct GlExecutor::Build {
         for (int index : impl->plan.runnablePasses())
             if (auto gp = impl->buildPass(index, allocated.ok(), d)) impl->passes.push_back(std::move(gp));
         if (hasErrors(d)) return Failure::failure(std::move(d));
-        const bool sourced = std::any_of(ws.effects.begin(), ws.effects.end(), [](const Effect& e) { return !e.source.empty(); });
-        if (options.contentSkip && sourced) {
+        if (!impl->plan.contentSkip.empty()) {
             auto skip = GlContentSkip::create();
             if (!skip) return Failure::failure({workspaceError(ws, "", skip.error())});
             impl->contentSkip = std::move(*skip);
@@ -601,7 +600,7 @@ std::map<std::string, std::set<std::string>> GlExecutor::passesDrawnWithoutSkipp
     const Impl& s = *impl_;
     std::map<std::string, std::set<std::string>> out;
     if (!s.contentSkip) return out;
-    for (const GlContentSkip::Consumer& c : s.contentSkip->consumers())
+    for (const ContentSkipPlan::Consumer& c : s.current.contentSkip->consumers)
         if (c.position < s.withoutEffectsAt.size() && s.withoutEffectsAt[c.position])
             out[s.schedule[c.position]->pass->name] = c.effects;
     return out;
@@ -611,12 +610,12 @@ std::map<std::string, std::set<std::string>> GlExecutor::passesDrawnOnlyForEffec
     const Impl& s = *impl_;
     std::map<std::string, std::set<std::string>> out;
     if (!s.contentSkip) return out;
-    for (const GlContentSkip::Feeder& f : s.contentSkip->feeders()) out[s.schedule[f.position]->pass->name] = f.effects;
+    for (const ContentSkipPlan::Feeder& f : s.current.contentSkip->feeders) out[s.schedule[f.position]->pass->name] = f.effects;
     return out;
 }
 
 std::map<std::string, std::string> GlExecutor::effectsRunningWhateverTheContent() const {
-    return impl_->contentSkip ? impl_->contentSkip->runningAlways() : std::map<std::string, std::string>{};
+    return impl_->contentSkip ? impl_->current.contentSkip->runningAlways : std::map<std::string, std::string>{};
 }
 
 int GlExecutor::passesNotIssuedByContentSkip() const {

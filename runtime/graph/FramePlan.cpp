@@ -69,7 +69,8 @@ FrameVariant FramePlan::variant(const std::set<std::string>& switchedOff) const 
     auto it = graphs.find(switchedOff);
     if (it == graphs.end()) it = graphs.find({});  // more switches than prepared: run them all
     if (it == graphs.end()) return {};
-    return {it->first, &it->second};
+    auto skip = contentSkip.find(it->first);
+    return {it->first, &it->second, skip == contentSkip.end() ? nullptr : &skip->second};
 }
 
 FrameVariant FramePlan::variantFor(const Workspace& ws, const std::map<std::string, Value>& values) const {
@@ -112,6 +113,8 @@ Result<FramePlan> planFramePasses(const Workspace& ws, const FramePlanOptions& o
         plan.graphs.emplace(off, std::move(*g));
     }
     if (hasErrors(errors)) return Result<FramePlan>::failure(std::move(errors));
+    if (options.contentSkip && hasSourcedEffects(ws))
+        for (auto& [off, g] : plan.graphs) plan.contentSkip.emplace(off, planContentSkip(ws, g.schedule, options.outputs));
     return plan;
 }
 

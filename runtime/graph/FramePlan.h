@@ -15,6 +15,7 @@
 
 #include "core/Result.h"
 #include "core/Value.h"
+#include "graph/ContentSkipPlan.h"
 #include "graph/PassGraph.h"
 #include "graph/ResourceLimits.h"
 #include "graph/TargetPlan.h"
@@ -23,6 +24,13 @@
 #include "model/Workspace.h"
 
 namespace rmfx {
+
+// Who leaves the passes content skip skips out (gl/GlContentSkip.h). CpuWhenKnown: the GPU through
+// conditional rendering, but a pass that comes after the source's answer has arrived (asked for
+// without waiting) is left out, or drawn without a condition, by the CPU itself. GpuOnly: always
+// the GPU. CpuWaits: the CPU waits for the answer right after the source is measured (a stall: for
+// tests that must take the CPU's side).
+enum class ContentSkipDecision { CpuWhenKnown, GpuOnly, CpuWaits };
 
 struct FramePlanOptions {
     // The targets the caller reads after a frame. Only the passes they need run, and targets whose
@@ -37,12 +45,8 @@ struct FramePlanOptions {
     // <effect source>: skip on the GPU the effects whose source holds nothing (rmfx render
     // --content-skip off runs them all the same).
     bool contentSkip = true;
-    // Who leaves the skipped passes out (gl/GlContentSkip.h). CpuWhenKnown: the GPU through
-    // conditional rendering, but a pass that comes after the source's answer has arrived (asked
-    // for without waiting) is left out, or drawn without a condition, by the CPU itself.
-    // GpuOnly: always the GPU. CpuWaits: the CPU waits for the answer right after the source is
-    // measured (a stall: for tests that must take the CPU's side).
-    enum class ContentSkipDecision { CpuWhenKnown, GpuOnly, CpuWaits };
+    // Who leaves the skipped passes out (ContentSkipDecision above).
+    using ContentSkipDecision = rmfx::ContentSkipDecision;
     ContentSkipDecision contentSkipDecision = ContentSkipDecision::CpuWhenKnown;
     // rmfx render --check: after each pass, inspect on the GPU the target it wrote for NaN, ±Inf,
     // negatives and values at its format's largest (gl/GlHealthCheck.h, model/TargetHealth.h).
@@ -57,6 +61,7 @@ struct FramePlanOptions {
 struct FrameVariant {
     std::set<std::string> switchedOff;
     const PassGraph* graph = nullptr;
+    const ContentSkipPlan* contentSkip = nullptr;  // null when content skip has nothing to do or is off
 };
 
 struct FramePlan {
@@ -68,6 +73,9 @@ struct FramePlan {
     // switched effects, only all on, each one off and all off are prepared.
     std::map<std::set<std::string>, PassGraph> graphs;
     TargetPlan targets;  // memory for the passes of every graph
+    // What content skip does with each graph's schedule, by the same key; empty when it is off or
+    // no effect has a source.
+    std::map<std::set<std::string>, ContentSkipPlan> contentSkip;
 
     // Targets share memory only when outputs were named.
     bool pooled() const { return options.poolTargets && !options.outputs.empty(); }
