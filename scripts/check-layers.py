@@ -20,7 +20,7 @@ import pathlib
 import re
 import sys
 
-LAYERS = ["core", "model", "io", "frontend", "graph", "validation", "gl", "run"]
+LAYERS = ["core", "model", "io", "frontend", "graph", "validation", "compile", "gl", "run"]
 GL_LAYERS = {"gl", "run"}
 GL_HEADER = re.compile(r"^(epoxy|EGL|GL|GLES\d*|GLFW|X11|wayland)/|^imgui_impl_opengl")
 APPS = {"apps", "cli", "editor"}

@@ -140,7 +140,7 @@ std::string explainFrame(const FrameExplanationInput& in) {
             sourced.push_back(e.name);
     }
     if (!sourced.empty()) {
-        out << "\nskipped by content (the last frame):";
+        out << (in.frameRan ? "\nskipped by content (the last frame):" : "\nskipped by content (decided on the GPU each frame; no frame ran):");
         if (!in.contentSkip) out << " nothing: --content-skip off";
         out << "\n";
         for (const std::string& name : sourced) {
@@ -150,6 +150,10 @@ std::string explainFrame(const FrameExplanationInput& in) {
             auto always = in.runningWhateverTheContent.find(name);
             if (always != in.runningWhateverTheContent.end())
                 out << "  " << name << ": run whatever '" << e.source << "' holds: " << always->second << "\n";
+            else if (!in.frameRan)
+                out << "  " << name << ": skipped where "
+                    << (e.gate.empty() ? "'" + e.source + "' holds no pixel it works on" : "its gate '" + e.gate + "' holds no non-zero pixel")
+                    << "\n";
             else if (skipped != in.contentSkipped.end())
                 out << "  " << name << ": skipped by content: " << skipped->second << "\n";
             else

@@ -23,8 +23,11 @@ struct FrameExplanationInput {
     bool pooled = true;
     // The file each given <input> was given (rmfx render --input), as the user wrote it.
     std::map<std::string, std::string> inputFiles;
-    // Whether effects with a source may be skipped by content, and those the frame skipped, with why.
+    // Whether effects with a source may be skipped by content, whether a frame ran (false: the
+    // plan alone is explained, and content skip's answers are not known), and those the last
+    // frame skipped, with why.
     bool contentSkip = true;
+    bool frameRan = true;
     std::map<std::string, std::string> contentSkipped;
     // Passes drawn compiled without the effects they read where those are skipped, by pass.
     std::map<std::string, std::set<std::string>> drawnWithoutSkipped;

@@ -90,6 +90,20 @@ Result<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSource& pro
     return uniforms;
 }
 
+Result<std::string> preprocessStage(const PassStage& stage) {
+    initializeGlslangOnce();
+    glslang::TShader shader(language(stage.stage));
+    const char* text = stage.shader.code.c_str();
+    shader.setStrings(&text, 1);
+    shader.setEnvInput(glslang::EShSourceGlsl, language(stage.stage), glslang::EShClientNone, 0);
+    auto [version, profile] = defaultVersion(stage.dialect);
+    std::string out;
+    glslang::TShader::ForbidIncluder includer;
+    if (!shader.preprocess(GetDefaultResources(), version, profile, false, false, EShMsgDefault, &out, includer))
+        return Error{shader.getInfoLog()};
+    return out;
+}
+
 std::optional<SourceLocation> findUniformDeclaration(const PassProgramSource& program, const std::string& name) {
     for (const PassStage& stage : program.stages) {
         int line = 1;

@@ -26,6 +26,10 @@ struct ActiveUniform {
 Result<std::vector<ActiveUniform>> checkPassProgram(const PassProgramSource& program, const std::string& element,
                                                     std::vector<std::string>* vertexInputs = nullptr);
 
+// The stage's text after glslang's preprocessor (macros expanded, #if resolved, #define lines
+// gone), or the preprocessor's log: two texts that preprocess alike compile alike.
+Result<std::string> preprocessStage(const PassStage& stage);
+
 // Where a uniform is declared, found by scanning the stage texts: the first `uniform TYPE NAME`.
 std::optional<SourceLocation> findUniformDeclaration(const PassProgramSource& program, const std::string& name);
 
