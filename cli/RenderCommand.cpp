@@ -10,6 +10,7 @@
 #include "apps/ArgumentParser.h"
 #include "cli/Commands.h"
 #include "apps/OptionValues.h"
+#include "compile/CompiledFrame.h"
 #include "core/DiagnosticRepeats.h"
 #include "core/FrameWatchdog.h"
 #include "frontend/rfx/RfxImporter.h"
@@ -179,7 +180,17 @@ void showProgress(const SequenceProgress& p, bool terminal) {
 // rmfx render W --input scene=shot/frame.%04d.exr -o out/frame.%04d.png
 // --check: what the passes left in their targets, on stderr (with -q only the errors); whether
 // NaN or an infinity was found.
-bool reportHealth(const GlExecutor& executor, int frames, bool quiet) {
+// The file each given <input> was given, as the user wrote it, for --explain.
+std::map<std::string, std::string> givenFiles(const Workspace& ws, const std::vector<InputArgument>& inputs) {
+    std::map<std::string, std::string> files;
+    for (const InputArgument& given : inputs) {
+        const std::string name = !given.name.empty() ? given.name : ws.inputs.size() == 1 ? ws.inputs.front().name : "";
+        files[name] = given.file.string() + (given.layer.empty() ? "" : ":" + given.layer);
+    }
+    return files;
+}
+
+bool reportHealth(GlExecutor& executor, int frames, bool quiet) {
     const std::vector<HealthFinding>& findings = executor.firstHealthFindings();
     bool errors = false;
     for (const HealthFinding& f : findings) {
@@ -387,6 +398,19 @@ int renderCommand(const std::vector<std::string>& args) {
         }
     }
     a->executor.outputs = {targetName};
+    // --explain alone (no image, no --check) prints the plan: no GL context, no frame.
+    if (a->explain && !a->output && !a->executor.checkHealth) {
+        auto frame = compileFrame(std::make_shared<const Workspace>(ws), a->executor, 
+                                  a->run.size.x > 0 ? a->run.size : glm::ivec2(ws.width, ws.height));
+        if (!frame) {
+            std::cerr << formatAll(frame.diagnostics());
+            return 2;
+        }
+        FrameExplanationInput explained = explanationOf(**frame, switchedOffEffects(ws, (*frame)->plan.askedEffects, (*frame)->values));
+        explained.inputFiles = givenFiles(ws, a->inputs);
+        std::cout << explainFrame(explained);
+        return 0;
+    }
 
     auto context = GlContext::createHeadless(ws.profile);
     if (!context) {
@@ -403,15 +427,10 @@ int renderCommand(const std::vector<std::string>& args) {
     std::unique_ptr<GlExecutor>& executor = *run;
     const bool unhealthy = a->executor.checkHealth && reportHealth(*executor, a->run.frames, a->quiet);
     if (a->explain) {
-        FrameExplanationInput explained{&ws, &executor->graph(), &executor->targetPlan(), executor->askedEffects(),
-                                        executor->switchedOffEffects(), a->executor.poolTargets, {},
-                                        a->executor.contentSkip, executor->contentSkippedEffects(true),
-                                        executor->passesDrawnWithoutSkippedEffects(), executor->passesDrawnOnlyForEffects(),
-                                        executor->effectsRunningWhateverTheContent()};
-        for (const InputArgument& given : a->inputs) {
-            const std::string name = !given.name.empty() ? given.name : ws.inputs.size() == 1 ? ws.inputs.front().name : "";
-            explained.inputFiles[name] = given.file.string() + (given.layer.empty() ? "" : ":" + given.layer);
-        }
+        FrameExplanationInput explained = explanationOf(executor->compiledFrame(), executor->switchedOffEffects());
+        explained.frameRan = true;
+        explained.contentSkipped = executor->contentSkippedEffects(true);
+        explained.inputFiles = givenFiles(ws, a->inputs);
         std::cout << explainFrame(explained);
         if (!a->output) return unhealthy ? kExitUnhealthy : 0;  // --explain alone writes no image
     }

@@ -27,7 +27,7 @@ DisplayTransform TargetBrowser::transformOf(const std::string& target) const {
     return target == output_ ? outputTransform_ : DisplayTransform::Srgb;
 }
 
-void TargetBrowser::updateThumbnails(const GlExecutor& executor, const Workspace& ws, TextureBlit& blit) {
+void TargetBrowser::updateThumbnails(GlExecutor& executor, const Workspace& ws, TextureBlit& blit) {
     written_.clear();
     for (const std::string& pass : executor.passesRun())
         if (const Pass* p = ws.findPass(pass)) written_.insert(ws.passTargetName(*p));

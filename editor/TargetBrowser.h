@@ -28,7 +28,7 @@ public:
     // After a frame: draws every target's thumbnail (GL; leaves framebuffer 0 bound), notes the
     // targets no pass of that frame wrote (their effect switched off, say) and, with the health
     // check on, what each target holds (a badge under its thumbnail).
-    void updateThumbnails(const GlExecutor& executor, const Workspace& ws, TextureBlit& blit);
+    void updateThumbnails(GlExecutor& executor, const Workspace& ws, TextureBlit& blit);
     // The section's contents: the thumbnails; a click opens (or focuses) the target's viewer.
     void draw(const GlExecutor& executor);
     // The open viewers' windows; new ones appear near `firstPosition`, `firstSize` large.

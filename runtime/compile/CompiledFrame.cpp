@@ -50,15 +50,9 @@ void compileProgramsWithoutEffects(CompiledFrame& frame) {
             const int index = graph.schedule[c.position];
             auto [it, fresh] = made.try_emplace({index, c.effects});
             if (fresh) {
-                const Pass& pass = ws.passes[static_cast<size_t>(index)];
                 const Result<PassProgramSource>& compiled = frame.programs.at(index);
-                if (!compiled || !readsEffects(ws, pass, frame.plan.prelude, *compiled, c.effects)) continue;
-                std::set<std::string> asked;
-                for (const std::string& e : frame.plan.askedEffects)
-                    if (!c.effects.count(e)) asked.insert(e);
-                const ShaderPrelude without = effectPrelude(ws, asked);
-                Result<PassProgramSource> source = assemblePassProgram(ws, pass, without.defines, without.declarations);
-                if (source) it->second = std::move(*source);
+                if (compiled)
+                    it->second = programWithoutEffects(ws, ws.passes[static_cast<size_t>(index)], frame.plan, *compiled, c.effects);
             }
             if (it->second) frame.withoutEffects[off][c.position] = {c.effects, *it->second};
         }
@@ -66,6 +60,18 @@ void compileProgramsWithoutEffects(CompiledFrame& frame) {
 }
 
 }  // namespace
+
+std::optional<PassProgramSource> programWithoutEffects(const Workspace& ws, const Pass& pass, const FramePlan& plan,
+                                                       const PassProgramSource& asCompiled, const std::set<std::string>& effects) {
+    if (!readsEffects(ws, pass, plan.prelude, asCompiled, effects)) return std::nullopt;
+    std::set<std::string> asked;
+    for (const std::string& e : plan.askedEffects)
+        if (!effects.count(e)) asked.insert(e);
+    const ShaderPrelude without = effectPrelude(ws, asked);
+    Result<PassProgramSource> source = assemblePassProgram(ws, pass, without.defines, without.declarations);
+    if (!source) return std::nullopt;
+    return std::move(*source);
+}
 
 const ProgramWithoutEffects* CompiledFrame::programWithout(const std::set<std::string>& switchedOff, size_t position) const {
     auto variant = withoutEffects.find(plan.variant(switchedOff).switchedOff);

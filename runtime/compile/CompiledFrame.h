@@ -66,6 +66,12 @@ constexpr int kGuaranteedMaxTargetSize = 16384;
 Result<std::shared_ptr<const CompiledFrame>> compileFrame(std::shared_ptr<const Workspace> ws, const FramePlanOptions& options,
                                                           glm::ivec2 viewport, int maxTargetSize = kGuaranteedMaxTargetSize);
 
+// The source of `pass` compiled with `effects` left out of the plan's asked effects, when leaving
+// them out changes its code (`asCompiled`: its source with the plan's prelude); nullopt when it
+// does not, or when it does not assemble. Hot reload asks again for a pass read anew.
+std::optional<PassProgramSource> programWithoutEffects(const Workspace& ws, const Pass& pass, const FramePlan& plan,
+                                                       const PassProgramSource& asCompiled, const std::set<std::string>& effects);
+
 // What `--explain` prints of the frame under `switchedOff`: everything but the files given for the
 // inputs and what a rendered frame's content skip left out (FrameExplanationInput::contentSkipped).
 FrameExplanationInput explanationOf(const CompiledFrame& frame, const std::set<std::string>& switchedOff);

@@ -14,6 +14,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "compile/CompiledFrame.h"
 #include "core/Result.h"
 #include "gl/GlUniformUpload.h"
 #include "graph/FramePlan.h"
@@ -25,22 +26,36 @@
 
 namespace rmfx {
 
+// The plan's options and how the GL run carries it out (ContentSkipDecision, the health check's
+// method): what the convenience create() takes.
 using ExecutorOptions = FramePlanOptions;
+
+// What only the GL run needs, apart from the compiled frame it runs.
+struct GlRunSettings {
+    ContentSkipDecision contentSkipDecision = ContentSkipDecision::CpuWhenKnown;
+    HealthCheckMethod healthCheckMethod = HealthCheckMethod::Automatic;  // with the plan's checkHealth
+};
+GlRunSettings glRunSettings(const ExecutorOptions& options);
 
 class GlExecutor {
 public:
-    // Plans the frame for the outputs and effects asked for, compiles the passes it can run (under
-    // any setting of the effect switches), loads their textures and meshes and allocates the
-    // targets they use for `viewport`. Errors name the pass, target or texture; warnings (vertex
-    // streams the shaders do not read, …) come with the executor.
-    static Result<std::unique_ptr<GlExecutor>> create(std::shared_ptr<const Workspace> ws, glm::ivec2 viewport,
-                                                      const FramePlanOptions& options = {});
+    // Runs a compiled frame (compile/CompiledFrame.h): links the programs of the passes it can run
+    // (under any setting of the effect switches), loads their textures and meshes and allocates
+    // the targets planned for its viewport. Errors name the pass, target or texture; warnings
+    // (vertex streams the shaders do not read, …) come with the executor.
+    static Result<std::unique_ptr<GlExecutor>> create(std::shared_ptr<const CompiledFrame> frame, const GlRunSettings& settings = {});
     // create() for a reload of the workspace file: the textures named in `reusableTextures` that
     // `previous` holds with the same declaration and files (or supplied image) are copied from it
     // on the GPU instead of being read and decoded again (the caller knows their files did not
     // change). `previous` is not modified.
+    static Result<std::unique_ptr<GlExecutor>> createReusing(std::shared_ptr<const CompiledFrame> frame,
+                                                             const GlRunSettings& settings, const GlExecutor& previous,
+                                                             const std::vector<std::string>& reusableTextures);
+    // Both in one: compiles the frame for `viewport` against this context's limits, then runs it.
+    static Result<std::unique_ptr<GlExecutor>> create(std::shared_ptr<const Workspace> ws, glm::ivec2 viewport,
+                                                      const ExecutorOptions& options = {});
     static Result<std::unique_ptr<GlExecutor>> createReusing(std::shared_ptr<const Workspace> ws, glm::ivec2 viewport,
-                                                             const FramePlanOptions& options, const GlExecutor& previous,
+                                                             const ExecutorOptions& options, const GlExecutor& previous,
                                                              const std::vector<std::string>& reusableTextures);
     ~GlExecutor();
     GlExecutor(const GlExecutor&) = delete;
@@ -54,7 +69,8 @@ public:
     // Current value of a workspace variable; setVariable checks the type (a colour takes rgb or
     // rgba as declared). Targets whose format or size the variable picks are allocated anew, back
     // to their initial value. A switch variable of an effect culls or restores its passes from the
-    // next frame on, with no recompile and no allocation.
+    // next frame on, with no recompile and no allocation. On any error nothing changes: the value,
+    // the plan and the targets stay as they were.
     const Value* variable(const std::string& name) const;
     Result<void> setVariable(const std::string& name, const Value& value);
 
@@ -84,9 +100,10 @@ public:
     unsigned targetTexture(const std::string& name) const;
 
     const Workspace& workspace() const;
-    // What the executor runs: the frame plan (its targets are what is allocated now), the graph of
-    // the current effect switches (its schedule is what the next frame runs), the effects asked
-    // for and those switched off.
+    // What the executor runs: the compiled frame, the frame plan (its targets are what is
+    // allocated now), the graph of the current effect switches (its schedule is what the next
+    // frame runs), the effects asked for and those switched off. None of these does GL work.
+    const CompiledFrame& compiledFrame() const;
     const FramePlan& framePlan() const;
     const PassGraph& graph() const;
     const TargetPlan& targetPlan() const;
@@ -102,10 +119,11 @@ public:
     // (a target of theirs is an output: it must hold what their passes write).
     std::map<std::string, std::string> effectsRunningWhateverTheContent() const;
     // The passes content skip draws compiled without the effects they read, where those are
-    // skipped (gl/GlContentSkip.h's consumers), each with the effects, for the current switches.
+    // skipped (ContentSkipPlan's consumers whose code reads them), each with the effects, for the
+    // current switches.
     std::map<std::string, std::set<std::string>> passesDrawnWithoutSkippedEffects() const;
     // The passes outside the effects drawn only where effects with a source run, since only they
-    // read what those passes write (gl/GlContentSkip.h's feeders), each with the effects.
+    // read what those passes write (ContentSkipPlan's feeders), each with the effects.
     std::map<std::string, std::set<std::string>> passesDrawnOnlyForEffects() const;
     // How many passes of the last frame content skip left out on the CPU, the source's answer
     // having arrived before they were issued (the others it skipped, the GPU did).
@@ -114,10 +132,10 @@ public:
     // (model/TargetHealth.h); null otherwise or before the first frame. The results come back from
     // the GPU after the frame: `wait` waits for the last frame's; without it, the latest frame
     // whose results are in (no stall; a frame or two behind).
-    const FrameHealth* frameHealth(bool wait = true) const;
+    const FrameHealth* frameHealth(bool wait = true);
     // The first finding of each kind over every frame so far, in HealthKind order (waits for the
     // last frame's results).
-    const std::vector<HealthFinding>& firstHealthFindings() const;
+    const std::vector<HealthFinding>& firstHealthFindings();
 
     // Hot reload (LiveWorkspace). Each is all or nothing: on any error the executor is left
     // exactly as it was, and the diagnostics say why.
@@ -139,7 +157,7 @@ public:
     unsigned textureObject(const std::string& name) const;
 
 private:
-    struct Impl;
+    struct Impl;  // gl/GlExecutorImpl.h
     struct Build;
     explicit GlExecutor(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;

@@ -51,17 +51,15 @@ std::optional<std::string> linkWithBuiltinAttributes(GLuint program) {
 
 }  // namespace
 
-Result<PassGlProgram> buildPassProgram(const Workspace& ws, const Pass& pass, const ShaderPrelude& prelude) {
-    Result<PassProgramSource> source = assemblePassProgram(ws, pass, prelude.defines, prelude.declarations);
-    Diagnostics d = source.diagnostics();
-    if (!source) return Result<PassGlProgram>::failure(std::move(d));
+Result<PassGlProgram> linkPassProgram(const Pass& pass, const PassProgramSource& source) {
+    Diagnostics d;
     PassGlProgram built;
-    built.initializedUniforms = uniformsWithInitializers(*source);
+    built.initializedUniforms = uniformsWithInitializers(source);
     std::string label = passLabel(pass);
     built.program = createProgram();
     const GLuint program = built.program.get();
     bool ok = true;
-    for (const PassStage& stage : source->stages) {
+    for (const PassStage& stage : source.stages) {
         const bool vertex = stage.stage == ShaderStage::Vertex;
         (vertex ? built.vertexCode : built.fragmentCode) = stage.shader.code;
         if (std::optional<std::string> log = compileInto(program, vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER, stage.shader.code)) {
@@ -76,7 +74,18 @@ Result<PassGlProgram> buildPassProgram(const Workspace& ws, const Pass& pass, co
         d.push_back({Diagnostic::Severity::Error, pass.where, label, "shaders failed to link: " + *log});
         return Result<PassGlProgram>::failure(std::move(d));
     }
-    return Result<PassGlProgram>(std::move(built), std::move(d));
+    return built;
+}
+
+Result<PassGlProgram> buildPassProgram(const Workspace& ws, const Pass& pass, const ShaderPrelude& prelude) {
+    Result<PassProgramSource> source = assemblePassProgram(ws, pass, prelude.defines, prelude.declarations);
+    Diagnostics d = source.diagnostics();
+    if (!source) return Result<PassGlProgram>::failure(std::move(d));
+    Result<PassGlProgram> linked = linkPassProgram(pass, *source);
+    Diagnostics more = linked.diagnostics();
+    d.insert(d.end(), more.begin(), more.end());
+    if (!linked) return Result<PassGlProgram>::failure(std::move(d));
+    return Result<PassGlProgram>(std::move(*linked), std::move(d));
 }
 
 Result<ProgramHandle> relinkWithFragment(const PassGlProgram& built, const std::string& fragmentCode) {

@@ -8,6 +8,7 @@
 
 #include "core/Result.h"
 #include "gl/GlHandles.h"
+#include "frontend/shader/PassProgram.h"
 #include "model/EffectSelection.h"
 #include "model/Workspace.h"
 
@@ -19,8 +20,12 @@ struct PassGlProgram {
     std::string vertexCode, fragmentCode;       // as compiled
 };
 
-// Assembles the pass's program source with the prelude of the effects asked for, compiles and
-// links it. Compiler errors are mapped to the shader files' lines; warnings of assembly come along.
+// Compiles and links the pass's assembled program source (compile/CompiledFrame.h). Compiler errors
+// are mapped to the shader files' lines.
+Result<PassGlProgram> linkPassProgram(const Pass& pass, const PassProgramSource& source);
+
+// Assembles the pass's program source anew from its files with the prelude of the effects asked
+// for (hot reload), then links it as above; warnings of assembly come along.
 Result<PassGlProgram> buildPassProgram(const Workspace& ws, const Pass& pass, const ShaderPrelude& prelude);
 
 // The program linked again with `fragmentCode` in place of its fragment shader's (the health

@@ -55,8 +55,6 @@ bool allocateResource(GpuResource& r, const std::string& element, const SourceLo
 }  // namespace
 
 Result<void> GlRenderTargets::allocate(const TargetPlan& plan) {
-    for (auto& t : targets_) t->resource = nullptr;
-    resources_.clear();
     if (targets_.empty())
         for (const PlannedTarget& p : plan.targets) {
             auto t = std::make_unique<GpuTarget>();
@@ -66,14 +64,19 @@ Result<void> GlRenderTargets::allocate(const TargetPlan& plan) {
             targets_.push_back(std::move(t));
         }
     Diagnostics d;
+    std::vector<std::unique_ptr<GpuResource>> fresh;
     for (const TargetResource& spec : plan.resources) {
         auto r = std::make_unique<GpuResource>();
         r->spec = spec;
         const PlannedTarget& first = plan.targets[static_cast<size_t>(spec.targets.front())];
         allocateResource(*r, "<target name=\"" + first.name + "\">", first.where, d);
-        for (int t : spec.targets) targets_[static_cast<size_t>(t)]->resource = r.get();
-        resources_.push_back(std::move(r));
+        fresh.push_back(std::move(r));
     }
+    if (hasErrors(d)) return Result<void>::failure(std::move(d));  // the new memory goes; the old stays
+    for (auto& t : targets_) t->resource = nullptr;
+    for (const auto& r : fresh)
+        for (int t : r->spec.targets) targets_[static_cast<size_t>(t)]->resource = r.get();
+    resources_ = std::move(fresh);
     return d;
 }
 

@@ -33,9 +33,10 @@ struct GpuTarget {
 
 class GlRenderTargets {
 public:
-    // Replaces the memory by the plan's (every target back to its initial value). The targets
-    // themselves are made on the first call and stay: passes point to them. Errors name the target
-    // whose framebuffer is incomplete or whose allocation raised a GL error.
+    // Replaces the memory by the plan's (every target back to its initial value), allocated before
+    // the old memory is freed: on an error the old memory stays in use. The targets themselves are
+    // made on the first call and stay: passes point to them. Errors name the target whose
+    // framebuffer is incomplete or whose allocation raised a GL error.
     Result<void> allocate(const TargetPlan& plan);
 
     GpuTarget* find(const std::string& name) const;
