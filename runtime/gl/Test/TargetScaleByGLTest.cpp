@@ -58,6 +58,34 @@ TEST_F(TargetScaleByGLTest, TheVariablePicksTheSizeAndSettingItReallocates) {
     EXPECT_EQ(run.exec->variable("Downsample")->asInt(), 0);  // unchanged
 }
 
+// A value whose targets would not fit the memory budget changes nothing: not the value, not the
+// plan, not the memory (which keeps what the last frame wrote); the next frame runs as before.
+TEST_F(TargetScaleByGLTest, AValueWhoseTargetsDoNotFitLeavesTheRunAsItWas) {
+    auto ws = workspaceFromText(scaleByWorkspace(2));
+    ASSERT_TRUE(ws);
+    ExecutorOptions options;
+    options.memoryBudget = 40 * 27 * 8 + 2000;  // the rgba16f output and the 1/8 or 1/4 target, not the 1/2
+    GlRun run = runWorkspace(std::move(ws), {{40, 27}, 1, 1.0f / 60.0f}, options);
+    ASSERT_TRUE(run.exec) << formatAll(run.diagnostics);
+    const unsigned texture = run.exec->targetTexture("reduced");
+    const Image before = readBack(*run.exec, "reduced");
+    ASSERT_EQ(before.width, 5);
+
+    EXPECT_EQ(run.exec->setVariable("Downsample", Value::ofInt(0)).error(),
+              "the render targets need 12.8 KiB, more than the memory budget of 10.4 KiB (largest: 'output' 40x27 8.4 KiB, "
+              "'reduced' 20x14 4.4 KiB); nothing was allocated (raise it with --memory-budget MiB)");
+    EXPECT_EQ(run.exec->variable("Downsample")->asInt(), 2);
+    EXPECT_EQ(run.exec->targetSize("reduced"), glm::ivec2(5, 4));
+    EXPECT_EQ(run.exec->targetTexture("reduced"), texture) << "the memory in use stays";
+    EXPECT_TRUE(readBack(*run.exec, "reduced").pixels == before.pixels);
+    Diagnostics d = run.exec->renderFrame({}).takeDiagnostics();
+    EXPECT_TRUE(d.empty()) << formatAll(d);
+    EXPECT_TRUE(readBack(*run.exec, "reduced").pixels == before.pixels);
+
+    ASSERT_EQ(run.exec->setVariable("Downsample", Value::ofInt(1)).error(), "") << "a value that fits still works";
+    EXPECT_EQ(run.exec->targetSize("reduced"), glm::ivec2(10, 7));
+}
+
 TEST_F(TargetScaleByGLTest, AValuePickingNoScaleFailsAtCreationNamingTheTarget) {
     auto ws = workspaceFromText(scaleByWorkspace(1));
     ASSERT_TRUE(ws);
