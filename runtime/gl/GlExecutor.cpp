@@ -118,6 +118,7 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
     Impl& s = *impl_;
     drainGlErrors();
     s.prepareVariant();
+    s.renderState.forget();  // whatever drew since the last frame (the editor) left its own
     s.targets.startFrame();
     s.timers.beginFrame(s.schedule.size());
     s.lastFramePasses.clear();
@@ -143,12 +144,14 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
         if (issued) {
             glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
             glViewport(0, 0, memory.spec.size.x, memory.spec.size.y);
-            applyRenderState(pass, s.compatibility, rowsTopFirst(s.ws.textureSpace));
+            // The health check and content skip draw between passes with states of their own.
+            if (s.healthCheck || s.contentSkip) s.renderState.forget();
+            s.renderState.apply(pass, s.compatibility, rowsTopFirst(s.ws.textureSpace));
             if (pass.clear.color) glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, glm::value_ptr(*pass.clear.color));
             if (pass.clear.depth) {
-                glDepthMask(GL_TRUE);
+                s.renderState.depthMask(true);
                 glClearNamedFramebufferfv(framebuffer, GL_DEPTH, 0, &*pass.clear.depth);
-                glDepthMask(pass.depth.write ? GL_TRUE : GL_FALSE);
+                s.renderState.depthMask(pass.depth.write);
             }
             const auto named = pass.camera.empty() ? namedCameras.end() : namedCameras.find(pass.camera);
             const FrameCamera& passCamera = named == namedCameras.end() ? camera : named->second;
@@ -199,7 +202,7 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
             } else {
                 drawWith(gp);
             }
-            restoreFilledPolygons(pass, s.compatibility);  // what draws next (the checks, the editor) fills
+            s.renderState.restoreFilledPolygons(pass, s.compatibility);  // what draws next (the checks, the editor) fills
         }
         target.writtenThisFrame = true;
         s.lastFramePasses.push_back(pass.name);

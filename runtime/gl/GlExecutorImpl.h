@@ -18,6 +18,7 @@
 #include "gl/GlMeshCache.h"
 #include "gl/GlPassTimers.h"
 #include "gl/GlProgramBuild.h"
+#include "gl/GlRenderState.h"
 #include "gl/GlRenderTargets.h"
 #include "gl/GlTextureCache.h"
 #include "gl/GpuPass.h"
@@ -46,6 +47,7 @@ struct GlExecutor::Impl {
     bool variantReady = false;
     std::vector<std::string> lastFramePasses;
     GlPassTimers timers;
+    GlRenderState renderState;  // what the frame's passes set so far
     std::unique_ptr<GlContentSkip> contentSkip;  // null without an effect with a source, or when off
     // Content skip's consumers compiled without the effects they read (ContentSkipPlan::Consumer),
     // by pass index with the effects left out; and for each schedule position, the one it draws.

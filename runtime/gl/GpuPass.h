@@ -2,6 +2,7 @@
 // A pass ready to draw: its linked program, target, mesh, vertex streams, and the uniforms and
 // samplers found in the program with where each takes its value from.
 
+#include <array>
 #include <optional>
 #include <set>
 #include <string>
@@ -30,6 +31,10 @@ struct UniformSlot {
     // (HlslMatrixOrder::ColumnVector): uploaded transposed. HLSL's m[r] is rmfx's column r
     // (HlslTranslator.h), so untransposed, mul(v, M) is M·v; transposed, mul(M, v) is.
     bool transposed = false;
+    // What the program's uniform holds now, as uploaded last (ints by their bits): uploadUniforms
+    // makes no GL call for a value it already holds.
+    mutable std::array<float, 16> uploaded{};
+    mutable bool hasUploaded = false;
 };
 
 struct SamplerSlot {
