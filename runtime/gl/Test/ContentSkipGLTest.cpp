@@ -1,9 +1,9 @@
 // <effect source>: an effect whose source holds nothing is skipped on the GPU, and the image is
 // bit for bit what running it gives. Each test runs the same workspace twice, content skip on and
 // off, frame by frame, and compares every byte of the output; it also checks which effects the
-// frame skipped, so that a skip that never happens (or always happens) cannot pass. A pass that
-// reads a skipped effect's output is drawn compiled without the effect; one test tells the two
-// versions apart.
+// frame skipped, so that a skip that never happens (or always happens) cannot pass. Here
+// hdr_lighting and the article's pipeline; ContentSkipGlowGLTest.cpp goes on with a small glow
+// workspace.
 
 #include <algorithm>
 #include <cmath>
