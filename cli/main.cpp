@@ -72,7 +72,8 @@ render options:
                          culled and their targets not allocated (default: the workspace's choice)
   --explain              print the frame's schedule: each pass run or culled and why, each target
                          with size, format, bytes and shared memory, and the peak GPU memory;
-                         writes an image only when -o is given
+                         alone (no -o, no --check) it prints the plan without rendering or a GL
+                         context; with -o it renders and adds what content skip skipped
   --no-pool              give every target memory of its own (no sharing between lifetimes)
   --check                after each pass, inspect on the GPU the target it wrote for NaN, ±Inf,
                          negative values and values at its format's largest; report the first
