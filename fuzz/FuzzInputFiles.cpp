@@ -35,6 +35,16 @@ bool safeName(const std::string& name, const std::filesystem::path& folder) {
     return end == scratch->end() && file != *scratch;
 }
 
+// Memory (/dev/shm) where there is one to write to: creating and removing the folder's files on
+// a disk's file system (ext4's journal) took three quarters of the shader_preprocessor target's
+// time per input, 112 against 449 inputs a second without sanitizers. Otherwise the temp folder.
+std::filesystem::path scratchParent() {
+    const std::filesystem::path memory = "/dev/shm";
+    std::error_code ignored;
+    if (std::filesystem::is_directory(memory, ignored) && ::access(memory.c_str(), W_OK | X_OK) == 0) return memory;
+    return std::filesystem::temp_directory_path();
+}
+
 void removeScratch() {
     std::error_code ignored;
     if (scratch) std::filesystem::remove_all(*scratch, ignored);
@@ -65,8 +75,7 @@ FuzzInput splitFuzzInput(std::string_view bytes) {
 
 const std::filesystem::path& freshScratchFolder() {
     if (!scratch) {
-        scratch = new std::filesystem::path(
-            (std::filesystem::temp_directory_path() / ("rmfx-fuzz-" + std::to_string(getpid()))).lexically_normal());
+        scratch = new std::filesystem::path((scratchParent() / ("rmfx-fuzz-" + std::to_string(getpid()))).lexically_normal());
         std::atexit(removeScratch);
     }
     std::error_code ignored;

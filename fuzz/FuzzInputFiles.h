@@ -30,7 +30,8 @@ struct FuzzInput {
 // Splits at lines starting with "//@@ " (at most 64 parts; later markers stay in the text).
 FuzzInput splitFuzzInput(std::string_view bytes);
 
-// An empty folder under the temp folder, the same for the whole process (removed at exit).
+// An empty folder in memory (/dev/shm) or else under the temp folder, the same for the whole
+// process (removed at exit).
 const std::filesystem::path& freshScratchFolder();
 
 // Writes each part whose name is a relative path of plain components (letters, digits, '_', '-',

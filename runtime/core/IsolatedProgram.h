@@ -9,6 +9,9 @@
 // its other threads held at that moment (llvmpipe's threads, the sanitizers' allocator), and a
 // child that needs one of them waits forever. That stalled an HLSL test of a CI run until its
 // 30 s timeout. posix_spawn runs nothing of the caller's in the child before the program starts.
+//
+// One input per process; a program that answers many inputs in one process, started once for the
+// run, is core/IsolatedWorker.h (rmfx-hlsl-worker's).
 
 #include <chrono>
 #include <string>

@@ -6,6 +6,7 @@
 #include <optional>
 #include <set>
 #include <string_view>
+#include <unordered_set>
 
 #include "core/IdentifierSearch.h"
 #include "core/TextEdits.h"
@@ -22,9 +23,11 @@ struct Global {
     size_t nameAt = 0;        // offset of its name
 };
 
+// Views of the scanned code, which outlives them: a shader expanded to megabytes by its
+// includes can have hundreds of thousands of bodies, and a string each was most of the scan.
 struct FunctionBody {
-    std::string name;     // the function's
-    std::string header;   // its signature, from the return type to ')'
+    std::string_view name;    // the function's
+    std::string_view header;  // its signature, from the return type to ')'
     size_t open = 0;      // offset of '{'
     size_t close = 0;     // offset of the matching '}'
 };
@@ -55,6 +58,15 @@ std::vector<std::string> identifiers(std::string_view s) {
         }
     }
     return out;
+}
+
+// The last identifier in `s`; empty when there is none.
+std::string_view lastIdentifier(std::string_view s) {
+    size_t end = s.size();
+    while (end > 0 && !isIdentifierChar(s[end - 1])) --end;
+    size_t start = end;
+    while (start > 0 && isIdentifierChar(s[start - 1])) --start;
+    return s.substr(start, end - start);
 }
 
 // `TYPE NAME;`, `TYPE NAME[N] : register(c0);` or `TYPE NAME = default;` at file scope.
@@ -92,24 +104,30 @@ void scan(const std::string& code, std::vector<Global>& globals, std::vector<Fun
     size_t start = 0;
     int depth = 0;
     size_t bodyOpen = 0;
-    std::string pendingHeader;
+    std::string_view pendingHeader;
     bool inFunction = false;
     bool initializer = false;  // the braces of `Wave waves[2] = { … };`, inside its statement
+    // Whether the statement since `start` holds a '=' at file scope, kept as the scan goes: an
+    // initializer's statement runs on to its ';', and reading it again at each of its '{' was
+    // quadratic (`a b = 1{}{}{}…`, 16 kB: 88 ms).
+    bool equalsSinceStart = false;
     for (size_t i = 0; i < code.size(); ++i) {
         const char c = code[i];
+        if (c == '=' && depth == 0) equalsSinceStart = true;
         if (c == '{') {
             if (depth == 0) {
-                std::string_view statement(code.data() + start, i - start);
-                initializer = statement.find('=') != std::string_view::npos;
-                size_t close = statement.rfind(')');
-                inFunction = close != std::string_view::npos && statement.find('=') == std::string_view::npos &&
-                             statement.find_first_not_of(" \t\r\n:", close + 1) == std::string_view::npos;
-                if (!inFunction && close != std::string_view::npos) {
+                initializer = equalsSinceStart;
+                inFunction = false;
+                // Not an initializer: the statement ends at this brace's '}', so each is read once.
+                if (!initializer) {
+                    std::string_view statement(code.data() + start, i - start);
+                    size_t close = statement.rfind(')');
+                    inFunction = close != std::string_view::npos &&
+                                 statement.find_first_not_of(" \t\r\n:", close + 1) == std::string_view::npos;
                     // `float4 main(…) : COLOR0 {`: a semantic after the parameters.
-                    size_t colon = statement.find(':', close);
-                    inFunction = colon != std::string_view::npos && statement.find('=') == std::string_view::npos;
+                    if (!inFunction && close != std::string_view::npos) inFunction = statement.find(':', close) != std::string_view::npos;
+                    if (inFunction) pendingHeader = statement;
                 }
-                pendingHeader = std::string(statement);
                 bodyOpen = i;
             }
             ++depth;
@@ -119,9 +137,7 @@ void scan(const std::string& code, std::vector<Global>& globals, std::vector<Fun
                 if (inFunction) {
                     FunctionBody body;
                     body.header = pendingHeader;
-                    size_t paren = pendingHeader.find('(');
-                    std::vector<std::string> before = identifiers(std::string_view(pendingHeader).substr(0, paren));
-                    body.name = before.empty() ? "" : before.back();
+                    body.name = lastIdentifier(body.header.substr(0, body.header.find('(')));
                     body.open = bodyOpen;
                     body.close = i;
                     bodies.push_back(std::move(body));
@@ -129,11 +145,15 @@ void scan(const std::string& code, std::vector<Global>& globals, std::vector<Fun
                 inFunction = false;
                 // A struct or cbuffer ends with its own ';'; a function body does not. An
                 // initializer's ';' ends the declaration it is part of.
-                if (!initializer) start = i + 1;
+                if (!initializer) {
+                    start = i + 1;
+                    equalsSinceStart = false;
+                }
             }
         } else if (c == ';' && depth == 0) {
             if (auto g = globalDeclaration(std::string_view(code.data() + start, i - start), i)) globals.push_back(std::move(*g));
             start = i + 1;
+            equalsSinceStart = false;
         }
     }
 }
@@ -157,20 +177,21 @@ std::vector<size_t> matchingBrackets(const std::string& code) {
     return match;
 }
 
-// One function body's identifiers: each occurrence's offset (a member after '.' is not one:
-// `Out.lightDir.x = …` writes the output struct's member, not a global named lightDir, as in ATI's
-// SpotlightWithBump), and the names the function declares itself (a parameter, or a local: a name right after a word that can be a type), which hide a
-// global of that name there.
+// One function body's identifiers that name a global: each occurrence's offset (a member after
+// '.' is not one: `Out.lightDir.x = …` writes the output struct's member, not a global named
+// lightDir, as in ATI's SpotlightWithBump), and those the function declares itself (a parameter,
+// or a local: a name right after a word that can be a type), which hide the global there. Other
+// words are not kept: a shader expanded to megabytes by its includes has hundreds of thousands.
 struct BodyWords {
     std::vector<std::pair<std::string_view, size_t>> uses;  // in order, viewing the code
     std::set<std::string, std::less<>> declared;
 };
 
-BodyWords bodyWords(const std::string& code, const FunctionBody& body) {
+BodyWords bodyWords(const std::string& code, const FunctionBody& body, const std::unordered_set<std::string_view>& globalNames) {
     BodyWords out;
     const size_t paren = body.header.find('(');
-    for (const std::string& w : identifiers(std::string_view(body.header).substr(paren == std::string::npos ? 0 : paren)))
-        out.declared.insert(w);
+    for (const std::string& w : identifiers(body.header.substr(paren == std::string::npos ? 0 : paren)))
+        if (globalNames.count(w)) out.declared.insert(w);
     // `float4 name`, `half name`: a type before it. `return name` and the like are uses.
     static const std::set<std::string, std::less<>> notTypes = {"return", "else", "case", "do", "in", "out", "inout"};
     std::string_view previous;
@@ -183,6 +204,12 @@ BodyWords bodyWords(const std::string& code, const FunctionBody& body) {
         size_t j = i;
         while (j < body.close && isIdentifierChar(code[j])) ++j;
         const std::string_view word(code.data() + i, j - i);
+        if (!globalNames.count(word)) {
+            previous = word;
+            previousEnd = j;
+            i = j;
+            continue;
+        }
         size_t before = i;
         while (before > body.open + 1 && std::isspace(static_cast<unsigned char>(code[before - 1]))) --before;
         const bool member = code[before - 1] == '.' && !std::isdigit(static_cast<unsigned char>(word[0]));
@@ -277,8 +304,10 @@ HlslWritableGlobals giveWrittenGlobalsACopy(const std::string& source, const std
         size_t bodyClose;
     };
     std::map<std::string, std::vector<Use>, std::less<>> usesOutsideDeclarations;
+    std::unordered_set<std::string_view> globalNames;
+    for (const Global& g : globals) globalNames.insert(g.name);
     for (const FunctionBody& b : bodies) {
-        const BodyWords words = bodyWords(code, b);
+        const BodyWords words = bodyWords(code, b, globalNames);
         for (const auto& [name, at] : words.uses) {
             if (words.declared.count(name)) continue;
             auto uses = usesOutsideDeclarations.find(name);
