@@ -22,10 +22,7 @@ namespace {
 class HealthCheckCasesGLTest : public GlTest, public ::testing::WithParamInterface<HealthCheckMethod> {};
 
 INSTANTIATE_TEST_SUITE_P(Methods, HealthCheckCasesGLTest,
-                         ::testing::Values(HealthCheckMethod::AfterPass, HealthCheckMethod::WhileDrawing),
-                         [](const ::testing::TestParamInfo<HealthCheckMethod>& info) {
-                             return info.param == HealthCheckMethod::AfterPass ? "AfterPass" : "WhileDrawing";
-                         });
+                         bothMethods(), methodName);
 
 // A workspace of three passes around the pass a test is about: `ramp` writes each pixel's centre
 // (gl_FragCoord.xy, 0, 1) into target 'a' of `rampFormat`; `pass`, a <pass> element, reads 'a' and

@@ -25,10 +25,7 @@ namespace {
 class HealthCheckGLTest : public GlTest, public ::testing::WithParamInterface<HealthCheckMethod> {};
 
 INSTANTIATE_TEST_SUITE_P(Methods, HealthCheckGLTest,
-                         ::testing::Values(HealthCheckMethod::AfterPass, HealthCheckMethod::WhileDrawing),
-                         [](const ::testing::TestParamInfo<HealthCheckMethod>& info) {
-                             return info.param == HealthCheckMethod::AfterPass ? "AfterPass" : "WhileDrawing";
-                         });
+                         bothMethods(), methodName);
 
 constexpr int kWidth = 17, kHeight = 9;
 
