@@ -25,8 +25,6 @@ Diagnostic workspaceError(const Workspace& ws, const std::string& element, const
 
 }  // namespace
 
-GlRunSettings glRunSettings(const ExecutorOptions& options) { return {options.contentSkipDecision, options.healthCheckMethod}; }
-
 // create() and createReusing(): everything but where the textures come from.
 struct GlExecutor::Build {
     static Result<std::unique_ptr<GlExecutor>> run(std::shared_ptr<const CompiledFrame> frame, const GlRunSettings& settings,
@@ -102,7 +100,7 @@ Result<std::unique_ptr<GlExecutor>> GlExecutor::create(std::shared_ptr<const Wor
                                                        const ExecutorOptions& options) {
     auto frame = compileFrame(std::move(ws), options, viewport, queryMaxTargetSize());
     if (!frame) return Result<std::unique_ptr<GlExecutor>>::failure(frame.takeDiagnostics());
-    return create(std::move(*frame), glRunSettings(options));
+    return create(std::move(*frame), static_cast<const GlRunSettings&>(options));
 }
 
 Result<std::unique_ptr<GlExecutor>> GlExecutor::createReusing(std::shared_ptr<const Workspace> ws, glm::ivec2 viewport,
@@ -110,7 +108,7 @@ Result<std::unique_ptr<GlExecutor>> GlExecutor::createReusing(std::shared_ptr<co
                                                               const std::vector<std::string>& reusableTextures) {
     auto frame = compileFrame(std::move(ws), options, viewport, queryMaxTargetSize());
     if (!frame) return Result<std::unique_ptr<GlExecutor>>::failure(frame.takeDiagnostics());
-    return createReusing(std::move(*frame), glRunSettings(options), previous, reusableTextures);
+    return createReusing(std::move(*frame), static_cast<const GlRunSettings&>(options), previous, reusableTextures);
 }
 
 Result<void> GlExecutor::renderFrame(const FrameClock& clock) {

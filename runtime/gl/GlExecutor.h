@@ -26,16 +26,17 @@
 
 namespace rmfx {
 
-// The plan's options and how the GL run carries it out (ContentSkipDecision, the health check's
-// method): what the convenience create() takes.
-using ExecutorOptions = FramePlanOptions;
-
 // What only the GL run needs, apart from the compiled frame it runs.
 struct GlRunSettings {
     ContentSkipDecision contentSkipDecision = ContentSkipDecision::CpuWhenKnown;
     HealthCheckMethod healthCheckMethod = HealthCheckMethod::Automatic;  // with the plan's checkHealth
 };
-GlRunSettings glRunSettings(const ExecutorOptions& options);
+
+// The plan's options and the GL run's settings in one: what the convenience create() and the
+// runs built on it (run/HeadlessRun, sequences, replay) take.
+struct ExecutorOptions : FramePlanOptions, GlRunSettings {
+    using ContentSkipDecision = rmfx::ContentSkipDecision;
+};
 
 class GlExecutor {
 public:

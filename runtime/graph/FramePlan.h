@@ -25,7 +25,8 @@
 
 namespace rmfx {
 
-// Who leaves the passes content skip skips out (gl/GlContentSkip.h). CpuWhenKnown: the GPU through
+// Who leaves the passes content skip skips out (gl/GlContentSkip.h): a setting of the GL run
+// (gl/GlExecutor.h's GlRunSettings), not of the plan. CpuWhenKnown: the GPU through
 // conditional rendering, but a pass that comes after the source's answer has arrived (asked for
 // without waiting) is left out, or drawn without a condition, by the CPU itself. GpuOnly: always
 // the GPU. CpuWaits: the CPU waits for the answer right after the source is measured (a stall: for
@@ -45,13 +46,9 @@ struct FramePlanOptions {
     // <effect source>: skip on the GPU the effects whose source holds nothing (rmfx render
     // --content-skip off runs them all the same).
     bool contentSkip = true;
-    // Who leaves the skipped passes out (ContentSkipDecision above).
-    using ContentSkipDecision = rmfx::ContentSkipDecision;
-    ContentSkipDecision contentSkipDecision = ContentSkipDecision::CpuWhenKnown;
     // rmfx render --check: after each pass, inspect on the GPU the target it wrote for NaN, ±Inf,
     // negatives and values at its format's largest (gl/GlHealthCheck.h, model/TargetHealth.h).
     bool checkHealth = false;
-    HealthCheckMethod healthCheckMethod = HealthCheckMethod::Automatic;
     // The most render-target memory a frame may hold (--memory-budget); a workspace that needs
     // more fails before anything is allocated.
     std::size_t memoryBudget = kDefaultMemoryBudget;

@@ -101,7 +101,7 @@ Result<LiveWorkspace::Build> LiveWorkspace::load(const std::set<std::string>& st
     failedDependencies_ = build.dependencies;
     updateWatches();
     const glm::ivec2 viewport = build.supplied.viewport;
-    const FramePlanOptions options = executorOptions(build);
+    const ExecutorOptions options = executorOptions(build);
     if (executor_) {
         // Textures whose files did not change are copied from the running build, not decoded again.
         std::vector<std::string> reusable;
@@ -375,8 +375,8 @@ void LiveWorkspace::resetVariable(const std::string& name) {
     if (const Variable* v = workspace_->findVariable(name)) (void)executor_->setVariable(name, v->value);
 }
 
-FramePlanOptions LiveWorkspace::executorOptions(const Build& build) const {
-    FramePlanOptions options;
+ExecutorOptions LiveWorkspace::executorOptions(const Build& build) const {
+    ExecutorOptions options;
     options.givenInputs = build.supplied.given;
     options.checkHealth = checkHealth_;
     return options;
@@ -405,7 +405,7 @@ Result<void> LiveWorkspace::setViewport(glm::ivec2 viewport) {
         return Result<void>::failure(std::move(found));
     }
     build.supplied = std::move(*supplied);
-    const FramePlanOptions options = executorOptions(build);
+    const ExecutorOptions options = executorOptions(build);
     auto created = GlExecutor::create(build.workspace, build.supplied.viewport, options);
     append(found, created.takeDiagnostics());
     if (!created) {

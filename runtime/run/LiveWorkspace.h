@@ -123,7 +123,7 @@ private:
     // Reads the input images into `ws`, as the run's viewport asks (supplyInputs).
     Result<SuppliedInputs> supply(Workspace& ws) const;
     // What every executor of this session is built with: the inputs the build was given, the check.
-    FramePlanOptions executorOptions(const Build& build) const;
+    ExecutorOptions executorOptions(const Build& build) const;
 
     void updateWatches();
     void collectErrors();
