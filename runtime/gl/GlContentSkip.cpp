@@ -81,7 +81,6 @@ void GlContentSkip::usePlan(const ContentSkipPlan& plan, const GlRenderTargets& 
     skipped_.clear();
     lastFrameSlot_ = -1;
     planProbes_.clear();
-    sources_.clear();
     for (const ContentSkipPlan::Probe& wanted : plan.probes) {
         auto kept = std::find_if(probes_.begin(), probes_.end(), [&](const std::unique_ptr<Probe>& p) {
             return p->source == wanted.source && p->channels == wanted.channels;
@@ -90,11 +89,11 @@ void GlContentSkip::usePlan(const ContentSkipPlan& plan, const GlRenderTargets& 
             auto fresh = std::make_unique<Probe>();
             fresh->source = wanted.source;
             fresh->channels = wanted.channels;
+            fresh->target = targets.find(wanted.source);
             for (QueryHandle& q : fresh->queries) q = createQuery(GL_ANY_SAMPLES_PASSED);
             kept = probes_.insert(probes_.end(), std::move(fresh));
         }
         planProbes_.push_back(kept->get());
-        sources_.push_back(targets.find(wanted.source));
     }
     handedOn_.clear();
     for (size_t e = 0; e < plan.effects.size(); ++e)
@@ -171,11 +170,8 @@ void GlContentSkip::endCondition() {
 }
 
 void GlContentSkip::issueProbe(Probe& probe) {
-    const GpuTarget* source = nullptr;
-    for (size_t p = 0; p < planProbes_.size(); ++p)
-        if (planProbes_[p] == &probe) source = sources_[p];
-    if (!source || !source->resource) return;
-    const GpuTarget& t = *source;
+    if (!probe.target || !probe.target->resource) return;
+    const GpuTarget& t = *probe.target;
     const GpuResource& r = *t.resource;
     const GLuint texture = r.textures[t.writtenThisFrame ? r.writeBuffer() : r.front].get();
     const glm::ivec2 size = (r.spec.size + 1) / 2;  // a fragment for each 2x2 pixels

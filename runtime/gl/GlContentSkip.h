@@ -89,6 +89,7 @@ private:
     struct Probe {
         std::string source;
         glm::bvec4 channels{false};
+        GpuTarget* target = nullptr;  // the source's (the executor's targets outlive every plan)
         QueryHandle queries[3];
         FenceHandle fence;    // after this frame's query (CpuWhenKnown): whether its answer is in
         bool issued = false;  // this frame
@@ -122,7 +123,6 @@ private:
     const ContentSkipPlan* plan_ = nullptr;
     std::vector<std::unique_ptr<Probe>> probes_;  // every probe some plan has used
     std::vector<Probe*> planProbes_;              // the plan's probes, by its index
-    std::vector<GpuTarget*> sources_;             // the target each of the plan's probes counts
     std::vector<HandedOnTarget> handedOn_;
     bool consumerCondition_ = false;
     int slot_ = 0;                   // the query of this frame in each probe's ring
