@@ -76,7 +76,7 @@ Result<std::string> IsolatedWorker::request(const std::string& message, std::chr
     std::string received;
     auto deadline = std::chrono::steady_clock::now() + timeout;
     char buffer[65536];
-    // Input and output at once, as runIsolatedProgram: a program may answer before it has read all.
+    // Input and output at once: a program may answer before it has read all.
     for (;;) {
         auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
         if (left.count() <= 0) break;

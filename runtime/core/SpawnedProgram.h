@@ -1,8 +1,6 @@
 #pragma once
-// A program started for rmfx with posix_spawn (core/IsolatedProgram.h says why not fork), its
-// standard input and output connected to this process; and what its end status says. What
-// runIsolatedProgram (one input, one output) and IsolatedWorker (a program that lives for the run)
-// share.
+// A program started for rmfx with posix_spawn (core/IsolatedWorker.h says why not fork), its
+// standard input and output connected to this process; and what its end status says.
 
 #include <sys/types.h>
 

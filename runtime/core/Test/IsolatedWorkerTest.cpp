@@ -3,6 +3,7 @@
 #include <signal.h>
 #include <sys/wait.h>
 
+#include <atomic>
 #include <cerrno>
 #include <string>
 #include <thread>
@@ -151,6 +152,31 @@ TEST(IsolatedWorker, DestroyingItEndsTheWorkerAndReapsIt) {
         ASSERT_TRUE(childExists(pid));
     }
     EXPECT_FALSE(childExists(pid)) << "worker " << pid << " is still running or a zombie";
+}
+
+// The fork rmfx once used could copy a lock another thread held (the sanitizers' allocator's) into
+// the child, which then waited for it forever. A new program, started with posix_spawn, shares no
+// lock with the caller: a fresh worker for each of 40 requests while two threads allocate all the
+// time.
+TEST(IsolatedWorker, OtherThreadsAllocatingAllTheTimeNeverStallAStart) {
+    std::atomic<bool> stop{false};
+    std::vector<std::thread> churners;
+    for (int t = 0; t < 2; ++t) {
+        churners.emplace_back([&stop, t] {
+            std::vector<std::string> held(64);
+            for (size_t i = 0; !stop.load(std::memory_order_relaxed); ++i) held[i % held.size()] = std::string(16 + (i * 37 + t) % 4000, 'z');
+        });
+    }
+    std::vector<std::string> failures;
+    for (int i = 0; i < 40; ++i) {
+        IsolatedWorker fresh(kWorker);
+        auto result = fresh.request("call " + std::to_string(i), 20s);
+        if (!result || *result != "call " + std::to_string(i))
+            failures.push_back("call " + std::to_string(i) + ": " + (result ? *result : result.error()));
+    }
+    stop = true;
+    for (std::thread& churner : churners) churner.join();
+    EXPECT_TRUE(failures.empty()) << failures.front();
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 #pragma once
 // glslang's HLSL front end on one stage, and the bytes a request and its outcome cross between
-// rmfx and rmfx-hlsl-worker as (the program that runs glslang apart: core/IsolatedProgram.h says
+// rmfx and rmfx-hlsl-worker as (the program that runs glslang apart: core/IsolatedWorker.h says
 // why). Only the standard library and glslang: the worker is built from this file alone.
 
 #include <string>

@@ -318,7 +318,7 @@ Result<HlslTranslation> translateHlslStage(const PreprocessedShader& hlsl, const
         diagnostics.push_back({Diagnostic::Severity::Error, at.file.empty() ? where : at, element, bad->message});
         return Result<HlslTranslation>::failure(std::move(diagnostics));
     }
-    // In a process of its own: Debian's glslang crashes on some malformed HLSL (core/IsolatedProgram.h).
+    // In a process of its own: Debian's glslang crashes on some malformed HLSL (core/IsolatedWorker.h).
     Result<GlslangHlslOutcome> isolated = compileHlslInWorker({stage.stage == ShaderStage::Vertex, entry, code});
     if (!isolated) {
         diagnostics.push_back({Diagnostic::Severity::Error, where, element,

@@ -1,6 +1,6 @@
 #pragma once
 // rmfx-hlsl-worker, the program that runs glslang's HLSL front end in a process of its own
-// (core/IsolatedProgram.h says why): where it is, and stages compiled by it. One worker serves
+// (core/IsolatedWorker.h says why): where it is, and stages compiled by it. One worker serves
 // the whole run (core/IsolatedWorker.h), shared by every thread.
 
 #include <sys/types.h>

@@ -1,5 +1,5 @@
 // rmfx-hlsl-worker: compiles HLSL stages with glslang for rmfx, which starts it once and keeps it
-// for the run (core/IsolatedWorker.h; core/IsolatedProgram.h says why glslang runs apart). Reads
+// for the run (core/IsolatedWorker.h, which says why glslang runs apart). Reads
 // GlslangHlslRequests one after another, each a framed message (core/WorkerFrame.h) on standard
 // input, and answers each with its GlslangHlslOutcome on standard output; exits 0 when its input
 // ends. Bytes that are no request are exit status 2. A crash of glslang ends it by the signal,
