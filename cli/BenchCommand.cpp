@@ -21,6 +21,7 @@
 #include "bench/accuracy/VariantRun.h"
 #include "apps/ArgumentParser.h"
 #include "cli/Commands.h"
+#include "compile/RunPreparation.h"
 #include "apps/OptionValues.h"
 #include "gl/GlContext.h"
 #include "io/file/AtomicFile.h"
@@ -130,14 +131,19 @@ std::string uniqueName(std::string name, const std::vector<BenchInput>& inputs) 
 Result<fs::path> renderScene(const SceneSpec& scene, glm::ivec2 size, const fs::path& folder,
                              const WorkspaceLoadOptions& load) {
     std::string what = "scene '" + scene.name + "': ";
-    Result<Workspace> loaded = loadWorkspace(scene.workspace, {}, load);
+    RunRequest request;
+    request.workspace = scene.workspace;
+    request.load = load;
+    request.size = size;
+    request.plan.outputs = {scene.target};
+    Result<LoadedRun> loaded = loadRun(request);
     if (!loaded) return Error{what + formatAll(loaded.diagnostics())};
-    if (!loaded->canReadTarget(scene.target))
+    if (!loaded->ws.canReadTarget(scene.target))
         return Error{what + scene.workspace.string() + " has no target '" + scene.target + "' (" +
-                     loaded->describeTargets() + ")"};
-    ExecutorOptions options;
-    options.outputs = {scene.target};
-    auto run = runHeadless(*loaded, {size, 1, 1.0f / 60.0f}, options);
+                     loaded->ws.describeTargets() + ")"};
+    Result<PreparedRun> prepared = compileRun(std::move(*loaded), request);
+    if (!prepared) return Error{what + formatAll(prepared.diagnostics())};
+    auto run = runHeadless(*prepared, {size, 1, 1.0f / 60.0f});
     if (!run) return Error{what + formatAll(run.diagnostics())};
     std::unique_ptr<GlExecutor>& executor = *run;
     auto image = executor->readTarget(scene.target);
@@ -200,6 +206,7 @@ std::optional<std::vector<BenchInput>> gatherInputs(const BenchArguments& a, con
 struct StagePlan {
     const StageSpec* stage = nullptr;
     Workspace workspace;
+    CheckedPrograms programs;  // validation's, handed to every variant's compile
     std::vector<Variant> variants;
 };
 
@@ -224,7 +231,7 @@ std::optional<std::vector<StagePlan>> planStages(const BenchArguments& a, const 
             if (wanted) plan.variants.push_back(std::move(v));
         }
         if (plan.variants.empty()) continue;
-        Result<Workspace> loaded = loadWorkspace(stage.workspace, {}, a.load);
+        Result<Workspace> loaded = loadWorkspace(stage.workspace, {}, a.load, &plan.programs);
         if (!loaded) {
             std::cerr << "rmfx bench: stage " << stage.name << " (" << stage.where.file << ":" << stage.where.line
                       << "):\n" << formatAll(loaded.diagnostics());
@@ -345,7 +352,8 @@ int benchCommand(const std::vector<std::string>& args) {
             }
             for (const Variant& variant : plan.variants) {
                 ++done;
-                auto measured = measureVariant(plan.workspace, stage, variant, input.file, size, ideal->settings, a->counts);
+                auto measured = measureVariant(plan.workspace, stage, variant, input.file, size, ideal->settings, a->counts,
+                                               &plan.programs);
                 if (!measured) {
                     std::cerr << "rmfx bench: input '" << input.name << "', " << measured.error() << "\n";
                     return 2;

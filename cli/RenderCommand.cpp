@@ -11,7 +11,7 @@
 #include "cli/Commands.h"
 #include "apps/OptionValues.h"
 #include "compile/CompiledFrame.h"
-#include "core/DiagnosticRepeats.h"
+#include "compile/RunPreparation.h"
 #include "core/FrameWatchdog.h"
 #include "frontend/rfx/RfxImporter.h"
 #include "gl/GlContext.h"
@@ -228,7 +228,8 @@ bool reportHealth(GlExecutor& executor, int frames, bool quiet) {
     return errors;
 }
 
-int renderSequenceCommand(const RenderArguments& a, const Workspace& ws) {
+int renderSequenceCommand(const RenderArguments& a, const LoadedRun& loaded) {
+    const Workspace& ws = loaded.ws;
     std::vector<InputArgument> sequences, statics;
     for (const InputArgument& input : a.inputs) (isSequencePattern(input.file.string()) ? sequences : statics).push_back(input);
     if (sequences.size() != 1) {
@@ -268,6 +269,7 @@ int renderSequenceCommand(const RenderArguments& a, const Workspace& ws) {
     settings.fps = a.fps;
     if (a.dtGiven) settings.deltaTime = a.run.deltaTime;
     settings.preroll = a.preroll;
+    settings.programs = &loaded.programs;
     if (a.run.size != glm::ivec2(0)) settings.size = a.run.size;
     auto context = GlContext::createHeadless(ws.profile);
     if (!context) {
@@ -324,18 +326,19 @@ int renderCommand(const std::vector<std::string>& args) {
         std::cerr << "rmfx render: --effect chooses an effect of a RenderMonkey .rfx file; name the file\n";
         return 1;
     }
-    Result<Workspace> loaded = a->workspace ? loadWorkspace(*a->workspace, {}, a->load)
-                                            : loadDefaultWorkspace({}, a->load.media, a->load.textures);
+    RunRequest request;
+    if (a->workspace) request.workspace = *a->workspace;
+    request.load = a->load;
+    request.overrides = a->overrides;
+    request.inputs = a->inputs;
+    request.size = a->run.size;
+    Result<LoadedRun> loaded = loadRun(request);
     if (!loaded) {
         std::cerr << formatAll(loaded.diagnostics());
         return 1;
     }
     if (!a->quiet) std::cerr << formatAll(loaded.diagnostics());  // warnings
-    Workspace& ws = *loaded;
-    if (Result<void> set = applyOverrides(ws, a->overrides); !set) {
-        std::cerr << formatAll(set.diagnostics());
-        return 1;
-    }
+    Workspace& ws = loaded->ws;
     const bool sequence = std::any_of(a->inputs.begin(), a->inputs.end(),
                                       [](const InputArgument& i) { return isSequencePattern(i.file.string()); });
     if (sequence && a->executor.checkHealth) {
@@ -362,7 +365,7 @@ int renderCommand(const std::vector<std::string>& args) {
         for (const ImageInput* given : *named) planned.givenInputs.insert(given->name);
         std::cerr << formatAll(unreadArgumentWarnings(ws, planned, a->load.textures, a->inputs));
     }
-    if (sequence) return renderSequenceCommand(*a, ws);
+    if (sequence) return renderSequenceCommand(*a, *loaded);
     if (a->preroll > 0) {
         std::cerr << "rmfx render: --preroll is for sequences (an --input frame pattern); a single render "
                      "runs --frames N frames and writes the last\n";
@@ -371,17 +374,6 @@ int renderCommand(const std::vector<std::string>& args) {
     if (a->fpsGiven) {
         std::cerr << "rmfx render: --fps is a sequence's frame rate; a single render steps by --dt\n";
         return 1;
-    }
-    if (!a->inputs.empty()) {
-        const bool sized = a->run.size != glm::ivec2(0);
-        Result<SuppliedInputs> supplied = supplyInputs(ws, a->inputs, sized ? std::optional(a->run.size) : std::nullopt);
-        if (!supplied) {
-            std::cerr << formatAll(supplied.diagnostics());
-            return 1;
-        }
-        if (!a->quiet) std::cerr << formatAll(supplied.diagnostics());  // how each file was decoded
-        a->run.size = supplied->viewport;
-        a->executor.givenInputs = supplied->given;
     }
     std::string targetName = a->target.value_or(ws.outputTargetName());
     std::string output = a->output.value_or(ws.name + ".png");
@@ -397,40 +389,48 @@ int renderCommand(const std::vector<std::string>& args) {
             return 1;
         }
     }
+    if (Result<void> read = readRunInputs(*loaded, request); !read) {
+        std::cerr << formatAll(read.diagnostics());
+        return 1;
+    } else if (!a->quiet) {
+        std::cerr << formatAll(read.diagnostics());  // how each file was decoded
+    }
     a->executor.outputs = {targetName};
+    request.plan = a->executor;
+    Result<PreparedRun> prepared = compileRun(std::move(*loaded), request);  // `ws` is the prepared run's from here
+    if (!prepared) {
+        std::cerr << formatAll(prepared.diagnostics());
+        return 2;
+    }
     // --explain alone (no image, no --check) prints the plan: no GL context, no frame.
     if (a->explain && !a->output && !a->executor.checkHealth) {
-        auto frame = compileFrame(std::make_shared<const Workspace>(ws), a->executor, 
-                                  a->run.size.x > 0 ? a->run.size : glm::ivec2(ws.width, ws.height));
-        if (!frame) {
-            std::cerr << formatAll(frame.diagnostics());
-            return 2;
-        }
-        FrameExplanationInput explained = explanationOf(**frame, switchedOffEffects(ws, (*frame)->plan.askedEffects, (*frame)->values));
-        explained.inputFiles = givenFiles(ws, a->inputs);
+        const CompiledFrame& frame = *prepared->frame;
+        FrameExplanationInput explained = explanationOf(frame, switchedOffEffects(frame.ws(), frame.plan.askedEffects, frame.values));
+        explained.inputFiles = givenFiles(frame.ws(), a->inputs);
         std::cout << explainFrame(explained);
         return 0;
     }
 
-    auto context = GlContext::createHeadless(ws.profile);
+    auto context = GlContext::createHeadless(prepared->ws().profile);
     if (!context) {
         std::cerr << "rmfx render: " << context.error() << "\n";
         return 2;
     }
-    auto run = runHeadless(ws, a->run, a->executor);
-    // The GL build assembles the shaders validation did: what it says again is not repeated.
+    RunSettings settings = a->run;
+    settings.size = prepared->viewport();
+    auto run = runHeadless(*prepared, settings, a->executor);
     if (!run) {
-        std::cerr << formatAll(withoutRepeats(run.diagnostics(), loaded.diagnostics()));
+        std::cerr << formatAll(run.diagnostics());
         return 2;
     }
-    if (!a->quiet) std::cerr << formatAll(withoutRepeats(run.diagnostics(), loaded.diagnostics()));  // warnings (streams no shader reads…)
+    if (!a->quiet) std::cerr << formatAll(run.diagnostics());  // warnings (streams no shader reads…)
     std::unique_ptr<GlExecutor>& executor = *run;
     const bool unhealthy = a->executor.checkHealth && reportHealth(*executor, a->run.frames, a->quiet);
     if (a->explain) {
         FrameExplanationInput explained = explanationOf(executor->compiledFrame(), executor->switchedOffEffects());
         explained.frameRan = true;
         explained.contentSkipped = executor->contentSkippedEffects(true);
-        explained.inputFiles = givenFiles(ws, a->inputs);
+        explained.inputFiles = givenFiles(prepared->ws(), a->inputs);
         std::cout << explainFrame(explained);
         if (!a->output) return unhealthy ? kExitUnhealthy : 0;  // --explain alone writes no image
     }
@@ -439,12 +439,12 @@ int renderCommand(const std::vector<std::string>& args) {
         std::cerr << "rmfx render: " << image.error() << "\n";
         return 2;
     }
-    DisplayTransform transform = a->transform.value_or(a->target ? DisplayTransform::None : ws.output.transform);
+    DisplayTransform transform = a->transform.value_or(a->target ? DisplayTransform::None : prepared->ws().output.transform);
     WriteOptions write;
     write.transform = transform;
     // RenderMonkey's window showed the back buffer's colour only; the alpha an imported effect's
     // shaders wrote would turn into transparency in an image viewer.
-    write.integerOpaque = isRfxPath(ws.path) && !a->target;
+    write.integerOpaque = isRfxPath(prepared->ws().path) && !a->target;
     if (auto written = writeImage(output, *image, write); !written) {
         std::cerr << "rmfx render: " << written.error() << "\n";
         return 2;

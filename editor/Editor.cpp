@@ -9,6 +9,7 @@
 #include <epoxy/gl.h>
 #include <imgui.h>
 
+#include "compile/RunPreparation.h"
 #include "editor/CameraControl.h"
 #include "editor/EditorWindow.h"
 #include "editor/ErrorPanel.h"
@@ -359,23 +360,23 @@ int runEditor(const EditorOptions& options) {
     // Checked before any window opens: a broken workspace or input image is reported like rmfx
     // render reports it.
     const WorkspaceLoadOptions load{options.effect, options.media, options.textures, options.rfxMatrices};
-    Result<Workspace> loaded = loadWorkspace(options.workspace, {}, load);
+    RunRequest request;
+    request.workspace = options.workspace;
+    request.load = load;
+    request.overrides = options.overrides;
+    request.inputs = options.inputs;
+    request.size = options.size;
+    Result<LoadedRun> loaded = loadRun(request);
     Diagnostics diagnostics = loaded.diagnostics();
-    Workspace* checked = loaded ? &*loaded : nullptr;
-    if (checked) {
-        Result<void> set = applyOverrides(*checked, options.overrides);
-        diagnostics.insert(diagnostics.end(), set.diagnostics().begin(), set.diagnostics().end());
-        if (!set) checked = nullptr;
-    }
-    if (checked && !options.inputs.empty()) {
-        Result<SuppliedInputs> supplied =
-            supplyInputs(*checked, options.inputs, options.size.x > 0 ? std::optional(options.size) : std::nullopt);
+    if (loaded) {
         // With its warnings: how each file was decoded.
-        for (const Diagnostic& d : supplied.diagnostics()) diagnostics.push_back(d);
-        if (!supplied) checked = nullptr;
+        Result<void> read = readRunInputs(*loaded, request);
+        diagnostics.insert(diagnostics.end(), read.diagnostics().begin(), read.diagnostics().end());
+        if (!read) loaded = Result<LoadedRun>::failure(Diagnostics(diagnostics));
     }
     std::cerr << formatAll(diagnostics);
-    if (!checked) return 1;
+    if (!loaded) return 1;
+    const Workspace* checked = &loaded->ws;
     for (const std::string& target : options.viewTargets)
         if (!checked->canReadTarget(target)) {
             std::cerr << "rmfx edit: --view " << target << ": the workspace has no such target (" << checked->describeTargets()
@@ -388,7 +389,8 @@ int runEditor(const EditorOptions& options) {
         return 2;
     }
     // The size asked for, else 0: the input image's or the workspace's, which a reload may change.
-    auto opened = LiveWorkspace::open(options.workspace, options.size, options.overrides, load, options.inputs);
+    // The session's first build takes the workspace as checked here: the file is read once.
+    auto opened = LiveWorkspace::open(options.workspace, options.size, options.overrides, load, options.inputs, std::move(*loaded));
     if (!opened) {
         std::cerr << formatAll(opened.diagnostics());
         return 2;

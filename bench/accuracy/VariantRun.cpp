@@ -5,6 +5,7 @@
 
 #include <epoxy/gl.h>
 
+#include "compile/CompiledFrame.h"
 #include "gl/GlExecutor.h"
 #include "validation/WorkspaceLoader.h"
 
@@ -15,7 +16,7 @@ namespace fs = std::filesystem;
 Result<VariantMeasurement> measureVariant(const Workspace& stageWorkspace, const StageSpec& stage, const Variant& variant,
                                           const fs::path& inputFile, glm::ivec2 size,
                                           const std::vector<std::pair<std::string, std::string>>& extra,
-                                          const FrameCounts& counts) {
+                                          const FrameCounts& counts, const CheckedPrograms* programs) {
     const std::string what = "stage " + stage.name + ", variant '" + variant.name + "': ";
     Workspace ws = stageWorkspace;
     auto input = std::find_if(ws.textures.begin(), ws.textures.end(), [](const Texture& t) { return t.name == "Input"; });
@@ -32,7 +33,9 @@ Result<VariantMeasurement> measureVariant(const Workspace& stageWorkspace, const
     ExecutorOptions options;
     options.outputs = {stage.output};
     options.effects = std::vector<std::string>{variant.effect};
-    auto created = GlExecutor::create(std::make_shared<const Workspace>(ws), size, options);
+    auto frame = compileFrame(std::make_shared<const Workspace>(ws), options, size, kGuaranteedMaxTargetSize, programs);
+    if (!frame) return Error{what + formatAll(frame.diagnostics())};
+    auto created = GlExecutor::create(std::move(*frame), options);
     if (!created) return Error{what + formatAll(created.diagnostics())};
     std::unique_ptr<GlExecutor> executor = std::move(*created);
 

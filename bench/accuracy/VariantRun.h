@@ -15,6 +15,7 @@
 #include "core/Result.h"
 #include "model/Image.h"
 #include "model/Workspace.h"
+#include "validation/Validation.h"
 
 namespace rmfx::accuracy {
 
@@ -31,10 +32,10 @@ struct FrameCounts {
 
 // `stageWorkspace`: the stage's workspace as loaded (copied here, not changed). `extra`: settings
 // after the variant's own (the tone-map stage's Scene_Luminance). Errors name the stage, the
-// variant and what failed.
+// variant and what failed. `programs`: validation's, from loading the stage's workspace.
 Result<VariantMeasurement> measureVariant(const Workspace& stageWorkspace, const StageSpec& stage, const Variant& variant,
                                           const std::filesystem::path& inputFile, glm::ivec2 size,
                                           const std::vector<std::pair<std::string, std::string>>& extra,
-                                          const FrameCounts& counts);
+                                          const FrameCounts& counts, const CheckedPrograms* programs = nullptr);
 
 }  // namespace rmfx::accuracy

@@ -16,20 +16,49 @@ ShaderPrelude withMacrosFalse(const ShaderPrelude& prelude, const std::set<std::
     return probe;
 }
 
+// glslang's preprocessor output by stage text, within one compile: a pass as compiled is compared
+// with a probe for every set of effects it may be drawn without.
+class PreprocessedStages {
+public:
+    const Result<std::string>& of(const PassStage& stage) {
+        const std::string key = std::to_string(static_cast<int>(stage.stage)) + std::to_string(static_cast<int>(stage.dialect)) +
+                                ":" + stage.shader.code;
+        auto it = done_.find(key);
+        if (it == done_.end()) it = done_.emplace(key, preprocessStage(stage)).first;
+        return it->second;
+    }
+
+private:
+    std::map<std::string, Result<std::string>> done_;
+};
+
 // Whether leaving `effects` out changes the pass's code: glslang's preprocessor gives its stages
 // with the effects' macros false a different text from the stages as compiled. Where either does
 // not preprocess, it is taken to read them (its second program then fails to build and is not
 // drawn).
 bool readsEffects(const Workspace& ws, const Pass& pass, const ShaderPrelude& prelude, const PassProgramSource& compiled,
-                  const std::set<std::string>& effects) {
+                  const std::set<std::string>& effects, PreprocessedStages& preprocessed) {
     Result<PassProgramSource> probe = assemblePassProgram(ws, pass, withMacrosFalse(prelude, effects).defines, prelude.declarations);
     if (!probe || probe->stages.size() != compiled.stages.size()) return true;
     for (size_t i = 0; i < compiled.stages.size(); ++i) {
-        Result<std::string> a = preprocessStage(compiled.stages[i]);
-        Result<std::string> b = preprocessStage(probe->stages[i]);
+        const Result<std::string>& a = preprocessed.of(compiled.stages[i]);
+        const Result<std::string>& b = preprocessed.of(probe->stages[i]);
         if (!a || !b || *a != *b) return true;
     }
     return false;
+}
+
+std::optional<PassProgramSource> programWithoutEffects(const Workspace& ws, const Pass& pass, const FramePlan& plan,
+                                                       const PassProgramSource& asCompiled, const std::set<std::string>& effects,
+                                                       PreprocessedStages& preprocessed) {
+    if (!readsEffects(ws, pass, plan.prelude, asCompiled, effects, preprocessed)) return std::nullopt;
+    std::set<std::string> asked;
+    for (const std::string& e : plan.askedEffects)
+        if (!effects.count(e)) asked.insert(e);
+    const ShaderPrelude without = effectPrelude(ws, asked);
+    Result<PassProgramSource> source = assemblePassProgram(ws, pass, without.defines, without.declarations);
+    if (!source) return std::nullopt;
+    return std::move(*source);
 }
 
 std::map<std::string, std::set<std::string>> byPassName(const Workspace& ws, const PassGraph& graph,
@@ -44,6 +73,7 @@ std::map<std::string, std::set<std::string>> byPassName(const Workspace& ws, con
 void compileProgramsWithoutEffects(CompiledFrame& frame) {
     const Workspace& ws = frame.ws();
     std::map<std::pair<int, std::set<std::string>>, std::optional<PassProgramSource>> made;
+    PreprocessedStages preprocessed;
     for (const auto& [off, skip] : frame.plan.contentSkip) {
         const PassGraph& graph = frame.plan.graphs.at(off);
         for (const ContentSkipPlan::Consumer& c : skip.consumers) {
@@ -52,7 +82,8 @@ void compileProgramsWithoutEffects(CompiledFrame& frame) {
             if (fresh) {
                 const Result<PassProgramSource>& compiled = frame.programs.at(index);
                 if (compiled)
-                    it->second = programWithoutEffects(ws, ws.passes[static_cast<size_t>(index)], frame.plan, *compiled, c.effects);
+                    it->second = programWithoutEffects(ws, ws.passes[static_cast<size_t>(index)], frame.plan, *compiled, c.effects,
+                                                       preprocessed);
             }
             if (it->second) frame.withoutEffects[off][c.position] = {c.effects, *it->second};
         }
@@ -63,14 +94,8 @@ void compileProgramsWithoutEffects(CompiledFrame& frame) {
 
 std::optional<PassProgramSource> programWithoutEffects(const Workspace& ws, const Pass& pass, const FramePlan& plan,
                                                        const PassProgramSource& asCompiled, const std::set<std::string>& effects) {
-    if (!readsEffects(ws, pass, plan.prelude, asCompiled, effects)) return std::nullopt;
-    std::set<std::string> asked;
-    for (const std::string& e : plan.askedEffects)
-        if (!effects.count(e)) asked.insert(e);
-    const ShaderPrelude without = effectPrelude(ws, asked);
-    Result<PassProgramSource> source = assemblePassProgram(ws, pass, without.defines, without.declarations);
-    if (!source) return std::nullopt;
-    return std::move(*source);
+    PreprocessedStages preprocessed;
+    return programWithoutEffects(ws, pass, plan, asCompiled, effects, preprocessed);
 }
 
 const ProgramWithoutEffects* CompiledFrame::programWithout(const std::set<std::string>& switchedOff, size_t position) const {
@@ -103,7 +128,7 @@ std::map<std::string, std::string> CompiledFrame::effectsRunningWhateverTheConte
 }
 
 Result<std::shared_ptr<const CompiledFrame>> compileFrame(std::shared_ptr<const Workspace> ws, const FramePlanOptions& options,
-                                                          glm::ivec2 viewport, int maxTargetSize) {
+                                                          glm::ivec2 viewport, int maxTargetSize, const CheckedPrograms* checked) {
     using Compiled = Result<std::shared_ptr<const CompiledFrame>>;
     const Workspace& w = *ws;
     if (viewport.x < 1 || viewport.y < 1)
@@ -117,9 +142,23 @@ Result<std::shared_ptr<const CompiledFrame>> compileFrame(std::shared_ptr<const 
     frame->viewport = viewport;
     frame->maxTargetSize = maxTargetSize;
     frame->plan = std::move(*plan);
-    for (int index : frame->plan.runnablePasses())
-        frame->programs.emplace(index, assemblePassProgram(w, w.passes[static_cast<size_t>(index)], frame->plan.prelude.defines,
-                                                           frame->plan.prelude.declarations));
+    const ShaderPrelude& prelude = frame->plan.prelude;
+    const bool samePrelude = checked && checked->prelude.defines == prelude.defines &&
+                             checked->prelude.declarations == prelude.declarations;
+    for (int index : frame->plan.runnablePasses()) {
+        const auto given = checked ? checked->programs.find(index) : std::map<int, PassProgramSource>::const_iterator{};
+        const bool validated = checked && given != checked->programs.end();
+        if (validated && samePrelude) {
+            frame->programs.emplace(index, given->second);
+            continue;
+        }
+        Result<PassProgramSource> assembled = assemblePassProgram(w, w.passes[static_cast<size_t>(index)], prelude.defines,
+                                                                  prelude.declarations);
+        // Assembling a pass warns about its files and their text (a missing #version, HLSL without
+        // a COLOR0 to fog), which the effects' macro values do not change: validation said it.
+        if (validated && assembled) assembled = Result<PassProgramSource>(std::move(*assembled));
+        frame->programs.emplace(index, std::move(assembled));
+    }
     if (!options.checkHealth) compileProgramsWithoutEffects(*frame);
     return std::shared_ptr<const CompiledFrame>(std::move(frame));
 }

@@ -20,6 +20,7 @@
 #include "frontend/shader/PassProgram.h"
 #include "graph/FrameExplanation.h"
 #include "graph/FramePlan.h"
+#include "validation/Validation.h"
 #include "model/Workspace.h"
 
 namespace rmfx {
@@ -62,9 +63,12 @@ constexpr int kGuaranteedMaxTargetSize = 16384;
 // budget first), assembles every runnable pass's program and content skip's second programs.
 // Errors: an empty or oversized viewport, effects not declared, passes reading what nothing wrote,
 // a format or scale no value picks, targets over the limits. A pass whose shaders do not assemble
-// is no error here: its program holds why, for whoever builds it.
+// is no error here: its program holds why, for whoever builds it. `checked`: the programs
+// validation assembled and compiled (validation/Validation.h), taken as they are where they were
+// assembled with the plan's prelude, so that a run reads and assembles each shader once.
 Result<std::shared_ptr<const CompiledFrame>> compileFrame(std::shared_ptr<const Workspace> ws, const FramePlanOptions& options,
-                                                          glm::ivec2 viewport, int maxTargetSize = kGuaranteedMaxTargetSize);
+                                                          glm::ivec2 viewport, int maxTargetSize = kGuaranteedMaxTargetSize,
+                                                          const CheckedPrograms* checked = nullptr);
 
 // The source of `pass` compiled with `effects` left out of the plan's asked effects, when leaving
 // them out changes its code (`asCompiled`: its source with the plan's prelude); nullopt when it

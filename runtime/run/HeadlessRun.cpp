@@ -8,11 +8,11 @@
 
 namespace rmfx {
 
-Result<std::unique_ptr<GlExecutor>> runHeadless(const Workspace& ws, const RunSettings& settings,
-                                                const ExecutorOptions& options) {
-    using Run = Result<std::unique_ptr<GlExecutor>>;
-    glm::ivec2 size = settings.size.x > 0 ? settings.size : glm::ivec2(ws.width, ws.height);
-    auto created = GlExecutor::create(std::make_shared<const Workspace>(ws), size, options);
+namespace {
+
+using Run = Result<std::unique_ptr<GlExecutor>>;
+
+Run runFrames(Run created, const Workspace& ws, const RunSettings& settings) {
     if (!created) return Run::failure(created.takeDiagnostics());
     Diagnostics diagnostics = created.takeDiagnostics();
     std::unique_ptr<GlExecutor> executor = std::move(*created);
@@ -29,6 +29,18 @@ Result<std::unique_ptr<GlExecutor>> runHeadless(const Workspace& ws, const RunSe
         if (hasErrors(frame)) return Run::failure(std::move(diagnostics));
     }
     return Run(std::move(executor), std::move(diagnostics));
+}
+
+}  // namespace
+
+Result<std::unique_ptr<GlExecutor>> runHeadless(const Workspace& ws, const RunSettings& settings,
+                                                const ExecutorOptions& options) {
+    glm::ivec2 size = settings.size.x > 0 ? settings.size : glm::ivec2(ws.width, ws.height);
+    return runFrames(GlExecutor::create(std::make_shared<const Workspace>(ws), size, options), ws, settings);
+}
+
+Result<std::unique_ptr<GlExecutor>> runHeadless(const PreparedRun& run, const RunSettings& settings, const GlRunSettings& gl) {
+    return runFrames(GlExecutor::create(run.frame, gl), run.ws(), settings);
 }
 
 }  // namespace rmfx

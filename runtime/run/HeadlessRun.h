@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 
 #include "core/Diagnostic.h"
+#include "compile/RunPreparation.h"
 #include "core/Result.h"
 #include "gl/GlExecutor.h"
 #include "model/RunSettings.h"
@@ -21,5 +22,7 @@ namespace rmfx {
 // of the creation or frame that failed. The executor runs its own copy of `ws`.
 Result<std::unique_ptr<GlExecutor>> runHeadless(const Workspace& ws, const RunSettings& settings,
                                                 const ExecutorOptions& options = {});
+// The same for a prepared run (compile/RunPreparation.h), at its viewport (settings.size is not read).
+Result<std::unique_ptr<GlExecutor>> runHeadless(const PreparedRun& run, const RunSettings& settings, const GlRunSettings& gl = {});
 
 }  // namespace rmfx

@@ -16,7 +16,10 @@ Diagnostics withSeverity(const Diagnostics& all, Diagnostic::Severity severity) 
     return out;
 }
 
-void append(Diagnostics& to, const Diagnostics& from) { to.insert(to.end(), from.begin(), from.end()); }
+Diagnostics& append(Diagnostics& to, const Diagnostics& from) {
+    to.insert(to.end(), from.begin(), from.end());
+    return to;
+}
 
 bool sameCamera(const OrbitCameraSettings& a, const OrbitCameraSettings& b) {
     return a.target == b.target && a.distance == b.distance && a.yawDegrees == b.yawDegrees &&
@@ -33,18 +36,29 @@ LiveWorkspace::~LiveWorkspace() {
 Result<std::unique_ptr<LiveWorkspace>> LiveWorkspace::open(const std::filesystem::path& file, glm::ivec2 viewport,
                                                            const std::vector<std::pair<std::string, std::string>>& overrides,
                                                            const WorkspaceLoadOptions& load,
-                                                           std::vector<InputArgument> inputs) {
+                                                           std::vector<InputArgument> inputs, std::optional<LoadedRun> loaded) {
     std::unique_ptr<LiveWorkspace> live(new LiveWorkspace);
     live->loadOptions_ = load;
     live->inputs_ = std::move(inputs);
     live->file_ = file;
     live->requestedViewport_ = viewport;
     live->overrides_ = overrides;
+    live->givenFirst_ = std::move(loaded);
     Result<Build> build = live->load();
     Diagnostics found = build.diagnostics();
     if (!build) return Result<std::unique_ptr<LiveWorkspace>>::failure(std::move(found));
     live->adopt(std::move(*build), withSeverity(found, Diagnostic::Severity::Warning));
     return {std::move(live), std::move(found)};
+}
+
+LiveWorkspace::Build LiveWorkspace::fromLoaded(LoadedRun loaded) const {
+    Build build;
+    build.argumentsApplied = true;
+    build.supplied.viewport = loaded.viewport;
+    build.supplied.given = std::move(loaded.givenInputs);
+    build.workspace = std::make_shared<Workspace>(std::move(loaded.ws));
+    build.programs = std::move(loaded.programs);
+    return build;
 }
 
 Result<SuppliedInputs> LiveWorkspace::supply(Workspace& ws) const {
@@ -64,7 +78,8 @@ Result<LiveWorkspace::Build> LiveWorkspace::load(const std::set<std::string>& st
     // just as glslang's are: that halves the time a reload of the workspace file takes.
     ValidationOptions validation;
     validation.compileShaders = !executor_;
-    Result<Workspace> loaded = loadWorkspace(file_, validation, loadOptions_);
+    CheckedPrograms programs;
+    Result<Workspace> loaded = givenFirst_ ? Result<Workspace>(Workspace{}) : loadWorkspace(file_, validation, loadOptions_, &programs);
     Diagnostics diagnostics = loaded.diagnostics();
     if (!loaded) {
         // Watch what the broken file names too (a texture it names that is not there yet, say).
@@ -73,10 +88,16 @@ Result<LiveWorkspace::Build> LiveWorkspace::load(const std::set<std::string>& st
         return Result<Build>::failure(std::move(diagnostics));
     }
     Build build;
-    build.workspace = std::make_shared<Workspace>(std::move(*loaded));
+    if (givenFirst_) {
+        build = fromLoaded(std::move(*givenFirst_));
+        givenFirst_.reset();
+    } else {
+        build.workspace = std::make_shared<Workspace>(std::move(*loaded));
+        build.programs = std::move(programs);
+    }
     // Overrides from the command line: errors the first time; after that a variable the edited
     // file no longer declares only loses its override (the file stays loadable).
-    for (const auto& override : overrides_) {
+    for (const auto& override : build.argumentsApplied ? std::vector<std::pair<std::string, std::string>>{} : overrides_) {
         Diagnostics bad = applyOverrides(*build.workspace, {override}).diagnostics();
         if (!executor_)
             append(diagnostics, bad);
@@ -88,7 +109,7 @@ Result<LiveWorkspace::Build> LiveWorkspace::load(const std::set<std::string>& st
             }
     }
     build.dependencies = findWorkspaceDependencies(*build.workspace);
-    if (!hasErrors(diagnostics)) {
+    if (!hasErrors(diagnostics) && !build.argumentsApplied) {
         Result<SuppliedInputs> supplied = supply(*build.workspace);
         append(diagnostics, supplied.diagnostics());
         if (supplied) build.supplied = std::move(*supplied);
@@ -107,12 +128,16 @@ Result<LiveWorkspace::Build> LiveWorkspace::load(const std::set<std::string>& st
         std::vector<std::string> reusable;
         for (const Texture& t : workspace_->textures)
             if (!pendingTextures_.count(t.name) && !staleTextures.count(t.name)) reusable.push_back(t.name);
-        auto created = GlExecutor::createReusing(build.workspace, viewport, options, *executor_, reusable);
+        auto frame = compileFrame(build.workspace, options, viewport, kGuaranteedMaxTargetSize, &build.programs);
+        if (!frame) return Result<Build>::failure(append(diagnostics, frame.takeDiagnostics()));
+        auto created = GlExecutor::createReusing(std::move(*frame), options, *executor_, reusable);
         append(diagnostics, created.diagnostics());
         if (!created) return Result<Build>::failure(std::move(diagnostics));
         build.executor = std::move(*created);
     } else {
-        auto created = GlExecutor::create(build.workspace, viewport, options);
+        auto frame = compileFrame(build.workspace, options, viewport, kGuaranteedMaxTargetSize, &build.programs);
+        if (!frame) return Result<Build>::failure(append(diagnostics, frame.takeDiagnostics()));
+        auto created = GlExecutor::create(std::move(*frame), options);
         append(diagnostics, created.diagnostics());
         if (!created) return Result<Build>::failure(std::move(diagnostics));
         build.executor = std::move(*created);

@@ -23,6 +23,7 @@
 
 #include "core/Diagnostic.h"
 #include "core/Result.h"
+#include "compile/RunPreparation.h"
 #include "core/Value.h"
 #include "frontend/workspace/WorkspaceDependencies.h"
 #include "gl/GlExecutor.h"
@@ -52,11 +53,14 @@ public:
     // Fails with the diagnostics when the FIRST build fails (nothing good to keep yet); a success
     // carries the first build's warnings. `inputs` are images for the workspace's <input>s (rmfx
     // edit --input), supplied at every build as rmfx render supplies them: a viewport of 0,0 then
-    // takes the size of the image that sets it.
+    // takes the size of the image that sets it. `loaded`: the file as the caller already loaded it
+    // for the same arguments (loadRun and readRunInputs, compile/RunPreparation.h), which the
+    // first build takes instead of loading the file again.
     static Result<std::unique_ptr<LiveWorkspace>> open(const std::filesystem::path& file, glm::ivec2 viewport,
                                                        const std::vector<std::pair<std::string, std::string>>& overrides,
                                                        const WorkspaceLoadOptions& load = {},
-                                                       std::vector<InputArgument> inputs = {});
+                                                       std::vector<InputArgument> inputs = {},
+                                                       std::optional<LoadedRun> loaded = std::nullopt);
     ~LiveWorkspace();
     LiveWorkspace(const LiveWorkspace&) = delete;
     LiveWorkspace& operator=(const LiveWorkspace&) = delete;
@@ -107,13 +111,18 @@ private:
         std::unique_ptr<GlExecutor> executor;
         WorkspaceDependencies dependencies;
         SuppliedInputs supplied;  // what the input images gave: the viewport, the inputs given
+        CheckedPrograms programs;  // validation's, for the compile step
+        bool argumentsApplied = false;  // the overrides and input images are in `workspace` already
     };
+    std::optional<LoadedRun> givenFirst_;  // open()'s `loaded`, until the first build takes it
 
     LiveWorkspace() = default;
     // Loads, validates and builds the workspace file; on failure fills failedDependencies_ with
     // what the broken file names, so that those files are watched too.
     // Textures named in staleTextures changed on disk: not copied from the running build.
     Result<Build> load(const std::set<std::string>& staleTextures = {});
+    // The first build's workspace from what open() was given.
+    Build fromLoaded(LoadedRun loaded) const;
     bool rebuildWorkspace(const std::set<std::string>& staleTextures);
     void adopt(Build build, Diagnostics warnings);
     void recompilePendingPasses();

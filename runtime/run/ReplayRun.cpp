@@ -8,6 +8,7 @@
 #include "io/file/FileNamePart.h"
 #include "io/image/ImageIO.h"
 #include "io/image/InputImage.h"
+#include "compile/RunPreparation.h"
 #include "run/HeadlessRun.h"
 #include "validation/ImageInputs.h"
 #include "validation/WorkspaceLoader.h"
@@ -62,20 +63,30 @@ void checkTargets(const ReplayCase& c, const Workspace& ws, Diagnostics& diagnos
 // The case's workspace loaded, its <set>s and <input>s applied, and the context of its profile
 // current: what renderReplayCase and renderReplayTargets share. nullopt when errors stop it.
 struct PreparedCase {
-    Workspace ws;
+    LoadedRun loaded;
     RunSettings settings;
     ExecutorOptions options;
+
+    // Compiles the frame with validation's programs and renders the case's frames.
+    Result<std::unique_ptr<GlExecutor>> run() {
+        const glm::ivec2 size = settings.size.x > 0 ? settings.size : glm::ivec2(loaded.ws.width, loaded.ws.height);
+        auto frame = compileFrame(std::make_shared<const Workspace>(std::move(loaded.ws)), options, size, kGuaranteedMaxTargetSize,
+                                  &loaded.programs);
+        if (!frame) return Result<std::unique_ptr<GlExecutor>>::failure(frame.takeDiagnostics());
+        return runHeadless(PreparedRun{std::move(*frame), options}, settings, options);
+    }
 };
 
 std::optional<PreparedCase> prepareCase(const ReplayCase& c, const MediaOptions& media, HeadlessContexts* contexts,
                                         Diagnostics& diagnostics) {
-    WorkspaceLoadOptions load;
-    load.media = media;
-    Result<Workspace> loaded = loadWorkspace(c.workspace, {}, load);
+    RunRequest request;
+    request.workspace = c.workspace;
+    request.load.media = media;
+    Result<LoadedRun> loaded = loadRun(request);
     add(diagnostics, loaded.takeDiagnostics());
     if (!loaded) return std::nullopt;
     PreparedCase prepared{std::move(*loaded), c.run, {}};
-    Workspace& ws = prepared.ws;
+    Workspace& ws = prepared.loaded.ws;
     applySets(c, ws, diagnostics);
     checkTargets(c, ws, diagnostics);
     if (hasErrors(diagnostics)) return std::nullopt;
@@ -101,12 +112,12 @@ Result<std::vector<Image>> renderReplayCase(const ReplayCase& c, const MediaOpti
     Diagnostics diagnostics;
     std::optional<PreparedCase> prepared = prepareCase(c, media, contexts, diagnostics);
     if (!prepared) return Rendered::failure(std::move(diagnostics));
-    Workspace& ws = prepared->ws;
+    const std::string outputTarget = prepared->loaded.ws.outputTargetName();
     // Only what the compares read is computed, as rmfx render would for each target.
     for (const ReplayCompare& compare : c.compares)
-        prepared->options.outputs.push_back(compare.target.empty() ? ws.outputTargetName() : compare.target);
+        prepared->options.outputs.push_back(compare.target.empty() ? outputTarget : compare.target);
     prepared->options.checkHealth = c.check;
-    auto run = runHeadless(ws, prepared->settings, prepared->options);
+    auto run = prepared->run();
     add(diagnostics, run.diagnostics());
     if (!run) return Rendered::failure(std::move(diagnostics));
     GlExecutor& executor = **run;
@@ -117,7 +128,7 @@ Result<std::vector<Image>> renderReplayCase(const ReplayCase& c, const MediaOpti
     if (hasErrors(diagnostics)) return Rendered::failure(std::move(diagnostics));
     std::vector<Image> images;
     for (const ReplayCompare& compare : c.compares) {
-        std::string target = compare.target.empty() ? ws.outputTargetName() : compare.target;
+        std::string target = compare.target.empty() ? outputTarget : compare.target;
         auto image = executor.readTarget(target);
         if (!image) {
             diagnostics.push_back({Diagnostic::Severity::Error, compare.where, "<compare>",
@@ -136,7 +147,7 @@ Result<std::vector<CaseTarget>> renderReplayTargets(const ReplayCase& c, const M
     std::optional<PreparedCase> prepared = prepareCase(c, media, contexts, diagnostics);
     if (!prepared) return Rendered::failure(std::move(diagnostics));
     // No outputs named: every target a running pass writes can be read, and none shares memory.
-    auto run = runHeadless(prepared->ws, prepared->settings, prepared->options);
+    auto run = prepared->run();
     add(diagnostics, run.diagnostics());
     if (!run) return Rendered::failure(std::move(diagnostics));
     GlExecutor& executor = **run;

@@ -1,5 +1,7 @@
 #include "run/SequenceRun.h"
 
+#include "compile/CompiledFrame.h"
+
 #include <chrono>
 #include <future>
 #include <memory>
@@ -93,7 +95,9 @@ Result<SequenceTimes> renderSequence(const Workspace& source, const SequenceSett
     const std::string target = settings.target.empty() ? ws.outputTargetName() : settings.target;
     if (!ws.canReadTarget(target)) return runError("--target " + target, "the workspace has no such target (" + ws.describeTargets() + ")");
     if (options.outputs.empty()) options.outputs = {target};
-    auto created = GlExecutor::create(std::make_shared<const Workspace>(ws), viewport, options);
+    auto compiled = compileFrame(std::make_shared<const Workspace>(ws), options, viewport, kGuaranteedMaxTargetSize, settings.programs);
+    if (!compiled) return Run::failure(compiled.takeDiagnostics());
+    auto created = GlExecutor::create(std::move(*compiled), options);
     if (!created) return Run::failure(created.takeDiagnostics());
     std::unique_ptr<GlExecutor> executor = std::move(*created);
 

@@ -14,6 +14,7 @@
 #include "io/image/ImageIO.h"
 #include "model/Workspace.h"
 #include "validation/ImageInputs.h"
+#include "validation/Validation.h"
 
 namespace rmfx {
 
@@ -39,6 +40,9 @@ struct SequenceSettings {
     // Seconds a frame may take, GPU work included (FrameWatchdog, as RunSettings); 0: no limit.
     double frameBudgetSeconds = 0.0;
     std::function<void(const std::string&)> onFrameBudget;
+    // The programs validation assembled for the workspace (compile/RunPreparation.h's LoadedRun),
+    // so that they are not assembled again; null: assembled here.
+    const CheckedPrograms* programs = nullptr;
 };
 
 struct SequenceProgress {

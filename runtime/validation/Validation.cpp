@@ -1,8 +1,10 @@
 #include "validation/Validation.h"
 
 #include <algorithm>
+#include <atomic>
 #include <map>
 #include <set>
+#include <thread>
 
 #include "frontend/shader/PassProgram.h"
 #include "graph/PassGraph.h"
@@ -16,9 +18,11 @@ namespace {
 class Validator {
 public:
     Validator(const Workspace& ws, const ValidationOptions& options, Diagnostics& out)
-        : ws_(ws), options_(options), out_(out) {}
+        : ws_(ws), options_(options), out_(&out), all_(out) {}
 
-    void run() {
+    // Each pass's checks are gathered in its own list: the glslang compiles of all passes run
+    // between the checks before and after them, on every core, and the lists join in pass order.
+    void run(CheckedPrograms* handOver) {
         checkUniqueNames();
         checkTargets();
         checkTextureReadConditions();
@@ -26,17 +30,45 @@ public:
         checkOutput();
         checkEffects();
         checkSemantics();
-        for (const Pass& pass : ws_.passes) checkPass(pass);
+        std::set<std::string> all;
+        for (const Effect& e : ws_.effects) all.insert(e.name);
+        prelude_ = effectPrelude(ws_, all);
+        std::vector<PassCheck> checks(ws_.passes.size());
+        for (size_t i = 0; i < ws_.passes.size(); ++i) {
+            out_ = &checks[i].found;
+            checkPass(ws_.passes[i], checks[i]);
+        }
+        if (options_.compileShaders) compileAll(checks);
+        for (size_t i = 0; i < ws_.passes.size(); ++i) {
+            out_ = &checks[i].found;
+            if (checks[i].program && checks[i].compiled) checkProgram(ws_.passes[i], checks[i]);
+            all_.insert(all_.end(), checks[i].found.begin(), checks[i].found.end());
+        }
+        out_ = &all_;
         Diagnostics order = checkPassOrder(ws_);
-        out_.insert(out_.end(), order.begin(), order.end());
+        all_.insert(all_.end(), order.begin(), order.end());
+        if (handOver) {
+            handOver->prelude = prelude_;
+            for (size_t i = 0; i < checks.size(); ++i)
+                if (checks[i].program && (!options_.compileShaders || (checks[i].compiled && *checks[i].compiled)))
+                    handOver->programs.emplace(static_cast<int>(i), std::move(*checks[i].program));
+        }
     }
 
 private:
+    // A pass's program as assembled, and what glslang made of it.
+    struct PassCheck {
+        Diagnostics found;
+        std::optional<PassProgramSource> program;
+        std::vector<std::string> vertexInputs;
+        std::optional<Result<std::vector<ActiveUniform>>> compiled;
+    };
+
     void error(const SourceLocation& where, const std::string& element, const std::string& message) {
-        out_.push_back({Diagnostic::Severity::Error, where, element, message});
+        out_->push_back({Diagnostic::Severity::Error, where, element, message});
     }
     void warning(const SourceLocation& where, const std::string& element, const std::string& message) {
-        out_.push_back({Diagnostic::Severity::Warning, where, element, message});
+        out_->push_back({Diagnostic::Severity::Warning, where, element, message});
     }
     // "color (rgb)" and "color (rgba)" tell the two colour types apart.
     static std::string typeWithWidth(ValueType type) {
@@ -302,7 +334,7 @@ private:
             for (const Variable& c : p.constants) check(c);
     }
 
-    void checkPass(const Pass& pass) {
+    void checkPass(const Pass& pass, PassCheck& check) {
         std::string label = passLabel(pass);
         if (!pass.camera.empty() && !ws_.findCamera(pass.camera)) {
             std::string known;
@@ -365,15 +397,58 @@ private:
                           c.name + "' (" + at(v->where) + ") is a " + typeWithWidth(v->value.type));
         }
         // Every effect asked for, switches deciding: the form that keeps every read of the shader.
-        std::set<std::string> all;
-        for (const Effect& e : ws_.effects) all.insert(e.name);
-        ShaderPrelude prelude = effectPrelude(ws_, all);
-        Result<PassProgramSource> program = assemblePassProgram(ws_, pass, prelude.defines, prelude.declarations);
-        out_.insert(out_.end(), program.diagnostics().begin(), program.diagnostics().end());
-        if (!program || !options_.compileShaders) return;
-        std::vector<std::string> inputs;
-        auto uniforms = checkPassProgram(*program, label, &inputs);
-        out_.insert(out_.end(), uniforms.diagnostics().begin(), uniforms.diagnostics().end());
+        Result<PassProgramSource> program = assemblePassProgram(ws_, pass, prelude_.defines, prelude_.declarations);
+        out_->insert(out_->end(), program.diagnostics().begin(), program.diagnostics().end());
+        if (program) check.program = std::move(*program);
+    }
+
+    // glslang compiles each distinct program once (passes often share their shaders), on as many
+    // threads as there are cores; a program that fails is compiled again for each pass that has
+    // it, so that its messages name that pass.
+    void compileAll(std::vector<PassCheck>& checks) {
+        std::map<std::string, size_t> firstWithText;
+        std::vector<size_t> distinct;
+        std::vector<std::optional<size_t>> sameAs(checks.size());
+        for (size_t i = 0; i < checks.size(); ++i) {
+            if (!checks[i].program) continue;
+            std::string key;
+            for (const PassStage& stage : checks[i].program->stages)
+                key += std::to_string(static_cast<int>(stage.dialect)) + ":" + std::to_string(stage.shader.code.size()) + ":" +
+                       stage.shader.code;
+            auto [it, fresh] = firstWithText.emplace(std::move(key), i);
+            if (fresh) distinct.push_back(i);
+            else sameAs[i] = it->second;
+        }
+        auto compile = [&](size_t i) {
+            checks[i].compiled = checkPassProgram(*checks[i].program, passLabel(ws_.passes[i]), &checks[i].vertexInputs);
+        };
+        const size_t threads = std::min<size_t>(distinct.size(), std::max(1u, std::thread::hardware_concurrency()));
+        std::atomic<size_t> next{0};
+        auto work = [&] {
+            for (size_t n; (n = next.fetch_add(1)) < distinct.size();) compile(distinct[n]);
+        };
+        std::vector<std::thread> pool;
+        for (size_t t = 1; t < threads; ++t) pool.emplace_back(work);
+        work();
+        for (std::thread& t : pool) t.join();
+        for (size_t i = 0; i < checks.size(); ++i) {
+            if (!sameAs[i]) continue;
+            const PassCheck& first = checks[*sameAs[i]];
+            if (*first.compiled) {
+                checks[i].compiled = first.compiled;
+                checks[i].vertexInputs = first.vertexInputs;
+            } else {
+                compile(i);
+            }
+        }
+    }
+
+    void checkProgram(const Pass& pass, const PassCheck& check) {
+        const std::string label = passLabel(pass);
+        const PassProgramSource& program = *check.program;
+        const Result<std::vector<ActiveUniform>>& uniforms = *check.compiled;
+        const std::vector<std::string>& inputs = check.vertexInputs;
+        out_->insert(out_->end(), uniforms.diagnostics().begin(), uniforms.diagnostics().end());
         if (!uniforms) return;
         // Built-in streams are checked by the GL executor, which sees the driver's list of inputs.
         for (const VertexStream& stream : pass.streams)
@@ -382,7 +457,7 @@ private:
                 warning(stream.where, label, "stream to attribute '" + stream.attribute + "' (line " +
                                                  std::to_string(stream.where.line) + "), which the shaders do not read");
         std::set<std::string> active;
-        const std::set<std::string> initialized = uniformsWithInitializers(*program);
+        const std::set<std::string> initialized = uniformsWithInitializers(program);
         for (const ActiveUniform& u : *uniforms) {
             active.insert(u.name);
             if (u.name.rfind("rmfx_effect_", 0) == 0 && ws_.findEffect(u.name.substr(12))) continue;
@@ -390,7 +465,7 @@ private:
             if (std::holds_alternative<Unbound>(source) && keepsInitialValue(initialized, u.name)) continue;  // keeps its value
             std::string why = bindingMismatch(ws_, pass, source, u.name, u.type, u.arraySize);
             if (why.empty()) continue;
-            SourceLocation where = findUniformDeclaration(*program, u.name).value_or(pass.where);
+            SourceLocation where = findUniformDeclaration(program, u.name).value_or(pass.where);
             if (unboundUniformIsZero(pass, source, u.type))
                 warning(where, label, why + "; Direct3D ran with its constant register unset, so it is fed zero");
             else
@@ -404,15 +479,17 @@ private:
 
     const Workspace& ws_;
     const ValidationOptions& options_;
-    Diagnostics& out_;
+    Diagnostics* out_;  // where error() and warning() write: the pass's own list while passes are checked
+    Diagnostics& all_;
+    ShaderPrelude prelude_;
 };
 
 }  // namespace
 
-Result<void> validateWorkspace(const Workspace& ws, const ValidationOptions& options) {
+Result<void> validateWorkspace(const Workspace& ws, const ValidationOptions& options, CheckedPrograms* handOver) {
     Diagnostics out;
     try {
-        Validator(ws, options, out).run();
+        Validator(ws, options, out).run(handOver);
     } catch (const std::filesystem::filesystem_error& e) {
         // A file name the file system refuses (a component over 255 bytes, a symlink loop, a folder
         // it may not search) ends validation with an error naming it, not with a crash.

@@ -8,7 +8,7 @@
 namespace rmfx {
 
 static Result<Workspace> validated(Result<Workspace> parsed, const ValidationOptions& options, const MediaOptions& media,
-                                   const std::vector<TextureArgument>& textures = {}, bool imported = false) {
+                                   const std::vector<TextureArgument>& textures, bool imported, CheckedPrograms* handOver) {
     Diagnostics diagnostics = parsed.takeDiagnostics();
     if (!parsed) return Result<Workspace>::failure(std::move(diagnostics));
     Result<void> replaced = replaceTextures(*parsed, textures);
@@ -22,27 +22,29 @@ static Result<Workspace> validated(Result<Workspace> parsed, const ValidationOpt
     diagnostics.insert(diagnostics.end(), resolved.diagnostics().begin(), resolved.diagnostics().end());
     if (!resolved) return Result<Workspace>::failure(std::move(diagnostics));
     if (imported) frameDrawnModels(*parsed);
-    Diagnostics found = validateWorkspace(*parsed, options).diagnostics();
+    Diagnostics found = validateWorkspace(*parsed, options, handOver).diagnostics();
     diagnostics.insert(diagnostics.end(), found.begin(), found.end());
     if (hasErrors(diagnostics)) return Result<Workspace>::failure(std::move(diagnostics));
     return {std::move(*parsed), std::move(diagnostics)};
 }
 
 Result<Workspace> loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options,
-                                const WorkspaceLoadOptions& load) {
-    if (isRfxPath(path)) return validated(importRfxFile(path, {load.effect, load.rfxMatrices}), options, load.media, load.textures, true);
+                                const WorkspaceLoadOptions& load, CheckedPrograms* handOver) {
+    if (isRfxPath(path))
+        return validated(importRfxFile(path, {load.effect, load.rfxMatrices}), options, load.media, load.textures, true, handOver);
     if (!load.effect.empty()) {
         return Result<Workspace>::failure(
             {{Diagnostic::Severity::Error, {path.string(), 0}, "--effect " + load.effect,
               "--effect chooses an effect of a RenderMonkey .rfx file; this is an rmfx workspace "
               "(use --effects to choose its <effect> groups)"}});
     }
-    return validated(parseWorkspaceFile(path), options, load.media, load.textures);
+    return validated(parseWorkspaceFile(path), options, load.media, load.textures, false, handOver);
 }
 
 Result<Workspace> loadDefaultWorkspace(const ValidationOptions& options, const MediaOptions& media,
-                                       const std::vector<TextureArgument>& textures) {
-    return validated(parseWorkspaceText(defaultWorkspaceText(), defaultWorkspaceName, "."), options, media, textures);
+                                       const std::vector<TextureArgument>& textures, CheckedPrograms* handOver) {
+    return validated(parseWorkspaceText(defaultWorkspaceText(), defaultWorkspaceName, "."), options, media, textures, false,
+                     handOver);
 }
 
 Result<void> applyOverrides(Workspace& ws, const std::vector<std::pair<std::string, std::string>>& overrides) {

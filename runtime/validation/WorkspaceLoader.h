@@ -32,13 +32,14 @@ struct WorkspaceLoadOptions {
 
 // Dispatches on the extension: .rfx (any case) to the RenderMonkey importer, else the XML format.
 // The workspace when parsing and validation found no error; the diagnostics (errors and
-// warnings) are in file order per stage.
+// warnings) are in file order per stage. With `handOver`, validation's programs go there
+// (CheckedPrograms), for the compile step.
 Result<Workspace> loadWorkspace(const std::filesystem::path& path, const ValidationOptions& options = {},
-                                const WorkspaceLoadOptions& load = {});
+                                const WorkspaceLoadOptions& load = {}, CheckedPrograms* handOver = nullptr);
 // The built-in default workspace; its relative paths resolve in the current folder. `textures`
 // as WorkspaceLoadOptions::textures.
 Result<Workspace> loadDefaultWorkspace(const ValidationOptions& options = {}, const MediaOptions& media = {},
-                                       const std::vector<TextureArgument>& textures = {});
+                                       const std::vector<TextureArgument>& textures = {}, CheckedPrograms* handOver = nullptr);
 
 // Applies NAME=VALUE overrides to the workspace's variable defaults, checking names and types.
 // Each problem is an error naming the variable.
