@@ -29,6 +29,7 @@
 #include "core/Result.h"
 #include "gl/GlHandles.h"
 #include "gl/GlRenderTargets.h"
+#include "gl/PassObserver.h"
 #include "graph/ContentSkipPlan.h"
 #include "graph/FramePlan.h"
 #include "model/Workspace.h"
@@ -37,7 +38,7 @@ namespace rmfx {
 
 struct GpuPass;
 
-class GlContentSkip {
+class GlContentSkip : public PassObserver {
 public:
     static Result<std::unique_ptr<GlContentSkip>> create();
 
@@ -59,13 +60,18 @@ public:
     // (afterPass is still called).
     bool beforePass(size_t index);
     void afterPass(size_t index);
+    // As an observer of the frame (gl/PassObserver.h): the same, around each scheduled pass.
+    void beginFrame(int, size_t) override { beginFrame(); }
+    bool beforePass(const ObservedPass& pass) override { return beforePass(pass.position); }
+    void afterDraws(const ObservedPass& pass) override { afterPass(pass.position); }
+    using PassObserver::afterPass;
     // How many passes of the last finished frame the CPU left out (beforePass false).
     int passesNotIssued() const { return lastNotIssued_; }
     // The query whose answer decides whether scheduled pass `index` is drawn this frame (between
     // beforePass and the end of the frame), for draws that look at what it wrote; 0: it is drawn
     // (or the CPU already knows it is).
     unsigned conditionOf(size_t index) const;
-    void endFrame();
+    void endFrame() override;
 
     // Around a consumer's draws (ContentSkipPlan::Consumer): `withoutEffects` false for the
     // program as compiled (drawn where the source holds something), true for the one without the

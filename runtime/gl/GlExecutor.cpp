@@ -72,6 +72,14 @@ struct GlExecutor::Build {
             impl->contentSkip = std::move(*skip);
             impl->contentSkip->setDecision(settings.contentSkipDecision);
         }
+        if (impl->healthCheck) {
+            Impl& s = *impl;
+            impl->healthObserver = std::make_unique<GlHealthObserver>(
+                *impl->healthCheck, impl->contentSkip.get(), [&s](const SamplerSlot& slot) { return s.healthInputLabel(slot); },
+                [&s](const GpuPass& gp) { return s.current.graph->nodes[static_cast<size_t>(gp.index)].loadsTarget; });
+            impl->observers.push_back(impl->healthObserver.get());
+        }
+        if (impl->contentSkip) impl->observers.push_back(impl->contentSkip.get());
         impl->chooseVariant();
         glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
         const glm::ivec2 viewport = impl->compiled->viewport;
@@ -120,9 +128,7 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
     s.targets.startFrame();
     s.timers.beginFrame(s.schedule.size());
     s.lastFramePasses.clear();
-    if (s.contentSkip) s.contentSkip->beginFrame();
-    if (s.healthCheck) s.healthCheck->beginFrame(frame_, s.schedule.size());
-    std::vector<GlHealthCheck::Input> healthInputs;
+    for (PassObserver* o : s.observers) o->beginFrame(frame_, s.schedule.size());
     const FrameCamera camera(camera_, viewport_);
     const FrameInputs inputs{clock, frame_, &camera, viewport_, s.mouse, s.mouseButtons, &s.current.switchedOff};
     // The named cameras passes look through (RmCameraReference): fixed, built once a frame.
@@ -134,16 +140,15 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
         GpuTarget& target = *gp.target;
         GpuResource& memory = *target.resource;
         GLuint framebuffer = memory.framebuffers[memory.writeBuffer()].get();
-        // Before the pass's condition: the inspections it flushes are of earlier passes.
-        if (s.healthCheck) s.healthCheck->beforeWriting(memory.textures[memory.writeBuffer()].get());
-        // False: content skip knows already that nothing of the pass is drawn this frame.
-        const bool issued = !s.contentSkip || s.contentSkip->beforePass(position);
-        healthInputs.clear();
+        const ObservedPass observed{position, &gp, memory.textures[memory.writeBuffer()].get()};
+        // False from an observer: nothing of the pass is issued this frame (content skip knows it draws nothing).
+        bool issued = true;
+        for (PassObserver* o : s.observers) issued = o->beforePass(observed) && issued;
         if (issued) {
             glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
             glViewport(0, 0, memory.spec.size.x, memory.spec.size.y);
-            // The health check and content skip draw between passes with states of their own.
-            if (s.healthCheck || s.contentSkip) s.renderState.forget();
+            // Observers draw between passes with states of their own.
+            if (!s.observers.empty()) s.renderState.forget();
             s.renderState.apply(pass, s.compatibility, rowsTopFirst(s.ws.textureSpace));
             if (pass.clear.color) glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, glm::value_ptr(*pass.clear.color));
             if (pass.clear.depth) {
@@ -161,7 +166,7 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
                 glUseProgram(program.program.get());
                 uploadUniforms(program, passInputs);
                 if (s.compatibility) loadFixedFunctionState(passCamera.projection, passCamera.view * program.model);
-                healthInputs.clear();
+                for (PassObserver* o : s.observers) o->beginDraw(observed, program);
                 for (const SamplerSlot& slot : program.samplers) {
                     GLuint texture = slot.texture;
                     if (slot.target) {
@@ -175,21 +180,13 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
                     }
                     glBindTextureUnit(static_cast<GLuint>(slot.unit), texture);
                     glBindSampler(static_cast<GLuint>(slot.unit), slot.samplerObject.get());
-                    if (s.healthCheck)
-                        if (std::optional<std::string> label = s.healthInputLabel(slot))
-                            healthInputs.push_back({slot.sampler->uniform, std::move(*label), texture, slot.unit});
+                    for (PassObserver* o : s.observers) o->samplerBound(slot, texture);
                 }
-                if (s.healthCheck && program.health.found) {
-                    // In the order its shader records them.
-                    std::vector<GlHealthCheck::Input> recorded;
-                    for (const std::string& sampler : program.healthInputs)
-                        for (const GlHealthCheck::Input& input : healthInputs)
-                            if (input.sampler == sampler) recorded.push_back(input);
-                    s.healthCheck->beforeCountingPass(position, pass.name, target.name, memory.spec.size, memory.spec.format, recorded,
-                                                      program.health, s.current.graph->nodes[static_cast<size_t>(gp.index)].loadsTarget);
-                }
+                for (PassObserver* o : s.observers) o->beforeDraw(observed, program);
                 program.mesh->draw(program.streams);
             };
+            // A consumer content skip planned a second program for draws it twice, each under the
+            // guard of the skip's probe (the plan gives second programs only with content skip on).
             const GpuPass* without = position < s.withoutEffectsAt.size() ? s.withoutEffectsAt[position] : nullptr;
             if (without) {
                 for (bool leftOut : {false, true})
@@ -204,22 +201,15 @@ Result<void> GlExecutor::renderFrame(const FrameClock& clock) {
         }
         target.writtenThisFrame = true;
         s.lastFramePasses.push_back(pass.name);
-        if (s.contentSkip) s.contentSkip->afterPass(position);
+        for (PassObserver* o : s.observers) o->afterDraws(observed);
         if (issued && memory.spec.mipmaps) glGenerateTextureMipmap(memory.textures[memory.writeBuffer()].get());
-        // A pass left out on the CPU is reported clean: its inspection is drawn under the failed condition.
-        if (s.healthCheck && (!issued || !gp.health.found))
-            s.healthCheck->afterPass(position, pass.name, target.name, memory.textures[memory.writeBuffer()].get(),
-                                     memory.spec.size, memory.spec.format, healthInputs, gp.whyNotCounting,
-                                     s.contentSkip ? s.contentSkip->conditionOf(position) : 0);
+        for (PassObserver* o : s.observers) o->afterPass(observed, issued);
         s.timers.passDone(pass.name);
         for (const std::string& e : drainGlErrors())
             d.push_back({Diagnostic::Severity::Error, pass.where, passLabel(pass), e + " while drawing into '" + target.name + "'"});
     }
-    if (s.contentSkip) s.contentSkip->endFrame();
-    if (s.healthCheck) {
-        s.healthCheck->endFrame();
-        s.takeHealth(false);
-    }
+    for (PassObserver* o : s.observers) o->endFrame();
+    if (s.healthCheck) s.takeHealth(false);
     s.targets.finishFrame();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     ++frame_;

@@ -15,6 +15,8 @@
 #include "gl/GlContentSkip.h"
 #include "gl/GlExecutor.h"
 #include "gl/GlHealthCheck.h"
+#include "gl/GlHealthObserver.h"
+#include "gl/PassObserver.h"
 #include "gl/GlMeshCache.h"
 #include "gl/GlPassTimers.h"
 #include "gl/GlProgramBuild.h"
@@ -54,6 +56,9 @@ struct GlExecutor::Impl {
     std::map<int, std::pair<std::set<std::string>, std::unique_ptr<GpuPass>>> withoutEffects;
     std::vector<const GpuPass*> withoutEffectsAt;
     std::unique_ptr<GlHealthCheck> healthCheck;  // with FramePlanOptions::checkHealth
+    std::unique_ptr<GlHealthObserver> healthObserver;
+    // What watches the passes (gl/PassObserver.h): the health check, then content skip.
+    std::vector<PassObserver*> observers;
     std::optional<FrameHealth> lastHealth;
     std::vector<HealthFinding> firstFindings;  // of each kind, since the first frame
     glm::dvec2 mouse{0.0};
