@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fails when a binary that must run without GL links a GL, EGL or windowing library: the unit-test
-# executable and the fuzzers (issue 16). Two checks per binary:
+# executables (every build/tests/rmfx_*_tests but rmfx_gl_tests) and the fuzzers. Two checks per binary:
 #   1. its own NEEDED entries (what rmfx's build linked) hold none of them;
 #   2. of what `ldd` lists (the whole closure), any such library arrives only through Debian's
 #      OpenImageIO, whose OpenCV links libGLX and X11 for its own optional OpenGL interop; rmfx

@@ -2,7 +2,7 @@
 // from the definitions (tests/reference/HdrEncodingReference.h): round-trip error over a dense log
 // sweep within each format's bound, 0, tiny values, the maximum and beyond, NaN, ±Inf, negatives.
 // The sweep prints the figures of docs/encodings.md:
-//   rmfx_unit_tests --gtest_filter='Encodings/HdrEncodingTest.RoundTripStaysWithinItsBound*'
+//   rmfx_model_tests --gtest_filter='Encodings/HdrEncodingTest.RoundTripStaysWithinItsBound*'
 
 #include <bit>
 #include <cmath>
