@@ -1,18 +1,38 @@
 #include "frontend/shader/ClipSpaceTurnOver.h"
 
 #include <algorithm>
-#include <regex>
+
+#include "core/IdentifierSearch.h"
 
 namespace rmfx {
 
-namespace {
-
-bool declaresInvTargetSize(const std::string& code) {
-    static const std::regex declaration(R"(\buniform\s+(\w+\s+)?vec2\s+rm_InvTargetSize\b)");
-    return std::regex_search(code, declaration);
+bool declaresInvTargetSize(std::string_view code) {
+    auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r'; };
+    auto skipSpace = [&](size_t i) {
+        while (i < code.size() && space(code[i])) ++i;
+        return i;
+    };
+    // `vec2 rm_InvTargetSize` at `i`, the name a whole word.
+    auto declaration = [&](size_t i) {
+        if (code.substr(i, 4) != "vec2") return false;
+        const size_t name = skipSpace(i + 4);
+        constexpr std::string_view kName = "rm_InvTargetSize";
+        if (name == i + 4 || code.substr(name, kName.size()) != kName) return false;
+        return name + kName.size() == code.size() || !isIdentifierChar(code[name + kName.size()]);
+    };
+    constexpr std::string_view kUniform = "uniform";
+    for (size_t at = code.find(kUniform); at != std::string_view::npos; at = code.find(kUniform, at + 1)) {
+        if (at > 0 && isIdentifierChar(code[at - 1])) continue;
+        const size_t type = skipSpace(at + kUniform.size());
+        if (type == at + kUniform.size()) continue;
+        if (declaration(type)) return true;
+        size_t wordEnd = type;  // a qualifier first: `uniform highp vec2 rm_InvTargetSize`
+        while (wordEnd < code.size() && isIdentifierChar(code[wordEnd])) ++wordEnd;
+        const size_t next = skipSpace(wordEnd);
+        if (wordEnd > type && next > wordEnd && declaration(next)) return true;
+    }
+    return false;
 }
-
-}  // namespace
 
 void turnClipSpaceOver(PreprocessedShader& shader, TextureSpace space) {
     if (!rowsTopFirst(space)) return;

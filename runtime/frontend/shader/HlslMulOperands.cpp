@@ -216,4 +216,38 @@ MulOperandShape mulOperandShape(std::string_view operand, const std::map<std::st
     return it == declared.end() ? MulOperandShape::Unknown : it->second;
 }
 
+std::vector<MatrixAssignment> matrixAssignments(std::string_view code) {
+    std::vector<MatrixAssignment> out;
+    auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r'; };
+    auto skipSpace = [&](size_t i) {
+        while (i < code.size() && space(code[i])) ++i;
+        return i;
+    };
+    for (size_t i = 0; i < code.size();) {
+        size_t at = i;
+        if (i > 0 && isIdentifierChar(code[i - 1])) at = std::string_view::npos;  // no word starts here
+        else if (code.substr(i).starts_with("float4x4")) at += 8;
+        else if (code.substr(i).starts_with("matrix")) at += 6;
+        else at = std::string_view::npos;
+        if (at == std::string_view::npos || at >= code.size() || !space(code[at])) {
+            ++i;
+            continue;
+        }
+        const size_t nameStart = skipSpace(at);
+        size_t nameEnd = nameStart;
+        while (nameEnd < code.size() && isIdentifierChar(code[nameEnd])) ++nameEnd;
+        const size_t equals = skipSpace(nameEnd);
+        if (nameEnd == nameStart || equals >= code.size() || code[equals] != '=') {
+            ++i;
+            continue;
+        }
+        const size_t valueStart = skipSpace(equals + 1);
+        const size_t semicolon = code.find(';', valueStart);
+        if (semicolon == std::string_view::npos) break;  // no ';' from here on: no later match either
+        out.push_back({code.substr(nameStart, nameEnd - nameStart), code.substr(valueStart, semicolon - valueStart)});
+        i = semicolon + 1;
+    }
+    return out;
+}
+
 }  // namespace rmfx

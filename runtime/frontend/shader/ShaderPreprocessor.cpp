@@ -81,25 +81,30 @@ public:
                 int depth) {
         auto lines = splitLines(text);
         for (size_t i = 0; i < lines.size() && !tooLarge_; ++i) {
+            // Each line's origin is built once and moved into place: a copy of the file's name
+            // per line (a heap block, under ASan a stack trace too) was most of the expansion.
             SourceLocation where{file, firstLine + static_cast<int>(i)};
-            current_ = where;
+            currentFile_ = &file;
+            currentLine_ = where.line;
             if (++linesRead_ > kMaxExpandedLines || out_.code.size() + lines[i].size() > kMaxExpandedBytes)
                 return stopGrowing(where);
             std::string directive = directiveName(lines[i]);
             if (directive == "include") {
                 include(lines[i], where, folder, depth);
+                currentFile_ = &file;  // back from the included text, whose name may be gone
+                currentLine_ = where.line;
             } else if (directive == "pragma" && lines[i].find("once") != std::string::npos) {
-                blank(where);
+                blank(std::move(where));
             } else {
                 out_.code.append(lines[i]);
                 out_.code += '\n';
-                out_.lineOrigins.push_back(where);
+                out_.lineOrigins.push_back(std::move(where));
             }
         }
     }
 
     // The line being expanded (an include's, while its file is looked up).
-    const SourceLocation& current() const { return current_; }
+    SourceLocation current() const { return currentFile_ ? SourceLocation{*currentFile_, currentLine_} : SourceLocation{}; }
 
     // The top-level shader file, so that a file including itself is caught as a cycle.
     void openTopLevel(const std::filesystem::path& file) {
@@ -108,9 +113,9 @@ public:
     }
 
 private:
-    void blank(const SourceLocation& where) {
+    void blank(SourceLocation where) {
         out_.code += "\n";  // keeps line numbers aligned
-        out_.lineOrigins.push_back(where);
+        out_.lineOrigins.push_back(std::move(where));
     }
 
     void stopGrowing(const SourceLocation& where) {
@@ -221,7 +226,8 @@ private:
     std::vector<std::string> names_;            // the name each was included by
     std::set<std::filesystem::path> onceFiles_;
     std::map<std::pair<std::string, std::string>, Located> located_;  // by folder and name
-    SourceLocation current_;
+    const std::string* currentFile_ = nullptr;  // of the line being expanded (its text's, which outlives it)
+    int currentLine_ = 0;
     size_t includes_ = 0;    // #include lines met, whether they expand or fail
     size_t linesRead_ = 0;   // every line of every text expanded, include lines too
     bool tooLarge_ = false;  // past kMaxExpandedLines or kMaxExpandedBytes: the rest is dropped
@@ -319,6 +325,8 @@ PreprocessedShader preprocessShader(const ShaderInput& input, Diagnostics& diagn
         out.code += declaration + "\n";
         out.lineOrigins.push_back(versionWhere);
     }
+    out.code.reserve(out.code.size() + body.code.size());
+    out.lineOrigins.reserve(out.lineOrigins.size() + lines.size());
     for (size_t i = 0; i < lines.size(); ++i) {
         if (i == versionLine) {
             out.code += "\n";  // the #version already went first
@@ -326,7 +334,7 @@ PreprocessedShader preprocessShader(const ShaderInput& input, Diagnostics& diagn
             out.code.append(lines[i]);
             out.code += '\n';
         }
-        out.lineOrigins.push_back(body.lineOrigins[i]);
+        out.lineOrigins.push_back(std::move(body.lineOrigins[i]));
     }
     return out;
 }

@@ -3,12 +3,13 @@
 #include <algorithm>
 
 #include <charconv>
-#include <regex>
+#include <cctype>
 #include <set>
 #include <string_view>
 #include <tuple>
 #include <utility>
 
+#include "core/IdentifierSearch.h"
 #include "frontend/rfx/detail/RfxDeclarations.h"
 #include "frontend/rfx/detail/RfxShaderCode.h"
 #include "frontend/shader/HlslMulOperands.h"
@@ -72,18 +73,23 @@ MatrixOrderEvidence matrixOrderEvidence(const RfxElement& effect, const VisibleS
             // view_proj_matrix);`): a vector multiplied by such a local says the order as the
             // semantic matrix itself would (rainBow_transp-1 then writes mul(mtr, Pos)).
             std::set<std::string> derived;
-            {
-                static const std::regex assignment(R"(\b(?:float4x4|matrix)\s+(\w+)\s*=\s*([^;]*);)");
-                const std::string& text = code->code;
-                for (std::sregex_iterator it(text.begin(), text.end(), assignment), end; it != end; ++it) {
-                    const std::string value = (*it)[2].str();
-                    static const std::regex word(R"(\b[A-Za-z_]\w*\b)");
-                    for (std::sregex_iterator w(value.begin(), value.end(), word), wend; w != wend; ++w) {
-                        const Variable* m = matrixVariable({w->str(), false});
-                        if (m && !m->semantic.empty() && findSemantic(m->semantic)) {
-                            derived.insert((*it)[1].str());
-                            break;
-                        }
+            for (const MatrixAssignment& assignment : matrixAssignments(code->code)) {
+                // A local is derived when a word of its value (not starting with a digit) names a semantic matrix.
+                const std::string_view value = assignment.value;
+                for (size_t i = 0; i < value.size();) {
+                    if (!isIdentifierChar(value[i])) {
+                        ++i;
+                        continue;
+                    }
+                    size_t end = i;
+                    while (end < value.size() && isIdentifierChar(value[end])) ++end;
+                    const std::string_view word = value.substr(i, end - i);
+                    i = end;
+                    if (std::isdigit(static_cast<unsigned char>(word[0]))) continue;
+                    const Variable* m = matrixVariable({std::string(word), false});
+                    if (m && !m->semantic.empty() && findSemantic(m->semantic)) {
+                        derived.insert(std::string(assignment.name));
+                        break;
                     }
                 }
             }
