@@ -38,8 +38,9 @@ TEST(RfxImporterCameras, ActiveCameraNamingNoCameraWarns) {
     EXPECT_EQ(warnings(none).find("ACTIVE_CAMERA"), std::string::npos) << warnings(none);
     std::string other = glEffect("<RmCamera NAME=\"Side\" CAMERA_POSITION_X=\"0\" CAMERA_POSITION_Y=\"0\" CAMERA_POSITION_Z=\"3\"/>\n" + pass);
     other.replace(other.find("API=\"OpenGL\">"), 14, "API=\"OpenGL\" ACTIVE_CAMERA=\"Main\">");
-    EXPECT_NE(warnings(other).find("ACTIVE_CAMERA 'Main' names no <RmCamera> of the effect; using the first one, 'Side'"),
-              std::string::npos)
+    EXPECT_TRUE(test::hasLine(warnings(other),
+                              "t.rfx:3: warning: <RmOpenGLEffect NAME=\"E\">: ACTIVE_CAMERA 'Main' names no <RmCamera> of "
+                              "the effect; using the first one, 'Side'"))
         << warnings(other);
     EXPECT_EQ(allWarnings("gl_legacy.rfx").find("ACTIVE_CAMERA"), std::string::npos);
 }
@@ -73,9 +74,10 @@ TEST(RfxImporterCameras, CameraReferencesPickAPassesCamera) {
     EXPECT_EQ(ws->passes[1].camera, "Light");
     EXPECT_EQ(ws->passes[2].camera, "");
     EXPECT_EQ(ws->passes[3].camera, "");
-    EXPECT_NE(formatAll(ws.diagnostics())
-                  .find("t.rfx:9: warning: <RmCameraReference NAME=\"Nowhere\">: the effect has no <RmCamera NAME=\"Nowhere\">"),
-              std::string::npos)
+    EXPECT_TRUE(test::hasLine(
+        formatAll(ws.diagnostics()),
+        "t.rfx:9: warning: <RmCameraReference NAME=\"Nowhere\">: the effect has no <RmCamera NAME=\"Nowhere\">; the "
+        "pass uses the effect's camera"))
         << formatAll(ws.diagnostics());
 }
 
@@ -112,10 +114,13 @@ TEST(RfxImporterCameras, AFovPast180DegreesTurnsThePictureAsD3dxDid) {
     EXPECT_NEAR(ndc(*wide).y, -ndc(*narrow).y, 1e-5);
     EXPECT_GT(std::abs(ndc(*narrow).x), 0.01f);
 
-    for (const std::string bad : {"180", "360", "0", "-20"}) {
+    for (const auto& [bad, read] : {std::pair{"180", "180.000000"}, std::pair{"360", "360.000000"}, std::pair{"0", "0.000000"},
+                                    std::pair{"-20", "-20.000000"}}) {
         Result<Workspace> refused = importRfxText(effect(bad), "t.rfx", ".", {""});
         EXPECT_FALSE(refused) << bad;
-        EXPECT_NE(formatAll(refused.diagnostics()).find("is not an angle in (0, 360) degrees other than 180"), std::string::npos)
+        EXPECT_TRUE(test::hasLine(formatAll(refused.diagnostics()), "t.rfx:4: error: <RmCamera NAME=\"C\">: FOV " +
+                                                                        std::string(read) +
+                                                                        " is not an angle in (0, 360) degrees other than 180"))
             << formatAll(refused.diagnostics());
     }
 }

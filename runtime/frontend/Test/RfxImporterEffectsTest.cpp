@@ -86,13 +86,15 @@ TEST(RfxImporterEffects, RenderMonkey10ShadersFromAttributesAndTheActiveEffectBy
     EXPECT_EQ(pixel.codeLine, lineOf(file, "PIXEL_SHADER=\"TRUE\" DECLARATION_BLOCK=\"float4") - 2);
     EXPECT_EQ(ws.passes[0].shaders[0].code.substr(0, 28), "// Vertex shader entry point");
     EXPECT_EQ(ws.passes[0].shaders[0].codeLine, lineOf(file, "CODE=\"// Vertex shader entry point"));
-    EXPECT_NE(errorsOf("<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\" ACTIVE_EFFECT=\"E\">\n<RmDirectXEffect NAME=\"E\" "
-                       "API=\"D3D\">\n<RmPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n<RmHLSLShader NAME=\"S\" "
-                       "PIXEL_SHADER=\"TRUE\" TARGET=\"ps_2_0\" ENTRY_POINT=\"main\"/>\n</RmPass>\n</RmDirectXEffect>\n"
-                       "</RmEffectWorkspace>\n</RENDER_MONKEY>\n")
-                  .find("t.rfx:5: error: <RmHLSLShader NAME=\"S\">: it has no <RmShaderCode> (nor a CODE attribute, where "
-                        "RenderMonkey 1.0 kept the code)"),
-              std::string::npos);
+    const std::string noCode = errorsOf(
+        "<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\" ACTIVE_EFFECT=\"E\">\n<RmDirectXEffect NAME=\"E\" "
+        "API=\"D3D\">\n<RmPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n<RmHLSLShader NAME=\"S\" "
+        "PIXEL_SHADER=\"TRUE\" TARGET=\"ps_2_0\" ENTRY_POINT=\"main\"/>\n</RmPass>\n</RmDirectXEffect>\n"
+        "</RmEffectWorkspace>\n</RENDER_MONKEY>\n");
+    EXPECT_TRUE(test::hasLine(noCode,
+                              "t.rfx:5: error: <RmHLSLShader NAME=\"S\">: it has no <RmShaderCode> (nor a CODE attribute, "
+                              "where RenderMonkey 1.0 kept the code)"))
+        << noCode;
 }
 
 TEST(RfxImporterEffects, EffectChosenByDottedPathOrName) {
@@ -107,9 +109,10 @@ TEST(RfxImporterEffects, EffectChosenByDottedPathOrName) {
     }
     EXPECT_EQ(imported("gl_legacy.rfx").findTexture("Noise"), nullptr);  // the sibling's declarations are not visible
     std::string errors = formatAll(importRfxFile(rfxDir() / "gl_legacy.rfx", {"Nope"}).diagnostics());
-    EXPECT_NE(errors.find("error: --effect Nope: no effect 'Nope'; it has: 'Tests.Group.Legacy' (OpenGL, active), "
-                          "'Tests.Group.Other' (OpenGL)"),
-              std::string::npos)
+    EXPECT_TRUE(
+        test::hasLine(errors, (rfxDir() / "gl_legacy.rfx").string() +
+                                  ": error: --effect Nope: no effect 'Nope'; it has: 'Tests.Group.Legacy' (OpenGL, active), "
+                                  "'Tests.Group.Other' (OpenGL)"))
         << errors;
 }
 
@@ -131,8 +134,11 @@ TEST(RfxImporterEffects, GlesEffectFeedsNamedAttributes) {
     ASSERT_TRUE(p.clear.color.has_value());
     expectColor(*p.clear.color, {32 / 255.0f, 32 / 255.0f, 32 / 255.0f, 1.0f});  // 0xFF202020
     int line = lineOf(rfxDir() / "gles.rfx", "NAME=\"Weights\"");
-    EXPECT_NE(allWarnings("gles.rfx").find("gles.rfx:" + std::to_string(line) + ": warning: <RmStreamChannel NAME=\"Weights\">: USAGE 1"),
-              std::string::npos);
+    EXPECT_TRUE(test::hasLine(allWarnings("gles.rfx"),
+                              (rfxDir() / "gles.rfx").string() + ":" + std::to_string(line) +
+                                  ": warning: <RmStreamChannel NAME=\"Weights\">: USAGE 1 (blend weights, indices, point "
+                                  "size…) has no vertex data in rmfx's meshes; the channel is left out"))
+        << allWarnings("gles.rfx");
 }
 
 TEST(RfxImporterEffects, Direct3dEffectWithHlslStatesAndADisabledAssemblyPass) {
@@ -187,15 +193,22 @@ TEST(RfxImporterEffects, Direct3dEffectWithHlslStatesAndADisabledAssemblyPass) {
     EXPECT_EQ(legacy.shaders[0].entryPoint, "rm_asm_main");
     EXPECT_EQ(legacy.shaders[0].profile, "ps_1_1");  // what it was written for
     int line = lineOf(rfxDir() / "d3d_hlsl.rfx", "<RmShader NAME=");
-    EXPECT_NE(warnings.find("d3d_hlsl.rfx:" + std::to_string(line) +
-                            ": warning: <RmShader NAME=\"Pixel Shader\">: Direct3D assembly (ps_1_1) translated to HLSL"),
-              std::string::npos)
+    const std::string file = (rfxDir() / "d3d_hlsl.rfx").string();
+    EXPECT_TRUE(
+        test::hasLine(warnings, file + ":" + std::to_string(line) +
+                                    ": warning: <RmShader NAME=\"Pixel Shader\">: Direct3D assembly (ps_1_1) translated to "
+                                    "HLSL for rmfx's HLSL path"))
         << warnings;
-    EXPECT_NE(warnings.find("d3d_hlsl.rfx:" + std::to_string(lineOf(rfxDir() / "d3d_hlsl.rfx", "mov r0, c0")) +
-                            ": warning: <RmShader NAME=\"Pixel Shader\">: c0 is neither defined (def) nor set"),
-              std::string::npos)
+    EXPECT_TRUE(
+        test::hasLine(warnings, file + ":" + std::to_string(lineOf(file, "mov r0, c0")) +
+                                    ": warning: <RmShader NAME=\"Pixel Shader\">: c0 is neither defined (def) nor set by an "
+                                    "RmShaderConstant: Direct3D left it unset, so it reads 0"))
         << warnings;
-    EXPECT_NE(warnings.find("D3DRS_DEPTHBIAS = 0.5 has no equivalent"), std::string::npos) << warnings;
+    EXPECT_TRUE(
+        test::hasLine(warnings, file + ":" + std::to_string(lineOf(file, "D3DRS_DEPTHBIAS")) +
+                                    ": warning: <RmState NAME=\"D3DRS_DEPTHBIAS\">: render state D3DRS_DEPTHBIAS = 0.5 has no "
+                                    "equivalent in rmfx's pass model; ignored"))
+        << warnings;
     EXPECT_EQ(warnings.find("D3DRS_FILLMODE"), std::string::npos) << warnings;  // 3, solid: applied
 }
 
@@ -204,11 +217,11 @@ TEST(RfxImporterEffects, AssemblyShaderInAnEnabledPassIsAnError) {
         "<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n"
         "<RmShader NAME=\"Asm\" PIXEL_SHADER=\"TRUE\"><RmShaderCode><![CDATA[ps.1.1]]></RmShaderCode></RmShader>\n"
         "</RmGLPass>\n"));
-    EXPECT_NE(errors.find("t.rfx:5: warning: <RmShader NAME=\"Asm\">: an assembly shader"), std::string::npos) << errors;
-    EXPECT_NE(errors.find("t.rfx:4: error: <pass \"P\">: the effect cannot run: its pixel shader <RmShader NAME=\"Asm\"> "
-                          "(line 5) is assembly"),
-              std::string::npos)
-        << errors;
+    EXPECT_EQ(errors,
+              test::lines({"t.rfx:5: warning: <RmShader NAME=\"Asm\">: an assembly shader: rmfx compiles only HLSL and GLSL, "
+                           "so this pass cannot run",
+                           "t.rfx:4: error: <pass \"P\">: the effect cannot run: its pixel shader <RmShader NAME=\"Asm\"> "
+                           "(line 5) is assembly (disable the pass to run the rest)"}));
 }
 
 // Direct3D assembly shaders: translated to HLSL, problems at their .rfx line (body from line 4).
@@ -235,24 +248,31 @@ TEST(RfxImporterEffects, AssemblyShadersBecomeHlslAndTheirErrorsNameTheRfxLine) 
     EXPECT_EQ(v.codeLine, 6);  // the CDATA's first line: generated line N is the code's line N
     EXPECT_NE(v.code.find("float4x4 M;"), std::string::npos) << v.code;
     const std::string warnings = formatAll(ok.diagnostics());
-    EXPECT_NE(warnings.find("t.rfx:6: warning: <RmShader NAME=\"VS\">: Direct3D assembly (vs_1_1) translated to HLSL"),
-              std::string::npos)
+    EXPECT_TRUE(
+        test::hasLine(warnings,
+                      "t.rfx:6: warning: <RmShader NAME=\"VS\">: Direct3D assembly (vs_1_1) translated to HLSL for rmfx's "
+                      "HLSL path"))
         << warnings;
-    EXPECT_NE(warnings.find("t.rfx:10: warning: <RmShader NAME=\"VS\">: c4 is neither defined"), std::string::npos) << warnings;
+    EXPECT_TRUE(test::hasLine(warnings,
+                              "t.rfx:10: warning: <RmShader NAME=\"VS\">: c4 is neither defined (def) nor set by an "
+                              "RmShaderConstant: Direct3D left it unset, so it reads 0"))
+        << warnings;
 
     std::string errors = errorsOf(d3dEffect(pass(true, "mov r0, t0\ntexm3x2depth t1, t0")));
-    EXPECT_NE(errors.find("t.rfx:15: error: <RmShader NAME=\"PS\">: the instruction 'texm3x2depth' is not supported"), std::string::npos)
+    EXPECT_TRUE(test::hasLine(errors,
+                              "t.rfx:15: error: <RmShader NAME=\"PS\">: the instruction 'texm3x2depth' is not supported by "
+                              "rmfx's assembly translation"))
         << errors;
-    EXPECT_NE(errors.find("error: <pass \"P\">: the effect cannot run: its pixel shader <RmShader NAME=\"PS\"> (line 12) "
-                          "could not be translated from assembly"),
-              std::string::npos)
+    EXPECT_TRUE(test::hasLine(errors,
+                              "t.rfx:5: error: <pass \"P\">: the effect cannot run: its pixel shader <RmShader NAME=\"PS\"> "
+                              "(line 12) could not be translated from assembly (disable the pass to run the rest)"))
         << errors;
 
     // In a disabled pass the same problems are warnings, and the pass is left out (leaving none).
     Result<Workspace> disabled = importRfxText(d3dEffect(pass(false, "mov r0, t0\nfoo r0")), "t.rfx", ".", {""});
     EXPECT_EQ(formatAll(disabled.diagnostics()).find("error: <RmShader"), std::string::npos) << formatAll(disabled.diagnostics());
-    EXPECT_NE(formatAll(disabled.diagnostics()).find("t.rfx:15: warning: <RmShader NAME=\"PS\">: unknown instruction 'foo'"),
-              std::string::npos)
+    EXPECT_TRUE(
+        test::hasLine(formatAll(disabled.diagnostics()), "t.rfx:15: warning: <RmShader NAME=\"PS\">: unknown instruction 'foo'"))
         << formatAll(disabled.diagnostics());
 }
 
@@ -275,13 +295,18 @@ TEST(RfxImporterEffects, LoaderDispatchesOnTheExtensionInAnyCase) {
     EXPECT_FALSE(wrong.ok());
     Result<Workspace> xml = loadWorkspace(test::sourceDir() / "effects" / "shader_1.xml", structureOnly, {"Some.Effect", {}, {}});
     EXPECT_FALSE(xml.ok());
-    EXPECT_NE(formatAll(xml.diagnostics()).find("--effect chooses an effect of a RenderMonkey .rfx file"), std::string::npos);
+    EXPECT_EQ(formatAll(xml.diagnostics()),
+              test::lines({(test::sourceDir() / "effects" / "shader_1.xml").string() +
+                           ": error: --effect Some.Effect: --effect chooses an effect of a RenderMonkey .rfx file; this is an "
+                           "rmfx workspace (use --effects to choose its <effect> groups)"}));
 }
 
 TEST(RfxImporterEffects, EditorSavesIntoAnRfxAreRefused) {
     auto saved = saveVariableValues(rfxDir() / "gles.rfx", {{"Gain", Value::ofFloat(0.25f)}});
     ASSERT_FALSE(saved.ok());
-    EXPECT_NE(saved.error().find("saving tweaked values into a RenderMonkey .rfx file is not supported"), std::string::npos);
+    EXPECT_EQ(saved.error(), (rfxDir() / "gles.rfx").string() +
+                                 ": error: saving tweaked values into a RenderMonkey .rfx file is not supported (rmfx never "
+                                 "rewrites .rfx files); pass the values with --set NAME=VALUE, or note them down");
 }
 
 TEST(RfxImporterEffects, ListNamesEveryEffectWithItsApiAndActiveFlag) {

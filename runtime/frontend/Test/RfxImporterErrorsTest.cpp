@@ -18,22 +18,25 @@ TEST(RfxImporterErrors, BadInputsAreErrorsWithFileAndLine) {
         return glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n" + std::string(kFragment) + "\n" +
                         inside + "</RmGLPass>\n");
     };
-    EXPECT_NE(errorsOf(glEffect("<RmFloatVariable NAME=\"x\" VALUE=\"abc\"/>\n")).find(
-                  "t.rfx:4: error: <RmFloatVariable NAME=\"x\">: attribute VALUE: 'abc' is not a number"),
-              std::string::npos);
-    EXPECT_NE(errorsOf(glEffect("<RmRenderableTexture NAME=\"rt\" WIDTH=\"4\" HEIGHT=\"4\" FORMAT=\"999\"/>\n"))
-                  .find("t.rfx:4: error: <RmRenderableTexture NAME=\"rt\">: FORMAT 999 is not a Direct3D 9 format"),
-              std::string::npos);
-    EXPECT_NE(errorsOf(glEffect("<RmRenderableTexture NAME=\"rt\" WIDTH=\"0\" HEIGHT=\"4\" FORMAT=\"21\"/>\n"))
-                  .find("t.rfx:4: error: <RmRenderableTexture NAME=\"rt\">: attribute WIDTH: 0 is outside 1…16384"),
-              std::string::npos);
+    EXPECT_EQ(errorsOf(glEffect("<RmFloatVariable NAME=\"x\" VALUE=\"abc\"/>\n")),
+              test::lines({"t.rfx:4: error: <RmFloatVariable NAME=\"x\">: attribute VALUE: 'abc' is not a number",
+                           "t.rfx:3: error: <RmOpenGLEffect NAME=\"E\">: the effect has no passes"}));
+    EXPECT_EQ(errorsOf(glEffect("<RmRenderableTexture NAME=\"rt\" WIDTH=\"4\" HEIGHT=\"4\" FORMAT=\"999\"/>\n")),
+              test::lines(
+                  {"t.rfx:4: error: <RmRenderableTexture NAME=\"rt\">: FORMAT 999 is not a Direct3D 9 format rmfx can render to "
+                   "(21 A8R8G8B8, 34 G16R16, 36 A16B16G16R16, 111 R16F, 112 G16R16F, 113 A16B16G16R16F, 114 R32F, "
+                   "115 G32R32F, 116 A32B32G32R32F, …)",
+                   "t.rfx:3: error: <RmOpenGLEffect NAME=\"E\">: the effect has no passes"}));
+    EXPECT_EQ(errorsOf(glEffect("<RmRenderableTexture NAME=\"rt\" WIDTH=\"0\" HEIGHT=\"4\" FORMAT=\"21\"/>\n")),
+              test::lines({"t.rfx:4: error: <RmRenderableTexture NAME=\"rt\">: attribute WIDTH: 0 is outside 1…16384",
+                           "t.rfx:3: error: <RmOpenGLEffect NAME=\"E\">: the effect has no passes"}));
     // A constant naming no variable is an error when a shader uses the name, else a warning.
     std::string usedFragment = "<RmGLShader NAME=\"F\" PIXEL_SHADER=\"TRUE\"><RmShaderCode><![CDATA[uniform float Nope; "
                                "void main() { gl_FragColor = vec4(Nope); }]]></RmShaderCode></RmGLShader>\n";
-    EXPECT_NE(errorsOf(glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n<RmShaderConstant NAME=\"Nope\"/>\n" +
-                                usedFragment + "</RmGLPass>\n"))
-                  .find("t.rfx:5: error: <RmShaderConstant NAME=\"Nope\">: no variable 'Nope' is visible from the pass"),
-              std::string::npos);
+    EXPECT_EQ(errorsOf(glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n<RmShaderConstant NAME=\"Nope\"/>\n" +
+                                usedFragment + "</RmGLPass>\n")),
+              test::lines({"t.rfx:5: error: <RmShaderConstant NAME=\"Nope\">: no variable 'Nope' is visible from the pass "
+                           "(pass, effect, group or workspace)"}));
     // In a Direct3D pass the same is a warning: Direct3D ran with the register unset (zero), and a
     // shader const keeps the value its declaration gives.
     const std::string d3dShader = "<RmHLSLShader NAME=\"PS\" PIXEL_SHADER=\"TRUE\" TARGET=\"ps_2_0\" ENTRY_POINT=\"main\">"
@@ -46,51 +49,59 @@ TEST(RfxImporterErrors, BadInputsAreErrorsWithFileAndLine) {
                                                         d3dShader + "</RmPass>\n"),
                                               "t.rfx", ".", {""});
     EXPECT_TRUE(lenient.ok()) << formatAll(lenient.diagnostics());
-    EXPECT_NE(formatAll(lenient.diagnostics()).find("<RmShaderConstant NAME=\"Nope\">: no variable 'Nope' is visible from the "
-                                                    "pass (pass, effect, group or workspace); Direct3D ran with its constant "
-                                                    "register unset, so it is fed zero"),
-              std::string::npos)
+    EXPECT_TRUE(test::hasLine(formatAll(lenient.diagnostics()),
+                              "t.rfx:5: warning: <RmShaderConstant NAME=\"Nope\">: no variable 'Nope' is visible from the "
+                              "pass (pass, effect, group or workspace); Direct3D ran with its constant "
+                              "register unset, so it is fed zero"))
         << formatAll(lenient.diagnostics());
-    EXPECT_NE(formatAll(lenient.diagnostics()).find("<RmShaderConstant NAME=\"offsets\">: no variable 'offsets' is visible from "
-                                                    "the pass (pass, effect, group or workspace); the shader declares it const"),
-              std::string::npos)
+    EXPECT_TRUE(test::hasLine(formatAll(lenient.diagnostics()),
+                              "t.rfx:5: warning: <RmShaderConstant NAME=\"offsets\">: no variable 'offsets' is visible from "
+                              "the pass (pass, effect, group or workspace); the shader declares it const, with its own "
+                              "value, which it keeps"))
         << formatAll(lenient.diagnostics());
-    EXPECT_NE(formatAll(lenient.diagnostics()).find("<RmShaderConstant NAME=\"scale\">: no variable 'scale' is visible from "
-                                                    "the pass (pass, effect, group or workspace); the shader declares it with an "
-                                                    "initial value, which Direct3D kept and so does rmfx"),
-              std::string::npos)
+    EXPECT_TRUE(test::hasLine(formatAll(lenient.diagnostics()),
+                              "t.rfx:5: warning: <RmShaderConstant NAME=\"scale\">: no variable 'scale' is visible from "
+                              "the pass (pass, effect, group or workspace); the shader declares it with an "
+                              "initial value, which Direct3D kept and so does rmfx"))
         << formatAll(lenient.diagnostics());
     Result<Workspace> unused = importRfxText(pass("<RmShaderConstant NAME=\"light0\"/>\n"), "t.rfx", ".");
     EXPECT_TRUE(unused.ok());
-    EXPECT_NE(formatAll(unused.diagnostics()).find("t.rfx:6: warning: <RmShaderConstant NAME=\"light0\">: no variable 'light0' "
-                                                 "is visible from the pass (pass, effect, group or workspace); its shaders do not use it"),
-              std::string::npos) << formatAll(unused.diagnostics());
-    EXPECT_NE(errorsOf(pass("<RmTextureObject NAME=\"s\"><RmTextureReference NAME=\"missing\"/></RmTextureObject>\n"))
-                  .find("t.rfx:6: error: <RmTextureReference NAME=\"missing\">: no texture variable or renderable texture"),
-              std::string::npos);
+    EXPECT_TRUE(test::hasLine(formatAll(unused.diagnostics()),
+                              "t.rfx:6: warning: <RmShaderConstant NAME=\"light0\">: no variable 'light0' "
+                              "is visible from the pass (pass, effect, group or workspace); its shaders do not use it, "
+                              "so it is ignored"))
+        << formatAll(unused.diagnostics());
+    EXPECT_EQ(errorsOf(pass("<RmTextureObject NAME=\"s\"><RmTextureReference NAME=\"missing\"/></RmTextureObject>\n")),
+              test::lines({"t.rfx:6: error: <RmTextureReference NAME=\"missing\">: no texture variable or renderable texture "
+                           "'missing' is visible from the pass"}));
     // A sampler the shader reads needs its texture object; one left behind that nothing reads is
     // ignored with a warning (Ant0nin's cubemap.rfx keeps such a displacementTexture).
     const std::string sampling = "<RmGLShader NAME=\"F\" PIXEL_SHADER=\"TRUE\"><RmShaderCode><![CDATA[uniform sampler2D s; "
                                  "void main() { gl_FragColor = texture2D(s, vec2(0.5)); }]]></RmShaderCode></RmGLShader>";
-    EXPECT_NE(errorsOf(glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n" + sampling + "\n<RmSampler NAME=\"s\"/>\n"
-                                "</RmGLPass>\n"))
-                  .find("t.rfx:6: error: <RmSampler NAME=\"s\">: sampler 's' has no <RmTextureObject NAME=\"s\">"),
-              std::string::npos);
+    EXPECT_EQ(errorsOf(glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\">\n" + sampling +
+                                "\n<RmSampler NAME=\"s\"/>\n"
+                                "</RmGLPass>\n")),
+              test::lines({"t.rfx:6: error: <RmSampler NAME=\"s\">: sampler 's' has no <RmTextureObject NAME=\"s\"> in the pass "
+                           "to say which texture it reads"}));
     Result<Workspace> leftover = importRfxText(pass("<RmSampler NAME=\"s\"/>\n"), "t.rfx", ".");
     EXPECT_TRUE(leftover.ok()) << formatAll(leftover.diagnostics());
-    EXPECT_NE(formatAll(leftover.diagnostics())
-                  .find("t.rfx:6: warning: <RmSampler NAME=\"s\">: sampler 's' has no <RmTextureObject NAME=\"s\"> in the pass to "
-                        "say which texture it reads; its shaders do not use it, so it is ignored"),
-              std::string::npos)
+    EXPECT_TRUE(
+        test::hasLine(formatAll(leftover.diagnostics()),
+                      "t.rfx:6: warning: <RmSampler NAME=\"s\">: sampler 's' has no <RmTextureObject NAME=\"s\"> in the pass to "
+                      "say which texture it reads; its shaders do not use it, so it is ignored"))
         << formatAll(leftover.diagnostics());
     // The texture object is there; only its texture is missing: one error, on the reference,
     // whichever comes first.
-    for (const char* order : {"<RmSampler NAME=\"s\"/>\n<RmTextureObject NAME=\"s\"><RmTextureReference NAME=\"Noise\"/></RmTextureObject>\n",
-                              "<RmTextureObject NAME=\"s\"><RmTextureReference NAME=\"Noise\"/></RmTextureObject>\n<RmSampler NAME=\"s\"/>\n"}) {
-        std::string errors = errorsOf(pass(order));
-        EXPECT_NE(errors.find("<RmTextureReference NAME=\"Noise\">: no texture variable or renderable texture 'Noise'"),
-                  std::string::npos) << errors;
-        EXPECT_EQ(errors.find("has no <RmTextureObject"), std::string::npos) << errors;
+    for (const auto& [order, line] :
+         {std::pair{
+              "<RmSampler NAME=\"s\"/>\n<RmTextureObject NAME=\"s\"><RmTextureReference NAME=\"Noise\"/></RmTextureObject>\n", 7},
+          std::pair{
+              "<RmTextureObject NAME=\"s\"><RmTextureReference NAME=\"Noise\"/></RmTextureObject>\n<RmSampler NAME=\"s\"/>\n",
+              6}}) {
+        EXPECT_EQ(errorsOf(pass(order)),
+                  test::lines({"t.rfx:" + std::to_string(line) +
+                               ": error: <RmTextureReference NAME=\"Noise\">: no "
+                               "texture variable or renderable texture 'Noise' is visible from the pass"}));
     }
     // A 3D texture (RenderMonkey's NoiseVolume.dds, in many real files) is a volume texture.
     Result<Workspace> volume = importRfxText(glEffect(
@@ -108,34 +119,37 @@ TEST(RfxImporterErrors, BadInputsAreErrorsWithFileAndLine) {
     ASSERT_EQ(volume->passes[0].samplers.size(), 1u);
     EXPECT_EQ(volume->passes[0].samplers[0].wrapR, Wrap::Clamp);  // 2: clamp to edge
     EXPECT_EQ(volume->passes[0].samplers[0].wrapS, Wrap::Repeat);
-    EXPECT_NE(errorsOf(pass("<RmRenderStateBlock>\n<RmState NAME=\"GL_DepthFunction\" STATE=\"45\" VALUE=\"9\"/>\n</RmRenderStateBlock>\n"))
-                  .find("t.rfx:7: error: <RmState NAME=\"GL_DepthFunction\">: VALUE 9 is not a compare function (it takes 1, 2, 3, 4, 5, 6, 7, 8)"),
-              std::string::npos);
-    EXPECT_NE(errorsOf(pass("<RmRenderStateBlock>\n<RmState NAME=\"GL_CullMode\" STATE=\"8\" VALUE=\"x1\"/>\n</RmRenderStateBlock>\n"))
-                  .find("t.rfx:7: error: <RmState NAME=\"GL_CullMode\">: attribute VALUE: 'x1' is not a whole number"),
-              std::string::npos);
-    EXPECT_NE(errorsOf(pass("<RmRenderTarget NAME=\"nowhere\" RENDER_TO_SCREEN=\"FALSE\"/>\n"))
-                  .find("t.rfx:6: error: <RmRenderTarget NAME=\"nowhere\">: no <RmRenderableTexture NAME=\"nowhere\">"),
-              std::string::npos);
-    EXPECT_NE(errorsOf(pass("<RmModelReference NAME=\"Teapot\"/>\n"))
-                  .find("t.rfx:6: error: <RmModelReference NAME=\"Teapot\">: no <RmModelData NAME=\"Teapot\">"),
-              std::string::npos);
-    EXPECT_NE(errorsOf(glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"zero\" ENABLED=\"TRUE\">\n" + std::string(kFragment) + "\n</RmGLPass>\n"))
-                  .find("t.rfx:4: error: <RmGLPass NAME=\"P\">: attribute PASS_INDEX: 'zero' is not a whole number"),
-              std::string::npos);
-    EXPECT_NE(errorsOf(glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\"/>\n"))
-                  .find("t.rfx:4: error: <pass \"P\">: it has no shaders and no pass runs before it"),
-              std::string::npos);
-    EXPECT_NE(errorsOf(glEffect("<RmDynamicVariable NAME=\"d\" VARIABLE_TYPE=\"INTEGER\" ROWS=\"1\" COLUMNS=\"3\"/>\n"))
-                  .find("t.rfx:4: error: <RmDynamicVariable NAME=\"d\">: INTEGER 1x3 has no rmfx type"),
-              std::string::npos);
-    EXPECT_NE(errorsOf("<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\">\n<oops\n</RENDER_MONKEY>\n").find("t.rfx:3: error: malformed XML"),
-              std::string::npos);
-    EXPECT_NE(errorsOf("<workspace version=\"1\"/>\n").find("the root element must be <RENDER_MONKEY>, not <workspace>"),
-              std::string::npos);
-    EXPECT_NE(errorsOf(glEffect(""), "W.Missing").find("error: --effect W.Missing: no effect 'W.Missing'; it has: 'W.E' (OpenGL, active)"),
-              std::string::npos);
-    EXPECT_NE(errorsOf(glEffect("")).find("t.rfx:3: error: <RmOpenGLEffect NAME=\"E\">: the effect has no passes"), std::string::npos);
+    EXPECT_EQ(
+        errorsOf(
+            pass("<RmRenderStateBlock>\n<RmState NAME=\"GL_DepthFunction\" STATE=\"45\" VALUE=\"9\"/>\n</RmRenderStateBlock>\n")),
+        test::lines({"t.rfx:7: error: <RmState NAME=\"GL_DepthFunction\">: VALUE 9 is not a compare function (it takes 1, 2, 3, "
+                     "4, 5, 6, 7, 8)"}));
+    EXPECT_EQ(
+        errorsOf(pass("<RmRenderStateBlock>\n<RmState NAME=\"GL_CullMode\" STATE=\"8\" VALUE=\"x1\"/>\n</RmRenderStateBlock>\n")),
+        test::lines({"t.rfx:7: error: <RmState NAME=\"GL_CullMode\">: attribute VALUE: 'x1' is not a whole number"}));
+    EXPECT_EQ(errorsOf(pass("<RmRenderTarget NAME=\"nowhere\" RENDER_TO_SCREEN=\"FALSE\"/>\n")),
+              test::lines({"t.rfx:6: error: <RmRenderTarget NAME=\"nowhere\">: no <RmRenderableTexture NAME=\"nowhere\"> is "
+                           "visible from the pass"}));
+    EXPECT_EQ(errorsOf(pass("<RmModelReference NAME=\"Teapot\"/>\n")),
+              test::lines({"t.rfx:6: error: <RmModelReference NAME=\"Teapot\">: no <RmModelData NAME=\"Teapot\"> is visible from "
+                           "the pass"}));
+    EXPECT_EQ(errorsOf(glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"zero\" ENABLED=\"TRUE\">\n" + std::string(kFragment) +
+                                "\n</RmGLPass>\n")),
+              test::lines({"t.rfx:4: error: <RmGLPass NAME=\"P\">: attribute PASS_INDEX: 'zero' is not a whole number",
+                           "t.rfx:3: error: <RmOpenGLEffect NAME=\"E\">: the effect has no passes"}));
+    EXPECT_EQ(errorsOf(glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"0\" ENABLED=\"TRUE\"/>\n")),
+              test::lines({"t.rfx:4: error: <pass \"P\">: it has no shaders and no pass runs before it to lend its program"}));
+    EXPECT_EQ(errorsOf(glEffect("<RmDynamicVariable NAME=\"d\" VARIABLE_TYPE=\"INTEGER\" ROWS=\"1\" COLUMNS=\"3\"/>\n")),
+              test::lines({"t.rfx:4: error: <RmDynamicVariable NAME=\"d\">: INTEGER 1x3 has no rmfx type (floats: 1xN vectors, "
+                           "2x2, 3x3, 4x4 matrices; integers and booleans: 1x1)",
+                           "t.rfx:3: error: <RmOpenGLEffect NAME=\"E\">: the effect has no passes"}));
+    EXPECT_EQ(errorsOf("<RENDER_MONKEY>\n<RmEffectWorkspace NAME=\"W\">\n<oops\n</RENDER_MONKEY>\n"),
+              test::lines({"t.rfx:3: error: malformed XML: bad element syntax (a stray '<'? in text write &lt;)"}));
+    EXPECT_EQ(errorsOf("<workspace version=\"1\"/>\n"),
+              test::lines({"t.rfx:1: error: the root element must be <RENDER_MONKEY>, not <workspace>"}));
+    EXPECT_EQ(errorsOf(glEffect(""), "W.Missing"),
+              test::lines({"t.rfx: error: --effect W.Missing: no effect 'W.Missing'; it has: 'W.E' (OpenGL, active)"}));
+    EXPECT_EQ(errorsOf(glEffect("")), test::lines({"t.rfx:3: error: <RmOpenGLEffect NAME=\"E\">: the effect has no passes"}));
 }
 
 // Every prefix of the test files, and copies with bytes overwritten, must give diagnostics or a

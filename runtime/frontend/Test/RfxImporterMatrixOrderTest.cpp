@@ -40,10 +40,10 @@ TEST(RfxImporterMatrixOrder, HlslMatrixOrderFollowsTheVersionThatSavedTheFile) {
         ASSERT_TRUE(ws) << formatAll(ws.diagnostics());
         EXPECT_EQ(ws->passes[0].shaders[0].matrixOrder, HlslMatrixOrder::RowVector);
         const std::string warnings = formatAll(ws.diagnostics());
-        EXPECT_NE(warnings.find("t.rfx:2: warning: <RmEffectWorkspace NAME=\"W\">: XML_VERSION " +
-                                std::string(attribute.empty() ? "missing" : "\"RenderMonkey\"") +
-                                ": HLSL semantic matrices are passed as RenderMonkey 1.6 and later did, for mul(v, M)"),
-                  std::string::npos)
+        EXPECT_TRUE(
+            test::hasLine(warnings, "t.rfx:2: warning: <RmEffectWorkspace NAME=\"W\">: XML_VERSION " +
+                                        std::string(attribute.empty() ? "missing" : "\"RenderMonkey\"") +
+                                        ": HLSL semantic matrices are passed as RenderMonkey 1.6 and later did, for mul(v, M)"))
             << warnings;
     }
     Workspace ws = imported("d3d_hlsl.rfx");  // RenderMonkey 1.71, with a disabled assembly pass
@@ -103,18 +103,20 @@ TEST(RfxImporterMatrixOrder, TheHlslMatrixOrderFollowsWhatTheCodeMultiplies) {
         const char* version;
         const char* code;  // from line 13 of the file
         HlslMatrixOrder expected;
-        const char* warning;  // empty: none
+        const char*
+            warning;  // on <RmEffectWorkspace NAME="W">, after "t.rfx:2: warning: <RmEffectWorkspace NAME="W">: "; empty: none
     };
     const Case cases[] = {
         {"RenderMonkey 1.71", "return mul(Mvp, p);", HlslMatrixOrder::ColumnVector,
-         "t.rfx:2: warning: <RmEffectWorkspace NAME=\"W\">: t.rfx:13 multiplies mul(Mvp, p) (1 such in the effect), where "
+         "t.rfx:13 multiplies mul(Mvp, p) (1 such in the effect), where "
          "RenderMonkey of XML_VERSION \"RenderMonkey 1.71\" passed its semantic matrices for mul(v, M): they are passed for "
          "mul(M, v), as the code asks (--rfx-matrices to choose)"},
         {"RenderMonkey 1.71", "return mul(float4(p.xyz, 1), (Mvp));", HlslMatrixOrder::RowVector, ""},
         {"RenderMonkey 1.5", "return mul(Mvp, p);", HlslMatrixOrder::ColumnVector, ""},
         {"RenderMonkey 1.5", "float4 q = mul(p, Mvp);\nreturn mul(q, Mvp);", HlslMatrixOrder::RowVector,
          "t.rfx:13 multiplies mul(p, Mvp) (2 such in the effect), where RenderMonkey of XML_VERSION \"RenderMonkey 1.5\" passed "
-         "its semantic matrices for mul(M, v): they are passed for mul(v, M)"},
+         "its semantic matrices for mul(M, v): they are passed for "
+         "mul(v, M), as the code asks (--rfx-matrices to choose)"},
         // A transposed semantic, or transpose(), counts the other way round.
         {"RenderMonkey 1.71", "return mul(MvpT, p);", HlslMatrixOrder::RowVector, ""},
         {"RenderMonkey 1.71", "return mul(transpose(Mvp), p);", HlslMatrixOrder::RowVector, ""},
@@ -122,33 +124,48 @@ TEST(RfxImporterMatrixOrder, TheHlslMatrixOrderFollowsWhatTheCodeMultiplies) {
         // A product of matrices whose order of transforms is unknown (World and a stored or local
         // matrix, a transposed semantic), a stored matrix alone, no variable, or something on the
         // other side that is not known to be a vector says nothing.
-        {"RenderMonkey 1.5", "float4x4 W = S;\nreturn mul(mul(Wld, S), p) + mul(Mvp, MvpT) + mul(p, S) + mul(p, Mvp[0]) + mul(W, Wld) + "
+        {"RenderMonkey 1.5",
+         "float4x4 W = S;\nreturn mul(mul(Wld, S), p) + mul(Mvp, MvpT) + mul(p, S) + mul(p, Mvp[0]) + mul(W, Wld) + "
          "mul(2 * p, Mvp) + mul(unknown, Mvp) + mul(MvpT, S);",
          HlslMatrixOrder::ColumnVector, ""},
-        {"RenderMonkey 1.71", "float4x4 W = S;\nreturn mul(Wld, W) + mul((float4x4) S, Wld) + mul(Mvp, MvpT) + mul(S, W);", HlslMatrixOrder::RowVector, ""},
+        {"RenderMonkey 1.71", "float4x4 W = S;\nreturn mul(Wld, W) + mul((float4x4) S, Wld) + mul(Mvp, MvpT) + mul(S, W);",
+         HlslMatrixOrder::RowVector, ""},
         // Nothing comes after the projection: a matrix ending in it stands last whatever the other
         // (simpleCubeMapReflection-3, saved by 1.71: mul(view_proj_matrix, matWorld), matWorld stored).
         {"RenderMonkey 1.71", "float4x4 m = mul(Mvp, S);\nreturn mul(m, p);", HlslMatrixOrder::ColumnVector,
-         "t.rfx:13 multiplies mul(Mvp, S) (2 such in the effect)"},
+         "t.rfx:13 multiplies mul(Mvp, S) (2 such in the effect), where RenderMonkey of XML_VERSION \"RenderMonkey 1.71\" passed "
+         "its semantic matrices for mul(v, M): they are passed for "
+         "mul(M, v), as the code asks (--rfx-matrices to choose)"},
         {"RenderMonkey 1.5", "float4x4 W = S;\nreturn mul(p, mul(W, Mvp));", HlslMatrixOrder::RowVector,
-         "t.rfx:14 multiplies mul(W, Mvp) (1 such in the effect)"},
+         "t.rfx:14 multiplies mul(W, Mvp) (1 such in the effect), where RenderMonkey of XML_VERSION \"RenderMonkey 1.5\" passed "
+         "its semantic matrices for mul(M, v): they are passed for "
+         "mul(v, M), as the code asks (--rfx-matrices to choose)"},
         // Two semantic matrices: the one applied later on the left is M·v's order (skyBox_11,
         // saved by 1.71, writes m = mul(matViewProjection, matWorld); mul(m, Pos)).
         {"RenderMonkey 1.71", "float4x4 m = mul(Mvp, Wld);\nreturn mul(m, p);", HlslMatrixOrder::ColumnVector,
-         "t.rfx:13 multiplies mul(Mvp, Wld) (2 such in the effect)"},
+         "t.rfx:13 multiplies mul(Mvp, Wld) (2 such in the effect), where RenderMonkey of XML_VERSION \"RenderMonkey 1.71\" "
+         "passed its semantic matrices for mul(v, M): they are passed for "
+         "mul(M, v), as the code asks (--rfx-matrices to choose)"},
         {"RenderMonkey 1.5", "float4x4 m = mul(Wld, Mvp);\nreturn mul(p, m);", HlslMatrixOrder::RowVector,
-         "t.rfx:13 multiplies mul(Wld, Mvp) (2 such in the effect)"},
+         "t.rfx:13 multiplies mul(Wld, Mvp) (2 such in the effect), where RenderMonkey of XML_VERSION \"RenderMonkey 1.5\" "
+         "passed its semantic matrices for mul(M, v): they are passed for "
+         "mul(v, M), as the code asks (--rfx-matrices to choose)"},
         // A local computed from a semantic matrix counts as that matrix beside a vector: the product
         // says v·M's order, the position M·v's (rainBow_transp-1, saved by 1.5), and the version decides.
         {"RenderMonkey 1.5", "float4x4 mtr = mul(S, Mvp);\nreturn mul(mtr, p);", HlslMatrixOrder::ColumnVector,
-         "both ways round (mul(mtr, p) at t.rfx:14, 1 such; mul(S, Mvp) at t.rfx:13, 1 such): they are passed for mul(M, v)"},
+         "the effect's HLSL multiplies its semantic matrices both ways round (mul(mtr, p) at t.rfx:14, 1 such; mul(S, Mvp) at "
+         "t.rfx:13, 1 such): they are passed for mul(M, v), as RenderMonkey of XML_VERSION \"RenderMonkey 1.5\" did "
+         "(--rfx-matrices to choose)"},
         {"RenderMonkey 1.71", "float4 q = mul(Mvp, mul(S, p)) + mul(mul(p, S), Mvp);\nreturn mul(Mvp, p) + mul(p.xyzw, Mvp);",
          HlslMatrixOrder::RowVector,
-         "both ways round (mul(Mvp, p) at t.rfx:14, 1 such; mul(p.xyzw, Mvp) at t.rfx:14, 1 such): they are passed for mul(v, M), "
-         "as RenderMonkey of XML_VERSION \"RenderMonkey 1.71\" did"},
+         "the effect's HLSL multiplies its semantic matrices both ways round (mul(Mvp, p) at t.rfx:14, 1 such; mul(p.xyzw, Mvp) "
+         "at "
+         "t.rfx:14, 1 such): they are passed for mul(v, M), as RenderMonkey of XML_VERSION \"RenderMonkey 1.71\" did "
+         "(--rfx-matrices to choose)"},
         // Without a version the code decides, unwarned; with neither, the later versions' order, warned.
         {"", "return mul(Mvp, p);", HlslMatrixOrder::ColumnVector, ""},
-        {"", "return p;", HlslMatrixOrder::RowVector, "XML_VERSION missing: HLSL semantic matrices are passed as RenderMonkey 1.6"},
+        {"", "return p;", HlslMatrixOrder::RowVector,
+         "XML_VERSION missing: HLSL semantic matrices are passed as RenderMonkey 1.6 and later did, for mul(v, M)"},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(std::string(c.version) + ": " + c.code);
@@ -159,7 +176,8 @@ TEST(RfxImporterMatrixOrder, TheHlslMatrixOrderFollowsWhatTheCodeMultiplies) {
         EXPECT_EQ(ws->passes[0].shaders[0].matrixOrder, c.expected);
         const std::string said = formatAll(ws.diagnostics());
         if (*c.warning) {
-            EXPECT_NE(said.find(c.warning), std::string::npos) << said;
+            EXPECT_TRUE(test::hasLine(said, "t.rfx:2: warning: <RmEffectWorkspace NAME=\"W\">: " + std::string(c.warning)))
+                << said;
         } else {
             EXPECT_EQ(said.find("mul("), std::string::npos) << said;
         }
@@ -226,7 +244,12 @@ TEST(RfxImporterMatrixOrder, AFileWrittenForTheOtherMatrixOrderIsReadByItsCode) 
     ASSERT_EQ(ws->passes[0].shaders.size(), 2u);
     for (const ShaderSource& s : ws->passes[0].shaders) EXPECT_EQ(s.matrixOrder, HlslMatrixOrder::ColumnVector);
     const std::string said = formatAll(ws.diagnostics());
-    EXPECT_NE(said.find("d3d_matrix_order.rfx:34 multiplies mul(g_matViewProj, float4(corner, 1)) (1 such in the effect)"), std::string::npos)
+    const std::string file = (rfxDir() / "d3d_matrix_order.rfx").string();
+    EXPECT_TRUE(
+        test::hasLine(said, file + ":8: warning: <RmEffectWorkspace NAME=\"Flare\">: " + file +
+                                ":34 multiplies mul(g_matViewProj, float4(corner, 1)) (1 such in the effect), where RenderMonkey "
+                                "of XML_VERSION \"RenderMonkey 1.71\" passed its semantic matrices for mul(v, M): they are "
+                                "passed for mul(M, v), as the code asks (--rfx-matrices to choose)"))
         << said;
 }
 

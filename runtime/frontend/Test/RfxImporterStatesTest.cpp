@@ -13,6 +13,11 @@ namespace {
 using namespace test;
 using namespace test::rfx_importer;
 
+// What d3dEffect's text, which names no XML_VERSION, is warned about first.
+const std::string kNoVersion =
+    "t.rfx:2: warning: <RmEffectWorkspace NAME=\"W\">: XML_VERSION missing: HLSL semantic matrices are "
+    "passed as RenderMonkey 1.6 and later did, for mul(v, M)";
+
 TEST(RfxImporterStates, GlRenderStatesMapToBlendDepthAndRaster) {
     Workspace ws = imported("gl_legacy.rfx");
     const Pass& tint = ws.passes[0];
@@ -83,13 +88,14 @@ TEST(RfxImporterStates, PolygonModesAndLineWidthAreApplied) {
     ASSERT_TRUE(wire) << formatAll(wire.diagnostics());
     EXPECT_EQ(wire->passes[0].raster.frontMode, PolygonMode::Line);
     EXPECT_EQ(wire->passes[0].raster.backMode, PolygonMode::Line);
-    EXPECT_NE(errorsOf(d3dEffect(d3dStatePass(0, d3dState(8, "4")))).find("VALUE 4 is not a D3DFILLMODE (it takes 1, 2, 3)"),
-              std::string::npos);
-    EXPECT_NE(errorsOf(glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"0\"><RmRenderStateBlock NAME=\"S\">"
-                                "<RmState NAME=\"GL_LineWidth\" STATE=\"25\" VALUE=\"0.25\"/></RmRenderStateBlock>" +
-                                std::string(kFragment) + "</RmGLPass>\n"))
-                  .find("VALUE 0.25 is not a line width from 1 to 64 pixels"),
-              std::string::npos);
+    EXPECT_EQ(
+        errorsOf(d3dEffect(d3dStatePass(0, d3dState(8, "4")))),
+        test::lines({kNoVersion, "t.rfx:4: error: <RmState NAME=\"D3DRS_8\">: VALUE 4 is not a D3DFILLMODE (it takes 1, 2, 3)"}));
+    EXPECT_EQ(
+        errorsOf(glEffect("<RmGLPass NAME=\"P\" PASS_INDEX=\"0\"><RmRenderStateBlock NAME=\"S\">"
+                          "<RmState NAME=\"GL_LineWidth\" STATE=\"25\" VALUE=\"0.25\"/></RmRenderStateBlock>" +
+                          std::string(kFragment) + "</RmGLPass>\n")),
+        test::lines({"t.rfx:4: error: <RmState NAME=\"GL_LineWidth\">: VALUE 0.25 is not a line width from 1 to 64 pixels"}));
 }
 
 TEST(RfxImporterStates, Direct3dSeparateAlphaBlendingCarriesOverWithTheOtherStates) {
@@ -139,16 +145,23 @@ TEST(RfxImporterStates, Direct3dBlendFactorsAndDecimalStateValuesRenderMonkeyAcc
     EXPECT_EQ(passes[3].blend.srcColor, BlendFactor::SrcAlpha);
     EXPECT_EQ(passes[3].blend.dstColor, BlendFactor::OneMinusSrcAlpha);
     const std::string warnings = formatAll(p.diagnostics());
-    EXPECT_NE(warnings.find("render state D3DRS_195 = 0.25 has no equivalent"), std::string::npos) << warnings;
-    EXPECT_NE(warnings.find("D3DBLEND_BOTHSRCALPHA is a source factor that sets the destination too"), std::string::npos)
+    EXPECT_TRUE(test::hasLine(warnings,
+                              "t.rfx:4: warning: <RmState NAME=\"D3DRS_195\">: render state D3DRS_195 = 0.25 has no "
+                              "equivalent in rmfx's pass model; ignored"))
+        << warnings;
+    EXPECT_TRUE(test::hasLine(warnings,
+                              "t.rfx:7: warning: <RmState NAME=\"D3DRS_20\">: D3DBLEND_BOTHSRCALPHA is a source factor "
+                              "that sets the destination too; read as such here"))
         << warnings;
 
     // A whole-number state given a fraction, and text that is no number, are errors on the element.
-    for (const char* bad : {"0.5", "1.0.0"}) {
+    for (const auto& [bad, why] :
+         {std::pair{"0.5", "is not a whole number, and this state takes one"}, std::pair{"1.0.0", "is not a number"}}) {
         Result<Workspace> wrong = importRfxText(d3dEffect(d3dStatePass(0, d3dState(7, bad))), "t.rfx", ".", {""});
         EXPECT_FALSE(wrong.ok()) << bad;
-        EXPECT_NE(formatAll(wrong.diagnostics()).find(std::string("attribute VALUE: '") + bad + "' is not a"),
-                  std::string::npos)
+        EXPECT_TRUE(
+            test::hasLine(formatAll(wrong.diagnostics()),
+                          "t.rfx:4: error: <RmState NAME=\"D3DRS_7\">: attribute VALUE: '" + std::string(bad) + "' " + why))
             << formatAll(wrong.diagnostics());
     }
 
@@ -162,9 +175,16 @@ TEST(RfxImporterStates, Direct3dBlendFactorsAndDecimalStateValuesRenderMonkeyAcc
     Result<Workspace> sampled = importRfxText(file, "d3d_hlsl.rfx", rfxDir(), {""});
     ASSERT_TRUE(sampled.ok()) << formatAll(sampled.diagnostics());
     const std::string samplerWarnings = formatAll(sampled.diagnostics());
-    EXPECT_NE(samplerWarnings.find("D3DTEXF_ANISOTROPIC as the mip filter is sampled as linear"), std::string::npos)
+    const std::string at =
+        "d3d_hlsl.rfx:" + std::to_string(lineOf(rfxDir() / "d3d_hlsl.rfx", "D3DSAMP_MIPFILTER")) + ": warning: ";
+    EXPECT_TRUE(
+        test::hasLine(samplerWarnings, at + "<RmState NAME=\"D3DSAMP_MIPFILTER\">: D3DTEXF_ANISOTROPIC as the mip filter is "
+                                            "sampled as linear (rmfx samplers have no anisotropy)"))
         << samplerWarnings;
-    EXPECT_NE(samplerWarnings.find("D3DSAMP_MIPMAPLODBIAS = -0.5 has no equivalent"), std::string::npos) << samplerWarnings;
+    EXPECT_TRUE(
+        test::hasLine(samplerWarnings, at + "<RmState NAME=\"D3DSAMP_MIPMAPLODBIAS\">: sampler state D3DSAMP_MIPMAPLODBIAS = "
+                                            "-0.5 has no equivalent in rmfx's sampler model; ignored"))
+        << samplerWarnings;
 }
 
 // Fixed-function fog states (terrain_fog.rfx: linear table fog from 1 to 1000 in white) become the
@@ -195,8 +215,9 @@ TEST(RfxImporterStates, FogStatesBecomeThePasssFixedFunctionFog) {
     const std::string message = "vertex fog (D3DRS_FOGVERTEXMODE) takes the vertex shader's FOG output";
     ASSERT_NE(warnings.find(message), std::string::npos) << warnings;
     EXPECT_EQ(warnings.find(message, warnings.find(message) + 1), std::string::npos) << warnings;
-    EXPECT_NE(errorsOf(d3dEffect(d3dStatePass(0, d3dState(35, "4")))).find("VALUE 4 is not a D3DFOGMODE (it takes 0, 1, 2, 3)"),
-              std::string::npos);
+    EXPECT_EQ(errorsOf(d3dEffect(d3dStatePass(0, d3dState(35, "4")))),
+              test::lines({kNoVersion,
+                           "t.rfx:4: error: <RmState NAME=\"D3DRS_35\">: VALUE 4 is not a D3DFOGMODE (it takes 0, 1, 2, 3)"}));
 }
 
 // D3DRS_ZENABLE 0 turns depth buffering off: no test and no write, though ZWRITEENABLE stays TRUE
@@ -228,8 +249,9 @@ TEST(RfxImporterStates, AlphaTestStatesBecomeThePasssAlphaTest) {
         EXPECT_EQ(pass.alphaTest.ref, 128.0f / 255.0f);
     }
     EXPECT_EQ(formatAll(ws.diagnostics()).find("ALPHA"), std::string::npos) << formatAll(ws.diagnostics());
-    EXPECT_NE(errorsOf(d3dEffect(d3dStatePass(0, d3dState(24, "300")))).find("VALUE 300 is not an alpha reference (0 to 255)"),
-              std::string::npos);
+    EXPECT_EQ(
+        errorsOf(d3dEffect(d3dStatePass(0, d3dState(24, "300")))),
+        test::lines({kNoVersion, "t.rfx:4: error: <RmState NAME=\"D3DRS_24\">: VALUE 300 is not an alpha reference (0 to 255)"}));
 }
 
 }  // namespace
