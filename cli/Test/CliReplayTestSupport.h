@@ -3,6 +3,7 @@
 // its references written with --update, and the images and JUnit reports a replay leaves.
 
 #include <filesystem>
+#include <regex>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -58,6 +59,12 @@ inline std::string tinyManifest(const std::string& gain = "1") {
         "  </case>",
         "</replay>",
     });
+}
+
+// A replay's stdout with each case's time, " (1.23 s)", written " (… s)": the rest is the same run
+// to run, so a test can compare all of it.
+inline std::string withoutTimes(const std::string& out) {
+    return std::regex_replace(out, std::regex(R"( \([0-9]+\.[0-9]{2} s\))"), " (… s)");
 }
 
 inline bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }

@@ -137,9 +137,10 @@ float4 main(float4 inDiffuse : COLOR0, float2 uv : TEXCOORD0, float3 extra : TEX
     std::unique_ptr<Workspace> ws = hlslWorkspace(xml);
     ASSERT_TRUE(ws);
     const std::string warnings = formatAll(validateWorkspace(*ws).diagnostics());
-    EXPECT_NE(warnings.find("warning: <pass name=\"hlsl\">: the pixel shader takes COLOR0, TEXCOORD3 as input, which the vertex "
-                            "shader does not write; Direct3D 9 ran it anyway, so rmfx supplies them"),
-              std::string::npos) << warnings;
+    EXPECT_EQ(warnings,
+              test::lines({"./hlsl-test.xml:17: warning: <pass name=\"hlsl\">: the pixel shader takes COLOR0, TEXCOORD3 as "
+                           "input, which the vertex shader does not write; Direct3D 9 ran it anyway, so rmfx supplies them "
+                           "(COLORn opaque white, others (0, 0, 0, 1))"}));
     RefImage out = renderOut(xml);
     ASSERT_EQ(out.width, 4);
     // COLOR0 white, TEXCOORD3 (0, 0, 0); uv.x the pixel's texture coordinate (x + 0.5) / 4.
@@ -186,9 +187,13 @@ float4 main(float2 wide : TEXCOORD3) : COLOR { return float4(wide, 1, 1); }
     std::unique_ptr<Workspace> ws = hlslWorkspace(xml);
     ASSERT_TRUE(ws);
     const std::string warnings = formatAll(validateWorkspace(*ws).diagnostics());
-    EXPECT_NE(warnings.find("<pass name=\"hlsl\">: the stages declare TEXCOORD2 (float → vec4), TEXCOORD3 (vec4 → vec2) "
-                            "with different sizes"),
-              std::string::npos) << warnings;
+    EXPECT_EQ(warnings,
+              test::lines({"./hlsl-test.xml:14: warning: <pass name=\"hlsl\">: the stages declare TEXCOORD2 (float → vec4), "
+                           "TEXCOORD3 (vec4 → vec2) with different sizes; Direct3D 9 matched them by register, so rmfx "
+                           "passes the value on, cut to the size read or filled with 0 (w 1)",
+                           "./hlsl-test.xml:31: warning: <pass name=\"hlsl2\">: the stages declare TEXCOORD3 (vec4 → vec2) "
+                           "with different sizes; Direct3D 9 matched them by register, so rmfx passes the value on, cut to "
+                           "the size read or filled with 0 (w 1)"}));
     GlRun run = runWorkspace(std::move(ws), {{4, 4}, 1, 1.0f / 60.0f});
     ASSERT_TRUE(run.exec);
     RefImage out = readRef(run, "out"), out2 = readRef(run, "out2");
@@ -212,10 +217,10 @@ float4 main(float3 n : NORMAL) : COLOR { return float4(n, 1); }
                                                 "hlsl-test.xml", ".");
     ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
     std::string all = formatAll(validateWorkspace(*parsed).diagnostics());
-    EXPECT_NE(all.find("hlsl-test.xml:3: error: <pass name=\"hlsl\">: the HLSL pixel shader reads NORMAL0, which a pass "
-                       "without a vertex shader"),
-              std::string::npos)
-        << all;
+    EXPECT_EQ(all,
+              test::lines({"hlsl-test.xml:3: error: <pass name=\"hlsl\">: the HLSL pixel shader reads NORMAL0, which a pass "
+                           "without a vertex shader (Direct3D's fixed-function vertex processing) does not provide: give the "
+                           "pass a vertex shader"}));
 }
 
 // Direct3D keeps z/w in [0, 1] and writes it to the depth buffer as is; rmfx must give the same
