@@ -49,7 +49,7 @@ section() {
   while IFS='|' read -r class regex; do
     echo "| $class | \`${regex//|/\\|}\` | $(tally "$normal" "$regex") | $(tally "$asan" "$regex") |"
   done <<'EOF'
-Malformed workspaces and manifests|^(WorkspaceParser|Validation|ReplayManifest|Diagnostic)\.
+Malformed workspaces and manifests|^(WorkspaceParser(Document|Values|Structure|Model)|Validation(Names|References|Files|Shaders|Overrides|Effects)|ReplayManifest|Diagnostic)\.
 RenderMonkey .rfx files|^Rfx
 Fuzzer findings kept as regression inputs|^FuzzRegression
 Numerical hard cases (NaN, Inf, 1e6, 1x1, 1921x1081, dt 0/1000)|HardCases

@@ -22,6 +22,16 @@ std::string lines(std::initializer_list<std::string> list) {
     return out;
 }
 
+bool hasLine(const std::string& text, const std::string& line) {
+    for (size_t begin = 0; begin <= text.size();) {
+        size_t end = text.find('\n', begin);
+        if (end == std::string::npos) end = text.size();
+        if (text.compare(begin, end - begin, line) == 0) return true;
+        begin = end + 1;
+    }
+    return false;
+}
+
 std::string readText(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
     std::stringstream s;

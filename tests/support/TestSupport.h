@@ -15,6 +15,10 @@ std::filesystem::path binaryDir();  // the build folder
 // of each element they expect a message about.
 std::string lines(std::initializer_list<std::string> list);
 
+// Whether `text` holds `line` as one whole line (between line breaks or the text's ends): a test
+// checks one formatted diagnostic of several whole, its file:line included, not a piece of it.
+bool hasLine(const std::string& text, const std::string& line);
+
 // The whole text of a file; "" when it cannot be read.
 std::string readText(const std::filesystem::path& file);
 
