@@ -123,20 +123,19 @@ Result<LiveWorkspace::Build> LiveWorkspace::load(const std::set<std::string>& st
     updateWatches();
     const glm::ivec2 viewport = build.supplied.viewport;
     const ExecutorOptions options = executorOptions(build);
+    // Compiled with validation's programs: the file's shaders are assembled once per load.
+    auto frame = compileFrame(build.workspace, options, viewport, kGuaranteedMaxTargetSize, &build.programs);
+    if (!frame) return Result<Build>::failure(append(diagnostics, frame.takeDiagnostics()));
     if (executor_) {
         // Textures whose files did not change are copied from the running build, not decoded again.
         std::vector<std::string> reusable;
         for (const Texture& t : workspace_->textures)
             if (!pendingTextures_.count(t.name) && !staleTextures.count(t.name)) reusable.push_back(t.name);
-        auto frame = compileFrame(build.workspace, options, viewport, kGuaranteedMaxTargetSize, &build.programs);
-        if (!frame) return Result<Build>::failure(append(diagnostics, frame.takeDiagnostics()));
         auto created = GlExecutor::createReusing(std::move(*frame), options, *executor_, reusable);
         append(diagnostics, created.diagnostics());
         if (!created) return Result<Build>::failure(std::move(diagnostics));
         build.executor = std::move(*created);
     } else {
-        auto frame = compileFrame(build.workspace, options, viewport, kGuaranteedMaxTargetSize, &build.programs);
-        if (!frame) return Result<Build>::failure(append(diagnostics, frame.takeDiagnostics()));
         auto created = GlExecutor::create(std::move(*frame), options);
         append(diagnostics, created.diagnostics());
         if (!created) return Result<Build>::failure(std::move(diagnostics));
