@@ -69,11 +69,12 @@ struct PreparedCase {
 
     // Compiles the frame with validation's programs and renders the case's frames.
     Result<std::unique_ptr<GlExecutor>> run() {
-        const glm::ivec2 size = settings.size.x > 0 ? settings.size : glm::ivec2(loaded.ws.width, loaded.ws.height);
-        auto frame = compileFrame(std::make_shared<const Workspace>(std::move(loaded.ws)), options, size, kGuaranteedMaxTargetSize,
-                                  &loaded.programs);
-        if (!frame) return Result<std::unique_ptr<GlExecutor>>::failure(frame.takeDiagnostics());
-        return runHeadless(PreparedRun{std::move(*frame), options}, settings, options);
+        RunRequest request;
+        request.size = settings.size;
+        request.plan = options;
+        Result<PreparedRun> prepared = compileRun(std::move(loaded), request);
+        if (!prepared) return Result<std::unique_ptr<GlExecutor>>::failure(prepared.takeDiagnostics());
+        return runHeadless(*prepared, settings, options);
     }
 };
 
@@ -93,8 +94,10 @@ std::optional<PreparedCase> prepareCase(const ReplayCase& c, const MediaOptions&
     if (!c.inputs.empty()) {
         std::optional<SuppliedInputs> supplied = supplyCaseInputs(c, ws, diagnostics);
         if (!supplied) return std::nullopt;
-        prepared.settings.size = supplied->viewport;
-        prepared.options.givenInputs = supplied->given;
+        // Read here, so that each problem names its <input>: the run's own reading is skipped.
+        prepared.loaded.inputsRead = true;
+        prepared.loaded.viewport = supplied->viewport;
+        prepared.loaded.givenInputs = supplied->given;
     }
     if (contexts)
         if (auto context = contexts->use(ws.profile); !context) {
