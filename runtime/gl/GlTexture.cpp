@@ -9,6 +9,7 @@
 #include "io/image/CubeMapLayout.h"
 #include "io/image/DdsCubeMap.h"
 #include "io/image/ImageIO.h"
+#include "io/image/MipChain.h"
 
 namespace rmfx {
 namespace {
@@ -70,6 +71,12 @@ void applySwizzle(GLuint texture, int channels) {
     }
 }
 
+// The levels below the base are made on the CPU (io/image/MipChain.h), the same on every driver and
+// much cheaper than llvmpipe's glGenerateTextureMipmap, which costs about 150 ms a cube map.
+MipEncoding mipEncoding(const UploadFormat& f) {
+    return f.internal == GL_SRGB8 || f.internal == GL_SRGB8_ALPHA8 ? MipEncoding::Srgb : MipEncoding::Linear;
+}
+
 std::string label(const Texture& t) {
     return std::string(textureElementName(t.kind)) + " '" + t.name + "'";
 }
@@ -93,14 +100,19 @@ GlTextureInfo uploadTexture2D(Image image, const Texture& texture, bool topFirst
     UploadFormat f = chooseFormat(image, texture.colorSpace);
     info.width = image.width;
     info.height = image.height;
-    const std::vector<float> flipped = rowsForUpload(image, topFirst);
     int levels = texture.mipmaps ? gl::mipLevels(info.width, info.height) : 1;
+    std::vector<Image> below = mipLevelsBelow(image, levels, mipEncoding(f));
+    const std::vector<float> flipped = rowsForUpload(image, topFirst);
     glCreateTextures(GL_TEXTURE_2D, 1, &info.name);
     glTextureStorage2D(info.name, levels, f.internal, info.width, info.height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTextureSubImage2D(info.name, 0, 0, 0, info.width, info.height, f.pixelFormat, GL_FLOAT, flipped.data());
+    for (int level = 1; level < levels; ++level) {
+        Image& mip = below[static_cast<size_t>(level - 1)];
+        glTextureSubImage2D(info.name, level, 0, 0, mip.width, mip.height, f.pixelFormat, GL_FLOAT,
+                            rowsForUpload(mip, topFirst).data());
+    }
     if (f.swizzleGray) applySwizzle(info.name, image.channels);
-    if (texture.mipmaps) glGenerateTextureMipmap(info.name);
     info.bytes = static_cast<size_t>(info.width) * info.height * bytesPerTexel(f.internal) * (texture.mipmaps ? 4 : 3) / 3;
     return info;
 }
@@ -111,16 +123,21 @@ GlTextureInfo uploadVolume(Image image, const Texture& texture, bool topFirst) {
     UploadFormat f = chooseFormat(image, texture.colorSpace);
     info.width = image.width;
     info.height = image.height;
-    const std::vector<float> flipped = rowsForUpload(image, topFirst);
     const int largest = std::max({image.width, image.height, image.depth});
     const int levels = texture.mipmaps ? static_cast<int>(std::floor(std::log2(largest))) + 1 : 1;
+    std::vector<Image> below = mipLevelsBelow(image, levels, mipEncoding(f));
+    const std::vector<float> flipped = rowsForUpload(image, topFirst);
     glCreateTextures(GL_TEXTURE_3D, 1, &info.name);
     glTextureStorage3D(info.name, levels, f.internal, image.width, image.height, image.depth);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTextureSubImage3D(info.name, 0, 0, 0, 0, image.width, image.height, image.depth, f.pixelFormat, GL_FLOAT,
                         flipped.data());
+    for (int level = 1; level < levels; ++level) {
+        Image& mip = below[static_cast<size_t>(level - 1)];
+        glTextureSubImage3D(info.name, level, 0, 0, 0, mip.width, mip.height, mip.depth, f.pixelFormat, GL_FLOAT,
+                            rowsForUpload(mip, topFirst).data());
+    }
     if (f.swizzleGray) applySwizzle(info.name, image.channels);
-    if (texture.mipmaps) glGenerateTextureMipmap(info.name);
     info.bytes = static_cast<size_t>(image.width) * image.height * image.depth * bytesPerTexel(f.internal) *
                  (texture.mipmaps ? 8 : 7) / 7;
     return info;
@@ -179,11 +196,15 @@ Result<GlTextureInfo> loadGlTexture(const Workspace& ws, const Texture& texture)
     glTextureStorage2D(info.name, levels, f.internal, info.width, info.height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     // Cube faces are uploaded top row first: GL's face t axis points down the face.
-    for (int i = 0; i < 6; ++i)
+    for (int i = 0; i < 6; ++i) {
         glTextureSubImage3D(info.name, 0, 0, 0, i, info.width, info.height, 1, f.pixelFormat, GL_FLOAT,
                             cube[i].pixels.data());
+        int level = 1;
+        for (const Image& mip : mipLevelsBelow(cube[i], levels, mipEncoding(f)))
+            glTextureSubImage3D(info.name, level++, 0, 0, i, mip.width, mip.height, 1, f.pixelFormat, GL_FLOAT,
+                                mip.pixels.data());
+    }
     if (f.swizzleGray) applySwizzle(info.name, cube[0].channels);
-    if (texture.mipmaps) glGenerateTextureMipmap(info.name);
     info.bytes = static_cast<size_t>(info.width) * info.height * 6 * bytesPerTexel(f.internal) * (texture.mipmaps ? 4 : 3) / 3;
     return info;
 }
