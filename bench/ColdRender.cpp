@@ -7,6 +7,8 @@
 //   load      parse the workspace, resolve its media, validate it (glslang compiles every pass)
 //   compile   plan the frame with validation's programs (compile/RunPreparation.h)
 //   context   the headless EGL context
+//   codecs wait   what is left of loading OpenImageIO (io/image/ImageCodecs.h), which started with
+//             the process on a thread of its own: the wait for it before the first image reads
 //   gl build  GlExecutor::create: the driver compiles and links, textures load, targets allocate
 //   frame     the first frame, to glFinish
 //   write     read the output back and write the PNG
@@ -42,13 +44,14 @@
 #include "core/Percentile.h"
 #include "gl/GlContext.h"
 #include "gl/GlExecutor.h"
+#include "io/image/ImageCodecs.h"
 #include "io/image/ImageIO.h"
 #include "validation/WorkspaceLoader.h"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-const char* const kPhases[] = {"start", "load", "compile", "context", "gl build", "frame", "write"};
+const char* const kPhases[] = {"start", "load", "compile", "context", "codecs wait", "gl build", "frame", "write"};
 
 long peakResidentKiB() {
     std::ifstream status("/proc/self/status");
@@ -114,6 +117,7 @@ int renderOnce(const std::filesystem::path& workspace, glm::ivec2 size, const st
         std::printf("%s\t%.3f\t%ld\n", phase, std::chrono::duration<double, std::milli>(now - start).count(), peakResidentKiB());
         start = now;
     };
+    startLoadingImageCodecs();  // as rmfx render does: OpenImageIO loads meanwhile, on a thread
     RunRequest request;
     request.workspace = workspace;
     request.size = size;
@@ -130,6 +134,8 @@ int renderOnce(const std::filesystem::path& workspace, glm::ivec2 size, const st
     auto context = GlContext::createHeadless(profile);
     if (!context) return std::cerr << context.error() << "\n", 1;
     phaseDone("context");
+    if (const auto& codecs = imageCodecs(); !codecs) return std::cerr << codecs.error() << "\n", 1;
+    phaseDone("codecs wait");
     auto executor = GlExecutor::create(frame);
     if (!executor) return std::cerr << formatAll(executor.diagnostics()), 1;
     phaseDone("gl build");

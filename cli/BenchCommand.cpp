@@ -31,6 +31,7 @@
 #include "io/xml/XmlElementReader.h"
 #include "run/HeadlessRun.h"
 #include "validation/WorkspaceLoader.h"
+#include "io/image/ImageCodecs.h"
 
 namespace rmfx::cli {
 
@@ -289,6 +290,7 @@ std::vector<std::string> benchOptionNames() {
 int benchCommand(const std::vector<std::string>& args) {
     auto a = parseArguments(args);
     if (!a) return 1;
+    startLoadingImageCodecs();  // meanwhile, the manifest and its workspaces load
     Result<VariantManifest> parsed = parseVariantManifestFile(a->manifest);
     std::cerr << formatAll(parsed.diagnostics());
     if (!parsed) {

@@ -28,6 +28,7 @@
 #include "validation/TextureArguments.h"
 #include "validation/UnreadArguments.h"
 #include "validation/WorkspaceLoader.h"
+#include "io/image/ImageCodecs.h"
 
 namespace rmfx::cli {
 
@@ -306,6 +307,9 @@ std::vector<std::string> renderOptionNames() {
 int renderCommand(const std::vector<std::string>& args) {
     auto a = parseArguments(args);
     if (!a) return 1;
+    // OpenImageIO loads on a thread of its own while the workspace parses and validates, unless
+    // the run reads and writes no image (--explain alone).
+    if (a->output || !a->explain || a->executor.checkHealth || !a->inputs.empty()) startLoadingImageCodecs();
     // An --input image too large to read is refused from its header before the workspace loads.
     for (const InputArgument& input : a->inputs) {
         if (isSequencePattern(input.file.string())) continue;

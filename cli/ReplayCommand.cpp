@@ -22,6 +22,7 @@
 #include "io/xml/JUnitReport.h"
 #include "run/ReplayReport.h"
 #include "run/ReplayRun.h"
+#include "io/image/ImageCodecs.h"
 
 namespace rmfx::cli {
 
@@ -333,6 +334,7 @@ std::vector<std::string> replayOptionNames() {
 int replayCommand(const std::vector<std::string>& args) {
     auto a = parseArguments(args);
     if (!a) return 1;
+    startLoadingImageCodecs();  // meanwhile, the manifest and its workspaces load
     // Where the results go is checked before any case renders. The JUnit report's folder is
     // created when missing, as --out and --report are.
     auto junitUsable = [&]() -> Result<void> {

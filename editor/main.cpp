@@ -7,8 +7,10 @@
 #include <vector>
 
 #include "editor/Editor.h"
+#include "io/image/ImageCodecs.h"
 
 int main(int argc, char** argv) {
+    rmfx::startLoadingImageCodecs();  // on its own thread, while the workspace loads and the window opens
     const std::vector<std::string> args(argv + 1, argv + argc);
     std::string error;
     auto options = rmfx::apps::parseEditorOptions(args, &error);

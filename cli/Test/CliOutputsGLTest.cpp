@@ -139,6 +139,24 @@ TEST_F(CliOutputsGLTest, AnOutputThatCannotBeWrittenIsRefusedBeforeTheFrame) {
     EXPECT_TRUE(has(fallback.err, "'noise.png' is a folder, not a file")) << fallback.err;
 }
 
+// Images are read and written through the image codecs module (runtime/io/image/ImageCodecs.h),
+// loaded when a command needs it: without it a render fails naming the module's path and the
+// loader's reason and writes nothing; validate, which reads no image, never loads it.
+TEST_F(CliOutputsGLTest, WithoutTheImageCodecsModuleARenderSaysWhyAndWritesNothing) {
+    ScratchDir dir;
+    dir.write("noise.xml", kNoise);
+    writeSeed(dir / "seed.exr", 0.0f);
+    const std::string missing = (dir / "gone/rmfx-image-codecs.so").string();
+    CommandResult render = runRmfx("render noise.xml -o out.png", dir.path(), "RMFX_IMAGE_CODECS=" + missing);
+    EXPECT_EQ(render.status, 2) << render.err;  // as for any texture that cannot be read
+    EXPECT_TRUE(has(render.err, "noise.xml:2: error: texture 'frame': cannot load rmfx's image codecs '" + missing +
+                                    "': ")) << render.err;
+    EXPECT_TRUE(has(render.err, "No such file or directory")) << render.err;
+    EXPECT_FALSE(fs::exists(dir / "out.png"));
+    CommandResult validate = runRmfx("validate noise.xml", dir.path(), "RMFX_IMAGE_CODECS=" + missing);
+    EXPECT_EQ(validate.status, 0) << validate.err;
+}
+
 // replay: --out, --report and --junit that cannot be written are refused before any case runs.
 TEST_F(CliOutputsGLTest, ReplayOutputsAreCheckedBeforeAnyCase) {
     ScratchDir dir;

@@ -6,6 +6,7 @@
 #include <set>
 #include <thread>
 
+#include "core/LibraryLoading.h"
 #include "frontend/shader/PassProgram.h"
 #include "graph/PassGraph.h"
 #include "graph/UniformBinding.h"
@@ -422,7 +423,10 @@ private:
         auto compile = [&](size_t i) {
             checks[i].compiled = checkPassProgram(*checks[i].program, passLabel(ws_.passes[i]), &checks[i].vertexInputs);
         };
-        const size_t threads = std::min<size_t>(distinct.size(), std::max(1u, std::thread::hardware_concurrency()));
+        // Each distinct program on a core of its own; on this thread alone while a library loads on
+        // another (a new thread would wait for it: core/LibraryLoading.h).
+        const size_t threads = libraryLoadingElsewhere() ? 1
+                               : std::min<size_t>(distinct.size(), std::max(1u, std::thread::hardware_concurrency()));
         std::atomic<size_t> next{0};
         auto work = [&] {
             for (size_t n; (n = next.fetch_add(1)) < distinct.size();) compile(distinct[n]);

@@ -3,7 +3,9 @@
 #   1. scripts/check-layers.py fails when cli/ (rmfx) includes editor/ (rmfx-edit), naming the
 #      file and line, and when apps/ includes the gl layer;
 #   2. the rmfx binary links no GLFW and no Dear ImGui (ldd), so a render node without a
-#      windowing stack runs it; rmfx-edit, where built, does.
+#      windowing stack runs it; rmfx-edit, where built, does;
+#   3. the rmfx binary links no OpenImageIO either: the image codecs module beside it does, loaded
+#      when a command reads or writes images (runtime/io/image/ImageCodecs.h).
 # Usage: apps-apart.sh SOURCE_DIR RMFX [RMFX_EDIT]
 set -euo pipefail
 source_dir=$1 rmfx=$2 rmfx_edit=${3:-}
@@ -40,6 +42,12 @@ if grep -q ' ImGui::' <<<"$symbols"; then
   echo "$rmfx holds Dear ImGui's functions (nm): rmfx must not build the editor in"; exit 1
 fi
 echo "ldd $rmfx: no GLFW and no ImGui ($(wc -l <<<"$linked") libraries); nm: no ImGui function"
+if grep -i openimageio <<<"$linked"; then
+  echo "$rmfx links OpenImageIO (above): only the image codecs module may"; exit 1
+fi
+codecs="$(dirname "$rmfx")/rmfx-image-codecs.so"
+grep -qi openimageio <<<"$(ldd "$codecs")" || { echo "$codecs does not link OpenImageIO: is the check looking at the right thing?"; exit 1; }
+echo "ldd $rmfx: no OpenImageIO; ldd $codecs: OpenImageIO"
 if [ -n "$rmfx_edit" ]; then
   grep -qi glfw <<<"$(ldd "$rmfx_edit")" || { echo "$rmfx_edit does not link GLFW: is the check looking at the right thing?"; exit 1; }
   edit_symbols=$(nm -C "$rmfx_edit")

@@ -1,4 +1,5 @@
 // writeImage (declared in ImageIO.h): format by extension, display transform and quantisation.
+#include "io/image/codecs/CodecFunctions.h"
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -16,7 +17,7 @@
 #include "io/image/ImageFileError.h"
 #include "io/image/ImageIO.h"
 
-namespace rmfx {
+namespace rmfx::codecs {
 
 namespace fs = std::filesystem;
 
@@ -79,12 +80,6 @@ std::vector<float> selectChannels(const Image& image, const std::vector<int>& ma
 }
 
 }  // namespace
-
-Result<void> writeImage(const fs::path& file, const Image& image, DisplayTransform transform) {
-    WriteOptions options;
-    options.transform = transform;
-    return writeImage(file, image, options);
-}
 
 Result<void> writeImage(const fs::path& file, const Image& image, const WriteOptions& options) {
     const std::optional<Target> target = targetFor(file);
@@ -154,4 +149,4 @@ Result<void> writeImage(const fs::path& file, const Image& image, const WriteOpt
     return {};
 }
 
-}  // namespace rmfx
+}  // namespace rmfx::codecs

@@ -1,19 +1,13 @@
 #include "io/image/DdsCubeMap.h"
+#include "io/image/codecs/CodecFunctions.h"
 
 #include <algorithm>
-#include <cctype>
 
 #include <OpenImageIO/imageio.h>
 
 #include "io/image/ImageIO.h"
 
-namespace rmfx {
-
-bool isDdsFile(const std::filesystem::path& file) {
-    std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext == ".dds";
-}
+namespace rmfx::codecs {
 
 Result<CubeFaces> readDdsCubeMap(const std::filesystem::path& file) {
     std::string name = "'" + file.string() + "'";
@@ -50,4 +44,4 @@ Result<CubeFaces> readDdsCubeMap(const std::filesystem::path& file) {
     return cubeFromFaces(std::move(faces));
 }
 
-}  // namespace rmfx
+}  // namespace rmfx::codecs

@@ -1,4 +1,5 @@
 #include "io/image/ImageIO.h"
+#include "io/image/codecs/CodecFunctions.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +13,7 @@
 #include "io/image/ImageFileError.h"
 #include "io/image/ImageMemoryLimit.h"
 
-namespace rmfx {
+namespace rmfx::codecs {
 
 namespace fs = std::filesystem;
 
@@ -115,14 +116,4 @@ Result<Image> readImage(const fs::path& file) { return readImageFile(file, Dimen
 
 Result<Image> readVolumeImage(const fs::path& file) { return readImageFile(file, Dimensions::Volume); }
 
-float srgbEncode(float linear) {
-    const double v = linear;
-    return static_cast<float>(v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055);
-}
-
-float srgbDecode(float encoded) {
-    const double v = encoded;
-    return static_cast<float>(v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
-}
-
-}  // namespace rmfx
+}  // namespace rmfx::codecs

@@ -1,4 +1,5 @@
 #include "io/image/InputImage.h"
+#include "io/image/codecs/CodecFunctions.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +17,7 @@
 #include "io/image/ImageMemoryLimit.h"
 #include "io/image/ImageIO.h"
 
-namespace rmfx {
+namespace rmfx::codecs {
 
 namespace fs = std::filesystem;
 
@@ -402,18 +403,6 @@ Result<InputImage> readInputImage(const fs::path& file, const std::string& layer
     return input;
 }
 
-std::pair<fs::path, std::string> splitLayerSuffix(const std::string& argument) {
-    const size_t colon = argument.rfind(':');
-    std::error_code ec;
-    if (colon == std::string::npos || colon == 0 || fs::exists(argument, ec)) return {argument, ""};
-    const std::string file = argument.substr(0, colon);
-    std::string extension = fs::path(file).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    if (extension == ".exr" || fs::is_regular_file(file, ec)) return {file, argument.substr(colon + 1)};
-    return {argument, ""};
-}
-
 Result<Image> resampleImage(const Image& image, int width, int height) {
     if (image.width <= 0 || image.height <= 0 || image.channels < 1 || image.channels > 4 ||
         image.pixels.size() != size_t(image.width) * size_t(image.height) * size_t(image.channels))
@@ -440,4 +429,4 @@ Result<Image> resampleImage(const Image& image, int width, int height) {
     return out;
 }
 
-}  // namespace rmfx
+}  // namespace rmfx::codecs
