@@ -6,34 +6,38 @@
 
 #include <gtest/gtest.h>
 
-#include "frontend/workspace/WorkspaceParser.h"
 #include "graph/FramePlan.h"
-#include "tests/support/TestSupport.h"
+#include "graph/Test/HdrLightingWorkspace.h"
+#include "graph/Test/WorkspaceBuilder.h"
 
 namespace rmfx {
 namespace {
 
-using test::passXml;
+using test::WorkspaceBuilder;
 using Names = std::vector<std::string>;
 using EffectsByPass = std::map<std::string, std::set<std::string>>;
 
-std::unique_ptr<Workspace> parse(const std::string& body) {
-    std::string xml = "<workspace version=\"1\" name=\"skip\" size=\"8x8\">\n" + body + "</workspace>\n";
-    Result<Workspace> parsed = parseWorkspaceText(xml, "skip.xml", ".");
-    EXPECT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
-    if (!parsed) return nullptr;
-    return std::make_unique<Workspace>(std::move(*parsed));
-}
+struct Glow {
+    bool spread = false;            // a pass between the bright pass and the effect
+    std::string source = "bright";  // the effect's source; empty: none
+    bool gated = false;             // a 1x1 gate written from the scene before the bright pass, counted in red
+};
 
 // scene → bright → [spread] → glow (effect, source bright) → final (reads scene and glow).
-std::string glowWorkspace(bool spread, const std::string& effectAttributes = "source=\"bright\"") {
-    std::string xml;
-    for (const char* t : {"scene", "bright", "spread", "glow"}) xml += std::string("  <target name=\"") + t + "\" format=\"rgba16f\"/>\n";
-    xml += "  <effect name=\"glow\" passes=\"glow_pass\" " + effectAttributes + "/>\n";
-    xml += passXml("scene_pass", "scene", {}) + passXml("bright_pass", "bright", {"scene"});
-    if (spread) xml += passXml("spread_pass", "spread", {"bright"});
-    xml += passXml("glow_pass", "glow", {spread ? "spread" : "bright"}) + passXml("final", "", {"scene", "glow"});
-    return xml;
+std::unique_ptr<Workspace> glowWorkspace(const Glow& glow) {
+    WorkspaceBuilder b("skip.xml");
+    if (glow.gated) b.target("gate", TargetFormat::RGBA16F, test::fixedSize(1, 1));
+    b.targets({"scene", "bright", "spread", "glow"});
+    test::EffectDeclaration effect{.name = "glow", .passes = {"glow_pass"}, .source = glow.source};
+    if (glow.gated) {
+        effect.gate = "gate";
+        effect.gateChannels = {true, false, false, false};
+    }
+    b.effect(effect).pass("scene_pass", "scene");
+    if (glow.gated) b.pass("gate_pass", "gate", {"scene"});
+    b.pass("bright_pass", "bright", {"scene"});
+    if (glow.spread) b.pass("spread_pass", "spread", {"bright"});
+    return b.pass("glow_pass", "glow", {glow.spread ? "spread" : "bright"}).pass("final", "", {"scene", "glow"}).build();
 }
 
 struct Planned {
@@ -64,7 +68,7 @@ Planned planFor(std::unique_ptr<Workspace> ws, const Names& outputs) {
 }
 
 TEST(ContentSkipPlan, AnEffectIsDecidedByItsSourceAndWhatItHandsOnIsKnown) {
-    Planned p = planFor(parse(glowWorkspace(false)), {"output"});
+    Planned p = planFor(glowWorkspace({}), {"output"});
     ASSERT_EQ(p.plan.probes.size(), 1u);
     EXPECT_EQ(p.plan.probes[0].source, "bright");
     EXPECT_EQ(p.plan.probes[0].channels, glm::bvec4(true, true, true, false));
@@ -88,20 +92,20 @@ TEST(ContentSkipPlan, AnEffectIsDecidedByItsSourceAndWhatItHandsOnIsKnown) {
 }
 
 TEST(ContentSkipPlan, APassOnlyTheEffectReadsIsAFeederUnlessItIsReadBack) {
-    Planned p = planFor(parse(glowWorkspace(true)), {"output"});
+    Planned p = planFor(glowWorkspace({.spread = true}), {"output"});
     EXPECT_EQ(p.feeders(), (EffectsByPass{{"spread_pass", {"glow"}}}));
     EXPECT_EQ(p.plan.probeAt(2), 0) << "the feeder is drawn under the effect's condition";
 
-    Planned readBack = planFor(parse(glowWorkspace(true)), {"output", "spread"});
+    Planned readBack = planFor(glowWorkspace({.spread = true}), {"output", "spread"});
     EXPECT_TRUE(readBack.feeders().empty());
-    Planned everyTarget = planFor(parse(glowWorkspace(true)), {});
+    Planned everyTarget = planFor(glowWorkspace({.spread = true}), {});
     EXPECT_TRUE(everyTarget.feeders().empty()) << "every target is read back after the frame";
     ASSERT_EQ(everyTarget.plan.effects.size(), 1u);
     EXPECT_TRUE(everyTarget.plan.effects[0].handedOn[0].readBack);
 }
 
 TEST(ContentSkipPlan, AnEffectWhoseTargetIsReadBackRunsWhateverItsSourceHolds) {
-    Planned p = planFor(parse(glowWorkspace(false)), {"output", "glow"});
+    Planned p = planFor(glowWorkspace({}), {"output", "glow"});
     EXPECT_TRUE(p.plan.empty());
     EXPECT_TRUE(p.plan.consumers.empty());
     EXPECT_EQ(p.plan.runningAlways,
@@ -110,11 +114,7 @@ TEST(ContentSkipPlan, AnEffectWhoseTargetIsReadBackRunsWhateverItsSourceHolds) {
 }
 
 TEST(ContentSkipPlan, AGateWrittenBeforeTheEffectIsCountedInPlaceOfTheSource) {
-    std::string xml = glowWorkspace(true, "source=\"bright\" gate=\"gate\" gate-channels=\"r\"");
-    xml.insert(0, "  <target name=\"gate\" format=\"rgba16f\" size=\"1x1\"/>\n");
-    const std::string brightPass = passXml("bright_pass", "bright", {"scene"});
-    xml.insert(xml.find(brightPass), passXml("gate_pass", "gate", {"scene"}));
-    Planned p = planFor(parse(xml), {"output"});
+    Planned p = planFor(glowWorkspace({.spread = true, .gated = true}), {"output"});
     ASSERT_EQ(p.plan.effects.size(), 1u);
     EXPECT_TRUE(p.plan.effects[0].gated);
     ASSERT_EQ(p.plan.probes.size(), 1u);
@@ -125,11 +125,11 @@ TEST(ContentSkipPlan, AGateWrittenBeforeTheEffectIsCountedInPlaceOfTheSource) {
 }
 
 TEST(ContentSkipPlan, AnEffectWithoutASourceOrOutsideTheScheduleIsNotPlanned) {
-    Planned none = planFor(parse(glowWorkspace(false, "")), {"output"});
+    Planned none = planFor(glowWorkspace({.source = ""}), {"output"});
     EXPECT_TRUE(none.plan.empty());
     EXPECT_FALSE(hasSourcedEffects(*none.ws));
 
-    std::unique_ptr<Workspace> ws = parse(glowWorkspace(false));
+    std::unique_ptr<Workspace> ws = glowWorkspace({});
     ASSERT_TRUE(ws);
     EXPECT_TRUE(hasSourcedEffects(*ws));
     ContentSkipPlan withoutGlow = planContentSkip(*ws, {0, 1, 3}, {"output"});
@@ -140,9 +140,8 @@ TEST(ContentSkipPlan, AnEffectWithoutASourceOrOutsideTheScheduleIsNotPlanned) {
 // hdr_lighting.xml: bloom and star share one probe (the glare gate's red), the bright pass and the
 // star source are fed only to them, and the final pass reads what both hand on.
 TEST(ContentSkipPlan, HdrLightingsGlareIsSkippedByItsGateWithTheBrightPassAndStarSource) {
-    Result<Workspace> parsed = parseWorkspaceFile(test::sourceDir() / "effects" / "hdr_lighting.xml");
-    ASSERT_TRUE(parsed) << formatAll(parsed.diagnostics());
-    const Workspace& ws = *parsed;
+    std::unique_ptr<Workspace> hdrLighting = test::hdrLightingWorkspace();
+    const Workspace& ws = *hdrLighting;
     FramePlanOptions options;
     options.outputs = {"output"};
     Result<FramePlan> frame = planFramePasses(ws, options);

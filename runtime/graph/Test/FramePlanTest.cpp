@@ -6,43 +6,40 @@
 
 #include <gtest/gtest.h>
 
-#include "frontend/workspace/WorkspaceParser.h"
-#include "tests/support/TestSupport.h"
+#include "graph/Test/WorkspaceBuilder.h"
 
 namespace rmfx {
 namespace {
 
-using test::passXml;
+using test::WorkspaceBuilder;
 using Names = std::vector<std::string>;
 
 constexpr int kNoSizeLimit = 16384;
 
-std::unique_ptr<Workspace> parse(const std::string& body) {
-    std::string xml = "<workspace version=\"1\" name=\"frame\" size=\"8x8\">\n" + body + "</workspace>\n";
-    Result<Workspace> parsed = parseWorkspaceText(xml, "frame.xml", ".");
-    EXPECT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
-    if (!parsed) return nullptr;
-    return std::make_unique<Workspace>(std::move(*parsed));
-}
-
 // scene → a; glow (effect "glow", switched by Glow) reads a → b; final reads a and b → output;
 // stray → c, which nothing reads.
-std::string effectWorkspace() {
-    return "  <target name=\"a\" format=\"rgba16f\"/>\n  <target name=\"b\" format=\"rgba16f\"/>\n"
-           "  <target name=\"c\" format=\"rgba16f\"/>\n"
-           "  <float name=\"Glow\" value=\"1\"/>\n"
-           "  <effect name=\"glow\" passes=\"glow\" switch=\"Glow\"/>\n" +
-           passXml("scene", "a", {}) + passXml("glow", "b", {"a"}) + passXml("final", "", {"a", "b"}) +
-           passXml("stray", "c", {});
+std::unique_ptr<Workspace> effectWorkspace() {
+    return WorkspaceBuilder("frame.xml")
+        .targets({"a", "b", "c"})
+        .variable("Glow", Value::ofFloat(1.0f))
+        .effect({.name = "glow", .passes = {"glow"}, .switches = {"Glow"}})
+        .pass("scene", "a")
+        .pass("glow", "b", {"a"})
+        .pass("final", "", {"a", "b"})
+        .pass("stray", "c")
+        .build();
 }
 
 // a → b → c → d, d an rgba8 output: a and c (rgba16f, 8x8) can share, b overlaps both.
-std::string chainWorkspace() {
-    std::string targets;
-    for (const char* t : {"a", "b", "c"}) targets += std::string("  <target name=\"") + t + "\" format=\"rgba16f\"/>\n";
-    targets += "  <target name=\"d\" format=\"rgba8\"/>\n";
-    return targets + passXml("p1", "a", {}) + passXml("p2", "b", {"a"}) + passXml("p3", "c", {"b"}) +
-           passXml("p4", "d", {"c"});
+std::unique_ptr<Workspace> chainWorkspace() {
+    return WorkspaceBuilder("frame.xml")
+        .targets({"a", "b", "c"})
+        .target("d", TargetFormat::RGBA8)
+        .pass("p1", "a")
+        .pass("p2", "b", {"a"})
+        .pass("p3", "c", {"b"})
+        .pass("p4", "d", {"c"})
+        .build();
 }
 
 Names scheduled(const Workspace& ws, const PassGraph& g) {
@@ -58,7 +55,7 @@ FramePlanOptions outputs(Names names) {
 }
 
 TEST(FramePlan, PassesNoOutputNeedsAreCulledAndTheirTargetsGetNoMemory) {
-    auto ws = parse(effectWorkspace());
+    auto ws = effectWorkspace();
     ASSERT_TRUE(ws);
     auto plan = planFrame(*ws, outputs({"output"}), {8, 8}, declaredValues(*ws), kNoSizeLimit);
     ASSERT_TRUE(plan) << plan.error();
@@ -75,11 +72,15 @@ TEST(FramePlan, PassesNoOutputNeedsAreCulledAndTheirTargetsGetNoMemory) {
 // <effect gate>: the pass writing the gate is needed only where content skip counts it before
 // the effect (content skip on and the effect asked for); its target then lives until the effect.
 TEST(FramePlan, AnEffectsGateRunsOnlyWhereContentSkipCountsIt) {
-    auto ws = parse("  <target name=\"a\" format=\"rgba16f\"/>\n  <target name=\"b\" format=\"rgba16f\"/>\n"
-                    "  <target name=\"g\" format=\"r32f\" size=\"1x1\"/>\n"
-                    "  <effect name=\"glow\" passes=\"glow\" source=\"a\" gate=\"g\"/>\n" +
-                    passXml("scene", "a", {}) + passXml("gate", "g", {"a"}) + passXml("glow", "b", {"a"}) +
-                    passXml("final", "", {"a", "b"}));
+    auto ws = WorkspaceBuilder("frame.xml")
+                  .targets({"a", "b"})
+                  .target("g", TargetFormat::R32F, test::fixedSize(1, 1))
+                  .effect({.name = "glow", .passes = {"glow"}, .source = "a", .gate = "g"})
+                  .pass("scene", "a")
+                  .pass("gate", "g", {"a"})
+                  .pass("glow", "b", {"a"})
+                  .pass("final", "", {"a", "b"})
+                  .build();
     ASSERT_TRUE(ws);
     FramePlanOptions options = outputs({"output"});
     auto on = planFrame(*ws, options, {8, 8}, declaredValues(*ws), kNoSizeLimit);
@@ -105,7 +106,7 @@ TEST(FramePlan, AnEffectsGateRunsOnlyWhereContentSkipCountsIt) {
 }
 
 TEST(FramePlan, WithNoOutputsNamedEveryWrittenTargetIsAnOutput) {
-    auto ws = parse(effectWorkspace());
+    auto ws = effectWorkspace();
     ASSERT_TRUE(ws);
     auto plan = planFramePasses(*ws, {});
     ASSERT_TRUE(plan) << plan.error();
@@ -115,7 +116,7 @@ TEST(FramePlan, WithNoOutputsNamedEveryWrittenTargetIsAnOutput) {
 }
 
 TEST(FramePlan, EachSettingOfTheSwitchesHasItsGraphAndTheValuesPickOne) {
-    auto ws = parse(effectWorkspace());
+    auto ws = effectWorkspace();
     ASSERT_TRUE(ws);
     auto plan = planFramePasses(*ws, outputs({"output"}));
     ASSERT_TRUE(plan) << plan.error();
@@ -136,7 +137,7 @@ TEST(FramePlan, EachSettingOfTheSwitchesHasItsGraphAndTheValuesPickOne) {
 }
 
 TEST(FramePlan, AnEffectNotAskedForIsLeftOutOfEveryGraph) {
-    auto ws = parse(effectWorkspace());
+    auto ws = effectWorkspace();
     ASSERT_TRUE(ws);
     FramePlanOptions options = outputs({"output"});
     options.effects = Names{};
@@ -154,7 +155,7 @@ TEST(FramePlan, AnEffectNotAskedForIsLeftOutOfEveryGraph) {
 }
 
 TEST(FramePlan, TargetsWhoseLifetimesDoNotOverlapShareMemoryOnlyWhenPooled) {
-    auto ws = parse(chainWorkspace());
+    auto ws = chainWorkspace();
     ASSERT_TRUE(ws);
     auto pooled = planFrame(*ws, outputs({"d"}), {8, 8}, declaredValues(*ws), kNoSizeLimit);
     ASSERT_TRUE(pooled) << pooled.error();
@@ -179,7 +180,7 @@ TEST(FramePlan, TargetsWhoseLifetimesDoNotOverlapShareMemoryOnlyWhenPooled) {
 }
 
 TEST(FramePlan, LimitsFailBeforeAnythingIsAllocated) {
-    auto ws = parse(chainWorkspace());
+    auto ws = chainWorkspace();
     ASSERT_TRUE(ws);
     auto viewport = planFrame(*ws, outputs({"d"}), {8, 8}, declaredValues(*ws), 4);
     ASSERT_FALSE(viewport);

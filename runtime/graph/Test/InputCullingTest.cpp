@@ -4,49 +4,33 @@
 
 #include <gtest/gtest.h>
 
-#include "frontend/workspace/WorkspaceParser.h"
 #include "graph/FramePlan.h"
 #include "graph/PassGraph.h"
-#include "tests/support/TestSupport.h"
+#include "graph/Test/WorkspaceBuilder.h"
 
 namespace rmfx {
 namespace {
 
+using test::WorkspaceBuilder;
 using Names = std::vector<std::string>;
 
 // A scene drawn by two passes (the second draws over the first), the image put into it by
 // "from_input", a pass that draws over the scene after it, and the output reading the scene.
-const std::string kScene = test::lines({
-    "<workspace version=\"1\" name=\"inputs\" size=\"8x8\">",
-    "  <target name=\"scene\" format=\"rgba16f\"/>",
-    "  <input name=\"photo\" replaces=\"scene\"/>",
-    "  <pass name=\"sky\" target=\"scene\">",
-    "    <clear color=\"0 0 0 1\"/>",
-    "    <shader stage=\"fragment\">out vec4 c; void main() { c = vec4(1.0); }</shader>",
-    "  </pass>",
-    "  <pass name=\"teapot\" target=\"scene\">",
-    "    <draw mesh=\"teapot\"/>",
-    "    <shader stage=\"fragment\">out vec4 c; void main() { c = vec4(1.0); }</shader>",
-    "  </pass>",
-    "  <pass name=\"from_input\" target=\"scene\">",
-    "    <sampler name=\"Image\" texture=\"photo\"/>",
-    "    <shader stage=\"fragment\">uniform sampler2D Image; out vec4 c; void main() { c = texture(Image, vec2(0.5)); }</shader>",
-    "  </pass>",
-    "  <pass name=\"overlay\" target=\"scene\">",
-    "    <blend src=\"one\" dst=\"one\"/>",
-    "    <shader stage=\"fragment\">out vec4 c; void main() { c = vec4(0.1); }</shader>",
-    "  </pass>",
-    "  <pass name=\"screen\">",
-    "    <sampler name=\"Scene\" target=\"scene\"/>",
-    "    <shader stage=\"fragment\">uniform sampler2D Scene; out vec4 c; void main() { c = texture(Scene, vec2(0.5)); }</shader>",
-    "  </pass>",
-    "</workspace>",
-});
-
-Workspace parse(const std::string& xml) {
-    Result<Workspace> parsed = parseWorkspaceText(xml, "inputs.xml", ".");
-    EXPECT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
-    return parsed ? std::move(*parsed) : Workspace{};
+// With `depthPass`, "depth_pass" writes an r32f "depth" before the image.
+std::unique_ptr<Workspace> sceneWorkspace(bool depthPass = false) {
+    WorkspaceBuilder b("inputs.xml");
+    b.target("scene");
+    if (depthPass) b.target("depth", TargetFormat::R32F);
+    b.input("photo", "scene")
+        .pass("sky", "scene", {}, test::clearColor({0, 0, 0, 1}))
+        .pass("teapot", "scene", {}, test::drawMesh(BuiltinMesh::Teapot));
+    if (depthPass) b.pass("depth_pass", "depth");
+    return b.pass("from_input", "scene")
+        .sampler(test::textureSampler("Image", "photo"))
+        .pass("overlay", "scene", {}, test::additiveBlend())  // <blend src="one" dst="one"/>
+        .pass("screen", "")
+        .sampler(test::targetSampler("Scene", "scene"))
+        .build();
 }
 
 Names scheduled(const PassGraph& g) {
@@ -60,8 +44,8 @@ const PassNode& node(const PassGraph& g, const std::string& name) {
 }
 
 TEST(InputCulling, AGivenImageCullsThePassesThatDrewTheTargetBeforeIt) {
-    Workspace ws = parse(kScene);
-    Result<PassGraph> g = buildPassGraph(ws, {{}, {}, {}, {"photo"}});
+    auto ws = sceneWorkspace();
+    Result<PassGraph> g = buildPassGraph(*ws, {{}, {}, {}, {"photo"}});
     ASSERT_TRUE(g.ok()) << formatAll(g.diagnostics());
     EXPECT_EQ(scheduled(*g), (Names{"from_input", "overlay", "screen"}));
     for (const char* drawn : {"sky", "teapot"}) {
@@ -73,8 +57,8 @@ TEST(InputCulling, AGivenImageCullsThePassesThatDrewTheTargetBeforeIt) {
 }
 
 TEST(InputCulling, WithoutAnImageTheWorkspaceDrawsTheTargetItself) {
-    Workspace ws = parse(kScene);
-    Result<PassGraph> g = buildPassGraph(ws, {});
+    auto ws = sceneWorkspace();
+    Result<PassGraph> g = buildPassGraph(*ws, {});
     ASSERT_TRUE(g.ok()) << formatAll(g.diagnostics());
     EXPECT_EQ(scheduled(*g), (Names{"sky", "teapot", "overlay", "screen"}));
     EXPECT_EQ(node(*g, "from_input").fate, PassFate::InputNotGiven);
@@ -84,15 +68,9 @@ TEST(InputCulling, WithoutAnImageTheWorkspaceDrawsTheTargetItself) {
 }
 
 TEST(InputCulling, ARequiredInputWithoutAnImageIsAnErrorAtTheSampler) {
-    Workspace ws = parse(test::lines({
-        "<workspace version=\"1\" size=\"8x8\">",
-        "  <input name=\"photo\"/>",
-        "  <pass name=\"screen\">",
-        "    <sampler name=\"Image\" texture=\"photo\"/>",
-        "    <shader stage=\"fragment\">uniform sampler2D Image; out vec4 c; void main() { c = texture(Image, vec2(0.5)); }</shader>",
-        "  </pass>",
-        "</workspace>",
-    }));
+    std::unique_ptr<Workspace> screen =
+        WorkspaceBuilder("inputs.xml").input("photo").pass("screen", "").sampler(test::textureSampler("Image", "photo")).build();
+    Workspace& ws = *screen;
     Result<PassGraph> missing = buildPassGraph(ws, {});
     ASSERT_FALSE(missing.ok());
     EXPECT_EQ(missing.error(), "inputs.xml:4: error: <sampler name=\"Image\">: pass 'screen' samples input 'photo', and no "
@@ -108,12 +86,8 @@ TEST(InputCulling, EveryWrittenTargetLeavesOutTargetsOnlyCulledPassesWrite) {
     // With no outputs named, every target a pass that runs writes is one. "depth_pass" writes
     // "depth" before the image: it still runs while the input replaces "scene", and is culled, its
     // target no output, once the input replaces "depth".
-    std::string xml = kScene;
-    xml.insert(xml.find("  <pass name=\"from_input\""),
-               "  <pass name=\"depth_pass\" target=\"depth\">\n"
-               "    <shader stage=\"fragment\">out vec4 c; void main() { c = vec4(1.0); }</shader>\n  </pass>\n");
-    xml.insert(xml.find("  <input"), "  <target name=\"depth\" format=\"r32f\"/>\n");
-    Workspace ws = parse(xml);
+    std::unique_ptr<Workspace> withDepth = sceneWorkspace(true);
+    Workspace& ws = *withDepth;
     FramePlanOptions options;
     options.givenInputs = {"photo"};
     Result<FramePlan> plan = planFramePasses(ws, options);

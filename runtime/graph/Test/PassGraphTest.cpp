@@ -7,29 +7,23 @@
 
 #include <gtest/gtest.h>
 
-#include "frontend/workspace/WorkspaceParser.h"
+#include "graph/Test/HdrLightingWorkspace.h"
+#include "graph/Test/Shader5Workspace.h"
+#include "graph/Test/WorkspaceBuilder.h"
 #include "model/EffectSelection.h"
-#include "tests/support/TestSupport.h"
-#include "validation/WorkspaceLoader.h"
 
 namespace rmfx {
 namespace {
 
-using test::passXml;
+using test::WorkspaceBuilder;
 
 using Names = std::vector<std::string>;
 
-std::unique_ptr<Workspace> parse(const std::string& xml) {
-    Result<Workspace> parsed = parseWorkspaceText(xml, "graph.xml", ".");
-    EXPECT_FALSE(hasErrors(parsed.diagnostics())) << formatAll(parsed.diagnostics());
-    if (!parsed.ok()) return nullptr;
-    return std::make_unique<Workspace>(std::move(*parsed));
-}
-
-std::string workspace(const std::string& body, const Names& targets) {
-    std::string xml = "<workspace version=\"1\" name=\"graph\" size=\"8x8\">\n";
-    for (const std::string& t : targets) xml += "  <target name=\"" + t + "\" format=\"rgba16f\"/>\n";
-    return xml + body + "</workspace>\n";
+// An 8x8 workspace with these rgba16f targets, declared before its passes.
+WorkspaceBuilder workspace(const Names& targets) {
+    WorkspaceBuilder b("graph.xml");
+    b.targets(targets);
+    return b;
 }
 
 Names scheduled(const PassGraph& g) {
@@ -51,9 +45,13 @@ const PassNode& node(const PassGraph& g, const std::string& name) {
 }
 
 TEST(PassGraph, OnlyThePassesTheOutputNeedsRunInDocumentOrder) {
-    auto ws = parse(workspace(passXml("a", "ta", {}) + passXml("unused", "tu", {}) + passXml("b", "tb", {"ta"}) +
-                                  passXml("c", "tc", {"tu"}) + passXml("final", "", {"tb", "ta"}),
-                              {"ta", "tb", "tc", "tu"}));
+    auto ws = workspace({"ta", "tb", "tc", "tu"})
+                  .pass("a", "ta")
+                  .pass("unused", "tu")
+                  .pass("b", "tb", {"ta"})
+                  .pass("c", "tc", {"tu"})
+                  .pass("final", "", {"tb", "ta"})
+                  .build();
     PassGraph g = build(*ws);
     EXPECT_EQ(scheduled(g), (Names{"a", "b", "final"}));
     EXPECT_EQ(node(g, "unused").fate, PassFate::NotNeeded);
@@ -70,10 +68,12 @@ TEST(PassGraph, OnlyThePassesTheOutputNeedsRunInDocumentOrder) {
 }
 
 TEST(PassGraph, AWriteReplacedBeforeAnyReadIsCulledAndABlendKeepsItsPredecessor) {
-    auto ws =
-        parse(workspace(passXml("dead", "t", {}) + passXml("replace", "t", {}) +
-                            passXml("blend", "t", {}, "    <blend mode=\"add\"/>\n") + passXml("final", "", {"t"}),
-                        {"t"}));
+    auto ws = workspace({"t"})
+                  .pass("dead", "t")
+                  .pass("replace", "t")
+                  .pass("blend", "t", {}, test::additiveBlend())
+                  .pass("final", "", {"t"})
+                  .build();
     PassGraph g = build(*ws);
     EXPECT_EQ(scheduled(g), (Names{"replace", "blend", "final"}));
     EXPECT_EQ(node(g, "dead").why, "'replace' replaces 't' before anything reads it");
@@ -83,11 +83,12 @@ TEST(PassGraph, AWriteReplacedBeforeAnyReadIsCulledAndABlendKeepsItsPredecessor)
 }
 
 TEST(PassGraph, AMeshWithoutClearLoadsItsTargetAndAClearDoesNot) {
-    auto ws = parse(
-        workspace(passXml("sky", "t", {}) + passXml("model", "t", {}, "    <draw mesh=\"teapot\"/>\n") +
-                      passXml("cleared", "u", {}, "    <clear color=\"0 0 0 1\"/>\n    <draw mesh=\"teapot\"/>\n") +
-                      passXml("final", "", {"t", "u"}),
-                  {"t", "u"}));
+    auto ws = workspace({"t", "u"})
+                  .pass("sky", "t")
+                  .pass("model", "t", {}, test::drawMesh(BuiltinMesh::Teapot))
+                  .pass("cleared", "u", {}, test::all({test::clearColor({0, 0, 0, 1}), test::drawMesh(BuiltinMesh::Teapot)}))
+                  .pass("final", "", {"t", "u"})
+                  .build();
     PassGraph g = build(*ws);
     EXPECT_EQ(scheduled(g), (Names{"sky", "model", "cleared", "final"}));
     EXPECT_TRUE(node(g, "model").loadsTarget);
@@ -96,9 +97,11 @@ TEST(PassGraph, AMeshWithoutClearLoadsItsTargetAndAClearDoesNot) {
 }
 
 TEST(PassGraph, APreviousFrameReadNeedsTheTargetsLastWriterAndCarriesIt) {
-    auto ws = parse(workspace(
-        passXml("measure", "m", {}) + passXml("show", "", {"acc'", "m"}) + passXml("adapt", "acc", {"acc'", "m"}),
-        {"m", "acc"}));
+    auto ws = workspace({"m", "acc"})
+                  .pass("measure", "m")
+                  .pass("show", "", {"acc'", "m"})
+                  .pass("adapt", "acc", {"acc'", "m"})
+                  .build();
     PassGraph g = build(*ws);
     // adapt comes after the output's writer, but the output reads what it leaves for the next frame.
     EXPECT_EQ(scheduled(g), (Names{"measure", "show", "adapt"}));
@@ -107,12 +110,12 @@ TEST(PassGraph, APreviousFrameReadNeedsTheTargetsLastWriterAndCarriesIt) {
 }
 
 TEST(PassGraph, DisabledPassesAreCulledAndTheirReadersFail) {
-    auto ws = parse(workspace(passXml("a", "t", {}) +
-                                  "  <pass name=\"off\" target=\"u\" enabled=\"false\">\n"
-                                  "    <shader stage=\"fragment\">out vec4 c; void main() { c = vec4(1.0); }</shader>\n"
-                                  "  </pass>\n" +
-                                  passXml("final", "", {"t"}) + passXml("other", "v", {"u"}),
-                              {"t", "u", "v"}));
+    auto ws = workspace({"t", "u", "v"})
+                  .pass("a", "t")
+                  .pass("off", "u", {}, test::disabled())
+                  .pass("final", "", {"t"})
+                  .pass("other", "v", {"u"})
+                  .build();
     PassGraph g = build(*ws);
     EXPECT_EQ(node(g, "off").fate, PassFate::Disabled);
     EXPECT_EQ(scheduled(g), (Names{"a", "final"}));
@@ -121,13 +124,14 @@ TEST(PassGraph, DisabledPassesAreCulledAndTheirReadersFail) {
     EXPECT_FALSE(built.ok());
     const Diagnostics& d = built.diagnostics();
     ASSERT_EQ(d.size(), 1u);
+    // Line 10: each declaration has a line of its own (WorkspaceBuilder), and other's sampler is the tenth.
     EXPECT_EQ(d[0].format(),
-              "graph.xml:16: error: <sampler name=\"s0\">: pass 'other' reads target 'u', which no running "
+              "graph.xml:10: error: <sampler name=\"s0\">: pass 'other' reads target 'u', which no running "
               "pass wrote earlier in the frame");
 }
 
 TEST(PassGraph, AnOutputNothingWritesIsAnError) {
-    auto ws = parse(workspace(passXml("a", "t", {}) + passXml("final", "", {"t"}), {"t", "never"}));
+    auto ws = workspace({"t", "never"}).pass("a", "t").pass("final", "", {"t"}).build();
     Result<PassGraph> built = buildPassGraph(*ws, {{"never", "nope"}, {}, {}, {}});
     EXPECT_FALSE(built.ok());
     const Diagnostics& d = built.diagnostics();
@@ -137,14 +141,7 @@ TEST(PassGraph, AnOutputNothingWritesIsAnError) {
     EXPECT_NE(d[1].message.find("no target named 'nope'"), std::string::npos) << d[1].message;
 }
 
-// ---- effects ----
-
-std::unique_ptr<Workspace> shader5() {
-    Result<Workspace> loaded = loadWorkspace(test::sourceDir() / "effects/shader_5.xml", {false});
-    EXPECT_TRUE(loaded.ok()) << formatAll(loaded.diagnostics());
-    if (!loaded.ok()) return nullptr;
-    return std::make_unique<Workspace>(std::move(*loaded));
-}
+// ---- effects: shader_5.xml's glare, streak and ghost (Shader5Workspace.h) ----
 
 Names passesOf(const Workspace& ws, const std::string& prefix) {
     Names names;
@@ -154,7 +151,7 @@ Names passesOf(const Workspace& ws, const std::string& prefix) {
 }
 
 TEST(PassGraph, EffectsLeftOutAreCulledAndTheCompositeSkipsTheirTargets) {
-    auto ws = shader5();
+    auto ws = test::shader5Workspace();
     ASSERT_TRUE(ws);
     PassGraph g = build(*ws, {{}, {"glare"}, {}, {}});
     Names expected{"environment", "teapot"};
@@ -172,7 +169,7 @@ TEST(PassGraph, EffectsLeftOutAreCulledAndTheCompositeSkipsTheirTargets) {
 }
 
 TEST(PassGraph, AnEffectSwitchedOffIsCulledLikeOneLeftOut) {
-    auto ws = shader5();
+    auto ws = test::shader5Workspace();
     ASSERT_TRUE(ws);
     PassGraph off = build(*ws, {{}, {"glare", "streak", "ghost"}, {"streak"}, {}});
     PassGraph left = build(*ws, {{}, {"glare", "ghost"}, {}, {}});
@@ -183,7 +180,7 @@ TEST(PassGraph, AnEffectSwitchedOffIsCulledLikeOneLeftOut) {
 }
 
 TEST(PassGraph, SwitchesAreOnWhileAnyOfTheirVariablesIsNonZero) {
-    auto ws = shader5();
+    auto ws = test::shader5Workspace();
     ASSERT_TRUE(ws);
     std::map<std::string, Value> values;
     for (const Variable& v : ws->variables) values[v.name] = v.value;
@@ -202,7 +199,7 @@ TEST(PassGraph, SwitchesAreOnWhileAnyOfTheirVariablesIsNonZero) {
 }
 
 TEST(PassGraph, TheShaderPreludeFollowsTheSelection) {
-    auto ws = shader5();
+    auto ws = test::shader5Workspace();
     ASSERT_TRUE(ws);
     ShaderPrelude p = effectPrelude(*ws, {"glare"});
     EXPECT_EQ(p.defines,
@@ -211,7 +208,7 @@ TEST(PassGraph, TheShaderPreludeFollowsTheSelection) {
 }
 
 TEST(PassGraph, UnknownEffectNamesAreErrorsListingTheDeclaredOnes) {
-    auto ws = shader5();
+    auto ws = test::shader5Workspace();
     ASSERT_TRUE(ws);
     auto bad = selectEffects(*ws, Names{"glare", "bloom"});
     ASSERT_FALSE(bad);
@@ -226,8 +223,7 @@ TEST(PassGraph, UnknownEffectNamesAreErrorsListingTheDeclaredOnes) {
 // ---- validation: order ----
 
 TEST(PassOrder, ATwoPassCycleNamesBothPassesAndTheTargets) {
-    auto ws = parse(workspace(passXml("a", "ta", {"tb"}) + passXml("b", "tb", {"ta"}) + passXml("final", "", {"tb"}),
-                              {"ta", "tb"}));
+    auto ws = workspace({"ta", "tb"}).pass("a", "ta", {"tb"}).pass("b", "tb", {"ta"}).pass("final", "", {"tb"}).build();
     Diagnostics d = checkPassOrder(*ws);
     ASSERT_EQ(d.size(), 1u) << formatAll(d);
     EXPECT_EQ(d[0].format(),
@@ -237,9 +233,12 @@ TEST(PassOrder, ATwoPassCycleNamesBothPassesAndTheTargets) {
 }
 
 TEST(PassOrder, AThreePassCycleIsWalkedInOrder) {
-    auto ws = parse(workspace(passXml("a", "ta", {"tc"}) + passXml("b", "tb", {"ta"}) + passXml("c", "tc", {"tb"}) +
-                                  passXml("final", "", {"tc"}),
-                              {"ta", "tb", "tc"}));
+    auto ws = workspace({"ta", "tb", "tc"})
+                  .pass("a", "ta", {"tc"})
+                  .pass("b", "tb", {"ta"})
+                  .pass("c", "tc", {"tb"})
+                  .pass("final", "", {"tc"})
+                  .build();
     Diagnostics d = checkPassOrder(*ws);
     ASSERT_EQ(d.size(), 1u) << formatAll(d);
     EXPECT_NE(d[0].message.find("passes form a cycle: 'a' reads 'tc' from 'c', 'c' reads 'tb' from 'b', 'b' reads 'ta' "
@@ -247,15 +246,17 @@ TEST(PassOrder, AThreePassCycleIsWalkedInOrder) {
               std::string::npos)
         << d[0].message;
     // Reading last frame's tc breaks it.
-    auto fixed = parse(workspace(passXml("a", "ta", {"tc'"}) + passXml("b", "tb", {"ta"}) + passXml("c", "tc", {"tb"}) +
-                                     passXml("final", "", {"tc"}),
-                                 {"ta", "tb", "tc"}));
+    auto fixed = workspace({"ta", "tb", "tc"})
+                     .pass("a", "ta", {"tc'"})
+                     .pass("b", "tb", {"ta"})
+                     .pass("c", "tc", {"tb"})
+                     .pass("final", "", {"tc"})
+                     .build();
     EXPECT_TRUE(checkPassOrder(*fixed).empty()) << formatAll(checkPassOrder(*fixed));
 }
 
 TEST(PassOrder, AReadBeforeTheWriteNamesTheLaterWriter) {
-    auto ws = parse(workspace(passXml("early", "te", {"t"}) + passXml("write", "t", {}) + passXml("final", "", {"te"}),
-                              {"t", "te"}));
+    auto ws = workspace({"t", "te"}).pass("early", "te", {"t"}).pass("write", "t").pass("final", "", {"te"}).build();
     Diagnostics d = checkPassOrder(*ws);
     ASSERT_EQ(d.size(), 1u);
     EXPECT_EQ(d[0].message,
@@ -264,20 +265,19 @@ TEST(PassOrder, AReadBeforeTheWriteNamesTheLaterWriter) {
 }
 
 TEST(PassOrder, ATargetNothingWritesIsAnErrorUnlessReadAsLastFrames) {
-    auto ws = parse(workspace(passXml("final", "", {"ghost"}), {"ghost"}));
+    auto ws = workspace({"ghost"}).pass("final", "", {"ghost"}).build();
     Diagnostics d = checkPassOrder(*ws);
     ASSERT_EQ(d.size(), 1u);
     EXPECT_NE(d[0].message.find("pass 'final' reads target 'ghost', which no pass writes"), std::string::npos);
-    EXPECT_TRUE(checkPassOrder(*parse(workspace(passXml("final", "", {"ghost'"}), {"ghost"}))).empty());
+    EXPECT_TRUE(checkPassOrder(*workspace({"ghost"}).pass("final", "", {"ghost'"}).build()).empty());
 }
 
-TEST(PassOrder, EveryProjectWorkspaceIsInOrder) {
-    for (const auto& entry : std::filesystem::directory_iterator(test::sourceDir() / "effects")) {
-        if (entry.path().extension() != ".xml") continue;
-        Result<Workspace> loaded = loadWorkspace(entry.path(), {false});
-        ASSERT_TRUE(loaded.ok()) << entry.path() << formatAll(loaded.diagnostics());
-        EXPECT_TRUE(checkPassOrder(*loaded).empty()) << entry.path();
-    }
+// Every workspace of effects/ is checked as loaded in validation/Test/ProjectWorkspaceOrderTest.
+TEST(PassOrder, TheGlareWorkspacesAreInOrder) {
+    auto shader5 = test::shader5Workspace();
+    EXPECT_TRUE(checkPassOrder(*shader5).empty()) << formatAll(checkPassOrder(*shader5));
+    auto hdrLighting = test::hdrLightingWorkspace();
+    EXPECT_TRUE(checkPassOrder(*hdrLighting).empty()) << formatAll(checkPassOrder(*hdrLighting));
 }
 
 }  // namespace

@@ -5,13 +5,12 @@
 
 #include <gtest/gtest.h>
 
-#include "frontend/workspace/WorkspaceParser.h"
-#include "tests/support/TestSupport.h"
+#include "graph/Test/WorkspaceBuilder.h"
 
 namespace rmfx {
 namespace {
 
-using test::passXml;
+using test::WorkspaceBuilder;
 
 using Names = std::vector<std::string>;
 
@@ -21,11 +20,9 @@ struct Planned {
     TargetPlan plan;
 };
 
-Planned planText(const std::string& xml, FrameRequest request = {}, bool pool = true) {
+Planned planWorkspace(std::unique_ptr<Workspace> ws, FrameRequest request = {}, bool pool = true) {
     Planned p;
-    Result<Workspace> parsed = parseWorkspaceText(xml, "plan.xml", ".");
-    EXPECT_FALSE(hasErrors(parsed.diagnostics())) << formatAll(parsed.diagnostics());
-    p.ws = std::make_unique<Workspace>(std::move(*parsed));
+    p.ws = std::move(ws);
     Result<PassGraph> graph = buildPassGraph(*p.ws, request);
     EXPECT_TRUE(graph.ok()) << formatAll(graph.diagnostics());
     if (graph) p.graph = std::move(*graph);
@@ -37,15 +34,8 @@ Planned planText(const std::string& xml, FrameRequest request = {}, bool pool = 
     return p;
 }
 
-// Targets as "name format [size]" lines; the workspace is 8x8.
-std::string workspace(const std::string& targets, const std::string& passes) {
-    return "<workspace version=\"1\" name=\"plan\" size=\"8x8\">\n" + targets + passes + "</workspace>\n";
-}
-
-std::string target(const std::string& name, const std::string& format = "rgba16f", const std::string& size = "") {
-    return "  <target name=\"" + name + "\" format=\"" + format + "\"" +
-           (size.empty() ? "" : " size=\"" + size + "\"") + "/>\n";
-}
+// An 8x8 workspace; its targets rgba16f unless said otherwise.
+WorkspaceBuilder workspace() { return WorkspaceBuilder("plan.xml"); }
 
 Names sharing(const TargetPlan& plan, const std::string& name) {
     Names names;
@@ -56,9 +46,17 @@ Names sharing(const TargetPlan& plan, const std::string& name) {
 }
 
 TEST(TargetPlan, AChainPingPongsBetweenTwoTexturesAndTheOutputReusesOne) {
-    Planned p = planText(workspace(target("ta") + target("tb") + target("tc") + target("td"),
-                                   passXml("a", "ta", {}) + passXml("b", "tb", {"ta"}) + passXml("c", "tc", {"tb"}) +
-                                       passXml("d", "td", {"tc"}) + passXml("final", "", {"td"})));
+    auto chain = [] {
+        return workspace()
+            .targets({"ta", "tb", "tc", "td"})
+            .pass("a", "ta")
+            .pass("b", "tb", {"ta"})
+            .pass("c", "tc", {"tb"})
+            .pass("d", "td", {"tc"})
+            .pass("final", "", {"td"})
+            .build();
+    };
+    Planned p = planWorkspace(chain());
     // Lifetimes (pass indices): ta 0..1, tb 1..2, tc 2..3, td 3..4, output 4..end.
     EXPECT_EQ(p.plan.resources.size(), 2u);
     EXPECT_EQ(sharing(p.plan, "ta"), (Names{"ta", "tc", "output"}));
@@ -70,22 +68,24 @@ TEST(TargetPlan, AChainPingPongsBetweenTwoTexturesAndTheOutputReusesOne) {
     EXPECT_EQ(output.firstUse, 4);
     EXPECT_EQ(output.lastUse, 5) << "an output lives to the end of the frame";
 
-    Planned unpooled =
-        planText(workspace(target("ta") + target("tb") + target("tc") + target("td"),
-                           passXml("a", "ta", {}) + passXml("b", "tb", {"ta"}) + passXml("c", "tc", {"tb"}) +
-                               passXml("d", "td", {"tc"}) + passXml("final", "", {"td"})),
-                 {}, false);
+    Planned unpooled = planWorkspace(chain(), {}, false);
     EXPECT_EQ(unpooled.plan.resources.size(), 5u);
     EXPECT_EQ(unpooled.plan.allocatedBytes, 5 * one);
 }
 
 TEST(TargetPlan, OnlySameSizeFormatAndDepthShare) {
-    Planned p = planText(workspace(target("half") + target("full32", "rgba32f") + target("small", "rgba16f", "4x4") +
-                                       target("deep") + target("late"),
-                                   passXml("a", "half", {}) + passXml("b", "full32", {"half"}) +
-                                       passXml("c", "small", {"full32"}) +
-                                       passXml("d", "deep", {"small"}, "    <clear depth=\"1\"/>\n") +
-                                       passXml("e", "late", {"deep"}) + passXml("final", "", {"late"})));
+    Planned p = planWorkspace(workspace()
+                         .target("half")
+                         .target("full32", TargetFormat::RGBA32F)
+                         .target("small", TargetFormat::RGBA16F, test::fixedSize(4, 4))
+                         .targets({"deep", "late"})
+                         .pass("a", "half")
+                         .pass("b", "full32", {"half"})
+                         .pass("c", "small", {"full32"})
+                         .pass("d", "deep", {"small"}, test::clearDepth(1.0f))
+                         .pass("e", "late", {"deep"})
+                         .pass("final", "", {"late"})
+                         .build());
     EXPECT_EQ(sharing(p.plan, "half"), (Names{"half", "late"}));  // deep has a depth buffer, half has not
     EXPECT_EQ(sharing(p.plan, "full32"), (Names{"full32"}));
     EXPECT_EQ(sharing(p.plan, "small"), (Names{"small"}));
@@ -95,11 +95,14 @@ TEST(TargetPlan, OnlySameSizeFormatAndDepthShare) {
 
 TEST(TargetPlan, CarriedTargetsGetMemoryOfTheirOwn) {
     // acc is read as last frame's (two buffers); blendOnly is drawn over before anything writes it.
-    Planned p =
-        planText(workspace(target("m") + target("acc") + target("blendOnly") + target("later"),
-                           passXml("measure", "m", {}) + passXml("adapt", "acc", {"acc'", "m"}) +
-                               passXml("glow", "blendOnly", {"acc"}, "    <blend mode=\"add\"/>\n") +
-                               passXml("after", "later", {"blendOnly"}) + passXml("final", "", {"later", "acc"})));
+    Planned p = planWorkspace(workspace()
+                         .targets({"m", "acc", "blendOnly", "later"})
+                         .pass("measure", "m")
+                         .pass("adapt", "acc", {"acc'", "m"})
+                         .pass("glow", "blendOnly", {"acc"}, test::additiveBlend())
+                         .pass("after", "later", {"blendOnly"})
+                         .pass("final", "", {"later", "acc"})
+                         .build());
     const PlannedTarget& acc = p.plan.targets[static_cast<size_t>(p.plan.find("acc"))];
     EXPECT_TRUE(acc.history);
     EXPECT_TRUE(acc.carried);
@@ -111,9 +114,7 @@ TEST(TargetPlan, CarriedTargetsGetMemoryOfTheirOwn) {
 }
 
 TEST(TargetPlan, TargetsOfCulledPassesGetNoMemory) {
-    Planned p =
-        planText(workspace(target("used") + target("unused"),
-                           passXml("a", "used", {}) + passXml("b", "unused", {}) + passXml("final", "", {"used"})));
+    Planned p = planWorkspace(workspace().targets({"used", "unused"}).pass("a", "used").pass("b", "unused").pass("final", "", {"used"}).build());
     const PlannedTarget& unused = p.plan.targets[static_cast<size_t>(p.plan.find("unused"))];
     EXPECT_FALSE(unused.used);
     EXPECT_EQ(unused.resource, -1);
@@ -124,12 +125,14 @@ TEST(TargetPlan, TargetsOfCulledPassesGetNoMemory) {
 TEST(TargetPlan, OnePlanForSeveralGraphsCoversEveryLifetime) {
     // With the effect on, t1 lives 0..2 (read by "use"); with it off, "use" reads nothing and
     // the plan of both must still keep t1 and t2 apart.
-    std::string xml =
-        workspace(target("t1") + target("t2"), "  <effect name=\"fx\" passes=\"b\"/>\n" + passXml("a", "t1", {}) +
-                                                   passXml("b", "t2", {}) + passXml("use", "", {"t1", "t2"}));
-    Result<Workspace> parsed = parseWorkspaceText(xml, "plan.xml", ".");
-    ASSERT_TRUE(parsed.ok()) << formatAll(parsed.diagnostics());
-    Workspace& ws = *parsed;
+    std::unique_ptr<Workspace> fx = workspace()
+                                        .targets({"t1", "t2"})
+                                        .effect({.name = "fx", .passes = {"b"}})
+                                        .pass("a", "t1")
+                                        .pass("b", "t2")
+                                        .pass("use", "", {"t1", "t2"})
+                                        .build();
+    Workspace& ws = *fx;
     Result<PassGraph> on = buildPassGraph(ws, {{}, {"fx"}, {}, {}});
     Result<PassGraph> off = buildPassGraph(ws, {{}, {"fx"}, {"fx"}, {}});
     ASSERT_TRUE(on.ok()) << formatAll(on.diagnostics());
