@@ -66,13 +66,15 @@ void fuzzShaderPreprocessor(const std::uint8_t* data, std::size_t size) {
               "the preprocessed code does not start with #version");
     for (int line : {-1, 0, 1, static_cast<int>(lines), static_cast<int>(lines) + 1}) out.origin(line);
     formatAll(mapCompilerLog(log, out, shader.start, "<shader>"));
-    for (const HlslGlobalInitializer& init : findHlslGlobalInitializers(out.code)) {
+    // Both scanners read the code blanked (HlslBlankedCode.h): blanked once, as they would each do.
+    const BlankedHlsl blanked(out.code);
+    for (const HlslGlobalInitializer& init : findHlslGlobalInitializers(blanked)) {
         fuzzCheck(!init.name.empty() && !init.declaredType.empty(), "an HLSL global without a name or a type");
         fuzzCheck(init.line >= 1 && static_cast<size_t>(init.line) <= lines + 1,
                   "HLSL global '" + init.name + "' at line " + std::to_string(init.line) + " of " + std::to_string(lines));
         fuzzCheck(init.constant || init.values.empty(), "values read from an initializer that is not constant");
     }
-    const HlslWritableGlobals writable = giveWrittenGlobalsACopy(out.code, "main");
+    const HlslWritableGlobals writable = giveWrittenGlobalsACopy(out.code, blanked, "main");
     fuzzCheck(std::count(writable.code.begin(), writable.code.end(), '\n') == static_cast<long>(lines),
               "giving written HLSL globals a copy moved lines");
     fuzzCheck(writable.written.size() == writable.lines.size(), "a written HLSL global without its line");

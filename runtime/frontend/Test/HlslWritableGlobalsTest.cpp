@@ -3,6 +3,8 @@
 
 #include "frontend/shader/HlslWritableGlobals.h"
 
+#include "frontend/shader/HlslGlobalInitializers.h"
+
 #include <algorithm>
 
 #include <gtest/gtest.h>
@@ -47,6 +49,36 @@ TEST(HlslWritableGlobals, AssignedGlobalsGetACopySetAtTheEntryPointAndUsedEveryw
                             "}",
                         }));
     EXPECT_EQ(lineCount(out.code), lineCount(code));
+}
+
+TEST(HlslWritableGlobals, CodeBlankedOnceServesBothScannersAlike) {
+    // A comment, a string and a preprocessor line that the scanners must not read, and an
+    // index that `a[a[…` style selectors walk: the BlankedHlsl overloads give what the plain ones do.
+    const std::string code = lines({
+        "#define X 1 // float Hidden = 1;",
+        "float Gain = 2; /* float Other = 3; */",
+        "float4 Tint[2] = { {1, 0, 0, 1}, {0, 1, 0, 1} };",
+        "float4 main(float2 uv : TEXCOORD0) : COLOR0 {",
+        "    Gain *= 2; Tint[Tint[0].x > \"]\" ? 1 : 0].y += 1;",
+        "    return Tint[1] * Gain;",
+        "}",
+    });
+    const BlankedHlsl blanked(code);
+    const HlslWritableGlobals plain = giveWrittenGlobalsACopy(code, "main");
+    const HlslWritableGlobals shared = giveWrittenGlobalsACopy(code, blanked, "main");
+    EXPECT_EQ(plain.written, (std::vector<std::string>{"Gain", "Tint"}));
+    EXPECT_EQ(shared.code, plain.code);
+    EXPECT_EQ(shared.written, plain.written);
+    EXPECT_EQ(shared.lines, plain.lines);
+    const std::vector<HlslGlobalInitializer> initializers = findHlslGlobalInitializers(code);
+    const std::vector<HlslGlobalInitializer> fromBlanked = findHlslGlobalInitializers(blanked);
+    ASSERT_EQ(initializers.size(), 2u);
+    ASSERT_EQ(fromBlanked.size(), initializers.size());
+    for (size_t i = 0; i < initializers.size(); ++i) {
+        EXPECT_EQ(fromBlanked[i].name, initializers[i].name);
+        EXPECT_EQ(fromBlanked[i].line, initializers[i].line);
+        EXPECT_EQ(fromBlanked[i].values, initializers[i].values);
+    }
 }
 
 TEST(HlslWritableGlobals, AWriteRightAfterTheEntryPointsBraceKeepsTheCopiesInFront) {

@@ -239,9 +239,9 @@ static std::vector<CodeSnippet> doublingSnippets(int depth) {
     return snippets;
 }
 
-TEST(ShaderPreprocessor, IncludesStopAtFourMebibytesOfCode) {
+TEST(ShaderPreprocessor, IncludesStopAtOneMebibyteOfCode) {
     test::ScratchDir dir;
-    // 8 levels of doubling: 256 copies of a 32 KiB line, 8 MiB in full; the expansion stops at 4 MiB.
+    // 8 levels of doubling: 256 copies of a 32 KiB line, 8 MiB in full; the expansion stops at 1 MiB.
     std::vector<CodeSnippet> snippets = doublingSnippets(8);
     snippets.back().code = "// " + std::string(32 * 1024, 'y');
     ShaderInput input = inputFor(dir, lines({"#include \"s0\"", "void main() {}"}));
@@ -249,10 +249,10 @@ TEST(ShaderPreprocessor, IncludesStopAtFourMebibytesOfCode) {
     Diagnostics d;
     PreprocessedShader out = preprocessShader(input, d);
     ASSERT_EQ(d.size(), 1u) << formatAll(d);
-    EXPECT_NE(d[0].message.find("or 4 MiB through its includes"), std::string::npos) << d[0].message;
+    EXPECT_NE(d[0].message.find("or 1 MiB through its includes"), std::string::npos) << d[0].message;
     const auto copies = std::count(out.code.begin(), out.code.end(), 'y') / (32 * 1024);
-    EXPECT_EQ(copies, 127);  // 128 would pass 4 MiB with the lines around them
-    EXPECT_LE(out.code.size(), size_t(4) << 20);
+    EXPECT_EQ(copies, 31);  // 32 would pass 1 MiB with the lines around them
+    EXPECT_LE(out.code.size(), size_t(1) << 20);
     EXPECT_EQ(static_cast<size_t>(std::count(out.code.begin(), out.code.end(), '\n')), out.lineOrigins.size());
 }
 
@@ -272,7 +272,7 @@ TEST(ShaderPreprocessor, IncludesThatGrowTheShaderExponentiallyStopWithOneError)
     d.clear();
     out = preprocessShader(input, d);
     ASSERT_EQ(d.size(), 1u) << formatAll(d);
-    EXPECT_NE(d[0].message.find("grows past 4096 includes, 262144 lines or 4 MiB through its includes"), std::string::npos) << d[0].message;
+    EXPECT_NE(d[0].message.find("grows past 4096 includes, 65536 lines or 1 MiB through its includes"), std::string::npos) << d[0].message;
     EXPECT_EQ(d[0].where.file, "w.xml");  // in a snippet
     EXPECT_LE(std::count(out.code.begin(), out.code.end(), 'x'), 4096);
     EXPECT_EQ(static_cast<size_t>(std::count(out.code.begin(), out.code.end(), '\n')), out.lineOrigins.size());

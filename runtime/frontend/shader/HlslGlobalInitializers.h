@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "frontend/shader/HlslBlankedCode.h"
+
 namespace rmfx {
 
 struct HlslGlobalInitializer {
@@ -22,5 +24,7 @@ struct HlslGlobalInitializer {
 // in a cbuffer/tbuffer. Comments, strings and preprocessor lines are skipped; function bodies and
 // struct declarations are not looked into.
 std::vector<HlslGlobalInitializer> findHlslGlobalInitializers(const std::string& code);
+// The same over code already blanked (the lines are those of the code it was blanked from).
+std::vector<HlslGlobalInitializer> findHlslGlobalInitializers(const BlankedHlsl& code);
 
 }  // namespace rmfx

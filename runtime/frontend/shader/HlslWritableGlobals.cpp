@@ -116,7 +116,10 @@ void scan(const std::string& code, std::vector<Global>& globals, std::vector<Fun
     // initializer's statement runs on to its ';', and reading it again at each of its '{' was
     // quadratic (`a b = 1{}{}{}…`, 16 kB: 88 ms).
     bool equalsSinceStart = false;
-    for (size_t i = 0; i < code.size(); ++i) {
+    // From one of the characters below to the next (std::string's search, a library call): a
+    // step per byte was most of the scan under the fuzzers' instrumentation, a callback per
+    // comparison.
+    for (size_t i = code.find_first_of("={};"); i < code.size(); i = code.find_first_of("={};", i + 1)) {
         const char c = code[i];
         if (c == '=' && depth == 0) equalsSinceStart = true;
         if (c == '{') {
@@ -169,18 +172,33 @@ size_t skipSpace(const std::string& code, size_t i, size_t limit) {
 }
 
 // For each '[' the offset of its ']', npos where unmatched: found once, so that following
-// `a[a[a[…` from each of its names does not read the rest again.
-std::vector<size_t> matchingBrackets(const std::string& code) {
-    std::vector<size_t> match(code.size(), std::string::npos), open;
-    for (size_t i = 0; i < code.size(); ++i) {
-        if (code[i] == '[') open.push_back(i);
-        else if (code[i] == ']' && !open.empty()) {
-            match[open.back()] = i;
-            open.pop_back();
+// `a[a[a[…` from each of its names does not read the rest again. Kept per '[' (in order, so found
+// by binary search): a table with an entry per byte of the code, 8 bytes each, took more time to
+// fill than the scan.
+class MatchingBrackets {
+public:
+    explicit MatchingBrackets(const std::string& code) {
+        std::vector<size_t> open;  // indices into pairs_
+        for (size_t i = code.find_first_of("[]"); i < code.size(); i = code.find_first_of("[]", i + 1)) {
+            if (code[i] == '[') {
+                open.push_back(pairs_.size());
+                pairs_.emplace_back(i, std::string::npos);
+            } else if (code[i] == ']' && !open.empty()) {
+                pairs_[open.back()].second = i;
+                open.pop_back();
+            }
         }
     }
-    return match;
-}
+
+    // The ']' of the '[' at `at`.
+    size_t closeOf(size_t at) const {
+        auto found = std::lower_bound(pairs_.begin(), pairs_.end(), at, [](const auto& pair, size_t offset) { return pair.first < offset; });
+        return found != pairs_.end() && found->first == at ? found->second : std::string::npos;
+    }
+
+private:
+    std::vector<std::pair<size_t, size_t>> pairs_;  // each '[' and its ']', by the '['
+};
 
 // One function body's identifiers that name a global: each occurrence's offset (a member after
 // '.' is not one: `Out.lightDir.x = …` writes the output struct's member, not a global named
@@ -234,7 +252,7 @@ BodyWords bodyWords(const std::string& code, const FunctionBody& body, const std
 // where each chain of selectors ends, so `a.a.a.…` is walked once, not once per name.
 class Assignments {
 public:
-    Assignments(const std::string& code, const std::vector<size_t>& brackets) : code_(code), brackets_(brackets) {}
+    Assignments(const std::string& code, const MatchingBrackets& brackets) : code_(code), brackets_(brackets) {}
 
     bool assignedAt(size_t at, size_t length, size_t limit) {
         size_t back = at;
@@ -266,7 +284,7 @@ private:
                 while (i < limit && isIdentifierChar(code_[i])) ++i;
                 i = skipSpace(code_, i, limit);
             } else {
-                const size_t close = brackets_[i];
+                const size_t close = brackets_.closeOf(i);
                 i = close == std::string::npos || close >= limit ? limit : skipSpace(code_, close + 1, limit);
             }
         }
@@ -275,7 +293,7 @@ private:
     }
 
     const std::string& code_;
-    const std::vector<size_t>& brackets_;
+    const MatchingBrackets& brackets_;
     std::map<size_t, size_t> ends_;
 };
 
@@ -287,9 +305,13 @@ int lineOf(const std::vector<size_t>& newlines, size_t offset) {
 }  // namespace
 
 HlslWritableGlobals giveWrittenGlobalsACopy(const std::string& source, const std::string& entryPoint) {
+    return giveWrittenGlobalsACopy(source, BlankedHlsl(source), entryPoint);
+}
+
+HlslWritableGlobals giveWrittenGlobalsACopy(const std::string& source, const BlankedHlsl& blanked, const std::string& entryPoint) {
     HlslWritableGlobals out;
     out.code = source;
-    const std::string code = blankedHlsl(source);
+    const std::string& code = blanked.text;
     std::vector<Global> globals;
     std::vector<FunctionBody> bodies;
     scan(code, globals, bodies);
@@ -301,7 +323,7 @@ HlslWritableGlobals giveWrittenGlobalsACopy(const std::string& source, const std
     // Every step is linear in the code (or n log n): a file of thousands of globals and functions
     // once took the fuzzer's 10 s, one search of the whole code per global and function, and
     // 26 s, a lookup per global and function body.
-    const std::vector<size_t> brackets = matchingBrackets(code);
+    const MatchingBrackets brackets(code);
     Assignments assignments(code, brackets);
     // Per name, its uses in the bodies that do not declare one of their own, in order.
     struct Use {

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "frontend/shader/HlslBlankedCode.h"
+
 namespace rmfx {
 
 struct HlslWritableGlobals {
@@ -22,5 +24,7 @@ struct HlslWritableGlobals {
 // assigned from NAME at the start of `entryPoint`'s body, and used for NAME in every function body.
 // Code without such a write, or without the entry point, comes back unchanged.
 HlslWritableGlobals giveWrittenGlobalsACopy(const std::string& code, const std::string& entryPoint);
+// The same, given `blanked`, BlankedHlsl(code), that the caller scans in other ways too.
+HlslWritableGlobals giveWrittenGlobalsACopy(const std::string& code, const BlankedHlsl& blanked, const std::string& entryPoint);
 
 }  // namespace rmfx
