@@ -117,7 +117,7 @@ int renderOnce(const std::filesystem::path& workspace, glm::ivec2 size, const st
         std::printf("%s\t%.3f\t%ld\n", phase, std::chrono::duration<double, std::milli>(now - start).count(), peakResidentKiB());
         start = now;
     };
-    startLoadingImageCodecs();  // as rmfx render does: OpenImageIO loads meanwhile, on a thread
+    startLoadingImageCodecs(GlContext::prepareHeadlessDisplay);  // as rmfx render does: OpenImageIO loads meanwhile, on a thread
     RunRequest request;
     request.workspace = workspace;
     request.size = size;

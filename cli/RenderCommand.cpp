@@ -307,9 +307,11 @@ std::vector<std::string> renderOptionNames() {
 int renderCommand(const std::vector<std::string>& args) {
     auto a = parseArguments(args);
     if (!a) return 1;
-    // OpenImageIO loads on a thread of its own while the workspace parses and validates, unless
-    // the run reads and writes no image (--explain alone).
-    if (a->output || !a->explain || a->executor.checkHealth || !a->inputs.empty()) startLoadingImageCodecs();
+    // The GL driver, then OpenImageIO, load on a thread of their own while the workspace parses
+    // and validates; --explain alone needs neither (OpenImageIO only to read --input images).
+    const bool explainOnly = a->explain && !a->output && !a->executor.checkHealth;
+    if (!explainOnly) startLoadingImageCodecs(GlContext::prepareHeadlessDisplay);
+    else if (!a->inputs.empty()) startLoadingImageCodecs();
     // An --input image too large to read is refused from its header before the workspace loads.
     for (const InputArgument& input : a->inputs) {
         if (isSequencePattern(input.file.string())) continue;

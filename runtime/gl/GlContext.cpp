@@ -66,6 +66,14 @@ void terminateIfUnused(EGLDisplay display) {
 
 }  // namespace
 
+void GlContext::prepareHeadlessDisplay() {
+    std::string tried;
+    for (const Candidate& c : candidateDisplays(tried)) {
+        EGLint major = 0, minor = 0;
+        if (eglInitialize(c.display, &major, &minor)) return;
+    }
+}
+
 Result<std::unique_ptr<GlContext>> GlContext::createHeadless(GlProfile profile) {
     std::string tried;
     const bool core = profile == GlProfile::Core;

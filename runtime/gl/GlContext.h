@@ -16,6 +16,9 @@ public:
     // Compatibility: "4.5 (Compatibility Profile)", with the fixed-function matrices, lights and
     // vertex arrays that legacy GLSL reads (Workspace::profile).
     static Result<std::unique_ptr<GlContext>> createHeadless(GlProfile profile = GlProfile::Core);
+    // Initialises the display createHeadless will try first, which loads the driver, so that a
+    // createHeadless later (on any thread) finds it ready. Does nothing where none initialises.
+    static void prepareHeadlessDisplay();
     ~GlContext();
     GlContext(const GlContext&) = delete;
     GlContext& operator=(const GlContext&) = delete;

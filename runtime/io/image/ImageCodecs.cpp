@@ -36,7 +36,8 @@ std::vector<fs::path> candidates() {
 }
 
 // `marker` marks the load under way from before its thread starts to the end of dlopen.
-Result<const ImageCodecs*> load(std::unique_ptr<LibraryLoadingScope> marker) {
+Result<const ImageCodecs*> load(std::unique_ptr<LibraryLoadingScope> marker, std::function<void()> first) {
+    if (first) first();
     const std::vector<fs::path> paths = candidates();
     std::string tried;
     for (const fs::path& path : paths) {
@@ -64,10 +65,10 @@ std::shared_future<Result<const ImageCodecs*>> loading;
 
 }  // namespace
 
-void startLoadingImageCodecs() {
+void startLoadingImageCodecs(std::function<void()> first) {
     std::lock_guard<std::mutex> lock(loadingMutex);
     if (!loading.valid())
-        loading = std::async(std::launch::async, load, std::make_unique<LibraryLoadingScope>()).share();
+        loading = std::async(std::launch::async, load, std::make_unique<LibraryLoadingScope>(), std::move(first)).share();
 }
 
 const Result<const ImageCodecs*>& imageCodecs() {

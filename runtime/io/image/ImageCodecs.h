@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "core/Result.h"
@@ -47,7 +48,9 @@ struct ImageCodecs {
 using ImageCodecsEntry = const ImageCodecs* (*)(std::uint64_t (*hostImageMemoryLimit)());
 
 // Starts loading the module on a thread of its own and returns at once; later calls do nothing.
-void startLoadingImageCodecs();
+// `first`: what that thread loads before, a library the caller needs sooner (rmfx render: the GL
+// driver, which the loader's lock would otherwise hold back until the codecs are in).
+void startLoadingImageCodecs(std::function<void()> first = {});
 
 // The loaded module's table (waiting for a load under way, or loading it now), or why it cannot
 // be loaded: the path tried and the loader's reason.
