@@ -118,11 +118,13 @@ def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
     out, programs = sys.argv[1], sys.argv[2:]
-    # rmfx starts glslang's HLSL front end as a program found beside itself (frontend/shader/HlslWorker.h).
+    # rmfx starts glslang's HLSL front end as a program found beside itself (frontend/shader/HlslWorker.h)
+    # and loads OpenImageIO through a module beside itself (io/image/ImageCodecs.h).
     for p in list(programs):
-        worker = os.path.join(os.path.dirname(p), "rmfx-hlsl-worker")
-        if os.path.exists(worker) and worker not in programs:
-            programs.append(worker)
+        for companion in ("rmfx-hlsl-worker", "rmfx-image-codecs.so"):
+            path = os.path.join(os.path.dirname(p), companion)
+            if os.path.exists(path) and path not in programs:
+                programs.append(path)
     names = resolved(programs)
     real, stub, queue = set(), set(), []
     for p in programs:
