@@ -7,6 +7,7 @@
 #include <memory>
 #include <mutex>
 #include <system_error>
+#include <utility>
 
 #include "core/LibraryLoading.h"
 #include "io/image/DdsCubeMap.h"
@@ -81,24 +82,22 @@ const Result<const ImageCodecs*>& imageCodecs() {
     return current.get();
 }
 
-// The public functions, through the module.
-
-Result<Image> readImage(const fs::path& file) {
+// The public functions, through the module: an error saying why when it cannot be loaded.
+namespace {
+template <class R, class... Parameters, class... Arguments>
+R throughCodecs(R (*const ImageCodecs::*function)(Parameters...), Arguments&&... arguments) {
     const auto& codecs = imageCodecs();
     if (!codecs) return Error{codecs.error()};
-    return (*codecs)->readImage(file);
+    return ((*codecs)->*function)(std::forward<Arguments>(arguments)...);
 }
+}  // namespace
 
-Result<Image> readVolumeImage(const fs::path& file) {
-    const auto& codecs = imageCodecs();
-    if (!codecs) return Error{codecs.error()};
-    return (*codecs)->readVolumeImage(file);
-}
+Result<Image> readImage(const fs::path& file) { return throughCodecs(&ImageCodecs::readImage, file); }
+
+Result<Image> readVolumeImage(const fs::path& file) { return throughCodecs(&ImageCodecs::readVolumeImage, file); }
 
 Result<void> writeImage(const fs::path& file, const Image& image, const WriteOptions& options) {
-    const auto& codecs = imageCodecs();
-    if (!codecs) return Error{codecs.error()};
-    return (*codecs)->writeImage(file, image, options);
+    return throughCodecs(&ImageCodecs::writeImage, file, image, options);
 }
 
 Result<void> writeImage(const fs::path& file, const Image& image, DisplayTransform transform) {
@@ -108,15 +107,11 @@ Result<void> writeImage(const fs::path& file, const Image& image, DisplayTransfo
 }
 
 Result<InputImage> readInputImage(const fs::path& file, const std::string& layer, int maxSide) {
-    const auto& codecs = imageCodecs();
-    if (!codecs) return Error{codecs.error()};
-    return (*codecs)->readInputImage(file, layer, maxSide);
+    return throughCodecs(&ImageCodecs::readInputImage, file, layer, maxSide);
 }
 
 Result<Image> resampleImage(const Image& image, int width, int height) {
-    const auto& codecs = imageCodecs();
-    if (!codecs) return Error{codecs.error()};
-    return (*codecs)->resampleImage(image, width, height);
+    return throughCodecs(&ImageCodecs::resampleImage, image, width, height);
 }
 
 ImageComparison compareImages(const Image& actual, const Image& reference, const CompareLimits& limits) {
@@ -129,16 +124,8 @@ ImageComparison compareImages(const Image& actual, const Image& reference, const
     return (*codecs)->compareImages(actual, reference, limits);
 }
 
-Result<void> checkImageFileMemory(const fs::path& file) {
-    const auto& codecs = imageCodecs();
-    if (!codecs) return Error{codecs.error()};
-    return (*codecs)->checkImageFileMemory(file);
-}
+Result<void> checkImageFileMemory(const fs::path& file) { return throughCodecs(&ImageCodecs::checkImageFileMemory, file); }
 
-Result<CubeFaces> readDdsCubeMap(const fs::path& file) {
-    const auto& codecs = imageCodecs();
-    if (!codecs) return Error{codecs.error()};
-    return (*codecs)->readDdsCubeMap(file);
-}
+Result<CubeFaces> readDdsCubeMap(const fs::path& file) { return throughCodecs(&ImageCodecs::readDdsCubeMap, file); }
 
 }  // namespace rmfx
