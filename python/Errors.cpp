@@ -22,7 +22,8 @@ std::string messageOf(const Diagnostics& diagnostics) {
     for (const Diagnostic& d : diagnostics) {
         if (d.severity != Diagnostic::Severity::Error) continue;
         if (!message.empty()) message += '\n';
-        message += d.where.file.empty() && d.element.empty() ? d.message : d.format();
+        // One without a file (a wrong argument) is its message alone: it names what it is about.
+        message += d.where.file.empty() ? d.message : d.format();
     }
     return message;
 }

@@ -34,6 +34,7 @@ FrameExplanationInput explanationWithoutFrame(const PreparedRun& run) {
 
 PyRenderer::PyRenderer(std::shared_ptr<PyWorkspace> ws, glm::ivec2 size, bool timing)
     : ws_(std::move(ws)), size_(size), timing_(timing) {
+    if (!ws_) fail("workspace: expected an rmfx.Workspace (rmfx.load), got None", "workspace");
     if (size_.x < 0 || size_.y < 0 || (size_.x == 0) != (size_.y == 0) || size_.x > 16384 || size_.y > 16384)
         fail("size: expected (width, height) from 1 to 16384 each, got (" + std::to_string(size_.x) + ", " +
                  std::to_string(size_.y) + ")",

@@ -40,6 +40,8 @@ std::string valueText(const std::string& name, const py::handle& value) {
     if (py::isinstance<py::str>(value)) return value.cast<std::string>();
     if (py::isinstance<py::bool_>(value) || py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value))
         return numberText(name, value);
+    // A NumPy scalar or 0-d array is a number, though a 0-d array has __len__ too.
+    if (py::hasattr(value, "ndim") && py::int_(value.attr("ndim")).cast<int>() == 0) return numberText(name, value);
     if (py::hasattr(value, "__len__") && py::hasattr(value, "__iter__") && !py::isinstance<py::bytes>(value)) {
         std::string text;
         for (py::handle item : value) {

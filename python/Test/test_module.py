@@ -134,6 +134,8 @@ def test_hostile_input_raises_rmfx_error(tmp_path):
     raises(lambda: ws.__setitem__("Exposure_Level", (1.0, 2.0)), file="shader_1.xml", line=10)
     raises(lambda: ws.__setitem__("Environment_Format", 0.5), file="shader_1.xml", line=12)
     raises(lambda: ws.__setitem__("Exposure_Level", {"a": 1}), element="Exposure_Level")
+    ws["Exposure_Level"] = np.array(0.5)  # a 0-d array is a number
+    ws["Exposure_Level"] = np.float32(0.5)
     assert ws["Exposure_Level"] == 0.5 and ws["Environment_Format"] == 0  # unchanged by the failures
 
     renderer = ws.renderer(size=(8, 8))
@@ -147,6 +149,16 @@ def test_hostile_input_raises_rmfx_error(tmp_path):
     raises(lambda: renderer.render(target="no_such_target"), element="target")
     raises(lambda: renderer.render(frames=0), element="frames")
     raises(lambda: ws.renderer(size=(-1, 5)), element="size")
+    raises(lambda: rmfx.Renderer(None), element="workspace")
+    raises(lambda: renderer.render(dt=float("nan")), element="dt")
+    raises(lambda: rmfx.load(tmp_path), file=tmp_path.name)  # a folder
+    (tmp_path / "junk.rfx").write_bytes(bytes(range(256)) * 8)
+    raises(lambda: rmfx.load(tmp_path / "junk.rfx"), file="junk.rfx")
+    bad_shader = tmp_path / "bad_shader.xml"
+    (tmp_path / "bad.frag").write_text("void main() { this is not glsl }\n")
+    bad_shader.write_text('<?xml version="1.0"?>\n<workspace version="1" name="b">\n  <pass name="p">\n'
+                          '    <shader stage="fragment" file="bad.frag"/>\n  </pass>\n</workspace>\n')
+    raises(lambda: rmfx.load(bad_shader), file="bad.frag", line=1, element="pass")
     # After all that the renderer still renders.
     assert renderer.render(inputs={"scene": gradient(8, 8)}).shape == (8, 8, 4)
 
