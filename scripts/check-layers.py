@@ -15,8 +15,8 @@ besides what layers.txt says they use ("<layer> tests: …"). Also:
   - unit tests (Test/*Test.cpp not named *GLTest.cpp) include nothing from gl/ or run/: their
     executables link no GL library;
   - the applications: apps/ (what rmfx and rmfx-edit share) includes only the validation layer, its
-    closure and itself; cli/ (rmfx) and editor/ (rmfx-edit) include apps/ and the runtime, never
-    each other.
+    closure and itself; cli/ (rmfx), editor/ (rmfx-edit) and python/ (import rmfx) include apps/ and
+    the runtime, never each other.
 Usage: check-layers.py [--root DIR]   (DIR: the repository, default this script's parent's parent)
 """
 import argparse
@@ -27,11 +27,12 @@ import sys
 LAYERS_FILE = "runtime/layers.txt"
 GL_LAYERS = {"gl", "run"}
 GL_HEADER = re.compile(r"^(epoxy|EGL|GL|GLES\d*|GLFW|X11|wayland)/|^imgui_impl_opengl")
-APPS = {"apps", "cli", "editor"}
+APPS = {"apps", "cli", "editor", "python"}
+PROGRAMS = ("cli", "editor", "python")  # the applications at the edge, apart from each other
 APPS_UP_TO = "validation"  # apps/ includes this layer, what it uses, and itself
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^">]+)[">]')
 DECLARATION = re.compile(r"^([a-z]+)( tests)?:([a-z ]*)$")
-SOURCE_ROOTS = ["runtime", "apps", "cli", "editor", "bench", "fuzz", "samples", "tests", "reference", "effects"]
+SOURCE_ROOTS = ["runtime", "apps", "cli", "editor", "python", "bench", "fuzz", "samples", "tests", "reference", "effects"]
 
 
 class Layers:
@@ -120,11 +121,11 @@ def check_file(root, path, layers, problems, included):
         used = layer_of_include(layers, target)
         app = parts[0] if parts[0] in APPS else None
         included_app = target.split("/", 1)[0] if "/" in target and target.split("/", 1)[0] in APPS else None
-        if app == "apps" and not is_test and (included_app in ("cli", "editor") or
+        if app == "apps" and not is_test and (included_app in PROGRAMS or
                                              (used is not None and used not in layers.allowed(APPS_UP_TO, False))):
             problems.append(f'{where}: "{target}": apps/ holds what rmfx and rmfx-edit share, below GL; '
                             f"it includes the runtime up to {APPS_UP_TO} (and what that uses) and apps/ only")
-        if app in ("cli", "editor") and included_app in ("cli", "editor") and included_app != app:
+        if app in PROGRAMS and included_app in PROGRAMS and included_app != app:
             problems.append(f'{where}: "{target}": {app}/ and {included_app}/ are separate programs; '
                             f"what both need belongs in apps/")
         if used is None:

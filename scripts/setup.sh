@@ -12,6 +12,9 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev
   xvfb xauth
+  # The Python module (python/, import rmfx) and its tests; python3-openimageio reads the rmfx
+  # command's images back in those tests; python3-distributed (Dask) is for frame ranges to come
+  pybind11-dev python3-numpy python3-pytest python3-openimageio python3-distributed
   # For the tests only: the replay report is loaded in a real, headless browser (rmfx does not need it)
   chromium
 )

@@ -86,6 +86,17 @@ Result<SuppliedInputs> supplyInputs(Workspace& ws, const std::vector<InputArgume
     for (size_t k = 0; k < inputs.size(); ++k) {
         const InputArgument& a = inputs[k];
         const ImageInput* input = (*resolved)[k];
+        if (a.image) {
+            if (a.image->channels != 4 || a.image->width <= 0 || a.image->height <= 0 ||
+                a.image->pixels.size() != size_t(a.image->width) * size_t(a.image->height) * 4u)
+                error(a, "an image given in memory must be RGBA with at least one pixel");
+            else if (a.image->width > maxSide || a.image->height > maxSide)
+                error(a, sizeText({a.image->width, a.image->height}) + " is larger than " + std::to_string(maxSide) +
+                             " pixels on a side");
+            else
+                read.push_back({input, &a, *a.image});
+            continue;
+        }
         Result<InputImage> image = readInputImage(a.file, a.layer, maxSide);
         if (!image) {
             error(a, image.error());

@@ -3,6 +3,7 @@
 // and put into the inputs' textures before any GL object exists.
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -20,6 +21,9 @@ struct InputArgument {
     std::filesystem::path file;
     std::string layer;  // an EXR part or layer ("FILE.exr:layer"); empty: the file's default
     std::string text;   // as the user wrote it, for messages
+    // An image given in memory (the Python module's arrays): linear RGBA, taken in place of reading
+    // `file`, which is then not read; `text` names it in messages.
+    std::shared_ptr<const Image> image;
 };
 
 // "scene=shot.exr" names the input; "shot.exr" does not. The text names an input when what comes

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The applications stay apart (docs/architecture.md):
 #   1. scripts/check-layers.py fails when cli/ (rmfx) includes editor/ (rmfx-edit), naming the
-#      file and line, and when apps/ includes the gl layer;
+#      file and line, when python/ (import rmfx) includes cli/, and when apps/ includes the gl layer;
 #   2. the rmfx binary links no GLFW and no Dear ImGui (ldd), so a render node without a
 #      windowing stack runs it; rmfx-edit, where built, does;
 #   3. the rmfx binary links no OpenImageIO either: the image codecs module beside it does, loaded
@@ -14,7 +14,7 @@ trap 'rm -rf "$work"' EXIT
 
 mkdir -p "$work/tree/scripts"
 cp "$source_dir/scripts/check-layers.py" "$work/tree/scripts/"
-for d in runtime apps cli editor; do cp -r "$source_dir/$d" "$work/tree/$d"; done
+for d in runtime apps cli editor python; do cp -r "$source_dir/$d" "$work/tree/$d"; done
 python3 "$work/tree/scripts/check-layers.py" --root "$work/tree" >/dev/null || {
   echo "the untouched copy already fails the check"; exit 1; }
 printf '#include "editor/Editor.h"\n' >>"$work/tree/cli/ListCommand.cpp"
@@ -26,6 +26,15 @@ expected="cli/ListCommand.cpp:$line: \"editor/Editor.h\": cli/ and editor/ are s
 grep -qF "$expected" <<<"$out" || { echo "check-layers.py failed without saying: $expected"; echo "$out"; exit 1; }
 echo "check-layers.py: $out"
 cp "$source_dir/cli/ListCommand.cpp" "$work/tree/cli/ListCommand.cpp"
+printf '#include "cli/Commands.h"\n' >>"$work/tree/python/Module.cpp"
+line=$(wc -l <"$work/tree/python/Module.cpp")
+if out=$(python3 "$work/tree/scripts/check-layers.py" --root "$work/tree"); then
+  echo "check-layers.py passed python/ including cli/"; exit 1
+fi
+expected="python/Module.cpp:$line: \"cli/Commands.h\": python/ and cli/ are separate programs"
+grep -qF "$expected" <<<"$out" || { echo "check-layers.py failed without saying: $expected"; echo "$out"; exit 1; }
+echo "check-layers.py: $out"
+cp "$source_dir/python/Module.cpp" "$work/tree/python/Module.cpp"
 printf '#include "gl/GlContext.h"\n' >>"$work/tree/apps/OptionValues.cpp"
 if out=$(python3 "$work/tree/scripts/check-layers.py" --root "$work/tree"); then
   echo "check-layers.py passed apps/ including the gl layer"; exit 1

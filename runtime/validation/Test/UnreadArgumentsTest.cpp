@@ -54,7 +54,7 @@ TEST(UnreadArguments, ATextureReadOnlyWhileAVariableHasAnotherValueNamesTheSetti
     const std::vector<TextureArgument> textures{{"Sky_A", {"x.exr"}, "Sky_A=x.exr"},
                                                 {"Sky_B", {"y.exr"}, "Sky_B=y.exr"},
                                                 {"Mask", {"m.png"}, "Mask=m.png"}};
-    const std::vector<InputArgument> inputs{{"plate", "p.exr", "", "plate=p.exr"}};
+    const std::vector<InputArgument> inputs{{"plate", "p.exr", "", "plate=p.exr", nullptr}};
     FramePlanOptions options;
     options.effects = std::vector<std::string>{};
     options.givenInputs = {"plate"};
@@ -110,7 +110,7 @@ TEST(UnreadArguments, ATextureOnlyTheReplacedPassesSampleIsUnread) {
     FramePlanOptions options;
     EXPECT_EQ(formatted(unreadArgumentWarnings(*ws, options, sky, {})), Lines{});
     options.givenInputs = {"photo"};
-    EXPECT_EQ(formatted(unreadArgumentWarnings(*ws, options, sky, {{"", "p.exr", "", "p.exr"}})),
+    EXPECT_EQ(formatted(unreadArgumentWarnings(*ws, options, sky, {{"", "p.exr", "", "p.exr", nullptr}})),
               (Lines{file.string() + ": warning: --texture Sky=x.exr: no pass that runs samples texture 'Sky', so the file "
                                      "changes nothing; pass 'sky': culled: input given, 'scene' comes from the image given "
                                      "for input 'photo'"}));

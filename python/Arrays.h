@@ -1,0 +1,23 @@
+#pragma once
+// Images between NumPy and the runtime. Both ways row 0 is the top of the image, as image files
+// and NumPy's image libraries have it (model/Image.h).
+
+#include <string>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include "model/Image.h"
+
+namespace rmfx::python {
+
+// An input array as the runtime's linear RGBA float image. Shape (height, width, 3 or 4) of
+// float32 or float16 (linear, taken as they are: what a float EXR holds) or uint8 (sRGB-encoded
+// colour, decoded to linear as rmfx render decodes an 8-bit PNG; alpha is value / 255). Three
+// channels get alpha 1. Any other dtype or shape raises rmfx.Error naming `what`.
+Image imageFromArray(const pybind11::handle& array, const std::string& what);
+
+// A float32 array of shape (height, width, channels): a copy of the image's pixels.
+pybind11::array_t<float> arrayFromImage(const Image& image);
+
+}  // namespace rmfx::python

@@ -1,0 +1,294 @@
+#include "python/PyRenderer.h"
+
+#include <algorithm>
+#include <utility>
+
+#include <pybind11/stl.h>
+
+#include "compile/CompiledFrame.h"
+#include "graph/FrameExplanation.h"
+#include "io/image/InputImage.h"
+#include "model/EffectSelection.h"
+#include "python/Arrays.h"
+#include "python/Errors.h"
+
+namespace py = pybind11;
+
+namespace rmfx::python {
+
+namespace {
+
+void append(Diagnostics& to, Diagnostics from) { to.insert(to.end(), from.begin(), from.end()); }
+
+bool isPath(const py::handle& value) {
+    return py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__");
+}
+
+// The compiled frame of a request without GL: what explain() shows before any render.
+FrameExplanationInput explanationWithoutFrame(const PreparedRun& run) {
+    const CompiledFrame& frame = *run.frame;
+    return explanationOf(frame, switchedOffEffects(frame.ws(), frame.plan.askedEffects, frame.values));
+}
+
+}  // namespace
+
+PyRenderer::PyRenderer(std::shared_ptr<PyWorkspace> ws, glm::ivec2 size, bool timing)
+    : ws_(std::move(ws)), size_(size), timing_(timing) {
+    if (!ws_) fail("workspace: expected an rmfx.Workspace (rmfx.load), got None", "workspace");
+    if (size_.x < 0 || size_.y < 0 || (size_.x == 0) != (size_.y == 0) || size_.x > 16384 || size_.y > 16384)
+        fail("size: expected (width, height) from 1 to 16384 each, got (" + std::to_string(size_.x) + ", " +
+                 std::to_string(size_.y) + ")",
+             "size");
+}
+
+PyRenderer::~PyRenderer() {
+    if (executor_) {
+        makeCurrent();  // the executor deletes its GL objects in its context
+        executor_.reset();
+    }
+}
+
+void PyRenderer::makeCurrent() {
+    if (context_) context_->makeCurrent();
+}
+
+std::vector<PyRenderer::Given> PyRenderer::readInputs(const py::dict& inputs) const {
+    std::vector<Given> given;
+    for (auto [key, value] : inputs) {
+        if (!py::isinstance<py::str>(key)) fail("inputs: the keys are the names of the workspace's <input>s", "inputs");
+        Given g;
+        g.argument.name = key.cast<std::string>();
+        g.input = ws_->ws().findInput(g.argument.name);
+        if (!g.input) {
+            std::string known;
+            for (const ImageInput& i : ws_->ws().inputs) known += (known.empty() ? "'" : ", '") + i.name + "'";
+            fail("the workspace has no input '" + g.argument.name + "' (" +
+                     (known.empty() ? "it declares no <input>" : "its inputs: " + known) + ")",
+                 "input " + g.argument.name);
+        }
+        if (isPath(value)) {
+            const std::string text = py::str(py::module_::import("os").attr("fspath")(value)).cast<std::string>();
+            auto [file, layer] = splitLayerSuffix(text);
+            g.argument.file = file;
+            g.argument.layer = layer;
+            g.argument.text = g.argument.name + "=" + text;
+            Result<InputImage> read = readInputImage(file, layer);
+            if (!read) fail({{Diagnostic::Severity::Error, {ws_->ws().path.string(), 0}, "input " + g.argument.text, read.error()}});
+            g.argument.image = std::make_shared<const Image>(std::move(read->image));
+        } else {
+            g.argument.image = std::make_shared<const Image>(imageFromArray(value, "input '" + g.argument.name + "'"));
+            g.argument.file = "array";
+            g.argument.text = g.argument.name + "=<array " + std::to_string(g.argument.image->width) + "x" +
+                              std::to_string(g.argument.image->height) + ">";
+        }
+        given.push_back(std::move(g));
+    }
+    return given;
+}
+
+// The run compiled anew, as rmfx render compiles it: the loaded workspace with its values, the
+// inputs read into it (readRunInputs), the frame compiled (compileRun), the executor created.
+void PyRenderer::build(const std::vector<Given>& given, const Plan& plan) {
+    RunRequest request = ws_->request();
+    for (const Given& g : given) request.inputs.push_back(g.argument);
+    request.size = size_;
+    request.plan.outputs = {plan.target};
+    request.plan.checkHealth = plan.check;
+    request.plan.effects = ws_->effects();
+    LoadedRun loaded = ws_->loaded();
+    Diagnostics warnings;
+    if (Result<void> read = readRunInputs(loaded, request); !read) fail(read.takeDiagnostics());
+    else append(warnings, read.takeDiagnostics());
+    Result<PreparedRun> prepared = compileRun(std::move(loaded), request);
+    if (!prepared) fail(prepared.takeDiagnostics());
+    append(warnings, prepared.takeDiagnostics());
+
+    if (executor_) {
+        makeCurrent();
+        executor_.reset();
+        plan_.reset();
+    }
+    if (!context_) {
+        Result<std::unique_ptr<GlContext>> context = GlContext::createHeadless(prepared->ws().profile);
+        if (!context) fail(context.error());
+        context_ = std::move(*context);
+    }
+    makeCurrent();
+    Result<std::unique_ptr<GlExecutor>> created = GlExecutor::create(prepared->frame, GlRunSettings{});
+    if (!created) fail(created.takeDiagnostics());
+    append(warnings, created.takeDiagnostics());
+    executor_ = std::move(*created);
+    executor_->setTimingEnabled(timing_);
+    plan_ = plan;
+    valuesRevision_ = ws_->valuesRevision();
+    time_ = 0.0;
+    inputFiles_.clear();
+    for (const Given& g : given) inputFiles_[g.argument.name] = g.argument.text.substr(g.argument.name.size() + 1);
+    warnings_ = std::move(warnings);
+}
+
+// The kept executor given the workspace's current values and this call's images.
+void PyRenderer::update(const std::vector<Given>& given) {
+    makeCurrent();
+    warnings_.clear();
+    if (valuesRevision_ != ws_->valuesRevision()) {
+        for (const Variable& v : ws_->ws().variables) {
+            if (!v.semantic.empty()) continue;
+            const Value* current = executor_->variable(v.name);
+            if (!current || *current == v.value) continue;  // none: no pass of the run reads it
+            if (Result<void> set = executor_->setVariable(v.name, v.value); !set) fail(set.takeDiagnostics());
+        }
+        valuesRevision_ = ws_->valuesRevision();
+    }
+    const glm::ivec2 viewport = executor_->viewport();
+    for (const Given& g : given) {
+        std::shared_ptr<const Image> image = g.argument.image;
+        if (g.input->sizesViewport && glm::ivec2(image->width, image->height) != viewport) {
+            // As readRunInputs resampled the image the run was built with (a size was given).
+            Result<Image> resampled = resampleImage(*image, viewport.x, viewport.y);
+            if (!resampled) fail("input '" + g.argument.name + "': " + resampled.error(), "input " + g.argument.name);
+            image = std::make_shared<const Image>(std::move(*resampled));
+        }
+        if (Result<void> replaced = executor_->replaceInputImage(g.argument.name, image); !replaced)
+            fail(replaced.takeDiagnostics());
+        inputFiles_[g.argument.name] = g.argument.text.substr(g.argument.name.size() + 1);
+    }
+}
+
+py::array_t<float> PyRenderer::render(const py::dict& inputs, int frames, double dt, const std::string& target, bool check) {
+    if (frames < 1 || frames > 100000) fail("frames: expected 1 to 100000, got " + std::to_string(frames), "frames");
+    if (!(dt >= 0.0) || dt > 3600.0) fail("dt: expected seconds from 0 to 3600, got " + std::to_string(dt), "dt");
+    Plan plan;
+    plan.target = target.empty() ? ws_->ws().outputTargetName() : target;
+    if (!ws_->ws().canReadTarget(plan.target))
+        fail("target " + plan.target + ": the workspace has no such target (" + ws_->ws().describeTargets() + ")", "target");
+    plan.check = check;
+    plan.effectsRevision = ws_->effectsRevision();
+    std::vector<Given> given = readInputs(inputs);
+    for (const Given& g : given) plan.inputs.emplace_back(g.argument.name, glm::ivec2(g.argument.image->width, g.argument.image->height));
+    std::sort(plan.inputs.begin(), plan.inputs.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+
+    if (executor_ && plan_ && *plan_ == plan) update(given);
+    else build(given, plan);
+
+    // Frame i of a run at time i·dt with deltaTime dt, as run/HeadlessRun runs rmfx render's frames.
+    const float step = static_cast<float>(dt);
+    for (int i = 0; i < frames; ++i) {
+        Result<void> frame = executor_->renderFrame({static_cast<float>(time_), step});
+        Diagnostics d = frame.takeDiagnostics();
+        if (hasErrors(d)) fail(std::move(d));
+        append(warnings_, std::move(d));
+        time_ += double(step);
+    }
+    Result<Image> image = executor_->readTarget(plan.target);
+    if (!image) fail("target " + plan.target + ": " + image.error(), "target");
+    // The read back waited for the last frame, so its timer queries have all arrived.
+    timings_ = timing_ ? executor_->passTimings() : std::vector<PassTiming>{};
+    frameMilliseconds_ = timing_ ? executor_->frameGpuMilliseconds() : 0.0;
+    findings_ = check ? executor_->firstHealthFindings() : std::vector<HealthFinding>{};
+    return arrayFromImage(*image);
+}
+
+std::string PyRenderer::explain() {
+    if (executor_) {
+        makeCurrent();
+        FrameExplanationInput explained = explanationOf(executor_->compiledFrame(), executor_->switchedOffEffects());
+        explained.frameRan = executor_->frameIndex() > 0;
+        explained.contentSkipped = executor_->contentSkippedEffects(true);
+        explained.inputFiles = inputFiles_;
+        return explainFrame(explained);
+    }
+    // No run yet: the plan of a render with no inputs given, compiled without GL (rmfx render --explain).
+    RunRequest request = ws_->request();
+    request.size = size_;
+    request.plan.outputs = {ws_->ws().outputTargetName()};
+    request.plan.effects = ws_->effects();
+    Result<PreparedRun> prepared = compileRun(ws_->loaded(), request);
+    if (!prepared) fail(prepared.takeDiagnostics());
+    return explainFrame(explanationWithoutFrame(*prepared));
+}
+
+void PyRenderer::reset() {
+    if (!executor_) return;
+    makeCurrent();
+    executor_.reset();
+    plan_.reset();
+    time_ = 0.0;
+}
+
+std::vector<std::string> PyRenderer::passesRun() const {
+    return executor_ ? executor_->passesRun() : std::vector<std::string>{};
+}
+
+namespace {
+
+glm::ivec2 sizeOf(const std::optional<std::pair<int, int>>& size) {
+    return size ? glm::ivec2(size->first, size->second) : glm::ivec2(0);
+}
+
+}  // namespace
+
+void bindRenderer(py::module_& m) {
+    py::class_<PassTiming>(m, "PassTiming", "GPU time of one pass of the last frame rendered.")
+        .def_readonly("pass_", &PassTiming::pass)
+        .def_property_readonly("name", [](const PassTiming& t) { return t.pass; })
+        .def_readonly("milliseconds", &PassTiming::milliseconds)
+        .def("__repr__", [](const PassTiming& t) { return "<rmfx.PassTiming " + t.pass + ": " + std::to_string(t.milliseconds) + " ms>"; });
+
+    py::class_<HealthFinding>(m, "HealthFinding", "The first pixel of a kind (NaN, ±Inf, negative, at the format's largest) a pass left in its target.")
+        .def_property_readonly("kind", [](const HealthFinding& f) { return std::string(healthKindName(f.kind)); })
+        .def_property_readonly("is_error", [](const HealthFinding& f) { return healthKindIsError(f.kind); },
+                               "NaN and infinities are errors; negatives and values at the format's largest warnings")
+        .def_readonly("frame", &HealthFinding::frame, "counted from 0")
+        .def_property_readonly("pass_", [](const HealthFinding& f) { return f.pass; })
+        .def_readonly("target", &HealthFinding::target)
+        .def_readonly("count", &HealthFinding::count, "pixels of that pass holding the kind")
+        .def_property_readonly("pixel", [](const HealthFinding& f) { return py::make_tuple(f.pixel.x, f.pixel.y); })
+        .def_property_readonly("value", [](const HealthFinding& f) -> py::object {
+            if (!f.recorded) return py::none();
+            return py::make_tuple(f.value.x, f.value.y, f.value.z, f.value.w);
+        })
+        .def("__str__", [](const HealthFinding& f) { return describeFinding(f); })
+        .def("__repr__", [](const HealthFinding& f) { return "<rmfx.HealthFinding " + describeFinding(f) + ">"; });
+
+    py::class_<PyRenderer>(m, "Renderer",
+        "Renderer(workspace, size=None, timing=False): renders a workspace headless, keeping its GL context and "
+        "executor between calls (see render()).")
+        .def(py::init([](std::shared_ptr<PyWorkspace> ws, std::optional<std::pair<int, int>> size, bool timing) {
+                 return std::make_unique<PyRenderer>(std::move(ws), sizeOf(size), timing);
+             }),
+             py::arg("workspace"), py::kw_only(), py::arg("size") = py::none(), py::arg("timing") = false)
+        .def("render", &PyRenderer::render, py::kw_only(), py::arg("inputs") = py::dict(), py::arg("frames") = 1,
+             py::arg("dt") = double(1.0f / 60.0f), py::arg("target") = "", py::arg("check") = false,
+             "render(*, inputs={}, frames=1, dt=1/60, target='', check=False) -> numpy.ndarray\n\n"
+             "Runs `frames` frames, dt seconds apart, and returns the target ('' the workspace's output) as a float32 "
+             "array of shape (height, width, 4): linear RGBA, ROW 0 AT THE TOP of the image (as image files and NumPy's "
+             "image libraries have it; OpenGL's own rows start at the bottom). The same pixels as `rmfx render --frames N "
+             "--dt DT -o out.exr` with the same values and inputs.\n\n"
+             "inputs: {name: image} for the workspace's <input>s; an image is a path (any file rmfx render --input reads, "
+             "'file.exr:layer' too) or an array of shape (h, w, 3|4): float32 or float16 taken as linear, uint8 decoded "
+             "from sRGB (alpha / 255); three channels get alpha 1.\n\n"
+             "The executor is kept: a call with the same inputs given (at the same sizes), target, check and effects "
+             "goes on from the last one's frames and time (state carried across calls: feedback targets, adaptation); "
+             "new variable values and input images apply from this call. Anything else compiles the run anew and "
+             "starts at time 0, as does reset(). check=True: inspect what each pass wrote (findings).")
+        .def("explain", &PyRenderer::explain, "The plan: what rmfx render --explain prints (after a render, of that run).")
+        .def("reset", &PyRenderer::reset, "Drops the executor: the next render compiles anew and starts at time 0.")
+        .def_property_readonly("timings", &PyRenderer::timings, "per-pass GPU times of the last frame (Renderer(timing=True))")
+        .def_property_readonly("frame_milliseconds", &PyRenderer::frameMilliseconds)
+        .def_property_readonly("findings", &PyRenderer::findings, "with render(check=True): the first finding of each kind")
+        .def_property_readonly("warnings", &PyRenderer::warnings, "the last render's warnings, as rmfx.Diagnostic")
+        .def_property_readonly("frame", &PyRenderer::frame, "frames rendered since the run was compiled")
+        .def_property_readonly("time", &PyRenderer::time, "the next frame's time in seconds")
+        .def_property_readonly("size", [](const PyRenderer& r) { return py::make_tuple(r.viewport().x, r.viewport().y); })
+        .def_property_readonly("passes_run", &PyRenderer::passesRun);
+
+    // ws.renderer(size=…, timing=…): the same as rmfx.Renderer(ws, …).
+    py::reinterpret_borrow<py::class_<PyWorkspace, std::shared_ptr<PyWorkspace>>>(m.attr("Workspace"))
+        .def("renderer", [](std::shared_ptr<PyWorkspace> ws, std::optional<std::pair<int, int>> size, bool timing) {
+            return std::make_unique<PyRenderer>(std::move(ws), sizeOf(size), timing);
+        }, py::arg("size") = py::none(), py::kw_only(), py::arg("timing") = false,
+        "renderer(size=None, *, timing=False) -> Renderer: rmfx.Renderer(ws, size=size, timing=timing)");
+}
+
+}  // namespace rmfx::python
