@@ -78,7 +78,7 @@ Result<SequenceTimes> renderSequence(const Workspace& source, const SequenceSett
     // The first frame goes through supplyInputs with the static images: it picks the input, sets
     // the viewport and says how each file was decoded.
     Workspace ws = source;
-    std::vector<InputArgument> given{{settings.input, frames->front().path, settings.layer, argument}};
+    std::vector<InputArgument> given{{settings.input, frames->front().path, settings.layer, argument, nullptr}};
     given.insert(given.end(), settings.staticInputs.begin(), settings.staticInputs.end());
     const Clock::time_point firstRead = Clock::now();
     Result<SuppliedInputs> supplied = supplyInputs(ws, given, settings.size);
