@@ -103,7 +103,7 @@ make_dictionary() {
     workspace | variable_value_writer) sources=(runtime/frontend/workspace/WorkspaceParser.cpp runtime/core/Value.cpp runtime/io/mesh/BuiltinMeshes.cpp) ;;
     rfx_import) sources=(runtime/frontend/rfx/*.cpp runtime/frontend/rfx/detail/*.cpp) ;;
     d3d_asm) sources=(runtime/frontend/shader/D3DAsmParser.cpp runtime/frontend/shader/D3DAsmToHlsl.cpp) ;;
-    replay_manifest) sources=(runtime/frontend/replay/ReplayManifest.cpp runtime/io/image/ImageCompare.cpp) ;;
+    replay_manifest) sources=(runtime/frontend/replay/ReplayManifest.cpp runtime/io/image/codecs/ImageCompare.cpp runtime/io/image/ImageComparison.cpp) ;;
   esac
   {
     [ "$t" = shader_preprocessor ] || [ "$t" = d3d_asm ] || cat fuzz/dictionaries/xml.dict
