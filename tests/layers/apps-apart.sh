@@ -17,24 +17,21 @@ cp "$source_dir/scripts/check-layers.py" "$work/tree/scripts/"
 for d in runtime apps cli editor python; do cp -r "$source_dir/$d" "$work/tree/$d"; done
 python3 "$work/tree/scripts/check-layers.py" --root "$work/tree" >/dev/null || {
   echo "the untouched copy already fails the check"; exit 1; }
-printf '#include "editor/Editor.h"\n' >>"$work/tree/cli/ListCommand.cpp"
-line=$(wc -l <"$work/tree/cli/ListCommand.cpp")
-if out=$(python3 "$work/tree/scripts/check-layers.py" --root "$work/tree"); then
-  echo "check-layers.py passed cli/ including editor/"; exit 1
-fi
-expected="cli/ListCommand.cpp:$line: \"editor/Editor.h\": cli/ and editor/ are separate programs"
-grep -qF "$expected" <<<"$out" || { echo "check-layers.py failed without saying: $expected"; echo "$out"; exit 1; }
-echo "check-layers.py: $out"
-cp "$source_dir/cli/ListCommand.cpp" "$work/tree/cli/ListCommand.cpp"
-printf '#include "cli/Commands.h"\n' >>"$work/tree/python/Module.cpp"
-line=$(wc -l <"$work/tree/python/Module.cpp")
-if out=$(python3 "$work/tree/scripts/check-layers.py" --root "$work/tree"); then
-  echo "check-layers.py passed python/ including cli/"; exit 1
-fi
-expected="python/Module.cpp:$line: \"cli/Commands.h\": python/ and cli/ are separate programs"
-grep -qF "$expected" <<<"$out" || { echo "check-layers.py failed without saying: $expected"; echo "$out"; exit 1; }
-echo "check-layers.py: $out"
-cp "$source_dir/python/Module.cpp" "$work/tree/python/Module.cpp"
+# refused FILE INCLUDE WHY: check-layers.py fails FILE with INCLUDE appended, saying so at its line.
+refused() {
+  local file=$1 include=$2 why=$3 line expected out
+  printf '#include "%s"\n' "$include" >>"$work/tree/$file"
+  line=$(wc -l <"$work/tree/$file")
+  if out=$(python3 "$work/tree/scripts/check-layers.py" --root "$work/tree"); then
+    echo "check-layers.py passed $file including $include"; exit 1
+  fi
+  expected="$file:$line: \"$include\": $why"
+  grep -qF "$expected" <<<"$out" || { echo "check-layers.py failed without saying: $expected"; echo "$out"; exit 1; }
+  echo "check-layers.py: $out"
+  cp "$source_dir/$file" "$work/tree/$file"
+}
+refused cli/ListCommand.cpp editor/Editor.h "cli/ and editor/ are separate programs"
+refused python/Module.cpp cli/Commands.h "python/ and cli/ are separate programs"
 printf '#include "gl/GlContext.h"\n' >>"$work/tree/apps/OptionValues.cpp"
 if out=$(python3 "$work/tree/scripts/check-layers.py" --root "$work/tree"); then
   echo "check-layers.py passed apps/ including the gl layer"; exit 1
