@@ -64,23 +64,20 @@ Result<const ImageCodecs*> load(std::unique_ptr<LibraryLoadingScope> marker, std
 std::mutex loadingMutex;
 std::shared_future<Result<const ImageCodecs*>> loading;
 
-}  // namespace
-
-void startLoadingImageCodecs(std::function<void()> first) {
+// The load, started on its first call.
+std::shared_future<Result<const ImageCodecs*>> loadingStarted(std::function<void()> first) {
     std::lock_guard<std::mutex> lock(loadingMutex);
     if (!loading.valid())
         loading = std::async(std::launch::async, load, std::make_unique<LibraryLoadingScope>(), std::move(first)).share();
+    return loading;
 }
 
-const Result<const ImageCodecs*>& imageCodecs() {
-    startLoadingImageCodecs();
-    std::shared_future<Result<const ImageCodecs*>> current;
-    {
-        std::lock_guard<std::mutex> lock(loadingMutex);
-        current = loading;
-    }
-    return current.get();
-}
+}  // namespace
+
+void startLoadingImageCodecs(std::function<void()> first) { loadingStarted(std::move(first)); }
+
+// The shared state lives as long as `loading` does, so the reference stays good.
+const Result<const ImageCodecs*>& imageCodecs() { return loadingStarted({}).get(); }
 
 // The public functions, through the module: an error saying why when it cannot be loaded.
 namespace {
