@@ -54,7 +54,8 @@ struct RenderArguments {
     double fps = 24.0;                  // a sequence's frame rate: dt = 1 / fps
     bool fpsGiven = false;
     bool dtGiven = false;
-    int preroll = 0;                    // a sequence's frames of its first image before the first output
+    int preroll = 0;                    // a sequence's frames of warm-up before the first output
+    std::optional<std::pair<int, int>> frameRange;  // a sequence's frames written, by number
 };
 
 // With `names`, fills it with the parser's option names and parses nothing.
@@ -74,6 +75,20 @@ std::optional<RenderArguments> parseArguments(const std::vector<std::string>& ar
             if (value.empty() || *end || n < 0 || n > 100000)
                 return "--preroll: expected a count of frames from 0 to 100000, got '" + value + "'";
             a.preroll = static_cast<int>(n);
+            return "";
+        })
+        .option({"--frame-range"}, [&](const std::string& value) -> std::string {
+            // A-B or a single frame A: frame numbers as in the file names.
+            int first = 0, last = 0;
+            char rest = 0;
+            const int n = std::sscanf(value.c_str(), "%d-%d%c", &first, &last, &rest);
+            const int single = n == 1 && value.find('-') == std::string::npos;
+            if (single) last = first;
+            if ((n != 2 && !single) || first < 0 || last < 0 || value.find_first_not_of("0123456789-") != std::string::npos)
+                return "--frame-range: expected frame numbers FIRST-LAST (as in the file names, e.g. 1001-1012), got '" +
+                       value + "'";
+            if (first > last) return "--frame-range: " + value + ": the first frame comes after the last";
+            a.frameRange = std::make_pair(first, last);
             return "";
         })
         .option({"--set"}, overrideValue(a.overrides), Empty::Allowed)
@@ -270,6 +285,7 @@ int renderSequenceCommand(const RenderArguments& a, const LoadedRun& loaded) {
     settings.fps = a.fps;
     if (a.dtGiven) settings.deltaTime = a.run.deltaTime;
     settings.preroll = a.preroll;
+    settings.frameRange = a.frameRange;
     settings.programs = &loaded.programs;
     if (a.run.size != glm::ivec2(0)) settings.size = a.run.size;
     auto context = GlContext::createHeadless(ws.profile);
@@ -288,9 +304,11 @@ int renderSequenceCommand(const RenderArguments& a, const LoadedRun& loaded) {
     }
     if (!a.quiet) {
         std::cerr << formatAll(run.diagnostics());  // how the first image was decoded
-        char summary[200];
-        std::snprintf(summary, sizeof summary, "rmfx: wrote %d frames to %s in %.1f s (reading %.1f s, rendering %.1f s, writing %.1f s)\n",
-                      run->frames, a.output->c_str(), run->total, run->read, run->render, run->write);
+        char summary[300];
+        std::snprintf(summary, sizeof summary,
+                      "rmfx: wrote %d frames to %s in %.1f s (%d frames of warm-up before them; reading %.1f s, rendering %.1f s, "
+                      "writing %.1f s)\n",
+                      run->frames, a.output->c_str(), run->total, run->warmUpFrames, run->read, run->render, run->write);
         std::cerr << summary;
     }
     return 0;
@@ -375,6 +393,10 @@ int renderCommand(const std::vector<std::string>& args) {
     if (a->preroll > 0) {
         std::cerr << "rmfx render: --preroll is for sequences (an --input frame pattern); a single render "
                      "runs --frames N frames and writes the last\n";
+        return 1;
+    }
+    if (a->frameRange) {
+        std::cerr << "rmfx render: --frame-range chooses frames of a sequence (an --input frame pattern)\n";
         return 1;
     }
     if (a->fpsGiven) {

@@ -62,7 +62,10 @@ render options:
   --fps N                a sequence's frame rate: dt = 1/N (default 24)
   --preroll N            a sequence: render N frames of its first image before the first output,
                          so light adaptation and frame="previous" targets start settled on the
-                         shot instead of fading in (default 0)
+                         shot instead of fading in (default 0); with --frame-range, the N frames
+                         before the range, as the whole run renders them (docs/sequences.md)
+  --frame-range A-B      a sequence: write only frames A to B (the numbers in the file names),
+                         each as the whole shot's run gives it: one render-farm task per chunk
   --texture NAME=FILE    replace a texture's file for this run (repeatable), .rfx too; a cube
                          map takes one image (2:1 longitude/latitude, 4:3 or 3:4 cross, DDS)
                          or six faces: NAME=px,nx,py,ny,pz,nz

@@ -1,10 +1,6 @@
 #include "run/HeadlessRun.h"
 
-#include <optional>
-
-#include <epoxy/gl.h>
-
-#include "core/FrameWatchdog.h"
+#include "run/FrameStepper.h"
 
 namespace rmfx {
 
@@ -16,15 +12,9 @@ Run runFrames(Run created, const Workspace& ws, const RunSettings& settings) {
     if (!created) return Run::failure(created.takeDiagnostics());
     Diagnostics diagnostics = created.takeDiagnostics();
     std::unique_ptr<GlExecutor> executor = std::move(*created);
-    std::optional<FrameWatchdog> watchdog;
-    if (settings.frameBudgetSeconds > 0) watchdog.emplace(settings.frameBudgetSeconds, settings.onFrameBudget);
+    FrameStepper frames(settings.deltaTime, settings.frameBudgetSeconds, settings.onFrameBudget);
     for (int i = 0; i < settings.frames; ++i) {
-        if (watchdog) watchdog->arm("frame " + std::to_string(i + 1) + " of " + ws.path.string());
-        Diagnostics frame = executor->renderFrame({static_cast<float>(i) * settings.deltaTime, settings.deltaTime}).takeDiagnostics();
-        if (watchdog) {
-            glFinish();
-            watchdog->disarm();
-        }
+        Diagnostics frame = frames.step(*executor, i, "frame " + std::to_string(i + 1) + " of " + ws.path.string()).takeDiagnostics();
         diagnostics.insert(diagnostics.end(), frame.begin(), frame.end());
         if (hasErrors(frame)) return Run::failure(std::move(diagnostics));
     }

@@ -7,10 +7,12 @@
 #include <memory>
 #include <optional>
 #include <system_error>
+#include <tuple>
 
-#include "core/FrameWatchdog.h"
 #include "io/image/InputImage.h"
 #include "io/media/ImageSequence.h"
+#include "run/FrameStepper.h"
+#include "run/SequenceChunk.h"
 #include "validation/ImageInputs.h"
 
 namespace rmfx {
@@ -74,11 +76,19 @@ Result<SequenceTimes> renderSequence(const Workspace& source, const SequenceSett
     if (!(settings.fps > 0.0)) return runError("--fps", "must be above 0");
     if (settings.deltaTime && !(*settings.deltaTime >= 0.0)) return runError("--dt", "must be 0 or more");
     if (settings.preroll < 0) return runError("--preroll", "must be 0 or more");
+    // The written frames: indices first … last of the shot; the chunk's warm-up reads before them.
+    int first = 0, last = static_cast<int>(frames->size()) - 1;
+    if (settings.frameRange) {
+        Result<std::pair<int, int>> range = selectFrameRange(*frames, *settings.frameRange);
+        if (!range) return runError("--frame-range", range.error());
+        std::tie(first, last) = *range;
+    }
+    const SequenceChunk chunk = planSequenceChunk(first, settings.preroll);
 
     // The first frame goes through supplyInputs with the static images: it picks the input, sets
     // the viewport and says how each file was decoded.
     Workspace ws = source;
-    std::vector<InputArgument> given{{settings.input, frames->front().path, settings.layer, argument, nullptr}};
+    std::vector<InputArgument> given{{settings.input, (*frames)[size_t(chunk.start)].path, settings.layer, argument, nullptr}};
     given.insert(given.end(), settings.staticInputs.begin(), settings.staticInputs.end());
     const Clock::time_point firstRead = Clock::now();
     Result<SuppliedInputs> supplied = supplyInputs(ws, given, settings.size);
@@ -102,7 +112,8 @@ Result<SequenceTimes> renderSequence(const Workspace& source, const SequenceSett
     std::unique_ptr<GlExecutor> executor = std::move(*created);
 
     SequenceTimes times;
-    times.frames = static_cast<int>(frames->size());
+    times.frames = last - first + 1;
+    times.warmUpFrames = settings.preroll;
     times.read = firstReadSeconds;
     const float dt = static_cast<float>(settings.deltaTime.value_or(1.0 / settings.fps));
     const std::launch policy = settings.overlap ? std::launch::async : std::launch::deferred;
@@ -125,47 +136,49 @@ Result<SequenceTimes> renderSequence(const Workspace& source, const SequenceSett
         d.push_back({Diagnostic::Severity::Error, {source.path.string(), 0}, "--input " + argument, all});
         return Run::failure(std::move(d));
     };
-    std::optional<FrameWatchdog> watchdog;
-    if (settings.frameBudgetSeconds > 0) watchdog.emplace(settings.frameBudgetSeconds, settings.onFrameBudget);
-    for (int p = 0; p < settings.preroll; ++p) {
-        const std::string label = "pre-roll frame " + std::to_string(p + 1) + " of " + std::to_string(settings.preroll);
+    FrameStepper stepper(dt, settings.frameBudgetSeconds, settings.onFrameBudget);
+    for (int p = 0; p < chunk.preroll; ++p) {
+        const std::string label = "pre-roll frame " + std::to_string(p + 1) + " of " + std::to_string(chunk.preroll);
         Clock::time_point renderStart = Clock::now();
-        if (watchdog) watchdog->arm(label + " of " + ws.path.string());
-        Result<void> rendered = executor->renderFrame({static_cast<float>(p - settings.preroll) * dt, dt});
-        if (watchdog) watchdog->disarm();
+        Result<void> rendered = stepper.step(*executor, chunk.start - chunk.preroll + p, label + " of " + ws.path.string());
         if (!rendered) return fail(label + ": " + rendered.error());
         times.render += secondsSince(renderStart);
     }
-    for (size_t k = 0; k < frames->size(); ++k) {
-        const SequenceFrame& frame = (*frames)[k];
-        const std::string frameLabel = "frame " + std::to_string(frame.frame) + " (" + frame.path.string() + ")";
+    for (int k = chunk.start; k <= last; ++k) {
+        const SequenceFrame& frame = (*frames)[size_t(k)];
+        const bool warmUp = k < first;
+        const std::string frameLabel = std::string(warmUp ? "warm-up frame " : "frame ") + std::to_string(frame.frame) + " (" +
+                                       frame.path.string() + ")";
         try {
-            if (k + 1 < frames->size())
-                next = std::async(policy, readFrame, (*frames)[k + 1].path, settings.layer, frameSize);
+            if (k < last) next = std::async(policy, readFrame, (*frames)[size_t(k) + 1].path, settings.layer, frameSize);
         } catch (const std::system_error& e) {
             return fail(frameLabel + ": cannot start reading the next image: " + e.what());
         }
         Clock::time_point renderStart = Clock::now();
-        if (watchdog) watchdog->arm(frameLabel + " of " + ws.path.string());
-        Result<void> rendered = executor->renderFrame({static_cast<float>(k) * dt, dt});
-        if (!rendered) return fail(frameLabel + ": " + rendered.error());
-        Result<Image> image = executor->readTarget(target);  // waits for the frame's GPU work
-        if (watchdog) watchdog->disarm();
-        if (!image) return fail(image.error());
-        times.render += secondsSince(renderStart);
-        if (Result<void> previous = finishWrite(); !previous) return fail(previous.error());
-        writingFile = output->fileName(frame.frame);
-        try {
-            writing = std::async(policy, writeFrame, writingFile, std::move(*image), settings.write);
-        } catch (const std::system_error& e) {
-            return fail(writingFile.string() + ": cannot start writing: " + e.what());
+        const std::string label = frameLabel + " of " + ws.path.string();
+        if (warmUp) {
+            Result<void> rendered = stepper.step(*executor, k, label);
+            if (!rendered) return fail(frameLabel + ": " + rendered.error());
+            times.render += secondsSince(renderStart);
+        } else {
+            Result<Image> image = stepper.stepAndRead(*executor, k, label, target);
+            if (!image) return fail(frameLabel + ": " + image.error());
+            times.render += secondsSince(renderStart);
+            if (Result<void> previous = finishWrite(); !previous) return fail(previous.error());
+            writingFile = output->fileName(frame.frame);
+            try {
+                writing = std::async(policy, writeFrame, writingFile, std::move(*image), settings.write);
+            } catch (const std::system_error& e) {
+                return fail(writingFile.string() + ": cannot start writing: " + e.what());
+            }
+            if (!settings.overlap) {
+                if (Result<void> done = finishWrite(); !done) return fail(done.error());
+            }
+            // Overlapped, this frame's write is still under way.
+            const int written = k - first + (settings.overlap ? 0 : 1);
+            if (progress) progress({written, times.frames, secondsSince(started)});
         }
-        if (!settings.overlap) {
-            if (Result<void> done = finishWrite(); !done) return fail(done.error());
-        }
-        // Overlapped, this frame's write is still under way.
-        if (progress) progress({static_cast<int>(settings.overlap ? k : k + 1), times.frames, secondsSince(started)});
-        if (k + 1 < frames->size()) {
+        if (k < last) {
             ReadFrame read = next.get();
             times.read += read.seconds;
             if (!read.image) return fail(read.image.error());

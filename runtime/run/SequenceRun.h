@@ -6,6 +6,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include <glm/vec2.hpp>
 
@@ -29,10 +30,15 @@ struct SequenceSettings {
     double fps = 24.0;
     // The step between frames; none: 1 / fps.
     std::optional<double> deltaTime;
-    // Frames rendered from the first image before the first one written, so that light
-    // adaptation and every frame="previous" target start settled on the shot (time runs from
-    // -preroll · dt, so the written frames keep their times).
+    // Frames of warm-up before the first frame written, so that light adaptation and every
+    // frame="previous" target start settled on the shot. Without a frame range: the first image
+    // rendered `preroll` times (time runs from -preroll · dt, so the written frames keep their
+    // times). With one: the chunk's warm-up, the last `preroll` frames of that whole run before the
+    // range's first frame (run/SequenceChunk.h).
     int preroll = 0;
+    // The frames written, by the numbers in their file names, first and last included; none: all.
+    // Each frame runs at the time the whole shot's run gives it (its place in the shot · dt).
+    std::optional<std::pair<int, int>> frameRange;
     std::optional<glm::ivec2> size;  // the viewport; none: the first frame's size
     // Read the next image and write the last while the GPU renders (off: one after the other,
     // for the benchmark's comparison).
@@ -53,7 +59,8 @@ struct SequenceProgress {
 
 // Wall-clock seconds summed over the frames, per stage, and the whole run's.
 struct SequenceTimes {
-    int frames = 0;
+    int frames = 0;       // written
+    int warmUpFrames = 0;  // rendered before the first written: pre-roll and the frames before a range
     double read = 0.0;    // decoding (and resampling) each image, the first included
     double render = 0.0;  // uploading the image, the frame's passes, reading the target back
     double write = 0.0;   // encoding and writing each output file

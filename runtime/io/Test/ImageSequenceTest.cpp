@@ -181,3 +181,36 @@ TEST(ImageSequence, PatternWithoutFolderListsTheCurrentFolder) {
 
 }  // namespace
 }  // namespace rmfx
+
+namespace rmfx {
+namespace {
+
+std::vector<SequenceFrame> numbered(int first, int last) {
+    std::vector<SequenceFrame> frames;
+    for (int n = first; n <= last; ++n) frames.push_back({n, "f." + std::to_string(n) + ".exr"});
+    return frames;
+}
+
+TEST(ImageSequenceRange, SelectsTheIndicesOfTheNumberedFrames) {
+    const std::vector<SequenceFrame> frames = numbered(1001, 1024);
+    Result<std::pair<int, int>> range = selectFrameRange(frames, {1001, 1024});
+    ASSERT_TRUE(range) << range.error();
+    EXPECT_EQ(*range, std::make_pair(0, 23));
+    range = selectFrameRange(frames, {1013, 1013});
+    ASSERT_TRUE(range) << range.error();
+    EXPECT_EQ(*range, std::make_pair(12, 12));
+}
+
+TEST(ImageSequenceRange, OutsideOrBackwardsIsAnErrorNamingTheFramesThereAre) {
+    const std::vector<SequenceFrame> frames = numbered(1001, 1024);
+    Result<std::pair<int, int>> outside = selectFrameRange(frames, {1000, 1010});
+    ASSERT_FALSE(outside);
+    EXPECT_EQ(outside.error(), "1000-1010 reaches outside the sequence, whose frames are 1001-1024");
+    EXPECT_FALSE(selectFrameRange(frames, {1020, 1025}));
+    Result<std::pair<int, int>> backwards = selectFrameRange(frames, {1010, 1005});
+    ASSERT_FALSE(backwards);
+    EXPECT_EQ(backwards.error(), "1010-1005: the first frame comes after the last");
+}
+
+}  // namespace
+}  // namespace rmfx

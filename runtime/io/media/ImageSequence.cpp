@@ -177,4 +177,21 @@ Result<std::vector<SequenceFrame>> findSequenceFrames(const std::string& pattern
     return frames;
 }
 
+Result<std::pair<int, int>> selectFrameRange(const std::vector<SequenceFrame>& frames, std::pair<int, int> numbers) {
+    auto [first, last] = numbers;
+    if (first > last)
+        return Error{std::to_string(first) + "-" + std::to_string(last) + ": the first frame comes after the last"};
+    if (frames.empty()) return Error{"the sequence has no frames"};
+    const int shotFirst = frames.front().frame, shotLast = frames.back().frame;
+    if (first < shotFirst || last > shotLast)
+        return Error{std::to_string(first) + "-" + std::to_string(last) + " reaches outside the sequence, whose frames are " +
+                     std::to_string(shotFirst) + "-" + std::to_string(shotLast)};
+    auto index = [&](int number) {
+        return static_cast<int>(std::lower_bound(frames.begin(), frames.end(), number,
+                                                 [](const SequenceFrame& f, int n) { return f.frame < n; }) -
+                                frames.begin());
+    };
+    return std::pair<int, int>(index(first), index(last));
+}
+
 }  // namespace rmfx

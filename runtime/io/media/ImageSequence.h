@@ -13,6 +13,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/Result.h"
@@ -48,5 +49,10 @@ std::string frameFileName(const std::string& pattern, int frame);
 // is not one of them. Errors name the pattern: a field error, no folder, no matching file, or a
 // gap in the numbering (naming the first missing file and how many frames are missing in all).
 Result<std::vector<SequenceFrame>> findSequenceFrames(const std::string& pattern);
+
+// The indices in `frames` (found by findSequenceFrames) of the frames numbered numbers.first to
+// numbers.second, both included. Errors: a range backwards, or reaching outside the frames found
+// (naming the frames there are).
+Result<std::pair<int, int>> selectFrameRange(const std::vector<SequenceFrame>& frames, std::pair<int, int> numbers);
 
 }  // namespace rmfx
