@@ -62,9 +62,9 @@ Image imageFromArray(const py::handle& object, const std::string& what) {
         fail(what + ": " + expected + ", or a path; got " + py::str(object.get_type().attr("__name__")).cast<std::string>(), what);
     py::array given = py::reinterpret_borrow<py::array>(object);
     const py::dtype dtype = given.dtype();
-    const bool f32 = dtype.is(py::dtype::of<float>());
-    const bool f16 = dtype.is(py::dtype("float16"));
-    const bool u8 = dtype.is(py::dtype::of<std::uint8_t>());
+    const bool f32 = dtype.equal(py::dtype::of<float>());
+    const bool f16 = dtype.equal(py::dtype("float16"));
+    const bool u8 = dtype.equal(py::dtype::of<std::uint8_t>());
     if (!(f32 || f16 || u8) || given.ndim() != 3 || (given.shape(2) != 3 && given.shape(2) != 4) || given.shape(0) < 1 ||
         given.shape(1) < 1)
         fail(what + ": " + expected + "; got " + describe(given), what);

@@ -68,7 +68,21 @@ void bindErrors(py::module_& m) {
         }, "the element, variable or argument it is about, where it names one")
         .def_readonly("message", &Diagnostic::message)
         .def("__str__", &Diagnostic::format)
-        .def("__repr__", [](const Diagnostic& d) { return "<rmfx.Diagnostic " + d.format() + ">"; });
+        .def("__repr__", [](const Diagnostic& d) { return "<rmfx.Diagnostic " + d.format() + ">"; })
+        // Picklable, so that an rmfx.Error raised in another process (a Dask worker) arrives whole.
+        .def(py::pickle(
+            [](const Diagnostic& d) {
+                return py::make_tuple(severityName(d.severity), d.where.file, d.where.line, d.element, d.message);
+            },
+            [](const py::tuple& t) {
+                if (t.size() != 5) fail("a pickled rmfx.Diagnostic of another version", "pickle");
+                Diagnostic d;
+                d.severity = t[0].cast<std::string>() == "error" ? Diagnostic::Severity::Error : Diagnostic::Severity::Warning;
+                d.where = {t[1].cast<std::string>(), t[2].cast<int>()};
+                d.element = t[3].cast<std::string>();
+                d.message = t[4].cast<std::string>();
+                return d;
+            }));
 
     errorType = PyErr_NewExceptionWithDoc(
         "rmfx.Error",
@@ -77,6 +91,10 @@ void bindErrors(py::module_& m) {
         PyExc_Exception, nullptr);
     if (!errorType) throw py::error_already_set();
     m.add_object("Error", py::reinterpret_borrow<py::object>(errorType));
+
+    // For the module's Python files (rmfx.dask): an rmfx.Error as the compiled code raises it.
+    m.def("_fail", [](const std::string& message, const std::string& element) { fail(message, element); }, py::arg("message"),
+          py::arg("element") = "");
 
     py::register_exception_translator([](std::exception_ptr p) {
         try {

@@ -32,8 +32,10 @@ FrameExplanationInput explanationWithoutFrame(const PreparedRun& run) {
 
 }  // namespace
 
-PyRenderer::PyRenderer(std::shared_ptr<PyWorkspace> ws, glm::ivec2 size, bool timing)
-    : ws_(std::move(ws)), size_(size), timing_(timing) {
+PyRenderer::PyRenderer(std::shared_ptr<PyWorkspace> ws, glm::ivec2 size, bool timing, double frameBudget)
+    : ws_(std::move(ws)), size_(size), timing_(timing), frameBudget_(frameBudget) {
+    if (!(frameBudget_ >= 0.0) || frameBudget_ > 86400.0)
+        fail("frame_budget: expected seconds from 0 (no limit) to 86400, got " + std::to_string(frameBudget_), "frame_budget");
     if (!ws_) fail("workspace: expected an rmfx.Workspace (rmfx.load), got None", "workspace");
     if (size_.x < 0 || size_.y < 0 || (size_.x == 0) != (size_.y == 0) || size_.x > 16384 || size_.y > 16384)
         fail("size: expected (width, height) from 1 to 16384 each, got (" + std::to_string(size_.x) + ", " +
@@ -121,7 +123,8 @@ void PyRenderer::build(const std::vector<Given>& given, const Plan& plan) {
     executor_->setTimingEnabled(timing_);
     plan_ = plan;
     valuesRevision_ = ws_->valuesRevision();
-    time_ = 0.0;
+    steps_.reset();
+    stepsBase_ = nextFrame_ = 0;
     inputFiles_.clear();
     for (const Given& g : given) inputFiles_[g.argument.name] = g.argument.text.substr(g.argument.name.size() + 1);
     warnings_ = std::move(warnings);
@@ -155,38 +158,80 @@ void PyRenderer::update(const std::vector<Given>& given) {
     }
 }
 
-py::array_t<float> PyRenderer::render(const py::dict& inputs, int frames, double dt, const std::string& target, bool check) {
-    if (frames < 1 || frames > 100000) fail("frames: expected 1 to 100000, got " + std::to_string(frames), "frames");
-    if (!(dt >= 0.0) || dt > 3600.0) fail("dt: expected seconds from 0 to 3600, got " + std::to_string(dt), "dt");
+PyRenderer::Plan PyRenderer::planFor(const std::vector<Given>& given, const std::string& target, bool check) const {
     Plan plan;
     plan.target = target.empty() ? ws_->ws().outputTargetName() : target;
     if (!ws_->ws().canReadTarget(plan.target))
         fail("target " + plan.target + ": the workspace has no such target (" + ws_->ws().describeTargets() + ")", "target");
     plan.check = check;
     plan.effectsRevision = ws_->effectsRevision();
-    std::vector<Given> given = readInputs(inputs);
     for (const Given& g : given) plan.inputs.emplace_back(g.argument.name, glm::ivec2(g.argument.image->width, g.argument.image->height));
     std::sort(plan.inputs.begin(), plan.inputs.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    return plan;
+}
 
-    if (executor_ && plan_ && *plan_ == plan) update(given);
-    else build(given, plan);
-
-    // Frame i of a run at time i·dt with deltaTime dt, as run/HeadlessRun runs rmfx render's frames.
+void PyRenderer::stepAt(double dt) {
     const float step = static_cast<float>(dt);
-    for (int i = 0; i < frames; ++i) {
-        Result<void> frame = executor_->renderFrame({static_cast<float>(time_), step});
-        Diagnostics d = frame.takeDiagnostics();
-        if (hasErrors(d)) fail(std::move(d));
-        append(warnings_, std::move(d));
-        time_ += double(step);
-    }
-    Result<Image> image = executor_->readTarget(plan.target);
-    if (!image) fail("target " + plan.target + ": " + image.error(), "target");
+    if (steps_ && steps_->dt() == step) return;
+    // Frame i of a run at time i·dt, as run/FrameStepper steps rmfx render's frames; after a
+    // change of dt, time goes on from the next frame's.
+    const float origin = steps_ ? steps_->time(nextFrame_ - stepsBase_) : 0.0f;
+    stepsBase_ = steps_ ? nextFrame_ : 0;
+    steps_.emplace(step, frameBudget_, std::function<void(const std::string&)>{}, origin);
+}
+
+void PyRenderer::renderNextFrame() {
+    const std::string label = "frame " + std::to_string(executor_->frameIndex() + 1) + " of " + ws_->ws().path.string();
+    Result<void> frame = steps_->step(*executor_, nextFrame_ - stepsBase_, label);
+    Diagnostics d = frame.takeDiagnostics();
+    if (hasErrors(d)) fail(std::move(d));
+    append(warnings_, std::move(d));
+    ++nextFrame_;
+}
+
+py::array_t<float> PyRenderer::readBack(const std::string& target, bool check) {
+    Result<Image> image = executor_->readTarget(target);
+    if (!image) fail("target " + target + ": " + image.error(), "target");
     // The read back waited for the last frame, so its timer queries have all arrived.
     timings_ = timing_ ? executor_->passTimings() : std::vector<PassTiming>{};
     frameMilliseconds_ = timing_ ? executor_->frameGpuMilliseconds() : 0.0;
     findings_ = check ? executor_->firstHealthFindings() : std::vector<HealthFinding>{};
     return arrayFromImage(*image);
+}
+
+py::array_t<float> PyRenderer::render(const py::dict& inputs, int frames, double dt, const std::string& target, bool check) {
+    if (frames < 1 || frames > 100000) fail("frames: expected 1 to 100000, got " + std::to_string(frames), "frames");
+    if (!(dt >= 0.0) || dt > 3600.0) fail("dt: expected seconds from 0 to 3600, got " + std::to_string(dt), "dt");
+    std::vector<Given> given = readInputs(inputs);
+    const Plan plan = planFor(given, target, check);
+    if (executor_ && plan_ && *plan_ == plan) update(given);
+    else build(given, plan);
+    stepAt(dt);
+    for (int i = 0; i < frames; ++i) renderNextFrame();
+    return readBack(plan.target, check);
+}
+
+void PyRenderer::beginSequence(const py::dict& inputs, const std::string& target, double dt, int first, int preroll) {
+    if (!(dt >= 0.0) || dt > 3600.0) fail("dt: expected seconds from 0 to 3600, got " + std::to_string(dt), "dt");
+    if (first < 0 || first > 10000000) fail("start: expected a frame index from 0, got " + std::to_string(first), "start");
+    if (preroll < 0 || preroll > 100000) fail("preroll: expected 0 to 100000 frames, got " + std::to_string(preroll), "preroll");
+    std::vector<Given> given = readInputs(inputs);
+    build(given, planFor(given, target, false));  // a sequence starts from the workspace's initial state
+    stepAt(dt);
+    nextFrame_ = first - preroll;
+    for (int p = 0; p < preroll; ++p) renderNextFrame();
+}
+
+py::object PyRenderer::stepSequence(const py::dict& inputs, bool read) {
+    if (!executor_ || !plan_) fail("the sequence's run was reset; start the sequence again", "sequence");
+    const std::vector<Given> given = readInputs(inputs);
+    for (const Given& g : given)
+        if (std::none_of(plan_->inputs.begin(), plan_->inputs.end(), [&](const auto& i) { return i.first == g.argument.name; }))
+            fail("input '" + g.argument.name + "' was not given to the sequence's first frame", "input " + g.argument.name);
+    update(given);
+    renderNextFrame();
+    if (!read) return py::none();
+    return readBack(plan_->target, false);
 }
 
 std::string PyRenderer::explain() {
@@ -213,7 +258,8 @@ void PyRenderer::reset() {
     makeCurrent();
     executor_.reset();
     plan_.reset();
-    time_ = 0.0;
+    steps_.reset();
+    stepsBase_ = nextFrame_ = 0;
 }
 
 std::vector<std::string> PyRenderer::passesRun() const {
@@ -252,12 +298,15 @@ void bindRenderer(py::module_& m) {
         .def("__repr__", [](const HealthFinding& f) { return "<rmfx.HealthFinding " + describeFinding(f) + ">"; });
 
     py::class_<PyRenderer>(m, "Renderer",
-        "Renderer(workspace, size=None, timing=False): renders a workspace headless, keeping its GL context and "
-        "executor between calls (see render()).")
-        .def(py::init([](std::shared_ptr<PyWorkspace> ws, std::optional<std::pair<int, int>> size, bool timing) {
-                 return std::make_unique<PyRenderer>(std::move(ws), sizeOf(size), timing);
+        "Renderer(workspace, size=None, timing=False, frame_budget=0): renders a workspace headless, keeping its GL "
+        "context and executor between calls (see render()). frame_budget: seconds a frame may take, GPU work included, "
+        "as rmfx render --frame-budget: a frame past it ends the process with exit status 3 (a shader stuck in the "
+        "driver cannot be interrupted otherwise); 0, the default: no limit.")
+        .def(py::init([](std::shared_ptr<PyWorkspace> ws, std::optional<std::pair<int, int>> size, bool timing, double budget) {
+                 return std::make_unique<PyRenderer>(std::move(ws), sizeOf(size), timing, budget);
              }),
-             py::arg("workspace"), py::kw_only(), py::arg("size") = py::none(), py::arg("timing") = false)
+             py::arg("workspace"), py::kw_only(), py::arg("size") = py::none(), py::arg("timing") = false,
+             py::arg("frame_budget") = 0.0)
         .def("render", &PyRenderer::render, py::kw_only(), py::arg("inputs") = py::dict(), py::arg("frames") = 1,
              py::arg("dt") = double(1.0f / 60.0f), py::arg("target") = "", py::arg("check") = false,
              "render(*, inputs={}, frames=1, dt=1/60, target='', check=False) -> numpy.ndarray\n\n"
@@ -285,10 +334,10 @@ void bindRenderer(py::module_& m) {
 
     // ws.renderer(size=…, timing=…): the same as rmfx.Renderer(ws, …).
     py::reinterpret_borrow<py::class_<PyWorkspace, std::shared_ptr<PyWorkspace>>>(m.attr("Workspace"))
-        .def("renderer", [](std::shared_ptr<PyWorkspace> ws, std::optional<std::pair<int, int>> size, bool timing) {
-            return std::make_unique<PyRenderer>(std::move(ws), sizeOf(size), timing);
-        }, py::arg("size") = py::none(), py::kw_only(), py::arg("timing") = false,
-        "renderer(size=None, *, timing=False) -> Renderer: rmfx.Renderer(ws, size=size, timing=timing)");
+        .def("renderer", [](std::shared_ptr<PyWorkspace> ws, std::optional<std::pair<int, int>> size, bool timing, double budget) {
+            return std::make_unique<PyRenderer>(std::move(ws), sizeOf(size), timing, budget);
+        }, py::arg("size") = py::none(), py::kw_only(), py::arg("timing") = false, py::arg("frame_budget") = 0.0,
+        "renderer(size=None, *, timing=False, frame_budget=0) -> Renderer: rmfx.Renderer(ws, size=size, …)");
 }
 
 }  // namespace rmfx::python

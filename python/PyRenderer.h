@@ -20,6 +20,7 @@
 
 #include "gl/GlContext.h"
 #include "gl/GlExecutor.h"
+#include "run/FrameStepper.h"
 #include "python/PyWorkspace.h"
 
 namespace rmfx::python {
@@ -27,8 +28,9 @@ namespace rmfx::python {
 class PyRenderer {
 public:
     // size: (0, 0) renders as rmfx render without --size (the first scene image's size, else the
-    // workspace's). timing: per-pass GPU timers on (a little slower).
-    PyRenderer(std::shared_ptr<PyWorkspace> ws, glm::ivec2 size, bool timing);
+    // workspace's). timing: per-pass GPU timers on (a little slower). frameBudget: seconds a frame
+    // may take, as rmfx render --frame-budget (past it the process ends with status 3); 0: none.
+    PyRenderer(std::shared_ptr<PyWorkspace> ws, glm::ivec2 size, bool timing, double frameBudget = 0.0);
     ~PyRenderer();
     PyRenderer(const PyRenderer&) = delete;
     PyRenderer& operator=(const PyRenderer&) = delete;
@@ -38,12 +40,20 @@ public:
     std::string explain();
     void reset();  // the next render compiles anew and starts at time 0
 
+    // A sequence (python/PySequence.h), as rmfx render runs one: a fresh run built for these
+    // inputs and target, whose frame `first` of the shot comes at time first·dt, after `preroll`
+    // frames of these images at the times before it (run/SequenceChunk.h).
+    void beginSequence(const pybind11::dict& inputs, const std::string& target, double dt, int first, int preroll);
+    // The sequence's next frame with these images; the target read back when `read`, else None.
+    pybind11::object stepSequence(const pybind11::dict& inputs, bool read);
+
+    const PyWorkspace& workspace() const { return *ws_; }
     const std::vector<PassTiming>& timings() const { return timings_; }
     double frameMilliseconds() const { return frameMilliseconds_; }
     const std::vector<HealthFinding>& findings() const { return findings_; }
     const Diagnostics& warnings() const { return warnings_; }
     int frame() const { return executor_ ? executor_->frameIndex() : 0; }
-    double time() const { return time_; }
+    double time() const { return steps_ ? steps_->time(nextFrame_ - stepsBase_) : 0.0; }
     glm::ivec2 viewport() const { return executor_ ? executor_->viewport() : glm::ivec2(0); }
     std::vector<std::string> passesRun() const;
 
@@ -61,8 +71,13 @@ private:
         const ImageInput* input = nullptr;
     };
     std::vector<Given> readInputs(const pybind11::dict& inputs) const;
+    Plan planFor(const std::vector<Given>& given, const std::string& target, bool check) const;
     void build(const std::vector<Given>& given, const Plan& plan);
     void update(const std::vector<Given>& given);
+    // Frames continue at step dt: a new step continues time from where the last one left it.
+    void stepAt(double dt);
+    void renderNextFrame();
+    pybind11::array_t<float> readBack(const std::string& target, bool check);
     void makeCurrent();
 
     std::shared_ptr<PyWorkspace> ws_;
@@ -73,7 +88,10 @@ private:
     std::optional<Plan> plan_;
     std::uint64_t valuesRevision_ = 0;
     std::map<std::string, std::string> inputFiles_;  // for explain(): what each input was given
-    double time_ = 0.0;
+    double frameBudget_ = 0.0;
+    std::optional<FrameStepper> steps_;  // none: no frame since the run was built
+    long stepsBase_ = 0;                 // the frame steps_ counts its indices from
+    long nextFrame_ = 0;                 // the index (in the run's timeline) of the next frame
     std::vector<PassTiming> timings_;
     double frameMilliseconds_ = 0.0;
     std::vector<HealthFinding> findings_;

@@ -1,6 +1,7 @@
 #include "python/PyWorkspace.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <memory>
 #include <utility>
 
@@ -181,7 +182,26 @@ void bindWorkspace(py::module_& m) {
         .def_property_readonly("output", [](const PyWorkspace& w) { return w.ws().outputTargetName(); },
                                "the target rendered when render() names none")
         .def_property_readonly("warnings", [](const PyWorkspace& w) { return w.warnings(); })
-        .def("__repr__", [](const PyWorkspace& w) { return "<rmfx.Workspace " + w.ws().path.string() + ">"; });
+        .def("__repr__", [](const PyWorkspace& w) { return "<rmfx.Workspace " + w.ws().path.string() + ">"; })
+        // Pickled as how it was loaded and what was set since (for Dask and multiprocessing): the
+        // other process loads the file again, so it must reach the same path.
+        .def(py::pickle(
+            [](const PyWorkspace& w) {
+                const RunRequest& r = w.request();
+                std::vector<std::string> media;
+                for (const auto& folder : r.load.media.searchPath) media.push_back(std::filesystem::absolute(folder).string());
+                return py::make_tuple(r.workspace ? std::filesystem::absolute(*r.workspace).string() : std::string(), media,
+                                      r.load.media.missing == MissingMedia::Placeholder ? "placeholder" : "error", r.load.effect,
+                                      r.overrides, w.effects() ? py::cast(*w.effects()) : py::object(py::none()));
+            },
+            [](const py::tuple& state) {
+                if (state.size() != 6) fail("a pickled rmfx.Workspace of another version", "pickle");
+                auto w = std::make_shared<PyWorkspace>(
+                    state[0].cast<std::string>(), state[1].cast<std::vector<std::string>>(), state[2].cast<std::string>(),
+                    state[3].cast<std::string>(), state[4].cast<std::vector<std::pair<std::string, std::string>>>());
+                if (!state[5].is_none()) w->selectEffects(state[5].cast<std::vector<std::string>>());
+                return w;
+            }));
 
     m.def("load", [](const py::object& path, const std::vector<py::object>& media, const std::string& missingMedia,
                      const std::string& effect, const py::kwargs& overrides) {

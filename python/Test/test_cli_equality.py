@@ -11,26 +11,11 @@ import pytest
 import rmfx
 from conftest import SOURCE_DIR
 
-oiio = pytest.importorskip("OpenImageIO", reason="python3-openimageio reads the command's EXR (scripts/setup.sh)")
+pytest.importorskip("OpenImageIO", reason="python3-openimageio reads the command's EXR (scripts/setup.sh)")
+from images import assert_bit_equal, read_exr, write_exr  # noqa: E402
 
 WORKSPACES = sorted((SOURCE_DIR / "effects").glob("*.xml")) + sorted((SOURCE_DIR / "effects" / "variants").glob("*.xml"))
 SIZE = (64, 64)
-
-
-def read_exr(path):
-    image = oiio.ImageInput.open(str(path))
-    assert image, oiio.geterror()
-    pixels = image.read_image("float")
-    image.close()
-    return np.asarray(pixels, dtype=np.float32)
-
-
-def write_exr(path, array):
-    out = oiio.ImageOutput.create(str(path))
-    spec = oiio.ImageSpec(array.shape[1], array.shape[0], array.shape[2], "float")
-    assert out.open(str(path), spec), oiio.geterror()
-    assert out.write_image(array)
-    out.close()
 
 
 def cli_render(rmfx_binary, workspace, out, *args):
@@ -38,12 +23,6 @@ def cli_render(rmfx_binary, workspace, out, *args):
     done = subprocess.run(command, capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, f"{' '.join(command)}\n{done.stderr}"
     return read_exr(out)
-
-
-def assert_bit_equal(module, cli):
-    assert module.dtype == np.float32 and module.shape == cli.shape, (module.shape, cli.shape)
-    differ = module.view(np.uint32) != cli.view(np.uint32)
-    assert not differ.any(), f"{int(differ.sum())} channels differ, the first at {np.argwhere(differ)[0].tolist()}"
 
 
 def test_every_effect_is_covered():

@@ -1,5 +1,6 @@
 """The module's own behaviour: orientation, values and their maths, reading a workspace, errors."""
 import gc
+import pickle
 
 import numpy as np
 import pytest
@@ -55,6 +56,11 @@ def test_input_types():
     np.testing.assert_array_equal(renderer.render(inputs={"scene": scene.astype(np.float16)}), exact)
     np.testing.assert_array_equal(renderer.render(inputs={"scene": scene[..., :3].copy()}), exact)  # alpha 1
     np.testing.assert_array_equal(renderer.render(inputs={"scene": np.asfortranarray(scene)}), exact)
+    # An array that crossed a process (Dask, multiprocessing) has a dtype equal to float32 but not the same object.
+    np.testing.assert_array_equal(renderer.render(inputs={"scene": pickle.loads(pickle.dumps(scene))}), exact)
+    np.testing.assert_array_equal(renderer.render(inputs={"scene": scene.astype("<f4")}), exact)
+    with pytest.raises(rmfx.Error):
+        renderer.render(inputs={"scene": scene.astype(">f4")})  # big-endian: not what the GPU takes
     # uint8 is sRGB: 255 is 1, 0 is 0, 188 is 0.50289 linear, which the 8-bit texture an 8-bit image
     # goes into (as rmfx render puts an 8-bit PNG) holds as 128 / 255; the rgba16f output as a half.
     srgb = np.zeros((16, 8, 3), np.uint8)
