@@ -1,10 +1,12 @@
 // import rmfx: the runtime as a Python module (docs/python.md). One concept a file: Errors
-// (rmfx.Error, rmfx.Diagnostic), Values, Arrays, PyWorkspace (rmfx.load), PyRenderer, PySequence.
+// (rmfx.Error, rmfx.Diagnostic), Values, Arrays, PyWorkspace (rmfx.load), PyRenderer,
+// PySequence, PyReplay.
 
 #include <pybind11/pybind11.h>
 
 #include "python/Errors.h"
 #include "python/PyRenderer.h"
+#include "python/PyReplay.h"
 #include "python/PySequence.h"
 #include "python/PyWorkspace.h"
 
@@ -17,4 +19,5 @@ PYBIND11_MODULE(_rmfx, m) {
     rmfx::python::bindWorkspace(m);
     rmfx::python::bindRenderer(m);
     rmfx::python::bindSequence(m);
+    rmfx::python::bindReplay(m);
 }
