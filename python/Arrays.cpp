@@ -107,4 +107,28 @@ py::array_t<float> arrayFromImage(const Image& image) {
     return array;
 }
 
+py::array targetArray(const Image& image, TargetFormat format) {
+    py::array_t<float> floats = arrayFromImage(image);
+    py::module_ np = py::module_::import("numpy");
+    auto normalised = [&](double largest, const char* type) {
+        return py::array(np.attr("rint")(np.attr("multiply")(floats, largest)).attr("astype")(type));
+    };
+    switch (format) {
+        case TargetFormat::RGBA8:
+        case TargetFormat::R8:
+        case TargetFormat::RG8: return normalised(255.0, "uint8");
+        case TargetFormat::RGBA16:
+        case TargetFormat::RG16: return normalised(65535.0, "uint16");
+        case TargetFormat::RGBA16F:
+        case TargetFormat::R16F:
+        case TargetFormat::RG16F: return py::array(floats.attr("astype")("float16"));
+        case TargetFormat::RGBA32F:
+        case TargetFormat::R32F:
+        case TargetFormat::RG32F:
+        case TargetFormat::R11G11B10F:
+        case TargetFormat::RGB10A2: break;
+    }
+    return floats;
+}
+
 }  // namespace rmfx::python

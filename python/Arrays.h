@@ -8,6 +8,7 @@
 #include <pybind11/pybind11.h>
 
 #include "model/Image.h"
+#include "model/Workspace.h"
 
 namespace rmfx::python {
 
@@ -19,5 +20,9 @@ Image imageFromArray(const pybind11::handle& array, const std::string& what);
 
 // A float32 array of shape (height, width, channels): a copy of the image's pixels.
 pybind11::array_t<float> arrayFromImage(const Image& image);
+
+// A target read back (float, exact in its format) in the type the format stores: uint8 (8-bit
+// unsigned normalised), uint16 (16-bit), float16 (half floats); float32 for the rest.
+pybind11::array targetArray(const Image& image, TargetFormat format);
 
 }  // namespace rmfx::python

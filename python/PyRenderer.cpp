@@ -18,6 +18,11 @@ namespace rmfx::python {
 
 namespace {
 
+void checkDtype(const std::string& dtype) {
+    if (dtype != "float32" && dtype != "target")
+        fail("dtype: expected 'float32' or 'target' (the target's own type), got '" + dtype + "'", "dtype");
+}
+
 void append(Diagnostics& to, Diagnostics from) { to.insert(to.end(), from.begin(), from.end()); }
 
 bool isPath(const py::handle& value) {
@@ -189,17 +194,20 @@ void PyRenderer::renderNextFrame() {
     ++nextFrame_;
 }
 
-py::array_t<float> PyRenderer::readBack(const std::string& target, bool check) {
+py::array PyRenderer::readBack(const std::string& target, bool check, const std::string& dtype) {
     Result<Image> image = executor_->readTarget(target);
     if (!image) fail("target " + target + ": " + image.error(), "target");
     // The read back waited for the last frame, so its timer queries have all arrived.
     timings_ = timing_ ? executor_->passTimings() : std::vector<PassTiming>{};
     frameMilliseconds_ = timing_ ? executor_->frameGpuMilliseconds() : 0.0;
     findings_ = check ? executor_->firstHealthFindings() : std::vector<HealthFinding>{};
+    if (dtype == "target") return targetArray(*image, executor_->targetFormat(target));
     return arrayFromImage(*image);
 }
 
-py::array_t<float> PyRenderer::render(const py::dict& inputs, int frames, double dt, const std::string& target, bool check) {
+py::array PyRenderer::render(const py::dict& inputs, int frames, double dt, const std::string& target, bool check,
+                             const std::string& dtype) {
+    checkDtype(dtype);
     if (frames < 1 || frames > 100000) fail("frames: expected 1 to 100000, got " + std::to_string(frames), "frames");
     if (!(dt >= 0.0) || dt > 3600.0) fail("dt: expected seconds from 0 to 3600, got " + std::to_string(dt), "dt");
     std::vector<Given> given = readInputs(inputs);
@@ -208,7 +216,7 @@ py::array_t<float> PyRenderer::render(const py::dict& inputs, int frames, double
     else build(given, plan);
     stepAt(dt);
     for (int i = 0; i < frames; ++i) renderNextFrame();
-    return readBack(plan.target, check);
+    return readBack(plan.target, check, dtype);
 }
 
 void PyRenderer::beginSequence(const py::dict& inputs, const std::string& target, double dt, int first, int preroll) {
@@ -222,7 +230,7 @@ void PyRenderer::beginSequence(const py::dict& inputs, const std::string& target
     for (int p = 0; p < preroll; ++p) renderNextFrame();
 }
 
-py::object PyRenderer::stepSequence(const py::dict& inputs, bool read) {
+py::object PyRenderer::stepSequence(const py::dict& inputs, bool read, const std::string& dtype) {
     if (!executor_ || !plan_) fail("the sequence's run was reset; start the sequence again", "sequence");
     const std::vector<Given> given = readInputs(inputs);
     for (const Given& g : given)
@@ -231,7 +239,7 @@ py::object PyRenderer::stepSequence(const py::dict& inputs, bool read) {
     update(given);
     renderNextFrame();
     if (!read) return py::none();
-    return readBack(plan_->target, false);
+    return readBack(plan_->target, false, dtype);
 }
 
 std::string PyRenderer::explain() {
@@ -308,8 +316,8 @@ void bindRenderer(py::module_& m) {
              py::arg("workspace"), py::kw_only(), py::arg("size") = py::none(), py::arg("timing") = false,
              py::arg("frame_budget") = 0.0)
         .def("render", &PyRenderer::render, py::kw_only(), py::arg("inputs") = py::dict(), py::arg("frames") = 1,
-             py::arg("dt") = double(1.0f / 60.0f), py::arg("target") = "", py::arg("check") = false,
-             "render(*, inputs={}, frames=1, dt=1/60, target='', check=False) -> numpy.ndarray\n\n"
+             py::arg("dt") = double(1.0f / 60.0f), py::arg("target") = "", py::arg("check") = false, py::arg("dtype") = "float32",
+             "render(*, inputs={}, frames=1, dt=1/60, target='', check=False, dtype='float32') -> numpy.ndarray\n\n"
              "Runs `frames` frames, dt seconds apart, and returns the target ('' the workspace's output) as a float32 "
              "array of shape (height, width, 4): linear RGBA, ROW 0 AT THE TOP of the image (as image files and NumPy's "
              "image libraries have it; OpenGL's own rows start at the bottom). The same pixels as `rmfx render --frames N "
@@ -320,7 +328,11 @@ void bindRenderer(py::module_& m) {
              "The executor is kept: a call with the same inputs given (at the same sizes), target, check and effects "
              "goes on from the last one's frames and time (state carried across calls: feedback targets, adaptation); "
              "new variable values and input images apply from this call. Anything else compiles the run anew and "
-             "starts at time 0, as does reset(). check=True: inspect what each pass wrote (findings).")
+             "starts at time 0, as does reset(). check=True: inspect what each pass wrote (findings).\n\n"
+             "dtype='target': the target's own type instead of float32: uint8 for 8-bit formats (rgba8, r8, rg8: the "
+             "stored byte), uint16 for 16-bit integer ones (rgba16, rg16), float16 for half-float ones; float32 for the "
+             "others (32-bit floats, r11g11b10f, rgb10a2, which NumPy has no type for). Single-channel targets have "
+             "shape (height, width, 1).")
         .def("explain", &PyRenderer::explain, "The plan: what rmfx render --explain prints (after a render, of that run).")
         .def("reset", &PyRenderer::reset, "Drops the executor: the next render compiles anew and starts at time 0.")
         .def_property_readonly("timings", &PyRenderer::timings, "per-pass GPU times of the last frame (Renderer(timing=True))")

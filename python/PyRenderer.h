@@ -36,7 +36,9 @@ public:
     PyRenderer& operator=(const PyRenderer&) = delete;
 
     // Runs `frames` frames of dt seconds and reads `target` ("" the workspace's output) back.
-    pybind11::array_t<float> render(const pybind11::dict& inputs, int frames, double dt, const std::string& target, bool check);
+    // dtype "float32", or "target": the target's own storage type (targetArray).
+    pybind11::array render(const pybind11::dict& inputs, int frames, double dt, const std::string& target, bool check,
+                           const std::string& dtype = "float32");
     std::string explain();
     void reset();  // the next render compiles anew and starts at time 0
 
@@ -45,7 +47,7 @@ public:
     // frames of these images at the times before it (run/SequenceChunk.h).
     void beginSequence(const pybind11::dict& inputs, const std::string& target, double dt, int first, int preroll);
     // The sequence's next frame with these images; the target read back when `read`, else None.
-    pybind11::object stepSequence(const pybind11::dict& inputs, bool read);
+    pybind11::object stepSequence(const pybind11::dict& inputs, bool read, const std::string& dtype = "float32");
 
     const PyWorkspace& workspace() const { return *ws_; }
     const std::vector<PassTiming>& timings() const { return timings_; }
@@ -77,7 +79,7 @@ private:
     // Frames continue at step dt: a new step continues time from where the last one left it.
     void stepAt(double dt);
     void renderNextFrame();
-    pybind11::array_t<float> readBack(const std::string& target, bool check);
+    pybind11::array readBack(const std::string& target, bool check, const std::string& dtype);
     void makeCurrent();
 
     std::shared_ptr<PyWorkspace> ws_;

@@ -51,7 +51,7 @@ py::object PySequence::next() {
         }
         const bool warmUp = items_ < options_.skip;
         ++items_;
-        py::object image = r.stepSequence(given, !warmUp);
+        py::object image = r.stepSequence(given, !warmUp, options_.dtype);
         if (!warmUp) return image;
     }
 }
@@ -82,7 +82,10 @@ void bindSequence(py::module_& m) {
 
     py::reinterpret_borrow<py::class_<PyRenderer>>(m.attr("Renderer"))
         .def("sequence", [](py::object self, py::iterable frames, std::optional<std::string> input, std::optional<py::dict> inputs,
-                            std::optional<double> dt, std::optional<double> fps, int preroll, int start, int skip, const std::string& target) {
+                            std::optional<double> dt, std::optional<double> fps, int preroll, int start, int skip, const std::string& target,
+                            const std::string& dtype) {
+            if (dtype != "float32" && dtype != "target")
+                fail("dtype: expected 'float32' or 'target' (the target's own type), got '" + dtype + "'", "dtype");
             if (dt && fps) fail("dt and fps both set a sequence's time step (dt = 1 / fps): give one", "fps");
             if (fps && (!(*fps > 0.0) || *fps > 10000.0))
                 fail("fps: expected frames per second above 0, got " + std::to_string(*fps), "fps");
@@ -94,11 +97,13 @@ void bindSequence(py::module_& m) {
             o.start = start;
             o.skip = skip;
             o.target = target;
+            o.dtype = dtype;
             return PySequence(std::move(self), std::move(frames), std::move(o));
         }, py::arg("frames"), py::kw_only(), py::arg("input") = py::none(), py::arg("inputs") = py::none(),
         py::arg("dt") = py::none(), py::arg("fps") = py::none(), py::arg("preroll") = 0, py::arg("start") = 0, py::arg("skip") = 0,
-        py::arg("target") = "",
-        "sequence(frames, *, input=None, inputs=None, dt=None, fps=None, preroll=0, start=0, skip=0, target='') -> iterator\n\n"
+        py::arg("target") = "", py::arg("dtype") = "float32",
+        "sequence(frames, *, input=None, inputs=None, dt=None, fps=None, preroll=0, start=0, skip=0, target='', "
+        "dtype='float32') -> iterator\n\n"
         "Renders a shot as rmfx render --input shot.%04d.exr does, one float32 (height, width, 4) array per item of "
         "`frames` (arrays or paths, as render's inputs take them), lazily: frame k at time k·dt (dt = 1 / fps, fps 24 unless given), "
         "frame=\"previous\" targets and light adaptation carried from frame to frame. The run starts anew from the "

@@ -19,6 +19,7 @@ struct SequenceOptions {
     int preroll = 0;  // frames of the first item before it
     int skip = 0;     // items rendered as warm-up, not yielded
     std::string target;
+    std::string dtype = "float32";  // or "target" (Renderer.render's dtype)
 };
 
 class PySequence {

@@ -179,3 +179,47 @@ def test_renderers_share_a_thread_and_die_in_any_order():
     del a
     gc.collect()
     np.testing.assert_array_equal(b.render(inputs={"scene": scene}), out_b)
+
+
+FORMATS = """<?xml version="1.0"?>
+<workspace version="1" name="formats" size="3x2">
+  <target name="bytes" format="rgba8"/>
+  <target name="shorts" format="rgba16"/>
+  <target name="halves" format="r16f"/>
+  <target name="floats" format="rgba32f"/>
+  {passes}
+  <output target="floats" transform="none"/>
+</workspace>
+"""
+PASS = """<pass name="{t}" target="{t}"><shader stage="fragment"><![CDATA[
+out vec4 c;
+// Row 0 of the image (the top) is 0.2 in red, the bottom row 0.8; green 0.6, blue 1, alpha 0.
+void main() {{ c = vec4(gl_FragCoord.y < 1.0 ? 0.8 : 0.2, 0.6, 1.0, 0.0); }}
+]]></shader></pass>"""
+
+
+def test_dtype_target_gives_the_targets_own_type(tmp_path):
+    path = tmp_path / "formats.xml"
+    path.write_text(FORMATS.format(passes="\n  ".join(PASS.format(t=t) for t in ("bytes", "shorts", "halves", "floats"))))
+    renderer = rmfx.load(path).renderer()
+    expected = np.array([[0.2, 0.6, 1.0, 0.0]] * 3 + [[0.8, 0.6, 1.0, 0.0]] * 3).reshape(2, 3, 4)
+    as_bytes = renderer.render(target="bytes", dtype="target")
+    assert as_bytes.dtype == np.uint8 and as_bytes.shape == (2, 3, 4)
+    np.testing.assert_array_equal(as_bytes, np.rint(expected * 255).astype(np.uint8))  # 51, 153, 255, 0 over 204, …
+    shorts = renderer.render(target="shorts", dtype="target")
+    assert shorts.dtype == np.uint16
+    np.testing.assert_array_equal(shorts, np.rint(expected * 65535).astype(np.uint16))
+    halves = renderer.render(target="halves", dtype="target")
+    assert halves.dtype == np.float16 and halves.shape == (2, 3, 1)
+    np.testing.assert_array_equal(halves[..., 0], expected[..., 0].astype(np.float16))
+    floats = renderer.render(target="floats", dtype="target")
+    assert floats.dtype == np.float32
+    np.testing.assert_array_equal(floats, expected.astype(np.float32))
+    # As float32: byte / 255 (as the driver divides: to within an ulp).
+    np.testing.assert_allclose(renderer.render(target="bytes"), np.rint(expected * 255) / 255, rtol=2e-7, atol=0)
+    with pytest.raises(rmfx.Error) as e:
+        renderer.render(dtype="int8")
+    assert e.value.element == "dtype"
+    frames = list(rmfx.load(SHADER_1).renderer().sequence([gradient()] * 2, dtype="target"))
+    assert frames[1].dtype == np.float16  # shader_1's output is rgba16f
+    np.testing.assert_array_equal(frames[1][..., :3], (gradient()[..., :3] * 0.5).astype(np.float16))
