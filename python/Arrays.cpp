@@ -101,10 +101,37 @@ Image imageFromArray(const py::handle& object, const std::string& what) {
     return image;
 }
 
+std::optional<GlExecutor::InputPixels> directPixels(const py::handle& object) {
+    if (!py::isinstance<py::array>(object)) return std::nullopt;
+    py::array a = py::reinterpret_borrow<py::array>(object);
+    const bool f32 = a.dtype().equal(py::dtype::of<float>()), f16 = a.dtype().equal(py::dtype("float16"));
+    if (!(f32 || f16) || a.ndim() != 3 || a.shape(2) != 4 || a.shape(0) < 1 || a.shape(1) < 1 || a.shape(0) > 16384 ||
+        a.shape(1) > 16384)
+        return std::nullopt;
+    const py::ssize_t item = f32 ? 4 : 2;
+    if (a.strides(2) != item || (a.shape(1) > 1 && a.strides(1) != 4 * item) || a.strides(0) < a.shape(1) * 4 * item)
+        return std::nullopt;
+    GlExecutor::InputPixels pixels;
+    pixels.data = a.data();
+    pixels.width = int(a.shape(1));
+    pixels.height = int(a.shape(0));
+    pixels.half = f16;
+    pixels.rowBytes = std::size_t(a.strides(0));
+    return pixels;
+}
+
 py::array_t<float> arrayFromImage(const Image& image) {
     py::array_t<float> array({py::ssize_t(image.height), py::ssize_t(image.width), py::ssize_t(image.channels)});
     std::memcpy(array.mutable_data(), image.pixels.data(), image.pixels.size() * sizeof(float));
     return array;
+}
+
+py::array_t<float> arrayFromImage(Image&& image) {
+    // The array owns the image's pixels: no copy.
+    auto* pixels = new std::vector<float>(std::move(image.pixels));
+    py::capsule owner(pixels, [](void* p) { delete static_cast<std::vector<float>*>(p); });
+    return py::array_t<float>({py::ssize_t(image.height), py::ssize_t(image.width), py::ssize_t(image.channels)},
+                              pixels->data(), owner);
 }
 
 py::array targetArray(const Image& image, TargetFormat format) {

@@ -1,6 +1,7 @@
 #include "python/PyRenderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <utility>
 
 #include <pybind11/stl.h>
@@ -83,21 +84,35 @@ std::vector<PyRenderer::Given> PyRenderer::readInputs(const py::dict& inputs) co
             if (!read) fail({{Diagnostic::Severity::Error, {ws_->ws().path.string(), 0}, "input " + g.argument.text, read.error()}});
             g.argument.image = std::make_shared<const Image>(std::move(read->image));
         } else {
-            g.argument.image = std::make_shared<const Image>(imageFromArray(value, "input '" + g.argument.name + "'"));
+            g.direct = directPixels(value);
+            g.array = py::reinterpret_borrow<py::object>(value);
+            if (!g.direct)
+                g.argument.image = std::make_shared<const Image>(imageFromArray(value, "input '" + g.argument.name + "'"));
             g.argument.file = "array";
-            g.argument.text = g.argument.name + "=<array " + std::to_string(g.argument.image->width) + "x" +
-                              std::to_string(g.argument.image->height) + ">";
         }
+        g.size = g.argument.image ? glm::ivec2(g.argument.image->width, g.argument.image->height)
+                                  : glm::ivec2(g.direct->width, g.direct->height);
+        if (g.argument.file == "array")
+            g.argument.text = g.argument.name + "=<array " + std::to_string(g.size.x) + "x" + std::to_string(g.size.y) + ">";
         given.push_back(std::move(g));
     }
     return given;
 }
 
+const std::shared_ptr<const Image>& PyRenderer::imageOf(Given& g) {
+    if (!g.argument.image)
+        g.argument.image = std::make_shared<const Image>(imageFromArray(g.array, "input '" + g.argument.name + "'"));
+    return g.argument.image;
+}
+
 // The run compiled anew, as rmfx render compiles it: the loaded workspace with its values, the
 // inputs read into it (readRunInputs), the frame compiled (compileRun), the executor created.
-void PyRenderer::build(const std::vector<Given>& given, const Plan& plan) {
+void PyRenderer::build(std::vector<Given>& given, const Plan& plan) {
     RunRequest request = ws_->request();
-    for (const Given& g : given) request.inputs.push_back(g.argument);
+    for (Given& g : given) {
+        imageOf(g);
+        request.inputs.push_back(g.argument);
+    }
     request.size = size_;
     request.plan.outputs = {plan.target};
     request.plan.checkHealth = plan.check;
@@ -136,7 +151,7 @@ void PyRenderer::build(const std::vector<Given>& given, const Plan& plan) {
 }
 
 // The kept executor given the workspace's current values and this call's images.
-void PyRenderer::update(const std::vector<Given>& given) {
+void PyRenderer::update(std::vector<Given>& given) {
     makeCurrent();
     warnings_.clear();
     if (valuesRevision_ != ws_->valuesRevision()) {
@@ -149,9 +164,12 @@ void PyRenderer::update(const std::vector<Given>& given) {
         valuesRevision_ = ws_->valuesRevision();
     }
     const glm::ivec2 viewport = executor_->viewport();
-    for (const Given& g : given) {
-        std::shared_ptr<const Image> image = g.argument.image;
-        if (g.input->sizesViewport && glm::ivec2(image->width, image->height) != viewport) {
+    for (Given& g : given) {
+        inputFiles_[g.argument.name] = g.argument.text.substr(g.argument.name.size() + 1);
+        const bool resampled = g.input->sizesViewport && g.size != viewport;
+        if (g.direct && !resampled && executor_->writeInputPixels(g.argument.name, *g.direct)) continue;
+        std::shared_ptr<const Image> image = imageOf(g);
+        if (resampled) {
             // As readRunInputs resampled the image the run was built with (a size was given).
             Result<Image> resampled = resampleImage(*image, viewport.x, viewport.y);
             if (!resampled) fail("input '" + g.argument.name + "': " + resampled.error(), "input " + g.argument.name);
@@ -159,7 +177,6 @@ void PyRenderer::update(const std::vector<Given>& given) {
         }
         if (Result<void> replaced = executor_->replaceInputImage(g.argument.name, image); !replaced)
             fail(replaced.takeDiagnostics());
-        inputFiles_[g.argument.name] = g.argument.text.substr(g.argument.name.size() + 1);
     }
 }
 
@@ -170,7 +187,7 @@ PyRenderer::Plan PyRenderer::planFor(const std::vector<Given>& given, const std:
         fail("target " + plan.target + ": the workspace has no such target (" + ws_->ws().describeTargets() + ")", "target");
     plan.check = check;
     plan.effectsRevision = ws_->effectsRevision();
-    for (const Given& g : given) plan.inputs.emplace_back(g.argument.name, glm::ivec2(g.argument.image->width, g.argument.image->height));
+    for (const Given& g : given) plan.inputs.emplace_back(g.argument.name, g.size);
     std::sort(plan.inputs.begin(), plan.inputs.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     return plan;
 }
@@ -202,7 +219,7 @@ py::array PyRenderer::readBack(const std::string& target, bool check, const std:
     frameMilliseconds_ = timing_ ? executor_->frameGpuMilliseconds() : 0.0;
     findings_ = check ? executor_->firstHealthFindings() : std::vector<HealthFinding>{};
     if (dtype == "target") return targetArray(*image, executor_->targetFormat(target));
-    return arrayFromImage(*image);
+    return arrayFromImage(std::move(*image));
 }
 
 py::array PyRenderer::render(const py::dict& inputs, int frames, double dt, const std::string& target, bool check,
@@ -219,6 +236,32 @@ py::array PyRenderer::render(const py::dict& inputs, int frames, double dt, cons
     return readBack(plan.target, check, dtype);
 }
 
+std::vector<double> PyRenderer::cppFrameLoop(const py::dict& inputs, int frames) {
+    if (!executor_ || !plan_) fail("render once first: the loop times the run that render built", "renderer");
+    if (frames < 1 || frames > 100000) fail("frames: expected 1 to 100000, got " + std::to_string(frames), "frames");
+    std::vector<Given> given = readInputs(inputs);
+    for (Given& g : given) imageOf(g);
+    makeCurrent();
+    std::vector<double> seconds;
+    for (int i = 0; i < frames; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        for (const Given& g : given) {
+            // The fastest way C++ has: the pixels written in place where the texture takes them.
+            const Image& image = *g.argument.image;
+            GlExecutor::InputPixels pixels{image.pixels.data(), image.width, image.height, false,
+                                           std::size_t(image.width) * 4 * sizeof(float)};
+            if (image.channels == 4 && executor_->writeInputPixels(g.argument.name, pixels)) continue;
+            if (Result<void> replaced = executor_->replaceInputImage(g.argument.name, g.argument.image); !replaced)
+                fail(replaced.takeDiagnostics());
+        }
+        renderNextFrame();
+        Result<Image> image = executor_->readTarget(plan_->target);
+        if (!image) fail("target " + plan_->target + ": " + image.error(), "target");
+        seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    return seconds;
+}
+
 void PyRenderer::beginSequence(const py::dict& inputs, const std::string& target, double dt, int first, int preroll) {
     if (!(dt >= 0.0) || dt > 3600.0) fail("dt: expected seconds from 0 to 3600, got " + std::to_string(dt), "dt");
     if (first < 0 || first > 10000000) fail("start: expected a frame index from 0, got " + std::to_string(first), "start");
@@ -232,7 +275,7 @@ void PyRenderer::beginSequence(const py::dict& inputs, const std::string& target
 
 py::object PyRenderer::stepSequence(const py::dict& inputs, bool read, const std::string& dtype) {
     if (!executor_ || !plan_) fail("the sequence's run was reset; start the sequence again", "sequence");
-    const std::vector<Given> given = readInputs(inputs);
+    std::vector<Given> given = readInputs(inputs);
     for (const Given& g : given)
         if (std::none_of(plan_->inputs.begin(), plan_->inputs.end(), [&](const auto& i) { return i.first == g.argument.name; }))
             fail("input '" + g.argument.name + "' was not given to the sequence's first frame", "input " + g.argument.name);
@@ -333,6 +376,9 @@ void bindRenderer(py::module_& m) {
              "stored byte), uint16 for 16-bit integer ones (rgba16, rg16), float16 for half-float ones; float32 for the "
              "others (32-bit floats, r11g11b10f, rgb10a2, which NumPy has no type for). Single-channel targets have "
              "shape (height, width, 1).")
+        .def("_cpp_frame_loop", &PyRenderer::cppFrameLoop, py::arg("inputs"), py::arg("frames"),
+             "For bench/python-overhead.py: the seconds of each of `frames` frames of this renderer's run in a C++ loop "
+             "(the inputs converted once before it), against which render()'s frames through Python are measured.")
         .def("explain", &PyRenderer::explain, "The plan: what rmfx render --explain prints (after a render, of that run).")
         .def("reset", &PyRenderer::reset, "Drops the executor: the next render compiles anew and starts at time 0.")
         .def_property_readonly("timings", &PyRenderer::timings, "per-pass GPU times of the last frame (Renderer(timing=True))")

@@ -39,6 +39,10 @@ public:
     // dtype "float32", or "target": the target's own storage type (targetArray).
     pybind11::array render(const pybind11::dict& inputs, int frames, double dt, const std::string& target, bool check,
                            const std::string& dtype = "float32");
+    // bench/python-overhead.py's reference: `frames` frames of this renderer's executor in a C++
+    // loop, each giving the inputs' images (converted once, before the loop) as render() gives them,
+    // rendering and reading the target back; the seconds of each frame. The run must have rendered.
+    std::vector<double> cppFrameLoop(const pybind11::dict& inputs, int frames);
     std::string explain();
     void reset();  // the next render compiles anew and starts at time 0
 
@@ -69,13 +73,17 @@ private:
         bool operator==(const Plan&) const = default;
     };
     struct Given {
-        InputArgument argument;  // its `image` filled (arrays and files alike)
+        InputArgument argument;  // its `image` filled, except for an array the GPU can take as it is
         const ImageInput* input = nullptr;
+        glm::ivec2 size{0};
+        pybind11::object array;  // that array, and its pixels where it is one
+        std::optional<GlExecutor::InputPixels> direct;
     };
     std::vector<Given> readInputs(const pybind11::dict& inputs) const;
+    static const std::shared_ptr<const Image>& imageOf(Given& given);  // converting a direct array
     Plan planFor(const std::vector<Given>& given, const std::string& target, bool check) const;
-    void build(const std::vector<Given>& given, const Plan& plan);
-    void update(const std::vector<Given>& given);
+    void build(std::vector<Given>& given, const Plan& plan);
+    void update(std::vector<Given>& given);
     // Frames continue at step dt: a new step continues time from where the last one left it.
     void stepAt(double dt);
     void renderNextFrame();

@@ -223,3 +223,22 @@ def test_dtype_target_gives_the_targets_own_type(tmp_path):
     frames = list(rmfx.load(SHADER_1).renderer().sequence([gradient()] * 2, dtype="target"))
     assert frames[1].dtype == np.float16  # shader_1's output is rgba16f
     np.testing.assert_array_equal(frames[1][..., :3], (gradient()[..., :3] * 0.5).astype(np.float16))
+
+
+def test_arrays_written_in_place_equal_a_fresh_run():
+    """After the first render, a float32 or float16 RGBA array goes to the GPU from its own memory
+    (no copy): rows apart (a crop of a larger image), turned top to bottom, halves; each must give
+    what a renderer built for that image gives, which converts it the other way."""
+    renderer = rmfx.load(SHADER_1, Exposure_Level=1).renderer()
+    first = gradient()
+    np.testing.assert_array_equal(renderer.render(inputs={"scene": first})[..., :3], first[..., :3])
+    large = np.zeros((40, 30, 4), np.float32)
+    large[5:21, 7:15] = gradient()[::-1] * 0.75
+    crop = large[5:21, 7:15]  # rows 30 pixels apart
+    assert not crop.flags.c_contiguous
+    halves = (gradient() * 0.5).astype(np.float16)
+    for image in (crop, halves, np.ascontiguousarray(first[:, ::-1])):
+        kept = renderer.render(inputs={"scene": image})
+        fresh = rmfx.load(SHADER_1, Exposure_Level=1).renderer().render(inputs={"scene": np.array(image, np.float32)})
+        np.testing.assert_array_equal(kept, fresh)
+        np.testing.assert_array_equal(kept[..., :3], np.asarray(image, np.float32)[..., :3])

@@ -150,6 +150,17 @@ public:
     // the next frame on. Unlike the creation's image it is not resampled: give it at the size the
     // first one had where the input sets the viewport.
     Result<void> replaceInputImage(const std::string& name, std::shared_ptr<const Image> image);
+    // The next image of such an <input> written into its GL texture in place, straight from the
+    // caller's memory (no copy, no new texture), where the texture takes the pixels as they are: a
+    // 2D float RGBA texture of one level (linear colour, no mipmaps) of the same size. Returns
+    // false, doing nothing, where it does not; replaceInputImage then takes them as an Image.
+    struct InputPixels {
+        const void* data = nullptr;  // rows top first, each `rowBytes` after the last
+        int width = 0, height = 0;
+        bool half = false;           // float16 RGBA; else float32 RGBA
+        std::size_t rowBytes = 0;
+    };
+    bool writeInputPixels(const std::string& name, const InputPixels& pixels);
     // Reads a model file again (as a pass's <draw file="…"> names it) and replaces its mesh.
     Result<void> reloadModel(const std::string& file);
     // The GL program of an enabled pass (0 for none): a different one once the pass is recompiled.

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include <epoxy/gl.h>
+
 #include "gl/GlErrors.h"
 #include "gl/GlExecutorImpl.h"
 
@@ -78,6 +80,34 @@ Result<void> GlExecutor::replaceInputImage(const std::string& name, std::shared_
     if (auto replaced = s.textures.reload(s.ws, next); !replaced) return replaced;
     s.bindTexture(name);
     return {};
+}
+
+bool GlExecutor::writeInputPixels(const std::string& name, const InputPixels& p) {
+    Impl& s = *impl_;
+    const Texture* spec = s.ws.findTexture(name);
+    if (!s.ws.findInput(name) || !spec || !s.plan.options.givenInputs.count(name) || !s.textures.holds(name)) return false;
+    if (spec->kind != TextureKind::Texture2D || spec->mipmaps || spec->colorSpace == ColorSpace::Srgb || !p.data) return false;
+    const GLuint texture = s.textures.object(name);
+    GLint width = 0, height = 0, internal = 0, levels = 0;
+    glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &width);
+    glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &height);
+    glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_INTERNAL_FORMAT, &internal);
+    glGetTextureParameteriv(texture, GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+    if (width != p.width || height != p.height || internal != GL_RGBA32F || levels != 1) return false;
+    const GLenum type = p.half ? GL_HALF_FLOAT : GL_FLOAT;
+    const std::size_t packed = static_cast<std::size_t>(width) * 4 * (p.half ? 2 : 4);
+    const auto* bytes = static_cast<const unsigned char*>(p.data);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    if (rowsTopFirst(s.ws.textureSpace) && p.rowBytes == packed) {
+        glTextureSubImage2D(texture, 0, 0, 0, width, height, GL_RGBA, type, bytes);
+    } else {
+        // OpenGL's row 0 is the bottom one: each row to its place, which costs no copy either.
+        for (int y = 0; y < height; ++y) {
+            const int row = rowsTopFirst(s.ws.textureSpace) ? y : height - 1 - y;
+            glTextureSubImage2D(texture, 0, 0, row, width, 1, GL_RGBA, type, bytes + static_cast<std::size_t>(y) * p.rowBytes);
+        }
+    }
+    return true;
 }
 
 Result<void> GlExecutor::reloadModel(const std::string& file) {
