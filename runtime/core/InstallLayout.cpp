@@ -47,7 +47,9 @@ std::optional<fs::path> withoutTail(const fs::path& folder, const fs::path& tail
     return rest;
 }
 
-fs::path relativeFolder(InstallFolder folder) {
+}  // namespace
+
+fs::path installFolder(InstallFolder folder) {
     switch (folder) {
         case InstallFolder::Bin: return RMFX_INSTALL_BINDIR;
         case InstallFolder::Lib: return RMFX_INSTALL_LIBDIR;
@@ -55,8 +57,6 @@ fs::path relativeFolder(InstallFolder folder) {
     }
     return {};
 }
-
-}  // namespace
 
 std::optional<fs::path> installPrefixOf(const fs::path& holderFolder) {
     for (const char* tail : {RMFX_INSTALL_BINDIR, RMFX_INSTALL_LIBDIR, RMFX_INSTALL_PYTHONDIR})
@@ -66,7 +66,7 @@ std::optional<fs::path> installPrefixOf(const fs::path& holderFolder) {
 
 std::optional<fs::path> installedFile(InstallFolder folder, const std::string& name) {
     const fs::path holder = codeHolder();
-    const fs::path relative = relativeFolder(folder);
+    const fs::path relative = installFolder(folder);
     if (holder.empty() || relative.empty()) return std::nullopt;
     auto prefix = installPrefixOf(holder.parent_path());
     if (!prefix) return std::nullopt;

@@ -17,6 +17,10 @@ enum class InstallFolder {
     Libexec,  // rmfx's own helper programs (libexec/rmfx/: rmfx-hlsl-worker)
 };
 
+// The folder relative to the prefix (as the build configured it: "bin", "lib" or
+// "lib/x86_64-linux-gnu", "libexec/rmfx"); empty where the build gave an absolute one.
+std::filesystem::path installFolder(InstallFolder folder);
+
 // The program or shared library that holds this code (dladdr), as a canonical path; empty when
 // unknown.
 std::filesystem::path codeHolder();
