@@ -25,4 +25,28 @@ if(NOT pybind11_FOUND)
   return()
 endif()
 set(RMFX_PYTHON_FOUND ON)
+# Where cmake --install puts the module, relative to the prefix: where this interpreter looks.
+# Debian's python3 reads /usr/lib/python3/dist-packages (its deb_system scheme) and
+# /usr/local/lib/python3.X/dist-packages, so PREFIX/lib/python3/dist-packages for the prefix /usr
+# and PREFIX/lib/python3.X/dist-packages for any other (the default /usr/local; elsewhere with
+# PYTHONPATH); another interpreter its own site-packages (posix_prefix). -DRMFX_INSTALL_PYTHONDIR=…
+# sets another.
+if(NOT DEFINED RMFX_INSTALL_PYTHONDIR)
+  execute_process(
+    COMMAND ${Python_EXECUTABLE} -c [=[
+import sys, sysconfig
+prefix = sys.argv[1]
+if 'deb_system' in sysconfig.get_scheme_names():
+    print('lib/python3/dist-packages' if prefix == '/usr' else 'lib/python%d.%d/dist-packages' % sys.version_info[:2], end='')
+else:
+    path = sysconfig.get_path('platlib', 'posix_prefix', vars={'base': '/PREFIX', 'platbase': '/PREFIX'})
+    print(path[len('/PREFIX/'):], end='')
+]=] ${CMAKE_INSTALL_PREFIX}
+    OUTPUT_VARIABLE python_dir RESULT_VARIABLE python_dir_failed)
+  if(python_dir_failed OR python_dir STREQUAL "")
+    set(python_dir lib/python${Python_VERSION_MAJOR}.${Python_VERSION_MINOR}/site-packages)
+  endif()
+  set(RMFX_INSTALL_PYTHONDIR ${python_dir} CACHE STRING
+      "Where cmake --install puts the Python module, relative to the install prefix")
+endif()
 message(STATUS "rmfx: the Python module is built for ${Python_EXECUTABLE} (Python ${Python_VERSION}, NumPy ${Python_NumPy_VERSION}, pybind11 ${pybind11_VERSION})")

@@ -21,9 +21,12 @@ Result<std::string> findProgram(const ProgramSearch& search) {
     std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
     std::string beside = error ? std::string() : (self.parent_path() / search.name).string();
     if (executable(beside)) return beside;
+    const std::optional<std::filesystem::path> installed = installedFile(search.installed, search.name);
+    if (installed && executable(installed->string())) return installed->string();
     if (executable(search.buildPath)) return search.buildPath;
     return Error{"cannot find " + search.name + ", " + search.purpose + ": not at " +
-                 (beside.empty() ? std::string() : "'" + beside + "' (beside this program) nor at ") + "'" +
+                 (beside.empty() ? std::string() : "'" + beside + "' (beside this program) nor at ") +
+                 (installed ? "'" + installed->string() + "' (in the installed package) nor at " : std::string()) + "'" +
                  search.buildPath + "' (where this build put it); set " + search.environment + " to its path"};
 }
 

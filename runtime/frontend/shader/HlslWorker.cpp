@@ -36,7 +36,7 @@ RunWorker& runWorker() {
 
 Result<std::string> hlslWorkerProgram() {
     return findProgram({"rmfx-hlsl-worker", "RMFX_HLSL_WORKER", RMFX_HLSL_WORKER_BUILD_PATH,
-                        "the program that runs glslang's HLSL front end"});
+                        "the program that runs glslang's HLSL front end", InstallFolder::Libexec});
 }
 
 Result<GlslangHlslOutcome> compileHlslInWorker(const GlslangHlslRequest& request, std::chrono::milliseconds timeout) {

@@ -2,6 +2,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <future>
 #include <memory>
@@ -9,6 +10,7 @@
 #include <system_error>
 #include <utility>
 
+#include "core/InstallLayout.h"
 #include "core/LibraryLoading.h"
 #include "io/image/DdsCubeMap.h"
 #include "io/image/ImageMemoryLimit.h"
@@ -19,7 +21,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // Where to look: $RMFX_IMAGE_CODECS alone when set; else beside the program or shared library
-// that holds this code (an installed rmfx, a Python module), then where this build put it.
+// that holds this code (librmfx.so), in the lib folder of the package installed around it (an
+// installed rmfx program or Python module: core/InstallLayout.h), then where this build put it.
 std::vector<fs::path> candidates() {
     if (const char* chosen = std::getenv("RMFX_IMAGE_CODECS"); chosen && *chosen) return {fs::path(chosen)};
     std::vector<fs::path> paths;
@@ -32,6 +35,9 @@ std::vector<fs::path> candidates() {
             paths.push_back(holder.parent_path().parent_path() / "lib" / "rmfx" / kImageCodecsFileName);
         }
     }
+    if (auto installed = installedFile(InstallFolder::Lib, kImageCodecsFileName);
+        installed && std::find(paths.begin(), paths.end(), *installed) == paths.end())
+        paths.push_back(*installed);
     paths.push_back(fs::path(RMFX_IMAGE_CODECS_BUILD_PATH));
     return paths;
 }

@@ -9,8 +9,9 @@
 //
 // The public functions (ImageIO.h, InputImage.h, ImageCompare.h, DdsCubeMap.h,
 // ImageMemoryLimit.h) go through the module's table; callers do not see it. The module is found
-// as $RMFX_IMAGE_CODECS, else beside the program or library that holds this code, else where this
-// build put it.
+// as $RMFX_IMAGE_CODECS, else beside the program or library that holds this code (librmfx.so),
+// else in the lib folder of the package installed around that file (core/InstallLayout.h: an
+// installed rmfx or Python module), else where this build put it.
 
 #include <cstdint>
 #include <filesystem>
