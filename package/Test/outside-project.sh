@@ -46,7 +46,8 @@ echo "ok:   the outside project built against the package"
 "$work/outside/outside" "$source/effects/shader_1.xml" "$work/command.exr" "$prefix"
 
 if [ -n "$python" ] && [ -n "$pythondir" ]; then
-  ls "$prefix/$pythondir"/rmfx.*.so >/dev/null 2>&1 || fail "no Python module in $prefix/$pythondir"
+  ls "$prefix/$pythondir"/rmfx/_rmfx.*.so "$prefix/$pythondir"/rmfx/__init__.py "$prefix/$pythondir"/rmfx/dask.py >/dev/null 2>&1 ||
+    fail "no Python package rmfx/ in $prefix/$pythondir"
   (cd "$work" && PYTHONPATH="$prefix/$pythondir" LD_DEBUG=files LD_DEBUG_OUTPUT="$work/python.ld" "$python" -c '
 import sys, rmfx
 assert rmfx.__file__.startswith(sys.argv[1] + "/"), rmfx.__file__
