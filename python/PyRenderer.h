@@ -48,7 +48,7 @@ public:
 
     // A sequence (python/PySequence.h), as rmfx render runs one: a fresh run built for these
     // inputs and target, whose frame `first` of the shot comes at time first·dt, after `preroll`
-    // frames of these images at the times before it (run/SequenceChunk.h).
+    // frames of these images at the times before it (io/media/SequenceChunk.h).
     void beginSequence(const pybind11::dict& inputs, const std::string& target, double dt, int first, int preroll);
     // The sequence's next frame with these images; the target read back when `read`, else None.
     pybind11::object stepSequence(const pybind11::dict& inputs, bool read, const std::string& dtype = "float32");

@@ -6,7 +6,7 @@
 
 #include "python/Errors.h"
 #include "python/PyRenderer.h"
-#include "run/SequenceChunk.h"
+#include "io/media/SequenceChunk.h"
 
 namespace py = pybind11;
 

@@ -2,7 +2,7 @@
 // Renderer.sequence(frames, …): a shot as a Python iterator, one array out per image in, as rmfx
 // render runs a sequence: frame k of the shot at time k·dt, frame="previous" targets and light
 // adaptation carried from frame to frame. Its start, pre-roll and skip place a chunk in the whole
-// shot's run (run/SequenceChunk.h; rmfx.sequence_chunk), which rmfx.dask splits a shot with.
+// shot's run (io/media/SequenceChunk.h; rmfx.sequence_chunk), which rmfx.dask splits a shot with.
 
 #include <optional>
 #include <string>

@@ -1,6 +1,6 @@
 // rmfx render --frame-range A-B --preroll N: one chunk of a shot, each frame at the time the whole
 // shot's run gives it, after a warm-up of the N frames before A as that run renders them
-// (run/SequenceChunk.h). Without frame-to-frame state a chunk equals the whole run bit for bit;
+// (io/media/SequenceChunk.h). Without frame-to-frame state a chunk equals the whole run bit for bit;
 // with state it starts N frames early from the initial values, which hdr_lighting's adaptation
 // forgets as 0.98^(30 dt) per frame (docs/sequences.md).
 

@@ -12,7 +12,7 @@
 #include "io/image/InputImage.h"
 #include "io/media/ImageSequence.h"
 #include "run/FrameStepper.h"
-#include "run/SequenceChunk.h"
+#include "io/media/SequenceChunk.h"
 #include "validation/ImageInputs.h"
 
 namespace rmfx {

@@ -34,7 +34,7 @@ struct SequenceSettings {
     // frame="previous" target start settled on the shot. Without a frame range: the first image
     // rendered `preroll` times (time runs from -preroll · dt, so the written frames keep their
     // times). With one: the chunk's warm-up, the last `preroll` frames of that whole run before the
-    // range's first frame (run/SequenceChunk.h).
+    // range's first frame (io/media/SequenceChunk.h).
     int preroll = 0;
     // The frames written, by the numbers in their file names, first and last included; none: all.
     // Each frame runs at the time the whole shot's run gives it (its place in the shot · dt).

@@ -1,4 +1,4 @@
-#include "run/SequenceChunk.h"
+#include "io/media/SequenceChunk.h"
 
 #include <algorithm>
 
