@@ -212,7 +212,10 @@ void PyRenderer::renderNextFrame() {
 }
 
 py::array PyRenderer::readBack(const std::string& target, bool check, const std::string& dtype) {
-    Result<Image> image = executor_->readTarget(target);
+    Result<Image> image = [&] {
+        py::gil_scoped_release unlocked;  // waits for the frame's GPU work
+        return executor_->readTarget(target);
+    }();
     if (!image) fail("target " + target + ": " + image.error(), "target");
     // The read back waited for the last frame, so its timer queries have all arrived.
     timings_ = timing_ ? executor_->passTimings() : std::vector<PassTiming>{};
@@ -232,7 +235,10 @@ py::array PyRenderer::render(const py::dict& inputs, int frames, double dt, cons
     if (executor_ && plan_ && *plan_ == plan) update(given);
     else build(given, plan);
     stepAt(dt);
-    for (int i = 0; i < frames; ++i) renderNextFrame();
+    {
+        py::gil_scoped_release unlocked;  // other Python threads run while the frames render
+        for (int i = 0; i < frames; ++i) renderNextFrame();
+    }
     return readBack(plan.target, check, dtype);
 }
 
@@ -280,7 +286,10 @@ py::object PyRenderer::stepSequence(const py::dict& inputs, bool read, const std
         if (std::none_of(plan_->inputs.begin(), plan_->inputs.end(), [&](const auto& i) { return i.first == g.argument.name; }))
             fail("input '" + g.argument.name + "' was not given to the sequence's first frame", "input " + g.argument.name);
     update(given);
-    renderNextFrame();
+    {
+        py::gil_scoped_release unlocked;
+        renderNextFrame();
+    }
     if (!read) return py::none();
     return readBack(plan_->target, false, dtype);
 }
