@@ -19,6 +19,7 @@ PpTokens trimmed(PpTokens tokens) {
     PpTokens out;
     for (PpToken& t : tokens) {
         if (t.isSpace() && (out.empty() || out.back().isSpace())) continue;
+        if (t.isSpace()) t.text = " ";
         out.push_back(std::move(t));
     }
     while (!out.empty() && out.back().isSpace()) out.pop_back();
@@ -66,7 +67,7 @@ public:
 
     PpTokens run(std::deque<PpToken> in, const MoreLines* more, int depth) {
         PpTokens out;
-        while (!failed_ && (!in.empty() || fill(in, more))) {
+        while (!failed_ && !in.empty()) {
             PpToken token = std::move(in.front());
             in.pop_front();
             if (token.kind != Kind::Identifier || !substitute(token, in, more, depth)) emit(out, std::move(token));

@@ -38,9 +38,9 @@ std::string unquoted(const std::string& literal) {
 
 std::string trimmedText(const PpTokens& tokens) {
     std::string text = joinTokens(tokens);
-    const size_t first = text.find_first_not_of(' ');
+    const size_t first = text.find_first_not_of(" \t\f\v\r");
     if (first == std::string::npos) return {};
-    return text.substr(first, text.find_last_not_of(' ') - first + 1);
+    return text.substr(first, text.find_last_not_of(" \t\f\v\r") - first + 1);
 }
 
 bool shownInReshadeUi(const std::string& name) {
@@ -187,7 +187,9 @@ private:
         std::vector<ExpansionProblem> problems;
         PpTokens expanded = expandMacros(tokenize(line.text), macros_, {file.name, where.line}, &more, problems);
         reportExpansion(problems, where);
-        emit(joinTokens(expanded), where);
+        std::string text = joinTokens(expanded);
+        text.erase(text.find_last_not_of(" \t\f\v\r") + 1);
+        emit(std::move(text), where);
         blanks(file, line.line + 1, span - 1);
     }
 
@@ -232,7 +234,8 @@ private:
         } else if (name == "pragma") {
             pragma(file, rest, where);
         } else if (name == "line") {
-            lineDirective(file, line, expandLine(rest, where), where);
+            blanks(file, line.line, line.span);
+            return lineDirective(file, line, expandLine(rest, where), where);
         } else {
             error(where, element, "unrecognized preprocessing directive '" + (name.empty() ? tokens[k].text : name) + "'");
         }

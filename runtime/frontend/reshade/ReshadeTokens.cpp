@@ -133,7 +133,7 @@ PpTokens tokenize(std::string_view line) {
         if (blank(c)) {
             while (i < line.size() && blank(line[i])) ++i;
             token.kind = PpToken::Kind::Space;
-            token.text = " ";
+            token.text = std::string(line.substr(start, i - start));
             tokens.push_back(std::move(token));
             continue;
         }

@@ -40,7 +40,7 @@ using PpTokens = std::vector<PpToken>;
 
 // Pre-processing tokens as C has them: identifiers, pp-numbers (`1.5f`, `0x1F`, `1e-3`), string and
 // character literals (an unterminated one runs to the end of the line), punctuators (the longest
-// of `<<=`, `##`, `->`, …), and runs of blanks as one Space token.
+// of `<<=`, `##`, `->`, …), and each run of blanks as one Space token holding it.
 PpTokens tokenize(std::string_view line);
 
 // The tokens' text, one after the other.
