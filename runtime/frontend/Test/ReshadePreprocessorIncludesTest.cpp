@@ -71,6 +71,19 @@ TEST(ReshadePreprocessorIncludes, DepthAndFanOutLimitsEndTheRun) {
     EXPECT_LT(fan.out.lineOrigins.size(), 4200u);
 }
 
+TEST(ReshadePreprocessorIncludes, ExistsLooksWhereIncludeLooks) {
+    test::ScratchDir dir;
+    dir.write("inc/there.fxh", "");
+    ReshadeSettings settings;
+    settings.includePaths = {dir / "inc"};
+    test::ReshadeRun run = test::preprocessText(
+        dir, lines({"#define THERE \"there.fxh\"", "#if exists \"there.fxh\" && exists(THERE) && !exists \"missing.fxh\"", "yes",
+                    "#endif", "#if exists 12", "#endif"}),
+        settings);
+    EXPECT_EQ(run.problems(dir.path().string()), (Lines{"main.fx:5: error: #if: expected \"file\" after 'exists'"}));
+    EXPECT_EQ(run.solid(dir.path().string()), (Lines{"main.fx:3|yes"}));
+}
+
 TEST(ReshadePreprocessorIncludes, EffectDefinitionsAsReshadeListsThem) {
     test::ScratchDir dir;
     ReshadeSettings settings;

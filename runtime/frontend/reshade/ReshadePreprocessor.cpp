@@ -371,10 +371,10 @@ private:
         std::vector<std::filesystem::path> bases{file.folder.empty() ? std::filesystem::path(".") : file.folder};
         bases.insert(bases.end(), input_.settings.includePaths.begin(), input_.settings.includePaths.end());
         const MediaReference reference = MediaReference::parse(name);
-        if (reference.components.empty()) return std::nullopt;
-        if (reference.absolute()) bases = {reference.posixAbsolute ? "/" : ""};
-        for (const std::filesystem::path& base : bases) {
-            if (base.empty()) break;
+        if (reference.components.empty() || reference.windowsAbsolute) return std::nullopt;
+        if (reference.posixAbsolute) bases = {"/"};
+        for (std::filesystem::path base : bases) {
+            if (base.empty()) base = ".";
             std::string ambiguity;
             if (auto found = walkIgnoringCase(base, reference.components, &ambiguity)) {
                 std::filesystem::path path = (base / *found).lexically_normal();
@@ -408,7 +408,7 @@ private:
         std::optional<std::filesystem::path> found = locate(name, file);
         if (!found) {
             std::string looked = file.folder.empty() ? "." : file.folder.string();
-            for (const std::filesystem::path& p : input_.settings.includePaths) looked += ", " + p.string();
+            for (const std::filesystem::path& p : input_.settings.includePaths) looked += ", " + (p.empty() ? "." : p.string());
             return error(where, element, "cannot find \"" + name + "\" (looked in " + looked + ")");
         }
         std::error_code ignored;
