@@ -56,11 +56,12 @@ TEST(ReshadePreprocessorMacros, SelfReferenceStopsAndNamesAloneStay) {
 TEST(ReshadePreprocessorMacros, CallOverSeveralLinesExpandsOnItsFirst) {
     test::ScratchDir dir;
     test::ReshadeRun run = test::preprocessText(
-        dir, lines({"#define SUM(a, b) ((a) + (b))", "int s = SUM(1,", "          (2, 3));", "int t = SUM", "(4, 5);", "int u;"}));
+        dir, lines({"#define SUM(a, b) ((a) + (b))", "int s = SUM(1,", "          (2, 3));", "int t = SUM", "(4, 5);", "int u;",
+                    "float SUM", "= 1;"}));
     EXPECT_EQ(run.problems(dir.path().string()), Lines{});
     EXPECT_EQ(run.annotated(dir.path().string()),
               (Lines{"main.fx:1|", "main.fx:2|int s = ((1) + ((2, 3)));", "main.fx:3|", "main.fx:4|int t = ((4) + (5));",
-                     "main.fx:5|", "main.fx:6|int u;"}));
+                     "main.fx:5|", "main.fx:6|int u;", "main.fx:7|float SUM", "main.fx:8|= 1;"}));
 }
 
 TEST(ReshadePreprocessorMacros, Variadic) {

@@ -77,10 +77,10 @@ public:
     }
 
 private:
-    bool fill(std::deque<PpToken>& in, const MoreLines* more) {
+    bool fill(std::deque<PpToken>& in, const MoreLines* more, bool onlyOpeningCall = false) {
         if (!more || !*more) return false;
         PpTokens next;
-        if (!(*more)(next)) return false;
+        if (!(*more)(next, onlyOpeningCall)) return false;
         in.insert(in.end(), std::make_move_iterator(next.begin()), std::make_move_iterator(next.end()));
         return true;
     }
@@ -135,7 +135,7 @@ private:
         if (macro->functionLike) {
             size_t open = 0;
             while (true) {
-                if (open == in.size() && !fill(in, more)) return false;
+                if (open == in.size() && !fill(in, more, true)) return false;
                 if (!in[open].isSpace()) break;
                 ++open;
             }

@@ -81,8 +81,10 @@ struct ExpansionProblem {
 };
 
 // Appends the tokens of the next line of text to `tokens` (a Space first, for the line break);
-// false when there is none (a directive or the end of the file comes next).
-using MoreLines = std::function<bool(PpTokens& tokens)>;
+// false when there is none (a directive or the end of the file comes next) or, with
+// `onlyOpeningCall`, when that line does not start with '(' (a function-like macro's name at the
+// end of a line is then a name, and the next line keeps its own line).
+using MoreLines = std::function<bool(PpTokens& tokens, bool onlyOpeningCall)>;
 
 // Expands the macros of `tokens`. `more` (may be null) extends a call whose arguments run on.
 // Problems are appended to `problems`; after an error the output holds what was expanded so far.

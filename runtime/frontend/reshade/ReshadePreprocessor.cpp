@@ -171,8 +171,11 @@ private:
 
     void textLine(FileState& file, const LogicalLine& line) {
         int span = line.span;
-        MoreLines more = [&](PpTokens& tokens) {
+        MoreLines more = [&](PpTokens& tokens, bool onlyOpeningCall) {
             if (file.next >= file.lines.size() || isDirective(file.lines[file.next])) return false;
+            const std::string& text = file.lines[file.next].text;
+            const size_t first = text.find_first_not_of(" \t\f\v\r");
+            if (onlyOpeningCall && (first == std::string::npos || text[first] != '(')) return false;
             const LogicalLine& next = file.lines[file.next++];
             span += next.span;
             PpToken lineBreak;
