@@ -71,6 +71,29 @@ TEST(ReshadePreprocessorIncludes, DepthAndFanOutLimitsEndTheRun) {
     EXPECT_LT(fan.out.lineOrigins.size(), 4200u);
 }
 
+TEST(ReshadePreprocessorIncludes, MissingEffectFile) {
+    test::ScratchDir dir;
+    ReshadeInput input;
+    input.file = dir / "nothing.fx";
+    Diagnostics diagnostics;
+    PreprocessedReshade out = preprocessReshade(input, diagnostics);
+    ASSERT_EQ(diagnostics.size(), 1u);
+    EXPECT_EQ(diagnostics[0].format(), input.file.string() + ": error: cannot read the effect file");
+    EXPECT_EQ(out.code, "");
+    EXPECT_TRUE(out.files.empty());
+}
+
+TEST(ReshadePreprocessorIncludes, ReadingMoreThan16MiBEndsTheRun) {
+    test::ScratchDir dir;
+    dir.write("big.fxh", "// " + std::string(size_t(2) << 20, 'x') + "\n");  // 2 MiB and 4 bytes
+    std::string code;
+    for (int i = 0; i < 9; ++i) code += "#include \"big.fxh\"\n";
+    test::ReshadeRun run = test::preprocessText(dir, code + "after\n");
+    EXPECT_EQ(run.problems(dir.path().string()),
+              (Lines{"main.fx:8: error: #include: the effect's includes read more than 16 MiB"}));
+    EXPECT_EQ(run.solid(dir.path().string()), Lines{});
+}
+
 TEST(ReshadePreprocessorIncludes, ExistsLooksWhereIncludeLooks) {
     test::ScratchDir dir;
     dir.write("inc/there.fxh", "");

@@ -84,13 +84,14 @@ public:
 
     void start() {
         defineFromSettings();
-        std::optional<std::string> text = input_.code;
-        if (!text) text = readShaderFile(input_.file);
-        if (!text) {
-            diagnostics_.push_back({Diagnostic::Severity::Error, {input_.file.string(), 0}, "", "cannot read the effect file"});
-            return;
-        }
         std::error_code ignored;
+        std::optional<std::string> text = input_.code;
+        if (!text && std::filesystem::file_size(input_.file, ignored) > kMaxBytesRead && !ignored)
+            return error({input_.file.string(), 0}, "", "the effect file is larger than " + std::to_string(kMaxBytesRead >> 20) + " MiB");
+        if (!text) text = readShaderFile(input_.file);
+        if (!text) return error({input_.file.string(), 0}, "", "cannot read the effect file");
+        if (text->size() > kMaxBytesRead)
+            return error({input_.file.string(), 0}, "", "the effect file is larger than " + std::to_string(kMaxBytesRead >> 20) + " MiB");
         FileState file;
         file.name = input_.file.string();
         file.folder = input_.file.parent_path();
@@ -420,6 +421,10 @@ private:
         if (child.key == file.key || std::find(open_.begin(), open_.end(), child.key) != open_.end())
             return error(where, element, "recursive #include of \"" + name + "\"");
         if (once_.count(child.key)) return;
+        // The size is checked before the file is read, so a huge file is never loaded whole.
+        const uintmax_t size = std::filesystem::file_size(*found, ignored);
+        if (!ignored && bytesRead_ + size > kMaxBytesRead)
+            return stop(where, element, "the effect's includes read more than " + std::to_string(kMaxBytesRead >> 20) + " MiB");
         std::optional<std::string> text = readShaderFile(*found);
         if (!text) return error(where, element, "cannot read \"" + found->string() + "\"");
         if ((bytesRead_ += text->size()) > kMaxBytesRead)
