@@ -51,6 +51,18 @@ TEST(ReshadePreprocessorConditions, ExpressionEvaluator) {
     EXPECT_EQ(evaluateExpression(tokenize(std::string(100000, '(') + "1")).error, "expression nested too deep");
 }
 
+TEST(ReshadePreprocessorConditions, DefinedFromAMacroAsReshadeReadsIt) {
+    test::ScratchDir dir;
+    test::ReshadeRun run = test::preprocessText(
+        dir, lines({"#define X 1", "#define HAS_X defined(X)", "#define HAS_Y defined Y", "#if HAS_X && !HAS_Y", "yes",
+                    "#endif", "#define CALL(a) a", "#if CALL(1", "#endif"}));
+    EXPECT_EQ(run.problems(dir.path().string()),
+              (Lines{"main.fx:8: error: macro CALL: the arguments of macro 'CALL' are not closed before the next directive "
+                     "or the end of the file",
+                     "main.fx:8: error: #if: #if with no expression"}));
+    EXPECT_EQ(run.solid(dir.path().string()), (Lines{"main.fx:5|yes"}));
+}
+
 TEST(ReshadePreprocessorConditions, ProblemsAtTheirLines) {
     test::ScratchDir dir;
     test::ReshadeRun run = test::preprocessText(

@@ -70,6 +70,18 @@ public:
         while (!failed_ && !in.empty()) {
             PpToken token = std::move(in.front());
             in.pop_front();
+            if (site_.protectDefined && token.is(Kind::Identifier, "defined")) {
+                emit(out, std::move(token));
+                while (!in.empty() && (in.front().isSpace() || in.front().isPunct("("))) {
+                    emit(out, std::move(in.front()));
+                    in.pop_front();
+                }
+                if (!in.empty() && in.front().kind == Kind::Identifier) {
+                    emit(out, std::move(in.front()));
+                    in.pop_front();
+                }
+                continue;
+            }
             if (token.kind != Kind::Identifier || !substitute(token, in, more, depth)) emit(out, std::move(token));
             if (out.size() + in.size() > kMaxTokens) fail("", "macro expansion grows past " + std::to_string(kMaxTokens) + " tokens on one line");
         }
@@ -161,7 +173,7 @@ private:
         int nesting = 0;
         while (true) {
             if (in.empty() && !fill(in, more)) {
-                fail(macro.name, "unexpected end of file in the arguments of macro '" + macro.name + "'");
+                fail(macro.name, "the arguments of macro '" + macro.name + "' are not closed before the next directive or the end of the file");
                 return false;
             }
             PpToken t = std::move(in.front());

@@ -72,6 +72,8 @@ private:
 struct ExpansionSite {
     std::string file;  // as __FILE__ gives it
     int line = 0;      // as __LINE__ gives it
+    // In an #if: the name after `defined` (or `defined (`) is not expanded.
+    bool protectDefined = false;
 };
 
 struct ExpansionProblem {

@@ -203,9 +203,9 @@ private:
                    p.macro.empty() ? "" : "macro " + p.macro, p.message);
     }
 
-    PpTokens expandLine(const PpTokens& tokens, const SourceLocation& where) {
+    PpTokens expandLine(const PpTokens& tokens, const SourceLocation& where, bool protectDefined = false) {
         std::vector<ExpansionProblem> problems;
-        PpTokens expanded = expandMacros(tokens, macros_, {where.file, where.line}, nullptr, problems);
+        PpTokens expanded = expandMacros(tokens, macros_, {where.file, where.line, protectDefined}, nullptr, problems);
         reportExpansion(problems, where);
         return expanded;
     }
@@ -312,9 +312,10 @@ private:
             defaults_.emplace(c.guard, parsed.macro->text());
     }
 
-    bool evaluate(const PpTokens& rest, const SourceLocation& where, const std::string& element, const FileState& file) {
-        // `defined X`, `defined(X)` and `exists "file"` first: their operands are not expanded.
-        PpTokens replaced;
+    // `defined X`, `defined(X)` and `exists "file"` replaced by 1 or 0 in `rest`, into `replaced`;
+    // false (after an error) when one is malformed.
+    bool replaceTests(const PpTokens& rest, PpTokens& replaced, const SourceLocation& where, const std::string& element,
+                      const FileState& file) {
         for (size_t k = 0; k < rest.size(); ++k) {
             const PpToken& t = rest[k];
             if (t.kind != Kind::Identifier || (t.text != "defined" && t.text != "exists")) {
@@ -363,7 +364,17 @@ private:
             replaced.push_back(std::move(value));
             k = at;
         }
-        ExpressionValue result = evaluateExpression(expandLine(replaced, where));
+        return true;
+    }
+
+    bool evaluate(const PpTokens& rest, const SourceLocation& where, const std::string& element, const FileState& file) {
+        // The tests first, their operands not expanded; then again, for those that macros gave
+        // (`#define HAS_X defined(X)`), whose operands the expansion left alone as ReShade does.
+        PpTokens replaced, expanded, tested;
+        if (!replaceTests(rest, replaced, where, element, file)) return false;
+        expanded = expandLine(replaced, where, true);
+        if (!replaceTests(expanded, tested, where, element, file)) return false;
+        ExpressionValue result = evaluateExpression(tested);
         if (!result.error.empty()) error(where, element, result.error);
         return result.error.empty() && result.value != 0;
     }
