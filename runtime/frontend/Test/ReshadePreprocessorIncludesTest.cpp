@@ -26,8 +26,9 @@ TEST(ReshadePreprocessorIncludes, FolderThenSearchPathsAndPragmaOnce) {
         settings);
     EXPECT_EQ(run.problems(dir.path().string()), Lines{});
     EXPECT_EQ(run.annotated(dir.path().string()),
-              (Lines{"lib/a.fxh:1|", "lib/a.fxh:2|a \"a.fxh\" 2", "lib/b.fxh:1|b", "inc/shared.fxh:1|shared", "main.fx:4|",
-                     "inc/shared.fxh:1|shared", "inc/Case.fxh:1|case", "main.fx:7|main"}));
+              (Lines{"main.fx:1|", "lib/a.fxh:1|", "lib/a.fxh:2|a \"a.fxh\" 2", "lib/a.fxh:3|", "lib/b.fxh:1|b", "main.fx:2|",
+                     "main.fx:3|", "inc/shared.fxh:1|shared", "main.fx:4|", "main.fx:5|", "inc/shared.fxh:1|shared",
+                     "main.fx:6|", "inc/Case.fxh:1|case", "main.fx:7|main"}));
     std::vector<std::string> files;
     for (const std::filesystem::path& f : run.out.files) files.push_back(f.lexically_relative(dir.path()).string());
     EXPECT_EQ(files, (Lines{"main.fx", "lib/a.fxh", "lib/b.fxh", "inc/shared.fxh", "inc/Case.fxh"}));
@@ -68,7 +69,7 @@ TEST(ReshadePreprocessorIncludes, DepthAndFanOutLimitsEndTheRun) {
     test::ReshadeRun fan = test::preprocessText(wide, "#include \"w0.fxh\"\n");
     ASSERT_EQ(fan.diagnostics.size(), 1u);
     EXPECT_EQ(fan.diagnostics[0].message, "more than 4096 includes (is a file included over and over?)");
-    EXPECT_LT(fan.out.lineOrigins.size(), 4200u);
+    EXPECT_LT(fan.out.lineOrigins.size(), 8200u);  // an include line and at most one more per include
 }
 
 TEST(ReshadePreprocessorIncludes, MissingEffectFile) {

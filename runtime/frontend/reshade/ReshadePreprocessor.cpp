@@ -223,8 +223,8 @@ private:
         } else if (!file.active()) {
             if (name == "define") noteSkippedDefault(file, rest);
         } else if (name == "include") {
-            include(file, rest, where, depth);
-            return blanks(file, line.line + 1, line.span - 1);
+            blanks(file, line.line, line.span);  // the directive's own line first, then what it includes
+            return include(file, rest, where, depth);
         } else if (name == "define") {
             define(file, rest, where);
         } else if (name == "undef") {

@@ -23,10 +23,11 @@
 //   and hands the second to its compiler); other pragmas warn "unknown pragma ignored".
 // - `#line N ["file"]` renumbers the lines after it.
 // - The macros of ReshadeSettings.h are defined first.
-// Comments become one space, continuations join lines; every line a directive, a skipped block or a
-// comment takes stays as an empty line, and a macro call whose arguments run over several lines
-// expands on its first line, followed by empty ones. So the output's lines keep the order of the
-// user's lines, and each has an origin. Every problem is a Diagnostic at the user's file and line
+// Comments become one space, continuations join lines; every line a directive (an #include too,
+// before the lines it brings), a skipped block or a comment takes stays as an empty line, and a
+// macro call whose arguments run over several lines expands on its first line, followed by empty
+// ones. So every line of every file read appears once per inclusion, in order, and each output
+// line has an origin. Every problem is a Diagnostic at the user's file and line
 // (the line of the call for a problem inside a macro), its element the directive ("#include") or
 // the macro ("macro BLUR").
 //
