@@ -31,6 +31,14 @@
 // (the line of the call for a problem inside a macro), its element the directive ("#include") or
 // the macro ("macro BLUR").
 //
+// Where it differs from ReShade's (crosire/reshade's effect_preprocessor.cpp as read on 2026-12-08),
+// each a superset or a clearer stop: `#error` ends the run (ReShade reads on for more errors);
+// `#pragma message` is collected (ReShade warns "unknown pragma ignored"); `#include <file>` and a
+// name whose case or slashes differ from the file's are found (ReShade, on Windows, finds the
+// latter); #if computes in 64 bits and knows ?:; `F()` gives a one-parameter F an empty argument
+// (ReShade warns and drops the call); #error and #warning take plain text besides a string.
+// ReShade's __RESHADE_PERMUTATION__ and BUFFER_COLOR_FORMAT are not defined.
+//
 // Limits, each an error that ends the run rather than a hang: includes nested 32 deep, 4096
 // includes, 16 MiB read in all, 16 MiB of output, and the macro limits of ReshadeMacros.h.
 
