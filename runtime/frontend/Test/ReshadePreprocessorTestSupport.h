@@ -37,13 +37,13 @@ struct ReshadeRun {
     }
     // Every diagnostic formatted, the scratch folder cut from names.
     std::vector<std::string> problems(const std::string& folder) const {
-        std::vector<std::string> out;
+        std::vector<std::string> formatted;
         for (const Diagnostic& d : diagnostics) {
             std::string text = d.format();
             for (size_t at; (at = text.find(folder + "/")) != std::string::npos;) text.erase(at, folder.size() + 1);
-            out.push_back(text);
+            formatted.push_back(text);
         }
-        return out;
+        return formatted;
     }
 };
 

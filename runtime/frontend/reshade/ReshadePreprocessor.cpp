@@ -183,8 +183,8 @@ private:
             lineBreak.kind = Kind::Space;
             lineBreak.text = " ";
             tokens.push_back(std::move(lineBreak));
-            PpTokens more = tokenize(next.text);
-            tokens.insert(tokens.end(), more.begin(), more.end());
+            PpTokens nextTokens = tokenize(next.text);
+            tokens.insert(tokens.end(), nextTokens.begin(), nextTokens.end());
             return true;
         };
         const SourceLocation where = file.at(line.line);
