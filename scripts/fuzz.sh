@@ -21,8 +21,8 @@ cmake --build --preset fuzz
 # Per target: -max_len (bytes), -timeout (s per input), -rss_limit_mb. Workspaces carry the
 # shaders they name, so theirs are the longest inputs.
 declare -A max_len=([workspace]=131072 [shader_preprocessor]=16384 [replay_manifest]=16384 [variable_value_writer]=32768
-                  [rfx_import]=65536 [d3d_asm]=16384)
-declare -A timeout=([workspace]=10 [shader_preprocessor]=10 [replay_manifest]=10 [variable_value_writer]=10 [rfx_import]=10 [d3d_asm]=10)
+                  [rfx_import]=65536 [d3d_asm]=16384 [reshade_preprocessor]=16384)
+declare -A timeout=([workspace]=10 [shader_preprocessor]=10 [replay_manifest]=10 [variable_value_writer]=10 [rfx_import]=10 [d3d_asm]=10 [reshade_preprocessor]=10)
 rss_limit_mb=2048
 
 # A workspace file followed by the files it names as "//@@ NAME" parts (fuzz/FuzzInputFiles.h):
@@ -59,7 +59,7 @@ seed() {  # seed TARGET FILE NAME: adds a seed to the target's working corpus
 
 make_seeds() {
   local t f
-  for t in workspace shader_preprocessor replay_manifest variable_value_writer rfx_import d3d_asm; do
+  for t in workspace shader_preprocessor replay_manifest variable_value_writer rfx_import d3d_asm reshade_preprocessor; do
     mkdir -p "$build/fuzz-corpus/$t"
   done
   local workspaces replays
@@ -85,6 +85,12 @@ make_seeds() {
   for f in fuzz/seeds/d3d_asm/*; do
     [ -f "$f" ] && seed d3d_asm "$f" "$(basename "$f")"
   done
+  # The ReShade FX fixture effects (runtime/frontend/Test/reshade/), with the headers beside them.
+  for f in runtime/frontend/Test/reshade/*.fx; do
+    [ -f "$f" ] || continue
+    { cat "$f"; for g in runtime/frontend/Test/reshade/*.fxh; do printf '\n//@@ %s\n' "$(basename "$g")"; cat "$g"; done; } \
+      >"$build/fuzz-corpus/reshade_preprocessor/seed-$(basename "$f")"
+  done
   # Every saved finding seeds its target too.
   for t in tests/fuzz-regressions/*/; do
     t=$(basename "$t")
@@ -103,10 +109,11 @@ make_dictionary() {
     workspace | variable_value_writer) sources=(runtime/frontend/workspace/WorkspaceParser.cpp runtime/core/Value.cpp runtime/io/mesh/BuiltinMeshes.cpp) ;;
     rfx_import) sources=(runtime/frontend/rfx/*.cpp runtime/frontend/rfx/detail/*.cpp) ;;
     d3d_asm) sources=(runtime/frontend/shader/D3DAsmParser.cpp runtime/frontend/shader/D3DAsmToHlsl.cpp) ;;
+    reshade_preprocessor) sources=(runtime/frontend/reshade/*.cpp) ;;
     replay_manifest) sources=(runtime/frontend/replay/ReplayManifest.cpp runtime/io/image/codecs/ImageCompare.cpp runtime/io/image/ImageComparison.cpp) ;;
   esac
   {
-    [ "$t" = shader_preprocessor ] || [ "$t" = d3d_asm ] || cat fuzz/dictionaries/xml.dict
+    [ "$t" = shader_preprocessor ] || [ "$t" = d3d_asm ] || [ "$t" = reshade_preprocessor ] || cat fuzz/dictionaries/xml.dict
     [ -f "fuzz/dictionaries/$t.dict" ] && cat "fuzz/dictionaries/$t.dict"
     if [ ${#sources[@]} -gt 0 ]; then
       grep -ho '"[a-zA-Z][a-zA-Z0-9_-]\{0,23\}"' "${sources[@]}" | sort -u
