@@ -51,6 +51,10 @@ def render_sequence(client, workspace, frames, *, chunk=12, preroll=0, input=Non
         workspace = _rmfx.load(os.fspath(workspace))
     frames = list(frames)
     tasks = chunks(len(frames), chunk, preroll)
+    # Arrays go to the workers once each, as data of their own, not inside every task that reads
+    # them (a chunk's warm-up reads the frames before it too); paths are read by the workers.
+    if any(not isinstance(f, (str, os.PathLike)) for f in frames):
+        frames = client.scatter(frames, hash=False)  # unique keys: a later call never meets a released one
     futures = []
     for first, last, plan in tasks:
         futures.append(client.submit(_render_chunk, workspace, frames[plan.start:last + 1], plan.start, plan.preroll,
