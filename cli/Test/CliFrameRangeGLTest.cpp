@@ -13,6 +13,7 @@
 #include "reference/HdrLightingReference.h"
 #include "tests/support/GlTestSupport.h"
 #include "tests/support/TestSupport.h"
+#include "cli/Test/AccumulateWorkspace.h"
 
 namespace rmfx::test {
 namespace {
@@ -20,7 +21,7 @@ namespace {
 class CliFrameRangeGLTest : public GlTest {};
 
 // No state: each output is its frame's image plus the frame's time in red.
-const char* kTimed = R"(<workspace version="1" name="timed" size="4x2">
+const char* kTimed = R"(<workspace version="1" name="timed" size="5x3">
   <target name="out" format="rgba32f"/>
   <input name="frame"/>
   <pass name="timed" target="out">
@@ -36,41 +37,19 @@ void main() { c = texelFetch(Frame, ivec2(gl_FragCoord.xy), 0) + vec4(rm_Time, 0
 </workspace>
 )";
 
-// State that never fades: each output adds its image · dt to the sum of the frames before it.
-const char* kAccumulate = R"(<workspace version="1" name="accumulate" size="4x2">
-  <target name="sum" format="rgba32f"/>
-  <input name="frame"/>
-  <pass name="accumulate" target="sum">
-    <sampler name="Previous" target="sum" frame="previous" filter="nearest"/>
-    <sampler name="Frame" texture="frame" filter="nearest"/>
-    <shader stage="fragment"><![CDATA[
-uniform sampler2D Previous;
-uniform sampler2D Frame;
-uniform float rm_DeltaTime;
-out vec4 c;
-void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy);
-    c = texelFetch(Previous, p, 0) + texelFetch(Frame, p, 0) * rm_DeltaTime;
-}
-]]></shader>
-  </pass>
-  <output target="sum" transform="none"/>
-</workspace>
-)";
-
 std::string frameName(const std::string& prefix, int k) {
     char name[64];
     std::snprintf(name, sizeof name, "%s.%04d.exr", prefix.c_str(), k);
     return name;
 }
 
-// Frame k of a 4x2 shot, asymmetric: pixel (x, y) holds k + x / 10 + y / 100 (row 0 the top).
+// Frame k of a 5x3 shot (the size of the workspaces), asymmetric: pixel (x, y) holds k + x / 10 + y / 100 (row 0 the top).
 void writeShot(const ScratchDir& dir, int first, int last) {
     std::filesystem::create_directories(dir / "shot");
     for (int k = first; k <= last; ++k) {
-        Image image = blankHdrImage(4, 2);
-        for (int y = 0; y < 2; ++y)
-            for (int x = 0; x < 4; ++x)
+        Image image = blankHdrImage(5, 3);
+        for (int y = 0; y < 3; ++y)
+            for (int x = 0; x < 5; ++x)
                 for (int c = 0; c < 4; ++c) image.at(x, y, c) = static_cast<float>(k) + 0.1f * x + 0.01f * y;
         ASSERT_TRUE(writeImage(dir / frameName("shot/f", k), image).ok());
     }
@@ -111,7 +90,7 @@ TEST_F(CliFrameRangeGLTest, ChunksOfAStatelessEffectEqualTheWholeRunBitForBit) {
 // before the shot, so it renders frame 101's image twice at negative times, then frame 101.
 TEST_F(CliFrameRangeGLTest, TheWarmUpIsTheLastNFramesOfTheWholeRun) {
     ScratchDir dir;
-    dir.write("acc.xml", kAccumulate);
+    dir.write("acc.xml", kAccumulateWorkspace);
     writeShot(dir, 101, 108);
     const double dt = 0.5;
     const std::string run = "render acc.xml --input frame=shot/f.%04d.exr --dt 0.5 --preroll 3 ";
@@ -121,8 +100,8 @@ TEST_F(CliFrameRangeGLTest, TheWarmUpIsTheLastNFramesOfTheWholeRun) {
     EXPECT_FALSE(std::filesystem::exists(dir / "late.0108.exr"));
     EXPECT_FALSE(std::filesystem::exists(dir / "early.0101.exr"));
     auto value = [](int k, int x, int y) { return k + 0.1 * x + 0.01 * y; };
-    for (int x = 0; x < 4; ++x)
-        for (int y = 0; y < 2; ++y) {
+    for (int x = 0; x < 5; ++x)
+        for (int y = 0; y < 3; ++y) {
             double late = 0;
             for (int k = 103; k <= 106; ++k) late += value(k, x, y) * dt;
             EXPECT_NEAR(read(dir, frameName("late", 106)).at(x, y, 0), late, 1e-6 * late);
@@ -162,7 +141,7 @@ TEST_F(CliFrameRangeGLTest, HdrLightingsAdaptationInAChunkFollowsItsStatedBound)
 
 TEST_F(CliFrameRangeGLTest, BadRangesAreArgumentErrorsBeforeAnyFrame) {
     ScratchDir dir;
-    dir.write("acc.xml", kAccumulate);
+    dir.write("acc.xml", kAccumulateWorkspace);
     writeShot(dir, 1, 4);
     const std::string run = "render acc.xml --input frame=shot/f.%04d.exr ";
     for (const char* bad : {"x", "3-", "-3", "1-2-3", "1:3", ""}) {

@@ -8,33 +8,12 @@
 #include "reference/HdrLightingReference.h"
 #include "tests/support/GlTestSupport.h"
 #include "tests/support/TestSupport.h"
+#include "cli/Test/AccumulateWorkspace.h"
 
 namespace rmfx::test {
 namespace {
 
 class CliSequenceGLTest : public GlTest {};
-
-// `sum` adds each frame's image times rm_DeltaTime to what it held after the last frame.
-const char* kAccumulate = R"(<workspace version="1" name="accumulate" size="5x3">
-  <target name="sum" format="rgba32f"/>
-  <input name="frame"/>
-  <pass name="accumulate" target="sum">
-    <sampler name="Previous" target="sum" frame="previous" filter="nearest"/>
-    <sampler name="Frame" texture="frame" filter="nearest"/>
-    <shader stage="fragment"><![CDATA[
-uniform sampler2D Previous;
-uniform sampler2D Frame;
-uniform float rm_DeltaTime;
-out vec4 c;
-void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy);
-    c = texelFetch(Previous, p, 0) + texelFetch(Frame, p, 0) * rm_DeltaTime;
-}
-]]></shader>
-  </pass>
-  <output target="sum" transform="none"/>
-</workspace>
-)";
 
 // Frame k: every channel of pixel (x, y) is k + x / 10 + y / 100.
 Image frameImage(int k) {
@@ -56,7 +35,7 @@ void writeFrames(const ScratchDir& dir, std::initializer_list<int> frames) {
 
 TEST_F(CliSequenceGLTest, EachFrameIsRenderedInOrderCarryingTheLastFramesTargets) {
     ScratchDir dir;
-    dir.write("acc.xml", kAccumulate);
+    dir.write("acc.xml", kAccumulateWorkspace);
     writeFrames(dir, {1, 2, 3, 4});
     CommandResult cli = runRmfx("render acc.xml --input frame=shot/f.%04d.exr --fps 8 -o out.####.exr", dir.path());
     ASSERT_EQ(cli.status, 0) << cli.err;
@@ -82,7 +61,7 @@ TEST_F(CliSequenceGLTest, EachFrameIsRenderedInOrderCarryingTheLastFramesTargets
 
 TEST_F(CliSequenceGLTest, AGapIsAnErrorNamingTheMissingFrameBeforeAnythingIsWritten) {
     ScratchDir dir;
-    dir.write("acc.xml", kAccumulate);
+    dir.write("acc.xml", kAccumulateWorkspace);
     writeFrames(dir, {1, 2, 4});
     CommandResult cli = runRmfx("render acc.xml --input frame=shot/f.%04d.exr -o out.%04d.exr", dir.path());
     EXPECT_NE(cli.status, 0);
@@ -94,7 +73,7 @@ TEST_F(CliSequenceGLTest, AGapIsAnErrorNamingTheMissingFrameBeforeAnythingIsWrit
 
 TEST_F(CliSequenceGLTest, ABadFrameStopsTheRunNamingItAndKeepsTheFramesBefore) {
     ScratchDir dir;
-    dir.write("acc.xml", kAccumulate);
+    dir.write("acc.xml", kAccumulateWorkspace);
     writeFrames(dir, {1, 2, 3, 4});
     dir.write("shot/f.0003.exr", "not an EXR");
     CommandResult cli = runRmfx("render acc.xml --input frame=shot/f.%04d.exr -o out.%04d.exr", dir.path());
@@ -108,7 +87,7 @@ TEST_F(CliSequenceGLTest, ABadFrameStopsTheRunNamingItAndKeepsTheFramesBefore) {
 
 TEST_F(CliSequenceGLTest, ASequenceNeedsAnOutputPattern) {
     ScratchDir dir;
-    dir.write("acc.xml", kAccumulate);
+    dir.write("acc.xml", kAccumulateWorkspace);
     writeFrames(dir, {1, 2});
     CommandResult cli = runRmfx("render acc.xml --input frame=shot/f.%04d.exr -o out.exr", dir.path());
     EXPECT_EQ(cli.status, 1);
@@ -166,7 +145,7 @@ void main() { c = texelFetch(Frame, ivec2(gl_FragCoord.xy), 0) * texelFetch(Gain
 // adds its own on top: sum after output k = (N + 1) image(1) dt + Σ_{j=2..k} image(j) dt.
 TEST_F(CliSequenceGLTest, PrerollRendersTheFirstImageBeforeTheFirstOutput) {
     ScratchDir dir;
-    dir.write("acc.xml", kAccumulate);
+    dir.write("acc.xml", kAccumulateWorkspace);
     writeFrames(dir, {1, 2, 3});
     CommandResult cli = runRmfx("render acc.xml --input frame=shot/f.%04d.exr --fps 8 --preroll 5 -o out.%04d.exr", dir.path());
     ASSERT_EQ(cli.status, 0) << cli.err;
@@ -189,7 +168,7 @@ TEST_F(CliSequenceGLTest, PrerollRendersTheFirstImageBeforeTheFirstOutput) {
 // --dt sets a sequence's step (as 1 / --fps does); both at once is refused, never one ignored.
 TEST_F(CliSequenceGLTest, DtIsTheStepOfASequenceAndCannotBeGivenWithFps) {
     ScratchDir dir;
-    dir.write("acc.xml", kAccumulate);
+    dir.write("acc.xml", kAccumulateWorkspace);
     writeFrames(dir, {1, 2});
     CommandResult cli = runRmfx("render acc.xml --input frame=shot/f.%04d.exr --dt 0.5 -o out.%04d.exr", dir.path());
     ASSERT_EQ(cli.status, 0) << cli.err;
@@ -238,7 +217,7 @@ TEST_F(CliSequenceGLTest, PrerollStartsHdrLightingAdaptedToTheFirstImage) {
 // too, found before any frame renders.
 TEST_F(CliSequenceGLTest, UnknownNamesAreArgumentErrorsBeforeTheFirstFrame) {
     ScratchDir dir;
-    dir.write("acc.xml", kAccumulate);
+    dir.write("acc.xml", kAccumulateWorkspace);
     writeFrames(dir, {1, 2});
     CommandResult target = runRmfx("render acc.xml --input frame=shot/f.%04d.exr --target nosuch -o t.%04d.exr", dir.path());
     EXPECT_EQ(target.status, 1) << target.err;
@@ -256,7 +235,7 @@ TEST_F(CliSequenceGLTest, UnknownNamesAreArgumentErrorsBeforeTheFirstFrame) {
 // Where the frames go is checked before the first one renders: exit status 1, no progress line.
 TEST_F(CliSequenceGLTest, AnOutputPatternThatCannotBeWrittenFailsBeforeTheFirstFrame) {
     ScratchDir dir;
-    dir.write("acc.xml", kAccumulate);
+    dir.write("acc.xml", kAccumulateWorkspace);
     writeFrames(dir, {1, 2});
     for (const char* pattern : {"missing/out.%04d.exr", "out.%04d.xyz", "out.%4d.exr"}) {
         CommandResult cli = runRmfx(std::string("render acc.xml --input frame=shot/f.%04d.exr -o ") + pattern, dir.path());
