@@ -111,6 +111,10 @@ def test_dask_two_workers_equal_one_run():
         with pytest.raises(rmfx.Error) as e:
             rmfx.dask.render_sequence(client, stateful, frames[:2] + [np.zeros((3, 3), np.float32)], chunk=2)
         assert "scene" in e.value.element
+        # Names and chunking are checked before any task is sent.
+        for bad in (dict(input="nope"), dict(chunk=0), dict(preroll=-1), dict(dt=0.1, fps=10)):
+            with pytest.raises(rmfx.Error):
+                rmfx.dask.render_sequence(client, stateful, frames, **bad)
     whole = list(stateless.renderer().sequence(frames, preroll=preroll))
     assert len(split) == len(whole) == 24
     for k in range(24):

@@ -42,13 +42,15 @@ def render_sequence(client, workspace, frames, *, chunk=12, preroll=0, input=Non
 
     workspace: an rmfx.Workspace (pickled to the workers with the values set on it) or a path. preroll: the whole run's
     pre-roll, and each chunk's warm-up (rmfx render --preroll with --frame-range). input, inputs, dt, fps, target and
-    size as Renderer.sequence and Workspace.renderer take them. The workspace and arguments are checked here, before
-    any task is sent; an rmfx.Error on a worker is raised here with its file, line and element."""
+    size as Renderer.sequence and Workspace.renderer take them. The workspace, the chunking, the time step and the input
+    names are checked here, before any task is sent; an rmfx.Error on a worker (an unreadable frame, an unknown target)
+    is raised here with its file, line and element, and the other tasks are cancelled."""
     if dt is not None and fps is not None:
         _rmfx._fail("dt and fps both set a sequence's time step (dt = 1 / fps): give one", "fps")
     step = dt if dt is not None else 1.0 / (fps if fps is not None else 24.0)
     if not isinstance(workspace, _rmfx.Workspace):
         workspace = _rmfx.load(os.fspath(workspace))
+    workspace.renderer(size=size).sequence([], input=input, inputs=inputs, dt=step)  # checks the names; renders nothing
     frames = list(frames)
     tasks = chunks(len(frames), chunk, preroll)
     # Arrays go to the workers once each, as data of their own, not inside every task that reads
@@ -60,6 +62,10 @@ def render_sequence(client, workspace, frames, *, chunk=12, preroll=0, input=Non
         futures.append(client.submit(_render_chunk, workspace, frames[plan.start:last + 1], plan.start, plan.preroll,
                                      plan.skip, input, inputs, step, target, size, pure=False))
     shot = []
-    for future in futures:
-        shot.extend(future.result())
+    try:
+        for future in futures:
+            shot.extend(future.result())
+    except BaseException:
+        client.cancel(futures)
+        raise
     return shot

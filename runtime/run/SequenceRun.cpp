@@ -11,8 +11,8 @@
 
 #include "io/image/InputImage.h"
 #include "io/media/ImageSequence.h"
-#include "run/FrameStepper.h"
 #include "io/media/SequenceChunk.h"
+#include "run/FrameStepper.h"
 #include "validation/ImageInputs.h"
 
 namespace rmfx {
