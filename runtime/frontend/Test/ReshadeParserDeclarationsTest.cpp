@@ -195,10 +195,11 @@ TEST(ReshadeParserDeclarations, FunctionsWithParametersAndBodySpans) {
                     "{", "    if (id == 2) { uv.x = 2.0; } else { uv.x = 0.0; }",
                     "    string s = \"} not a brace {\"; // } nor this", "    /* { */ position = float4(uv, 0, 1);",
                     "}", "float4 PS(float4 pos : SV_Position, nointerpolation float2 uv : TEXCOORD0) : SV_Target { return 0; }",
-                    "namespace Ns { float Helper(void) { { { } } return 1; } }", "float3 Tone(float c) { return c; }"}));
+                    "namespace Ns { float Helper(void) { { { } } return 1; } }", "float3 Tone(float c) { return c; }",
+                    "float Filter(sampler s, const int radius = 3, in float seed = 0.5) { return seed; }"}));
     EXPECT_EQ(parse.errors(), Lines{});
     const std::vector<ReshadeFunction>& f = parse.effect.functions;
-    ASSERT_EQ(f.size(), 5u);
+    ASSERT_EQ(f.size(), 6u);
     EXPECT_EQ(f[0].name, "Tone");
     EXPECT_EQ(f[0].returnType.rows, 3);
     EXPECT_EQ(parse.text(f[0].body), "{ return c; }");
@@ -221,6 +222,12 @@ TEST(ReshadeParserDeclarations, FunctionsWithParametersAndBodySpans) {
     EXPECT_TRUE(f[3].parameters.empty());
     EXPECT_EQ(parse.text(f[3].body), "{ { { } } return 1; }");
     EXPECT_EQ(f[4].name, "Tone");  // an overload
+    ASSERT_EQ(f[5].parameters.size(), 3u);
+    EXPECT_EQ(f[5].parameters[0].type.base, ReshadeBaseType::Sampler);
+    EXPECT_FALSE(f[5].parameters[0].defaultValue.has_value());
+    EXPECT_EQ(f[5].parameters[1].qualifiers, kReshadeIn | kReshadeConst);
+    EXPECT_EQ(f[5].parameters[1].defaultValue->describe(), "3");
+    EXPECT_EQ(f[5].parameters[2].defaultValue->describe(), "0.5");
 }
 
 }  // namespace rmfx

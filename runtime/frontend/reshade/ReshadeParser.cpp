@@ -612,6 +612,18 @@ void ReshadeParserRun::parseFunction(const ReshadeType& returnType, const std::s
         if (!parseField(p, element, true)) break;
         if (!(p.qualifiers & kReshadeOut)) p.qualifiers |= kReshadeIn;
         if (p.type.base == ReshadeBaseType::Void) c_.error(p.where, element, "parameter '" + p.name + "' cannot be void");
+        if (c_.accept("=")) {  // a default argument
+            std::string error;
+            const SourceLocation at = c_.here();
+            p.defaultValue = readReshadeConstant(c_, lookup(), error);
+            if (!p.defaultValue) {
+                c_.error(at, element, "the default value of parameter '" + p.name + "' is not a constant: " + error);
+                break;
+            }
+            p.defaultValue = fitToType(*p.defaultValue, p.type);
+        } else if (!f.parameters.empty() && f.parameters.back().defaultValue) {
+            c_.error(p.where, element, "parameter '" + p.name + "' needs a default value, as the parameters before it have");
+        }
         f.parameters.push_back(std::move(p));
     }
     if (!c_.expect(")", element)) {

@@ -148,6 +148,7 @@ struct ReshadeField {
     unsigned qualifiers = 0;
     std::string name;
     std::string semantic;  // as written; empty when none
+    std::optional<ReshadeValue> defaultValue;  // a parameter's `= value`, when it has one
     SourceLocation where;
 };
 
