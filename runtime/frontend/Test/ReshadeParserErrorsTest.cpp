@@ -20,7 +20,9 @@ TEST(ReshadeParserErrors, SeveralProblemsInOneRunEachWithItsLine) {
                     "texture T { Width = 4; Format = RGBA9; Colour = 1; };", "texture T { };",
                     "sampler S { AddressU = CLAMP; };", "sampler S2 { Texture = Nope; MinFilter = BILINEAR; };",
                     "float f() { return 1; }", "float f() { return 2; }", "static const float K;",
-                    "uniform float C = some_function(2);", "}", "foo bar;", "uniform float D = 1;"}));
+                    "uniform float C = some_function(2);", "}", "foo bar;", "uniform float D = 1;",
+                    "float D2() { return 0; }", "static const float D2 = 1;",
+                    "static const float3x3 M = float3x3(1, 0, 0, 0, 1, 0, 0, 0, 1);", "float3 M(float3 c) { return c; }"}));
     EXPECT_EQ(parse.problems(),
               (Lines{"main.fx:1: error: uniform A: expected ';', found 'uniform'",
                      "main.fx:2: error: uniform B: annotation 'ui_min': expected a value, found ';'",
@@ -36,7 +38,11 @@ TEST(ReshadeParserErrors, SeveralProblemsInOneRunEachWithItsLine) {
                      "main.fx:9: error: variable K: a constant needs an initial value",
                      "main.fx:10: error: uniform C: the initial value is not a constant rmfx computes: 'some_function' is not "
                      "a function rmfx computes in a constant",
-                     "main.fx:11: error: unexpected '}' (no '{' or namespace is open)", "main.fx:12: error: unknown type 'foo'"}));
+                     "main.fx:11: error: unexpected '}' (no '{' or namespace is open)", "main.fx:12: error: unknown type 'foo'",
+                     "main.fx:15: error: variable D2: redefinition of 'D2' (a function at main.fx:14)"}));
+    // A function after a variable of its name is not one: ReShade reads both
+    ASSERT_EQ(parse.effect.functions.size(), 3u);
+    EXPECT_EQ(parse.effect.functions[2].name, "M");
     // Reading went on after each
     ASSERT_EQ(parse.effect.uniforms.size(), 4u);
     EXPECT_EQ(parse.effect.uniforms[0].initializer->describe(), "1.0");

@@ -287,7 +287,7 @@ std::optional<ReshadeType> ReshadeParserRun::parseType(const std::string& elemen
     // A struct, by its name as written
     const size_t start = c_.position();
     const std::string written = readQualifiedName();
-    const Symbol* symbol = resolve(written);
+    const Symbol* symbol = resolve(written, DK::Struct);
     if (symbol && symbol->kind == DK::Struct) {
         type.base = ReshadeBaseType::Struct;
         type.name = effect_.structs[symbol->index].name;
@@ -516,8 +516,9 @@ void ReshadeParserRun::recover() {
 
 bool ReshadeParserRun::declare(const std::string& qualified, Symbol symbol, const std::string& element) {
     std::vector<Symbol>& entries = symbols_[qualified];
-    for (const Symbol& s : entries) {
-        if (s.kind == DK::Function && symbol.kind == DK::Function) continue;  // overloads: checked by their parameters
+    // A function may share its name, as in ReShade: with its overloads (their parameters are
+    // checked apart) and with a variable declared before it (`static const float3x3 M` and M(x)).
+    for (const Symbol& s : symbol.kind == DK::Function ? std::vector<Symbol>{} : entries) {
         c_.error(symbol.where, element,
                  "redefinition of '" + qualified + "' (a " + kindName(s.kind) + " at " + s.where.file + ":" +
                      std::to_string(s.where.line) + ")");
@@ -527,15 +528,20 @@ bool ReshadeParserRun::declare(const std::string& qualified, Symbol symbol, cons
     return true;
 }
 
-const ReshadeParserRun::Symbol* ReshadeParserRun::resolve(const std::string& written) const {
+const ReshadeParserRun::Symbol* ReshadeParserRun::resolve(const std::string& written, std::optional<ReshadeDeclaration::Kind> want) const {
+    auto pick = [&](const std::vector<Symbol>& entries) -> const Symbol* {
+        for (const Symbol& s : entries)
+            if (want && s.kind == *want) return &s;
+        return entries.empty() ? nullptr : &entries.front();
+    };
     if (written.rfind("::", 0) == 0) {
         auto it = symbols_.find(written.substr(2));
-        return it == symbols_.end() || it->second.empty() ? nullptr : &it->second.front();
+        return it == symbols_.end() ? nullptr : pick(it->second);
     }
     std::string scope = namespace_;
     for (;;) {
         auto it = symbols_.find(scope + written);
-        if (it != symbols_.end() && !it->second.empty()) return &it->second.front();
+        if (it != symbols_.end() && !it->second.empty()) return pick(it->second);
         if (scope.empty()) return nullptr;
         scope.resize(scope.size() - 2);
         const size_t cut = scope.rfind("::");
@@ -544,7 +550,7 @@ const ReshadeParserRun::Symbol* ReshadeParserRun::resolve(const std::string& wri
 }
 
 std::optional<ReshadeValue> ReshadeParserRun::constantNamed(const std::string& written) const {
-    const Symbol* symbol = resolve(written);
+    const Symbol* symbol = resolve(written, DK::Variable);
     if (!symbol || symbol->kind != DK::Variable) return std::nullopt;
     const ReshadeVariable& v = effect_.variables[symbol->index];
     if (!(v.qualifiers & kReshadeConst)) return std::nullopt;
@@ -591,7 +597,7 @@ std::optional<std::string> ReshadeParserRun::readTextureName(const std::string& 
         return std::nullopt;
     }
     const std::string written = readQualifiedName();
-    const Symbol* symbol = resolve(written);
+    const Symbol* symbol = resolve(written, DK::Texture);
     if (!symbol) c_.error(where, element, "undeclared identifier '" + written + "', expected a texture");
     else if (symbol->kind != DK::Texture) c_.error(where, element, "'" + written + "' is a " + kindName(symbol->kind) + ", not a texture");
     else return effect_.textures[symbol->index].name;
@@ -659,7 +665,7 @@ void ReshadeParserRun::parseFunction(const ReshadeType& returnType, const std::s
     for (const ReshadeField& p : f.parameters) signature.push_back(p.type.name + "[" + std::to_string(p.type.arrayLength) + "]");
     std::vector<std::vector<std::string>>& overloads = overloads_[f.name];
     if (std::find(overloads.begin(), overloads.end(), signature) != overloads.end()) {
-        const Symbol* first = resolve("::" + f.name);
+        const Symbol* first = resolve("::" + f.name, DK::Function);
         c_.error(where, element,
                  "redefinition of '" + f.name + "' with the same parameters" +
                      (first ? " (at " + first->where.file + ":" + std::to_string(first->where.line) + ")" : ""));

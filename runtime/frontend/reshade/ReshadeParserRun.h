@@ -58,7 +58,9 @@ private:
 
     // Symbols (qualified names) and their lookup through the enclosing namespaces.
     bool declare(const std::string& qualified, Symbol symbol, const std::string& element);
-    const Symbol* resolve(const std::string& written) const;
+    // The symbol a name as written means here, looked for in this namespace and then each one
+    // around it; of several with one name, the one of kind `want`.
+    const Symbol* resolve(const std::string& written, std::optional<ReshadeDeclaration::Kind> want = std::nullopt) const;
     std::string qualify(const std::string& name) const { return namespace_ + name; }
     std::optional<ReshadeValue> constantNamed(const std::string& written) const;
     ReshadeNameLookup lookup() const {

@@ -223,7 +223,7 @@ void ReshadeParserRun::parsePassState(ReshadePass& pass, const std::string& stat
             }
             if (!c_.expect(">", element)) return;
         }
-        const Symbol* symbol = resolve(written);
+        const Symbol* symbol = resolve(written, DK::Function);
         if (!symbol) {
             c_.error(at, element, state + ": undeclared identifier '" + written + "', expected a function");
             return;
