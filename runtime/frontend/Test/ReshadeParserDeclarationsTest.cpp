@@ -30,11 +30,12 @@ TEST(ReshadeParserDeclarations, UniformsWithEveryAnnotationAndInitialValues) {
                     "uniform float timer < source = \"timer\"; >;", "uniform bool Flag = true;",
                     "uniform float4x4 M = float4x4(1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1);",
                     "uniform float Weights[3] = { 1, 2.5, 3 };", "uniform uint Bits = 0xFFu, Other = -(2 << 3);",
-                    "uniform float Half = 1920 / 2 * 0.5 + float2(1, 2).y;", "float Implicit = 1;"}));
+                    "uniform float Half = 1920 / 2 * 0.5 + float2(1, 2).y;", "float Implicit = 1;",
+                    "uniform float2 Comma = (1.5, 2.5);"}));
     EXPECT_EQ(parse.problems(), (Lines{"main.fx:12: warning: uniform Implicit: a global without 'static' is a uniform, as if "
                                        "declared 'uniform'"}));
     const std::vector<ReshadeUniform>& u = parse.effect.uniforms;
-    ASSERT_EQ(u.size(), 11u);
+    ASSERT_EQ(u.size(), 12u);
     EXPECT_EQ(u[0].name, "Strength");
     EXPECT_EQ(u[0].type.base, ReshadeBaseType::Float);
     EXPECT_EQ(u[0].where.line, 1);
@@ -63,6 +64,7 @@ TEST(ReshadeParserDeclarations, UniformsWithEveryAnnotationAndInitialValues) {
     EXPECT_EQ(u[8].initializer->describe(), "4294967280");  // -16 as a uint
     EXPECT_EQ(u[9].initializer->describe(), "482.0");
     EXPECT_TRUE(u[10].implicit);
+    EXPECT_EQ(u[11].initializer->describe(), "{2.5, 2.5}");  // the comma operator, then spread
     EXPECT_FALSE(u[0].implicit);
 }
 
@@ -196,10 +198,11 @@ TEST(ReshadeParserDeclarations, FunctionsWithParametersAndBodySpans) {
                     "    string s = \"} not a brace {\"; // } nor this", "    /* { */ position = float4(uv, 0, 1);",
                     "}", "float4 PS(float4 pos : SV_Position, nointerpolation float2 uv : TEXCOORD0) : SV_Target { return 0; }",
                     "namespace Ns { float Helper(void) { { { } } return 1; } }", "float3 Tone(float c) { return c; }",
-                    "float Filter(sampler s, const int radius = 3, in float seed = 0.5) { return seed; }"}));
+                    "float Filter(sampler s, const int radius = 3, in float seed = 0.5) { return seed; }",
+                    "[shader(\"compute\")] [numthreads(8, 4 * 2, 1)] void Main(uint3 id : SV_DispatchThreadID) { }"}));
     EXPECT_EQ(parse.errors(), Lines{});
     const std::vector<ReshadeFunction>& f = parse.effect.functions;
-    ASSERT_EQ(f.size(), 6u);
+    ASSERT_EQ(f.size(), 7u);
     EXPECT_EQ(f[0].name, "Tone");
     EXPECT_EQ(f[0].returnType.rows, 3);
     EXPECT_EQ(parse.text(f[0].body), "{ return c; }");
@@ -228,6 +231,12 @@ TEST(ReshadeParserDeclarations, FunctionsWithParametersAndBodySpans) {
     EXPECT_EQ(f[5].parameters[1].qualifiers, kReshadeIn | kReshadeConst);
     EXPECT_EQ(f[5].parameters[1].defaultValue->describe(), "3");
     EXPECT_EQ(f[5].parameters[2].defaultValue->describe(), "0.5");
+    ASSERT_EQ(f[6].attributes.size(), 2u);
+    EXPECT_EQ(f[6].attributes[0].name, "shader");
+    EXPECT_EQ(f[6].attributes[0].arguments[0].text, "compute");
+    EXPECT_EQ(f[6].attributes[1].name, "numthreads");
+    EXPECT_EQ(f[6].attributes[1].arguments[1].describe(), "8");
+    EXPECT_TRUE(f[0].attributes.empty());
 }
 
 }  // namespace rmfx

@@ -290,6 +290,7 @@ private:
             case TK::Punct: {
                 if (c_.accept("(")) {
                     std::optional<ReshadeValue> v = ternaryNoStop();
+                    while (v && c_.accept(",")) v = ternaryNoStop();  // the comma operator: the last value
                     if (!v || !expect(")")) return std::nullopt;
                     return v;
                 }

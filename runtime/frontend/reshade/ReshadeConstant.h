@@ -9,7 +9,7 @@
 //
 // What it computes: literals (decimal, hex, octal, float with suffixes, true / false (and TRUE /
 // FALSE, as ReShade reads them), strings with
-// their escapes, adjacent strings joined), `( )`, `{ a, b }` (an array's elements in turn),
+// their escapes, adjacent strings joined), `( )` (with the comma operator: `(1.5, 2)` is 2), `{ a, b }` (an array's elements in turn),
 // constructors (`float3(…)`, `int(…)`), casts (`(int)x`), swizzles (`.xy`, `.rgba`), unary
 // + - ! ~, binary * / % + - << >> < > <= >= == != & ^ | && ||, ?:, a few intrinsics (min, max,
 // abs, clamp, saturate, floor, ceil, round, trunc, frac, sqrt, rcp, pow, exp, exp2, log, log2,

@@ -329,7 +329,36 @@ bool ReshadeParserRun::parseArraySize(ReshadeType& type, const std::string& elem
     return c_.expect("]", element);
 }
 
+std::vector<ReshadeAttribute> ReshadeParserRun::parseAttributes() {
+    std::vector<ReshadeAttribute> attributes;
+    while (c_.is("[")) {
+        c_.next();
+        ReshadeAttribute a;
+        a.where = c_.here();
+        std::optional<std::string> name = c_.expectIdentifier("", "an attribute name");
+        if (!name) break;
+        a.name = *name;
+        if (c_.accept("(")) {
+            while (!c_.atEnd() && !c_.is(")")) {
+                if (!a.arguments.empty() && !c_.expect(",", "attribute " + a.name)) break;
+                std::string error;
+                std::optional<ReshadeValue> v = readReshadeConstant(c_, lookup(), error);
+                if (!v) {
+                    c_.error(a.where, "attribute " + a.name, error);
+                    break;
+                }
+                a.arguments.push_back(std::move(*v));
+            }
+            if (!c_.expect(")", "attribute " + a.name)) break;
+        }
+        if (!c_.expect("]", "attribute " + a.name)) break;
+        attributes.push_back(std::move(a));
+    }
+    return attributes;
+}
+
 void ReshadeParserRun::parseDeclaration() {
+    std::vector<ReshadeAttribute> attributes = parseAttributes();
     const unsigned qualifiers = parseQualifiers();
     std::optional<ReshadeType> type = parseType("");
     if (!type) return recover();
@@ -339,8 +368,9 @@ void ReshadeParserRun::parseDeclaration() {
     if (c_.is("(")) {
         if (qualifiers & ~(kReshadeStatic | kReshadePrecise))
             c_.error(where, "function " + qualify(*name), "a function's return type cannot have qualifiers");
-        return parseFunction(*type, *name, where);
+        return parseFunction(*type, *name, where, std::move(attributes));
     }
+    if (!attributes.empty()) c_.error(attributes.front().where, "", "attributes come before functions only");
     std::string element = parseGlobal(*type, qualifiers, *name, where);
     while (c_.accept(",")) {
         const SourceLocation next = c_.here();
@@ -604,8 +634,10 @@ std::optional<std::string> ReshadeParserRun::readTextureName(const std::string& 
     return std::nullopt;
 }
 
-void ReshadeParserRun::parseFunction(const ReshadeType& returnType, const std::string& name, const SourceLocation& where) {
+void ReshadeParserRun::parseFunction(const ReshadeType& returnType, const std::string& name, const SourceLocation& where,
+                                     std::vector<ReshadeAttribute> attributes) {
     ReshadeFunction f;
+    f.attributes = std::move(attributes);
     f.name = qualify(name);
     f.returnType = returnType;
     f.where = where;

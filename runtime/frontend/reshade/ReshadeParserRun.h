@@ -40,7 +40,10 @@ private:
     unsigned parseQualifiers();
     std::optional<ReshadeType> parseType(const std::string& element);
     bool parseArraySize(ReshadeType& type, const std::string& element);
-    void parseFunction(const ReshadeType& returnType, const std::string& name, const SourceLocation& where);
+    void parseFunction(const ReshadeType& returnType, const std::string& name, const SourceLocation& where,
+                       std::vector<ReshadeAttribute> attributes);
+    // `[name]` or `[name(constant, …)]`, any number, before a declaration.
+    std::vector<ReshadeAttribute> parseAttributes();
     bool parseField(ReshadeField& field, const std::string& element, bool parameter);
     // Returns the declaration's element ("uniform Ns::X"), for what follows it.
     std::string parseGlobal(ReshadeType type, unsigned qualifiers, const std::string& name, const SourceLocation& where);

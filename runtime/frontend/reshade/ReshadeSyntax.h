@@ -168,7 +168,15 @@ struct ReshadeVariable {
     SourceLocation where;
 };
 
+// An attribute before a function: `[shader("vertex")]`, `[numthreads(8, 8, 1)]`.
+struct ReshadeAttribute {
+    std::string name;
+    std::vector<ReshadeValue> arguments;
+    SourceLocation where;
+};
+
 struct ReshadeFunction {
+    std::vector<ReshadeAttribute> attributes;
     std::string name;
     ReshadeType returnType;
     std::string returnSemantic;
