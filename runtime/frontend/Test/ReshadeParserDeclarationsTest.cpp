@@ -31,11 +31,11 @@ TEST(ReshadeParserDeclarations, UniformsWithEveryAnnotationAndInitialValues) {
                     "uniform float4x4 M = float4x4(1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1);",
                     "uniform float Weights[3] = { 1, 2.5, 3 };", "uniform uint Bits = 0xFFu, Other = -(2 << 3);",
                     "uniform float Half = 1920 / 2 * 0.5 + float2(1, 2).y;", "float Implicit = 1;",
-                    "uniform float2 Comma = (1.5, 2.5);"}));
+                    "uniform float2 Comma = (1.5, 2.5);", "uniform vector<int, 3> V = 2; uniform matrix<float, 2, 3> Mx;"}));
     EXPECT_EQ(parse.problems(), (Lines{"main.fx:12: warning: uniform Implicit: a global without 'static' is a uniform, as if "
                                        "declared 'uniform'"}));
     const std::vector<ReshadeUniform>& u = parse.effect.uniforms;
-    ASSERT_EQ(u.size(), 12u);
+    ASSERT_EQ(u.size(), 14u);
     EXPECT_EQ(u[0].name, "Strength");
     EXPECT_EQ(u[0].type.base, ReshadeBaseType::Float);
     EXPECT_EQ(u[0].where.line, 1);
@@ -65,6 +65,10 @@ TEST(ReshadeParserDeclarations, UniformsWithEveryAnnotationAndInitialValues) {
     EXPECT_EQ(u[9].initializer->describe(), "482.0");
     EXPECT_TRUE(u[10].implicit);
     EXPECT_EQ(u[11].initializer->describe(), "{2.5, 2.5}");  // the comma operator, then spread
+    EXPECT_EQ(u[12].type.base, ReshadeBaseType::Int);
+    EXPECT_EQ(u[12].initializer->describe(), "{2, 2, 2}");
+    EXPECT_EQ(u[13].type.rows, 2);
+    EXPECT_EQ(u[13].type.cols, 3);
     EXPECT_FALSE(u[0].implicit);
 }
 
@@ -113,7 +117,7 @@ TEST(ReshadeParserDeclarations, SamplersAndStoragesWithTheirStates) {
                     "sampler Plain { Texture = Tex; };",
                     "sampler2D Full { Texture = Ns::Inner; AddressU = WRAP; AddressV = REPEAT; AddressW = Mirror;",
                     "  MagFilter = POINT; MinFilter = ANISOTROPIC; MipFilter = LINEAR; MinLOD = 1.5; MaxLOD = 4;",
-                    "  MipLODBias = -0.5f; SRGBTexture = true; };", "sampler Bordered { Texture = Tex; AddressU = BORDER; };",
+                    "  MipLODBias = -0.5f; SRGBTexture = true; };", "sampler Bordered { Texture = Tex; AddressU = BORDER; SRGBTexture = TRUE; };",
                     "storage2D Store { Texture = Tex; MipLevel = 2; };", "storage Plain2 { Texture = Tex; };"}));
     EXPECT_EQ(parse.problems(), Lines{});
     const std::vector<ReshadeSampler>& s = parse.effect.samplers;
@@ -136,6 +140,7 @@ TEST(ReshadeParserDeclarations, SamplersAndStoragesWithTheirStates) {
     EXPECT_TRUE(s[1].srgb);
     EXPECT_EQ(s[1].where.line, 4);
     EXPECT_EQ(s[2].address[0], ReshadeAddressMode::Border);
+    EXPECT_TRUE(s[2].srgb);  // TRUE, as D3D effects write it and ReShade reads it
     const std::vector<ReshadeStorage>& st = parse.effect.storages;
     ASSERT_EQ(st.size(), 2u);
     EXPECT_EQ(st[0].texture, "Tex");
