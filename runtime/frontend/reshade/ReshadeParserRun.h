@@ -1,7 +1,8 @@
 #pragma once
 // One run of the ReShade FX parser (ReshadeParser.h), shared by the files that implement it:
-// ReshadeParser.cpp (the top level: namespaces, structs, globals, functions, annotations, names),
-// ReshadeObjects.cpp (textures, samplers, storages) and ReshadeTechniques.cpp (techniques, passes).
+// ReshadeParser.cpp (the top level: namespaces, globals, annotations, names), ReshadeFunctions.cpp
+// (structs, functions), ReshadeObjects.cpp (textures, samplers, storages) and ReshadeTechniques.cpp
+// (techniques, passes).
 // Internal to the parser.
 
 #include <map>
@@ -35,16 +36,14 @@ private:
     // ReshadeParser.cpp
     void topLevel(int depth);
     void parseNamespace(int depth);
-    void parseStruct();
     void parseDeclaration();
     unsigned parseQualifiers();
     std::optional<ReshadeType> parseType(const std::string& element);
     bool parseArraySize(ReshadeType& type, const std::string& element);
-    void parseFunction(const ReshadeType& returnType, const std::string& name, const SourceLocation& where,
-                       std::vector<ReshadeAttribute> attributes);
-    // `[name]` or `[name(constant, …)]`, any number, before a declaration.
-    std::vector<ReshadeAttribute> parseAttributes();
-    bool parseField(ReshadeField& field, const std::string& element, bool parameter);
+
+    // An initializer's value for a variable of `type`: converted to its kind, a scalar spread over
+    // a vector, an unsized array's length taken from it.
+    static ReshadeValue fitToType(const ReshadeValue& value, ReshadeType& type);
     // Returns the declaration's element ("uniform Ns::X"), for what follows it.
     std::string parseGlobal(ReshadeType type, unsigned qualifiers, const std::string& name, const SourceLocation& where);
     ReshadeAnnotations parseAnnotations(const std::string& element);
@@ -75,6 +74,14 @@ private:
     // Reads a texture name as written and resolves it: its qualified name, or nullopt after an error.
     std::optional<std::string> readTextureName(const std::string& element);
     void addDeclaration(ReshadeDeclaration::Kind kind, size_t index) { effect_.order.push_back({kind, index}); }
+
+    // ReshadeFunctions.cpp
+    void parseStruct();
+    bool parseField(ReshadeField& field, const std::string& element, bool parameter);
+    // `[name]` or `[name(constant, …)]`, any number, before a declaration.
+    std::vector<ReshadeAttribute> parseAttributes();
+    void parseFunction(const ReshadeType& returnType, const std::string& name, const SourceLocation& where,
+                       std::vector<ReshadeAttribute> attributes);
 
     // ReshadeObjects.cpp
     void parseTexture(ReshadeType type, const std::string& name, const SourceLocation& where);
