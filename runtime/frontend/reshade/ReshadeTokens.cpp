@@ -60,17 +60,15 @@ std::vector<LogicalLine> splitLogicalLines(std::string_view text, int* untermina
         }
         char c = text[i];
         if (c == '/' && i + 1 < text.size() && text[i + 1] == '/') {
-            // To the end of the logical line: a continuation carries the comment on.
-            while (i < text.size() && !lineBreak(text, i)) {
-                if (size_t cont = continuation(text, i)) {
-                    i += cont;
-                    ++physical;
-                    ++current.span;
-                } else {
-                    ++i;
-                }
-            }
+            // To the end of the physical line, as ReShade's lexer reads it: a backslash at the end
+            // of a line comment does not carry it onto the next line (C would; GShade's
+            // Clarity2.fx ends a comment with "\\" before an #if that ReShade reads).
+            while (i < text.size() && !lineBreak(text, i)) ++i;
             current.text += ' ';
+            continue;
+        }
+        if (c == '\\' && i + 1 == text.size()) {  // a continuation with no line after it: nothing
+            ++i;
             continue;
         }
         if (c == '/' && i + 1 < text.size() && text[i + 1] == '*') {
