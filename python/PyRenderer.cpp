@@ -166,10 +166,10 @@ void PyRenderer::update(std::vector<Given>& given) {
     const glm::ivec2 viewport = executor_->viewport();
     for (Given& g : given) {
         inputFiles_[g.argument.name] = g.argument.text.substr(g.argument.name.size() + 1);
-        const bool resampled = g.input->sizesViewport && g.size != viewport;
-        if (g.direct && !resampled && executor_->writeInputPixels(g.argument.name, *g.direct)) continue;
+        const bool toResample = g.input->sizesViewport && g.size != viewport;
+        if (g.direct && !toResample && executor_->writeInputPixels(g.argument.name, *g.direct)) continue;
         std::shared_ptr<const Image> image = imageOf(g);
-        if (resampled) {
+        if (toResample) {
             // As readRunInputs resampled the image the run was built with (a size was given).
             Result<Image> resampled = resampleImage(*image, viewport.x, viewport.y);
             if (!resampled) fail("input '" + g.argument.name + "': " + resampled.error(), "input " + g.argument.name);
