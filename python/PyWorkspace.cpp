@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <utility>
 
 #include <pybind11/stl.h>
@@ -10,19 +11,27 @@
 #include "model/EffectSelection.h"
 #include "python/Errors.h"
 #include "python/Values.h"
+#include "validation/TextureArguments.h"
 
 namespace py = pybind11;
 
 namespace rmfx::python {
 
 PyWorkspace::PyWorkspace(const std::string& path, const std::vector<std::string>& media, const std::string& missingMedia,
-                         const std::string& effect, const std::vector<std::pair<std::string, std::string>>& overrides) {
+                         const std::string& effect, const std::vector<std::pair<std::string, std::string>>& overrides,
+                         const std::vector<std::string>& textures, bool sandbox) {
     if (missingMedia != "error" && missingMedia != "placeholder")
         fail("missing_media: expected 'error' or 'placeholder', got '" + missingMedia + "'", "missing_media");
     request_.workspace = path;
     for (const std::string& folder : media) request_.load.media.searchPath.emplace_back(folder);
     request_.load.media.missing = missingMedia == "placeholder" ? MissingMedia::Placeholder : MissingMedia::Error;
+    request_.load.media.sandbox = sandbox;
     request_.load.effect = effect;
+    for (const std::string& text : textures) {
+        Result<TextureArgument> texture = parseTextureArgument(text);
+        if (!texture) fail("textures: " + texture.error(), "texture " + text.substr(0, text.find('=')));
+        request_.load.textures.push_back(std::move(*texture));
+    }
     request_.overrides = overrides;
     Result<LoadedRun> loaded = loadRun(request_);
     if (!loaded) fail(loaded.takeDiagnostics());
@@ -190,32 +199,59 @@ void bindWorkspace(py::module_& m) {
                 const RunRequest& r = w.request();
                 std::vector<std::string> media;
                 for (const auto& folder : r.load.media.searchPath) media.push_back(std::filesystem::absolute(folder).string());
+                std::vector<std::string> textures;
+                for (const TextureArgument& t : r.load.textures) {
+                    std::string text = t.name + "=";
+                    for (size_t i = 0; i < t.files.size(); ++i)
+                        text += (i ? "," : "") + std::filesystem::absolute(t.files[i]).string();
+                    textures.push_back(text);
+                }
                 return py::make_tuple(r.workspace ? std::filesystem::absolute(*r.workspace).string() : std::string(), media,
                                       r.load.media.missing == MissingMedia::Placeholder ? "placeholder" : "error", r.load.effect,
-                                      r.overrides, w.effects() ? py::cast(*w.effects()) : py::object(py::none()));
+                                      r.overrides, w.effects() ? py::cast(*w.effects()) : py::object(py::none()), textures,
+                                      r.load.media.sandbox);
             },
             [](const py::tuple& state) {
-                if (state.size() != 6) fail("a pickled rmfx.Workspace of another version", "pickle");
+                if (state.size() != 8) fail("a pickled rmfx.Workspace of another version", "pickle");
                 auto w = std::make_shared<PyWorkspace>(
                     state[0].cast<std::string>(), state[1].cast<std::vector<std::string>>(), state[2].cast<std::string>(),
-                    state[3].cast<std::string>(), state[4].cast<std::vector<std::pair<std::string, std::string>>>());
+                    state[3].cast<std::string>(), state[4].cast<std::vector<std::pair<std::string, std::string>>>(),
+                    state[6].cast<std::vector<std::string>>(), state[7].cast<bool>());
                 if (!state[5].is_none()) w->selectEffects(state[5].cast<std::vector<std::string>>());
                 return w;
             }));
 
     m.def("load", [](const py::object& path, const std::vector<py::object>& media, const std::string& missingMedia,
-                     const std::string& effect, const py::kwargs& overrides) {
+                     const std::string& effect, const std::optional<py::dict>& textures, bool sandbox, const py::kwargs& overrides) {
         std::vector<std::string> folders;
         for (const py::object& folder : media) folders.push_back(fspath(folder));
+        std::vector<std::string> textureTexts;
+        if (textures)
+            for (auto [key, value] : *textures) {
+                const std::string name = py::str(key).cast<std::string>();
+                std::string files;
+                if (py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__")) {
+                    files = fspath(py::reinterpret_borrow<py::object>(value));
+                } else if (py::isinstance<py::sequence>(value)) {
+                    for (const py::handle& face : py::reinterpret_borrow<py::sequence>(value))
+                        files += (files.empty() ? "" : ",") + fspath(py::reinterpret_borrow<py::object>(face));
+                } else {
+                    fail("textures: '" + name + "' takes a path, or six paths for a cube map's faces", "texture " + name);
+                }
+                textureTexts.push_back(name + "=" + files);
+            }
         std::vector<std::pair<std::string, std::string>> values;
         for (auto [key, value] : overrides) {
             const std::string name = py::str(key).cast<std::string>();
             values.emplace_back(name, valueText(name, value));
         }
-        return std::make_shared<PyWorkspace>(fspath(path), folders, missingMedia, effect, values);
+        return std::make_shared<PyWorkspace>(fspath(path), folders, missingMedia, effect, values, textureTexts, sandbox);
     }, py::arg("path"), py::kw_only(), py::arg("media") = std::vector<py::object>{}, py::arg("missing_media") = "error",
-       py::arg("effect") = "",
-       "load(path, *, media=[], missing_media='error', effect='', **overrides) -> Workspace\n\n"
+       py::arg("effect") = "", py::arg("textures") = py::none(), py::arg("sandbox") = false,
+       "load(path, *, media=[], missing_media='error', effect='', textures=None, sandbox=False, **overrides) -> Workspace\n\n"
+       "textures: {name: path} (or six paths +x, -x, +y, -y, +z, -z for a cube map) in place of the textures' own files, "
+       "as rmfx render --texture. sandbox: no reference may lead outside the workspace's folder and `media` (rmfx "
+       "render --sandbox).\n\n"
        "Loads and validates an rmfx workspace (.xml) or a RenderMonkey .rfx file (effect: which of its effects; '' the "
        "active one). media: folders searched for referenced files after the workspace's own; missing_media: 'error' or "
        "'placeholder' (a stand-in and a warning). Name=value keyword arguments set variables, as rmfx render --set. "

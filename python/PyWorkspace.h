@@ -20,8 +20,11 @@ public:
     // The file (an rmfx workspace or a RenderMonkey .rfx), the media search path, what a missing
     // file becomes ("error" or "placeholder"), the .rfx effect to import ("" the active one), and
     // NAME=VALUE overrides. Raises rmfx.Error with the loader's diagnostics.
+    // textures: "NAME=FILE" (or six faces "NAME=px,nx,py,ny,pz,nz") as rmfx render --texture takes
+    // them; sandbox: references may not lead outside the workspace's folder and `media`.
     PyWorkspace(const std::string& path, const std::vector<std::string>& media, const std::string& missingMedia,
-                const std::string& effect, const std::vector<std::pair<std::string, std::string>>& overrides);
+                const std::string& effect, const std::vector<std::pair<std::string, std::string>>& overrides,
+                const std::vector<std::string>& textures = {}, bool sandbox = false);
 
     const Workspace& ws() const { return loaded_.ws; }
     const LoadedRun& loaded() const { return loaded_; }

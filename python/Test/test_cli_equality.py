@@ -64,3 +64,31 @@ def test_module_equals_cli_with_values_frames_and_an_input(rmfx_binary, tmp_path
     ws["Exposure_Level"] = 1.75
     ws["Environment_Format"] = 1
     assert_bit_equal(renderer.render(), cli)
+
+
+def test_textures_and_sandbox_as_the_command_takes_them(rmfx_binary, tmp_path):
+    """rmfx.load(textures={...}) is --texture, and survives pickling; sandbox=True is --sandbox."""
+    import pickle
+
+    rows = np.linspace(0.0, 3.0, 32, dtype=np.float32)[:, None, None]  # a 2:1 longitude/latitude sky, top bright
+    cols = np.linspace(0.2, 1.0, 64, dtype=np.float32)[None, :, None]
+    sky = np.concatenate([np.broadcast_to(3.0 - rows, (32, 64, 1)), np.broadcast_to(cols, (32, 64, 1)),
+                          np.broadcast_to(rows * cols, (32, 64, 1))], axis=2).astype(np.float32)
+    write_exr(tmp_path / "sky.exr", sky)
+    shader_1 = SOURCE_DIR / "effects" / "shader_1.xml"
+    cli = cli_render(rmfx_binary, shader_1, tmp_path / "cli.exr", "--texture", f"Sky_Float={tmp_path / 'sky.exr'}",
+                     "--set", "Environment_Format=1")
+    ws = rmfx.load(shader_1, textures={"Sky_Float": tmp_path / "sky.exr"}, Environment_Format=1)
+    assert_bit_equal(ws.renderer(size=SIZE).render(), cli)
+    assert_bit_equal(pickle.loads(pickle.dumps(ws)).renderer(size=SIZE).render(), cli)
+    assert not np.array_equal(rmfx.load(shader_1, Environment_Format=1).renderer(size=SIZE).render(), cli)
+
+    with pytest.raises(rmfx.Error) as e:
+        rmfx.load(shader_1, sandbox=True)
+    assert "sandbox" in str(e.value) and e.value.file.endswith("shader_1.xml")
+    rmfx.load(shader_1, sandbox=True, media=[SOURCE_DIR / "samples" / "media"])
+    with pytest.raises(rmfx.Error) as e:
+        rmfx.load(shader_1, textures={"Sky_Float": 42})
+    assert e.value.element == "texture Sky_Float"
+    with pytest.raises(rmfx.Error):
+        rmfx.load(shader_1, textures={"No_Such_Texture": tmp_path / "sky.exr"})
