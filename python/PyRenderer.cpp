@@ -49,6 +49,18 @@ PyRenderer::PyRenderer(std::shared_ptr<PyWorkspace> ws, glm::ivec2 size, bool ti
              "size");
 }
 
+void PyRenderer::setRunOptions(std::optional<double> memoryBudgetMiB, bool contentSkip, bool poolTargets) {
+    if (memoryBudgetMiB) {
+        if (!(*memoryBudgetMiB > 0.0) || *memoryBudgetMiB > 1048576.0)
+            fail("memory_budget: expected MiB of render-target memory above 0 (up to 1048576), got " +
+                     std::to_string(*memoryBudgetMiB),
+                 "memory_budget");
+        memoryBudget_ = static_cast<std::size_t>(*memoryBudgetMiB * 1048576.0);
+    }
+    contentSkip_ = contentSkip;
+    poolTargets_ = poolTargets;
+}
+
 PyRenderer::~PyRenderer() {
     if (executor_) {
         makeCurrent();  // the executor deletes its GL objects in its context
@@ -117,6 +129,9 @@ void PyRenderer::build(std::vector<Given>& given, const Plan& plan) {
     request.plan.outputs = {plan.target};
     request.plan.checkHealth = plan.check;
     request.plan.effects = ws_->effects();
+    request.plan.memoryBudget = memoryBudget_;
+    request.plan.contentSkip = contentSkip_;
+    request.plan.poolTargets = poolTargets_;
     LoadedRun loaded = ws_->loaded();
     Diagnostics warnings;
     if (Result<void> read = readRunInputs(loaded, request); !read) fail(read.takeDiagnostics());
@@ -358,15 +373,22 @@ void bindRenderer(py::module_& m) {
         .def("__repr__", [](const HealthFinding& f) { return "<rmfx.HealthFinding " + describeFinding(f) + ">"; });
 
     py::class_<PyRenderer>(m, "Renderer",
-        "Renderer(workspace, size=None, timing=False, frame_budget=0): renders a workspace headless, keeping its GL "
-        "context and executor between calls (see render()). frame_budget: seconds a frame may take, GPU work included, "
-        "as rmfx render --frame-budget: a frame past it ends the process with exit status 3 (a shader stuck in the "
-        "driver cannot be interrupted otherwise); 0, the default: no limit.")
-        .def(py::init([](std::shared_ptr<PyWorkspace> ws, std::optional<std::pair<int, int>> size, bool timing, double budget) {
-                 return std::make_unique<PyRenderer>(std::move(ws), sizeOf(size), timing, budget);
+        "Renderer(workspace, size=None, timing=False, frame_budget=0, memory_budget=None, content_skip=True, "
+        "pool_targets=True): renders a workspace headless, keeping its GL context and executor between calls (see "
+        "render()). frame_budget: seconds a frame may take, GPU work included, as rmfx render --frame-budget: a frame "
+        "past it ends the process with exit status 3 (a shader stuck in the driver cannot be interrupted otherwise); 0, "
+        "the default: no limit. memory_budget: MiB of render-target memory a frame may hold (--memory-budget, default "
+        "4096); content_skip=False runs effects whose source holds nothing all the same (--content-skip off); "
+        "pool_targets=False gives every target memory of its own (--no-pool).")
+        .def(py::init([](std::shared_ptr<PyWorkspace> ws, std::optional<std::pair<int, int>> size, bool timing, double budget,
+                         std::optional<double> memory, bool contentSkip, bool pool) {
+                 auto r = std::make_unique<PyRenderer>(std::move(ws), sizeOf(size), timing, budget);
+                 r->setRunOptions(memory, contentSkip, pool);
+                 return r;
              }),
              py::arg("workspace"), py::kw_only(), py::arg("size") = py::none(), py::arg("timing") = false,
-             py::arg("frame_budget") = 0.0)
+             py::arg("frame_budget") = 0.0, py::arg("memory_budget") = py::none(), py::arg("content_skip") = true,
+             py::arg("pool_targets") = true)
         .def("render", &PyRenderer::render, py::kw_only(), py::arg("inputs") = py::dict(), py::arg("frames") = 1,
              py::arg("dt") = double(1.0f / 60.0f), py::arg("target") = "", py::arg("check") = false, py::arg("dtype") = "float32",
              "render(*, inputs={}, frames=1, dt=1/60, target='', check=False, dtype='float32') -> numpy.ndarray\n\n"
@@ -401,9 +423,13 @@ void bindRenderer(py::module_& m) {
 
     // ws.renderer(size=…, timing=…): the same as rmfx.Renderer(ws, …).
     py::reinterpret_borrow<py::class_<PyWorkspace, std::shared_ptr<PyWorkspace>>>(m.attr("Workspace"))
-        .def("renderer", [](std::shared_ptr<PyWorkspace> ws, std::optional<std::pair<int, int>> size, bool timing, double budget) {
-            return std::make_unique<PyRenderer>(std::move(ws), sizeOf(size), timing, budget);
+        .def("renderer", [](std::shared_ptr<PyWorkspace> ws, std::optional<std::pair<int, int>> size, bool timing, double budget,
+                            std::optional<double> memory, bool contentSkip, bool pool) {
+            auto r = std::make_unique<PyRenderer>(std::move(ws), sizeOf(size), timing, budget);
+            r->setRunOptions(memory, contentSkip, pool);
+            return r;
         }, py::arg("size") = py::none(), py::kw_only(), py::arg("timing") = false, py::arg("frame_budget") = 0.0,
+        py::arg("memory_budget") = py::none(), py::arg("content_skip") = true, py::arg("pool_targets") = true,
         "renderer(size=None, *, timing=False, frame_budget=0) -> Renderer: rmfx.Renderer(ws, size=size, …)");
 }
 

@@ -31,6 +31,10 @@ public:
     // workspace's). timing: per-pass GPU timers on (a little slower). frameBudget: seconds a frame
     // may take, as rmfx render --frame-budget (past it the process ends with status 3); 0: none.
     PyRenderer(std::shared_ptr<PyWorkspace> ws, glm::ivec2 size, bool timing, double frameBudget = 0.0);
+
+    // rmfx render --memory-budget (MiB), --content-skip on|off and --no-pool for the runs this
+    // renderer compiles from now on.
+    void setRunOptions(std::optional<double> memoryBudgetMiB, bool contentSkip, bool poolTargets);
     ~PyRenderer();
     PyRenderer(const PyRenderer&) = delete;
     PyRenderer& operator=(const PyRenderer&) = delete;
@@ -99,6 +103,9 @@ private:
     std::uint64_t valuesRevision_ = 0;
     std::map<std::string, std::string> inputFiles_;  // for explain(): what each input was given
     double frameBudget_ = 0.0;
+    std::size_t memoryBudget_ = kDefaultMemoryBudget;
+    bool contentSkip_ = true;
+    bool poolTargets_ = true;
     std::optional<FrameStepper> steps_;  // none: no frame since the run was built
     long stepsBase_ = 0;                 // the frame steps_ counts its indices from
     long nextFrame_ = 0;                 // the index (in the run's timeline) of the next frame

@@ -92,3 +92,22 @@ def test_textures_and_sandbox_as_the_command_takes_them(rmfx_binary, tmp_path):
     assert e.value.element == "texture Sky_Float"
     with pytest.raises(rmfx.Error):
         rmfx.load(shader_1, textures={"No_Such_Texture": tmp_path / "sky.exr"})
+
+
+def test_run_options_as_the_command_takes_them(rmfx_binary, tmp_path):
+    """memory_budget is --memory-budget (a run over it fails before anything renders); content_skip=False
+    and pool_targets=False are --content-skip off and --no-pool, which change no pixel."""
+    hdr = SOURCE_DIR / "effects" / "hdr_lighting.xml"
+    dark = np.full((SIZE[1], SIZE[0], 4), 0.01, np.float32)  # nothing for the bright pass: content skip skips bloom
+    write_exr(tmp_path / "dark.exr", dark)
+    cli = cli_render(rmfx_binary, hdr, tmp_path / "cli.exr", "--input", f"scene={tmp_path / 'dark.exr'}", "--frames", "2",
+                     "--content-skip", "off", "--no-pool")
+    ws = rmfx.load(hdr)
+    for options in ({}, {"content_skip": False}, {"pool_targets": False}, {"content_skip": False, "pool_targets": False}):
+        assert_bit_equal(ws.renderer(size=SIZE, **options).render(inputs={"scene": dark}, frames=2), cli)
+    with pytest.raises(rmfx.Error) as e:
+        ws.renderer(size=SIZE, memory_budget=0.01).render(inputs={"scene": dark})
+    assert "memory" in str(e.value)
+    with pytest.raises(rmfx.Error) as e:
+        ws.renderer(memory_budget=-1)
+    assert e.value.element == "memory_budget"
