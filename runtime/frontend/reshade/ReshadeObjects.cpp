@@ -98,20 +98,37 @@ void ReshadeParserRun::parseTexture(ReshadeType type, const std::string& name, c
     addDeclaration(DK::Texture, index);
 }
 
+bool ReshadeParserRun::openBoundObject(ReshadeType& type, const std::string& kind, const SourceLocation& where,
+                                       const std::string& element, ReshadeAnnotations& annotations) {
+    parseArraySize(type, element);
+    if (type.arrayLength != 0) c_.error(where, element, "a " + kind + " cannot be an array");
+    annotations = parseAnnotations(element);
+    if (!c_.is("{")) {
+        c_.error(c_.here(), element, "expected '{' and the " + kind + "'s properties, found " + c_.describe(c_.peek()));
+        return false;
+    }
+    return true;
+}
+
+template <class T>
+void ReshadeParserRun::declareBoundObject(std::vector<T>& list, T object, DK kind, bool hasTexture, const std::string& element) {
+    const std::string noun = kind == DK::Sampler ? "sampler" : "storage";
+    if (!hasTexture) c_.error(object.where, element, "the " + noun + " has no 'Texture' property");
+    const size_t index = list.size();
+    const std::string name = object.name;
+    if (!declare(name, {kind, index, object.where}, element)) return;
+    list.push_back(std::move(object));
+    addDeclaration(kind, index);
+}
+
 void ReshadeParserRun::parseSampler(ReshadeType type, const std::string& name, const SourceLocation& where) {
     ReshadeSampler s;
     s.name = name;
     s.where = where;
     const std::string element = "sampler " + name;
-    parseArraySize(type, element);
-    if (type.arrayLength != 0) c_.error(where, element, "a sampler cannot be an array");
+    if (!openBoundObject(type, "sampler", where, element, s.annotations)) return;
     s.type = type;
-    s.annotations = parseAnnotations(element);
     bool hasTexture = false;
-    if (!c_.is("{")) {
-        c_.error(c_.here(), element, "expected '{' and the sampler's properties, found " + c_.describe(c_.peek()));
-        return;
-    }
     auto number = [&](const std::string& property, float& into) {
         if (std::optional<ReshadeValue> v = readStateValue(nullptr, property, element)) into = static_cast<float>(v->at());
     };
@@ -143,11 +160,7 @@ void ReshadeParserRun::parseSampler(ReshadeType type, const std::string& name, c
         }
         return true;
     });
-    if (!hasTexture) c_.error(where, element, "the sampler has no 'Texture' property");
-    const size_t index = effect_.samplers.size();
-    if (!declare(name, {DK::Sampler, index, where}, element)) return;
-    effect_.samplers.push_back(std::move(s));
-    addDeclaration(DK::Sampler, index);
+    declareBoundObject(effect_.samplers, std::move(s), DK::Sampler, hasTexture, element);
 }
 
 void ReshadeParserRun::parseStorage(ReshadeType type, const std::string& name, const SourceLocation& where) {
@@ -155,15 +168,10 @@ void ReshadeParserRun::parseStorage(ReshadeType type, const std::string& name, c
     s.name = name;
     s.where = where;
     const std::string element = "storage " + name;
-    parseArraySize(type, element);
-    if (type.arrayLength != 0) c_.error(where, element, "a storage cannot be an array");
+    ReshadeAnnotations ignored;  // a storage has no use for them
+    if (!openBoundObject(type, "storage", where, element, ignored)) return;
     s.type = type;
-    parseAnnotations(element);
     bool hasTexture = false;
-    if (!c_.is("{")) {
-        c_.error(c_.here(), element, "expected '{' and the storage's properties, found " + c_.describe(c_.peek()));
-        return;
-    }
     parseProperties(element, [&](const std::string& property, const SourceLocation& at) {
         if (property == "Texture") {
             hasTexture = true;
@@ -176,11 +184,7 @@ void ReshadeParserRun::parseStorage(ReshadeType type, const std::string& name, c
         }
         return true;
     });
-    if (!hasTexture) c_.error(where, element, "the storage has no 'Texture' property");
-    const size_t index = effect_.storages.size();
-    if (!declare(name, {DK::Storage, index, where}, element)) return;
-    effect_.storages.push_back(std::move(s));
-    addDeclaration(DK::Storage, index);
+    declareBoundObject(effect_.storages, std::move(s), DK::Storage, hasTexture, element);
 }
 
 }  // namespace rmfx

@@ -87,6 +87,14 @@ private:
     void parseTexture(ReshadeType type, const std::string& name, const SourceLocation& where);
     void parseSampler(ReshadeType type, const std::string& name, const SourceLocation& where);
     void parseStorage(ReshadeType type, const std::string& name, const SourceLocation& where);
+    // What samplers and storages share: before their properties, no array size, the annotations
+    // and a '{' (false, an error said, when none follows); after them, a 'Texture' property and
+    // the declaration.
+    bool openBoundObject(ReshadeType& type, const std::string& kind, const SourceLocation& where, const std::string& element,
+                         ReshadeAnnotations& annotations);
+    template <class T>
+    void declareBoundObject(std::vector<T>& list, T object, ReshadeDeclaration::Kind kind, bool hasTexture,
+                            const std::string& element);
     // Reads `{ Name = value; … }`, calling `property` for each with the cursor at its value; it
     // reads the value and returns false after reporting an unknown property.
     template <class F>
